@@ -1,0 +1,32 @@
+// Convexity test of a polyhedron (course notes, seed 003 section 23): the body is convex
+// with respect to a face when every other vertex lies on one side of (or on) the face's
+// plane; convex when that holds for every face; flat (degenerate) when every vertex lies on
+// every face plane. Exact: each side is an exact side-of-plane predicate.
+#pragma once
+
+#include <string>
+
+#include "kernel/polyhedron.hpp"
+
+namespace hlr {
+
+struct ConvexityResult {
+  enum class Verdict { Convex, NonConvex, Flat, NoFaces };
+  Verdict verdict = Verdict::NoFaces;
+  /// For NonConvex: a face whose plane has vertices on both sides, and one vertex on each.
+  int face = -1;
+  int vertex_positive = -1;
+  int vertex_negative = -1;
+  bool convex() const { return verdict == Verdict::Convex; }
+};
+
+/// Runs the test. Faces with a degenerate (zero) plane are skipped; a body all of whose faces
+/// are degenerate is Flat. Precondition for a meaningful answer: a closed polyhedron
+/// (report().closed()); the test itself only looks at vertices and face planes.
+ConvexityResult convexity(const Polyhedron& body);
+
+/// One line: "convex", "flat (degenerate)", or "not convex: face 3 has vertex 5 on one side
+/// of its plane and vertex 7 on the other".
+std::string describe(const ConvexityResult& r);
+
+}  // namespace hlr

@@ -1,0 +1,11 @@
+// The subcommands of the `hlr` executable.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace hlr::cli {
+
+/// Registers `hlr info` on the app; the callback sets `exit_code`.
+void add_info_command(CLI::App& app, int& exit_code);
+
+}  // namespace hlr::cli

@@ -1,0 +1,57 @@
+// Scene files (YAML, or JSON, which yaml-cpp reads as YAML): bodies from mesh files, inline
+// vertices and faces, or boxes, each with its own list of transforms; a view (orthographic
+// direction or perspective eye/target/up) and an optional light vector. Every number keeps
+// its exact value. Unknown keys and wrong types are errors with line numbers.
+// Schema and examples: docs/scene-format.md.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/input_error.hpp"
+#include "kernel/polyhedron.hpp"
+#include "kernel/transform.hpp"
+
+namespace hlr {
+
+struct View {
+  enum class Type { Orthographic, Perspective };
+  Type type = Type::Orthographic;
+  /// Orthographic: from the scene toward the viewer (course notes default: +z).
+  Vector3 direction{Rational(0), Rational(0), Rational(1)};
+  /// Perspective: centre of projection, point looked at (unset: the scene's centre), up.
+  Point3 eye;
+  std::optional<Point3> target;
+  Vector3 up{Rational(0), Rational(1), Rational(0)};
+};
+
+struct SceneBody {
+  std::string name;
+  std::string source;  // mesh path, or the scene file for inline bodies and boxes
+  Polyhedron body;     // world coordinates: the body's transforms applied
+  Matrix4 transform;   // composition of the body's transforms (row-vector convention)
+  std::vector<std::string> notes;  // e.g. how an inexact rotation angle was realised
+};
+
+struct Scene {
+  std::string file;
+  std::vector<SceneBody> bodies;
+  View view;
+  std::optional<Vector3> light;
+};
+
+/// True for .yaml, .yml and .json files.
+bool is_scene_file(const std::string& path);
+
+/// Loads and checks a scene file. Throws InputError with file and line.
+Scene load_scene(const std::string& path);
+
+/// A scene of one body from a mesh file (name: the file's stem), default view.
+Scene scene_from_mesh(const std::string& path);
+
+/// The box [min, max] as a closed polyhedron with outward quad faces (min < max in each
+/// coordinate, else std::invalid_argument).
+Polyhedron make_box(const Point3& min, const Point3& max);
+
+}  // namespace hlr

@@ -1,0 +1,108 @@
+// File bytes and a token stream with line numbers (see text_reader.hpp).
+#include "io/text_reader.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace hlr {
+
+std::string read_file_bytes(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw InputError(path, 0, "read error");
+  return std::move(ss).str();
+}
+
+TokenStream::TokenStream(std::string_view text, std::string file, std::size_t offset)
+    : text_(text), file_(std::move(file)), pos_(offset) {
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i)
+    if (text[i] == '\n') ++line_;
+}
+
+void TokenStream::skip_space() {
+  while (pos_ < text_.size()) {
+    char c = text_[pos_];
+    if (c == '\n') {
+      ++line_;
+      ++pos_;
+    } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+      ++pos_;
+    } else if (c == '#') {
+      while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+    } else {
+      break;
+    }
+  }
+}
+
+bool TokenStream::next(std::string_view& token) {
+  skip_space();
+  if (pos_ >= text_.size()) {
+    token_line_ = line_;
+    return false;
+  }
+  std::size_t start = pos_;
+  while (pos_ < text_.size()) {
+    char c = text_[pos_];
+    if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v' || c == '#') break;
+    ++pos_;
+  }
+  token = text_.substr(start, pos_ - start);
+  token_line_ = line_;
+  return true;
+}
+
+bool TokenStream::at_end() {
+  skip_space();
+  return pos_ >= text_.size();
+}
+
+std::string_view TokenStream::expect(const char* what) {
+  std::string_view t;
+  if (!next(t)) fail(std::string("unexpected end of file, expected ") + what);
+  return t;
+}
+
+Rational TokenStream::number(const char* what) {
+  std::string_view t = expect(what);
+  try {
+    return parse_rational(t);
+  } catch (const NumberError& e) {
+    fail(std::string(what) + ": " + e.what());
+  }
+}
+
+long TokenStream::integer(const char* what, long lo, long hi) {
+  std::string_view t = expect(what);
+  std::size_t i = 0;
+  bool neg = false;
+  if (i < t.size() && (t[i] == '-' || t[i] == '+')) neg = t[i++] == '-';
+  if (i == t.size()) fail(std::string(what) + ": '" + std::string(t) + "' is not an integer");
+  long v = 0;
+  for (; i < t.size(); ++i) {
+    if (t[i] < '0' || t[i] > '9')
+      fail(std::string(what) + ": '" + std::string(t.substr(0, 40)) + "' is not an integer");
+    if (i >= 19) fail(std::string(what) + " " + std::string(t.substr(0, 40)) + " is out of range");
+    v = v * 10 + (t[i] - '0');
+  }
+  if (neg) v = -v;
+  if (v < lo || v > hi)
+    fail(std::string(what) + " " + std::string(t) + " is out of range [" + std::to_string(lo) + ", " +
+         std::to_string(hi) + "]");
+  return v;
+}
+
+void TokenStream::skip_rest_of_line() {
+  while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+}
+
+void TokenStream::fail(const std::string& message) const { throw InputError(file_, token_line_, message); }
+
+}  // namespace hlr

@@ -1,0 +1,107 @@
+// Exact constructions on points, vectors and planes (see geometry.hpp).
+#include "kernel/geometry.hpp"
+
+#include <CGAL/Interval_nt.h>
+#include <CGAL/mpq_class.h>
+
+namespace hlr {
+
+Bounds bounds_of(const Rational& q) {
+  std::pair<double, double> iv = CGAL::to_interval(q);
+  return {iv.first, iv.second};
+}
+
+Vector3::Vector3(Rational x, Rational y, Rational z) : c_{std::move(x), std::move(y), std::move(z)} {
+  for (int i = 0; i < 3; ++i) b_[i] = bounds_of(c_[i]);
+}
+
+Point3::Point3(Rational x, Rational y, Rational z) : c_{std::move(x), std::move(y), std::move(z)} {
+  for (int i = 0; i < 3; ++i) b_[i] = bounds_of(c_[i]);
+}
+
+Plane::Plane(Rational a, Rational b, Rational c, Rational d)
+    : k_{std::move(a), std::move(b), std::move(c), std::move(d)} {
+  for (int i = 0; i < 4; ++i) b_[i] = bounds_of(k_[i]);
+}
+
+Rational Plane::value(const Point3& p) const {
+  Rational v = k_[0] * p.x() + k_[1] * p.y();
+  v += k_[2] * p.z();
+  v += k_[3];
+  return v;
+}
+
+Vector3 operator-(const Point3& p, const Point3& q) {
+  return Vector3(p.x() - q.x(), p.y() - q.y(), p.z() - q.z());
+}
+Point3 operator+(const Point3& p, const Vector3& v) {
+  return Point3(p.x() + v.x(), p.y() + v.y(), p.z() + v.z());
+}
+Vector3 operator+(const Vector3& u, const Vector3& v) {
+  return Vector3(u.x() + v.x(), u.y() + v.y(), u.z() + v.z());
+}
+Vector3 operator*(const Rational& k, const Vector3& v) {
+  return Vector3(k * v.x(), k * v.y(), k * v.z());
+}
+Vector3 cross(const Vector3& u, const Vector3& v) {
+  return Vector3(u.y() * v.z() - u.z() * v.y(), u.z() * v.x() - u.x() * v.z(),
+                 u.x() * v.y() - u.y() * v.x());
+}
+Rational dot(const Vector3& u, const Vector3& v) {
+  Rational r = u.x() * v.x() + u.y() * v.y();
+  r += u.z() * v.z();
+  return r;
+}
+
+Vector3 newell_normal(const Point3* const* v, std::size_t n) {
+  // Relative to v[0] to keep numbers small; the sum of cross products of a fan is the same.
+  Rational nx = 0, ny = 0, nz = 0;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    Rational ax = v[i]->x() - v[0]->x(), ay = v[i]->y() - v[0]->y(), az = v[i]->z() - v[0]->z();
+    Rational bx = v[i + 1]->x() - v[0]->x(), by = v[i + 1]->y() - v[0]->y(),
+             bz = v[i + 1]->z() - v[0]->z();
+    nx += ay * bz - az * by;
+    ny += az * bx - ax * bz;
+    nz += ax * by - ay * bx;
+  }
+  return Vector3(nx, ny, nz);
+}
+
+Plane plane_of_polygon(const Point3* const* v, std::size_t n) {
+  Vector3 nrm = newell_normal(v, n);
+  Rational d = -(nrm.x() * v[0]->x() + nrm.y() * v[0]->y() + nrm.z() * v[0]->z());
+  return Plane(nrm.x(), nrm.y(), nrm.z(), d);
+}
+
+Plane primitive_plane(const Plane& h) {
+  if (h.is_degenerate()) return h;
+  mpz_class l = 1, g = 0;
+  for (int i = 0; i < 4; ++i) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), h[i].get_den().get_mpz_t());
+  mpz_class k[4];
+  for (int i = 0; i < 4; ++i) {
+    k[i] = h[i].get_num() * (l / h[i].get_den());
+    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), k[i].get_mpz_t());
+  }
+  for (int i = 0; i < 4; ++i) k[i] /= g;
+  return Plane(Rational(k[0]), Rational(k[1]), Rational(k[2]), Rational(k[3]));
+}
+
+Point3 centroid_of_vertices(const Point3* const* p, std::size_t n) {
+  Rational sx = 0, sy = 0, sz = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sx += p[i]->x();
+    sy += p[i]->y();
+    sz += p[i]->z();
+  }
+  Rational k(static_cast<long>(n));
+  return Point3(sx / k, sy / k, sz / k);
+}
+
+std::string to_string(const Point3& p) {
+  return "(" + to_string(p.x()) + ", " + to_string(p.y()) + ", " + to_string(p.z()) + ")";
+}
+std::string to_string(const Vector3& v) {
+  return "(" + to_string(v.x()) + ", " + to_string(v.y()) + ", " + to_string(v.z()) + ")";
+}
+
+}  // namespace hlr

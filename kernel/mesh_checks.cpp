@@ -1,0 +1,153 @@
+// Combinatorial and exact geometric checks of a face list (see mesh_checks.hpp).
+#include "kernel/mesh_checks.hpp"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <tuple>
+#include <unordered_map>
+
+#include "kernel/predicates.hpp"
+
+namespace hlr {
+namespace {
+
+std::uint64_t key(int a, int b) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+         static_cast<std::uint32_t>(b);
+}
+
+struct EdgeUse {
+  int forward = 0;   // traversals a -> b with a < b
+  int backward = 0;  // traversals b -> a
+};
+
+void check_edges(const std::vector<std::vector<int>>& faces, MeshReport& r) {
+  std::unordered_map<std::uint64_t, EdgeUse> uses;
+  uses.reserve(faces.size() * 2);
+  for (const auto& f : faces)
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      int a = f[i], b = f[(i + 1) % f.size()];
+      if (a == b) continue;
+      if (a < b)
+        ++uses[key(a, b)].forward;
+      else
+        ++uses[key(b, a)].backward;
+    }
+  for (const auto& [k, u] : uses) {
+    Edge e{static_cast<int>(k >> 32), static_cast<int>(k & 0xffffffffu)};
+    int n = u.forward + u.backward;
+    if (n == 1) r.boundary_edges.push_back(e);
+    if (n > 2) r.non_manifold_edges.push_back(e);
+    if (u.forward > 1 || u.backward > 1) r.misoriented_edges.push_back(e);
+  }
+  std::sort(r.boundary_edges.begin(), r.boundary_edges.end());
+  std::sort(r.non_manifold_edges.begin(), r.non_manifold_edges.end());
+  std::sort(r.misoriented_edges.begin(), r.misoriented_edges.end());
+}
+
+int find(std::vector<int>& parent, int x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+// A vertex is non-manifold when the faces around it fall into more than one fan: corners of
+// faces at v are joined when they share an edge v-w.
+void check_vertices(std::size_t nv, const std::vector<std::vector<int>>& faces, MeshReport& r) {
+  std::vector<std::vector<std::pair<int, int>>> corners(nv);  // per vertex: (prev, next)
+  std::vector<int> uses(nv, 0);
+  for (const auto& f : faces)
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      int v = f[i];
+      corners[v].push_back({f[(i + f.size() - 1) % f.size()], f[(i + 1) % f.size()]});
+      ++uses[v];
+    }
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (uses[v] == 0) {
+      r.isolated_vertices.push_back(static_cast<int>(v));
+      continue;
+    }
+    auto& cs = corners[v];
+    std::vector<int> parent(cs.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    std::unordered_map<int, int> first_with_neighbour;
+    for (std::size_t c = 0; c < cs.size(); ++c)
+      for (int w : {cs[c].first, cs[c].second}) {
+        auto [it, inserted] = first_with_neighbour.emplace(w, static_cast<int>(c));
+        if (!inserted) parent[find(parent, static_cast<int>(c))] = find(parent, it->second);
+      }
+    int roots = 0;
+    for (std::size_t c = 0; c < cs.size(); ++c) roots += find(parent, static_cast<int>(c)) == static_cast<int>(c);
+    if (roots > 1) r.non_manifold_vertices.push_back(static_cast<int>(v));
+  }
+}
+
+void check_faces(const std::vector<Point3>& vs, const std::vector<std::vector<int>>& faces,
+                 const std::vector<Plane>& planes, MeshReport& r) {
+  for (std::size_t fi = 0; fi < faces.size(); ++fi) {
+    const auto& f = faces[fi];
+    int face = static_cast<int>(fi);
+    std::vector<int> sorted = f;
+    std::sort(sorted.begin(), sorted.end());
+    auto rep = std::adjacent_find(sorted.begin(), sorted.end());
+    if (rep != sorted.end()) {
+      r.degenerate_faces.push_back({face, "repeated vertex " + std::to_string(*rep)});
+      continue;
+    }
+    const Plane& h = planes[fi];
+    if (h.is_degenerate()) {
+      bool all_collinear = true;
+      for (std::size_t i = 2; i < f.size() && all_collinear; ++i)
+        all_collinear = collinear(vs[f[0]], vs[f[1]], vs[f[i]]);
+      r.degenerate_faces.push_back({face, all_collinear ? "collinear vertices" : "zero area"});
+      continue;
+    }
+    for (int v : f)
+      if (side_of_plane(h, vs[v]) != Sign::Zero) {
+        r.non_planar_faces.push_back({face, v});
+        break;
+      }
+  }
+}
+
+void check_duplicates(const std::vector<Point3>& vs, MeshReport& r) {
+  std::vector<int> order(vs.size());
+  std::iota(order.begin(), order.end(), 0);
+  auto approx_key = [&](int i) {
+    const Point3& p = vs[i];
+    return std::make_tuple(p.approx(0).lo, p.approx(0).hi, p.approx(1).lo, p.approx(1).hi,
+                           p.approx(2).lo, p.approx(2).hi);
+  };
+  // Equal exact points have equal bounds; sort by bounds, then exactly within equal bounds.
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    auto ka = approx_key(a), kb = approx_key(b);
+    if (ka != kb) return ka < kb;
+    if (!(vs[a] == vs[b])) return vs[a] < vs[b];
+    return a < b;
+  });
+  for (std::size_t i = 1; i < order.size(); ++i) {
+    std::size_t j = i;
+    while (j > 0 && approx_key(order[j - 1]) == approx_key(order[i]) && vs[order[j - 1]] == vs[order[i]]) --j;
+    if (j < i) r.duplicate_vertices.push_back({order[j], order[i]});
+  }
+  std::sort(r.duplicate_vertices.begin(), r.duplicate_vertices.end());
+}
+
+}  // namespace
+
+MeshReport check_mesh(const std::vector<Point3>& vertices,
+                      const std::vector<std::vector<int>>& faces,
+                      const std::vector<Plane>& planes) {
+  MeshReport r;
+  check_edges(faces, r);
+  check_vertices(vertices.size(), faces, r);
+  check_faces(vertices, faces, planes, r);
+  check_duplicates(vertices, r);
+  return r;
+}
+
+std::string to_string(const Edge& e) {
+  return std::to_string(e.first) + "-" + std::to_string(e.second);
+}
+
+}  // namespace hlr

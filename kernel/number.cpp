@@ -1,0 +1,138 @@
+// Exact parsing of numbers from text into GMP rationals (see number.hpp).
+#include "kernel/number.hpp"
+
+#include <cctype>
+#include <cmath>
+
+namespace hlr {
+
+NumberError::NumberError(std::string token, const std::string& why)
+    : std::runtime_error("bad number '" + token + "': " + why), token_(std::move(token)) {}
+
+namespace {
+
+bool all_digits(std::string_view s) {
+  if (s.empty()) return false;
+  for (char c : s)
+    if (c < '0' || c > '9') return false;
+  return true;
+}
+
+// Parses [+-]digits into an mpz. Returns false on bad text.
+bool parse_integer(std::string_view s, mpz_class& out) {
+  bool neg = false;
+  if (!s.empty() && (s[0] == '+' || s[0] == '-')) {
+    neg = s[0] == '-';
+    s.remove_prefix(1);
+  }
+  if (!all_digits(s)) return false;
+  out.set_str(std::string(s), 10);
+  if (neg) out = -out;
+  return true;
+}
+
+// Why `text` is not a number, or empty when it is one; fills `out`.
+std::string parse_impl(std::string_view text, Rational& out) {
+  if (text.empty()) return "empty";
+  if (auto slash = text.find('/'); slash != std::string_view::npos) {
+    mpz_class num, den;
+    if (!parse_integer(text.substr(0, slash), num)) return "numerator is not an integer";
+    std::string_view d = text.substr(slash + 1);
+    if (d.empty() || d[0] == '+' || d[0] == '-' || !parse_integer(d, den))
+      return "denominator is not a positive integer";
+    if (den == 0) return "zero denominator";
+    out = Rational(num, den);
+    out.canonicalize();
+    return {};
+  }
+  std::string_view s = text;
+  bool neg = false;
+  if (s[0] == '+' || s[0] == '-') {
+    neg = s[0] == '-';
+    s.remove_prefix(1);
+  }
+  std::string_view mant = s, expo;
+  if (auto e = s.find_first_of("eE"); e != std::string_view::npos) {
+    mant = s.substr(0, e);
+    expo = s.substr(e + 1);
+    if (expo.empty()) return "missing exponent";
+  }
+  std::string_view ip = mant, fp;
+  if (auto dot = mant.find('.'); dot != std::string_view::npos) {
+    ip = mant.substr(0, dot);
+    fp = mant.substr(dot + 1);
+  }
+  if (ip.empty() && fp.empty()) return "no digits";
+  if ((!ip.empty() && !all_digits(ip)) || (!fp.empty() && !all_digits(fp)))
+    return "not a number (expected integer, decimal, scientific or fraction)";
+  long e10 = 0;
+  if (!expo.empty()) {
+    std::string_view ed = expo;
+    bool eneg = false;
+    if (ed[0] == '+' || ed[0] == '-') {
+      eneg = ed[0] == '-';
+      ed.remove_prefix(1);
+    }
+    if (!all_digits(ed)) return "bad exponent";
+    while (ed.size() > 1 && ed[0] == '0') ed.remove_prefix(1);
+    if (ed.size() > 6) return "exponent out of range";
+    e10 = std::stol(std::string(ed));
+    if (e10 > kMaxDecimalExponent) return "exponent out of range";
+    if (eneg) e10 = -e10;
+  }
+  mpz_class num;
+  num.set_str(std::string(ip) + std::string(fp), 10);
+  e10 -= static_cast<long>(fp.size());
+  mpz_class pow10;
+  mpz_ui_pow_ui(pow10.get_mpz_t(), 10, static_cast<unsigned long>(e10 < 0 ? -e10 : e10));
+  if (e10 >= 0) {
+    out = Rational(num * pow10);
+  } else {
+    out = Rational(num, pow10);
+    out.canonicalize();
+  }
+  if (neg) out = -out;
+  return {};
+}
+
+}  // namespace
+
+Rational parse_rational(std::string_view text) {
+  Rational q;
+  std::string why = parse_impl(text, q);
+  if (!why.empty()) throw NumberError(std::string(text.substr(0, 64)), why);
+  return q;
+}
+
+bool try_parse_rational(std::string_view text, Rational& out) {
+  Rational q;
+  if (!parse_impl(text, q).empty()) return false;
+  out = q;
+  return true;
+}
+
+Rational rational_from_double(double v) {
+  if (!std::isfinite(v)) throw NumberError(std::isnan(v) ? "nan" : "inf", "not a finite number");
+  return Rational(v);  // GMP converts a double exactly
+}
+
+std::string to_string(const Rational& q) { return q.get_str(10); }
+
+double to_double(const Rational& q) {
+  // mpq_get_d truncates; round to nearest via the two neighbours' exact comparison.
+  double d = q.get_d();
+  if (!std::isfinite(d)) return d;
+  double up = std::nextafter(d, HUGE_VAL), down = std::nextafter(d, -HUGE_VAL);
+  Rational best(d), err = abs(q - best);
+  for (double c : {up, down}) {
+    if (!std::isfinite(c)) continue;
+    Rational e = abs(q - Rational(c));
+    if (e < err) {
+      err = e;
+      d = c;
+    }
+  }
+  return d;
+}
+
+}  // namespace hlr

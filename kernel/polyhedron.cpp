@@ -1,0 +1,146 @@
+// Polyhedron: exact vertices and planes beside an OpenMesh mesh (see polyhedron.hpp).
+#include "kernel/polyhedron.hpp"
+
+#include <OpenMesh/Core/System/omstream.hh>
+#include <algorithm>
+#include <deque>
+#include <unordered_map>
+
+namespace hlr {
+
+Polyhedron::Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces)
+    : vertices_(std::move(vertices)), faces_(std::move(faces)) {
+  const long nv = static_cast<long>(vertices_.size());
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    if (faces_[f].size() < 3)
+      throw FaceError(static_cast<int>(f), "face " + std::to_string(f) + " has " +
+                                               std::to_string(faces_[f].size()) +
+                                               " vertices; a face needs at least 3");
+    for (int v : faces_[f])
+      if (v < 0 || v >= nv)
+        throw FaceError(static_cast<int>(f), "face " + std::to_string(f) + " uses vertex " +
+                                                 std::to_string(v) + ", but there are only " +
+                                                 std::to_string(nv) + " vertices");
+  }
+  for (const auto& f : faces_)
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      int a = f[i], b = f[(i + 1) % f.size()];
+      if (a != b) edges_.push_back({std::min(a, b), std::max(a, b)});
+    }
+  std::sort(edges_.begin(), edges_.end());
+  edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
+  build_mesh();
+}
+
+void Polyhedron::build_mesh() {
+  mesh_ = std::make_shared<Mesh>();
+  mesh_->reserve(vertices_.size(), edges_.size(), faces_.size());
+  for (const Point3& p : vertices_)
+    mesh_->add_vertex(Mesh::Point(to_double(p.x()), to_double(p.y()), to_double(p.z())));
+  // add_face only logs on failure; silence the log and record the refused faces instead.
+  bool was_enabled = omerr().is_enabled();
+  omerr().disable();
+  std::vector<Mesh::VertexHandle> vh;
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    vh.clear();
+    for (int v : faces_[f]) vh.push_back(Mesh::VertexHandle(v));
+    std::vector<int> sorted = faces_[f];
+    std::sort(sorted.begin(), sorted.end());
+    bool repeated = std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+    if (repeated || !mesh_->add_face(vh).is_valid()) refused_.push_back(static_cast<int>(f));
+  }
+  if (was_enabled) omerr().enable();
+}
+
+const std::vector<Plane>& Polyhedron::planes() const {
+  if (!planes_done_) {
+    planes_.reserve(faces_.size());
+    std::vector<const Point3*> pts;
+    for (const auto& f : faces_) {
+      pts.clear();
+      for (int v : f) pts.push_back(&vertices_[v]);
+      planes_.push_back(primitive_plane(plane_of_polygon(pts.data(), pts.size())));
+    }
+    planes_done_ = true;
+  }
+  return planes_;
+}
+
+const MeshReport& Polyhedron::report() const {
+  if (!report_) {
+    report_ = std::make_shared<MeshReport>(check_mesh(vertices_, faces_, planes()));
+    report_->refused_faces = refused_;
+  }
+  return *report_;
+}
+
+Polyhedron Polyhedron::reversed() const {
+  std::vector<Face> faces = faces_;
+  for (auto& f : faces) std::reverse(f.begin(), f.end());
+  return Polyhedron(vertices_, std::move(faces));
+}
+
+Rational six_signed_volume(const std::vector<Point3>& vs, const std::vector<Face>& faces) {
+  // Sum over fan triangles of det[a, b, c] relative to the first vertex (origin-independent
+  // for closed surfaces).
+  Rational total = 0;
+  if (vs.empty()) return total;
+  const Point3& o = vs[0];
+  for (const auto& f : faces)
+    for (std::size_t i = 1; i + 1 < f.size(); ++i) {
+      Vector3 a = vs[f[0]] - o, b = vs[f[i]] - o, c = vs[f[i + 1]] - o;
+      total += dot(a, cross(b, c));
+    }
+  return total;
+}
+
+std::vector<Face> orient_faces(const std::vector<Point3>& vs, std::vector<Face> faces) {
+  // Directed-edge adjacency: for an undirected edge, the faces using it.
+  std::unordered_map<std::uint64_t, std::vector<int>> by_edge;
+  auto ukey = [](int a, int b) {
+    if (a > b) std::swap(a, b);
+    return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+  };
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (std::size_t i = 0; i < faces[f].size(); ++i)
+      by_edge[ukey(faces[f][i], faces[f][(i + 1) % faces[f].size()])].push_back(static_cast<int>(f));
+  auto has_directed = [](const Face& f, int a, int b) {
+    for (std::size_t i = 0; i < f.size(); ++i)
+      if (f[i] == a && f[(i + 1) % f.size()] == b) return true;
+    return false;
+  };
+  std::vector<int> component(faces.size(), -1);
+  int ncomp = 0;
+  for (std::size_t seed = 0; seed < faces.size(); ++seed) {
+    if (component[seed] >= 0) continue;
+    std::deque<int> queue{static_cast<int>(seed)};
+    component[seed] = ncomp;
+    std::vector<int> members;
+    while (!queue.empty()) {
+      int f = queue.front();
+      queue.pop_front();
+      members.push_back(f);
+      const Face& face = faces[f];
+      for (std::size_t i = 0; i < face.size(); ++i) {
+        int a = face[i], b = face[(i + 1) % face.size()];
+        const auto& users = by_edge[ukey(a, b)];
+        if (users.size() != 2) continue;  // boundary or non-manifold: no propagation
+        int g = users[0] == f ? users[1] : users[0];
+        if (component[g] >= 0) continue;
+        // Neighbour must traverse the shared edge as b -> a.
+        if (has_directed(faces[g], a, b)) std::reverse(faces[g].begin(), faces[g].end());
+        component[g] = ncomp;
+        queue.push_back(g);
+      }
+    }
+    // Outward for closed components: make the enclosed signed volume positive.
+    std::vector<Face> comp_faces;
+    for (int f : members) comp_faces.push_back(faces[f]);
+    if (six_signed_volume(vs, comp_faces) < 0)
+      for (int f : members) std::reverse(faces[f].begin(), faces[f].end());
+    ++ncomp;
+  }
+  return faces;
+}
+
+}  // namespace hlr

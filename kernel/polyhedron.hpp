@@ -1,0 +1,91 @@
+// A polyhedron: exact vertex coordinates and exact face planes, the face lists as given, and
+// an OpenMesh halfedge mesh with double points (never OpenMesh's default float) built from
+// them. Course notes section 19: a solid must know which side is material, so the checks in
+// mesh_checks.hpp (closed, manifold, oriented, planar, ...) say when that is known.
+#pragma once
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kernel/geometry.hpp"
+#include "kernel/mesh_checks.hpp"
+
+namespace hlr {
+
+struct MeshTraits : public OpenMesh::DefaultTraits {
+  typedef OpenMesh::Vec3d Point;
+  typedef OpenMesh::Vec3d Normal;
+};
+using Mesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
+
+using Face = std::vector<int>;
+
+/// Thrown for a face list that cannot describe a polyhedron at all (index out of range,
+/// fewer than three vertices). `face()` is the 0-based face index.
+class FaceError : public std::runtime_error {
+ public:
+  FaceError(int face, const std::string& what) : std::runtime_error(what), face_(face) {}
+  int face() const { return face_; }
+
+ private:
+  int face_;
+};
+
+class Polyhedron {
+ public:
+  /// Builds a polyhedron from exact vertices and faces (vertex indices, 0-based). Throws
+  /// FaceError for an index out of range or a face with fewer than 3 vertices. Everything
+  /// else (non-planar, non-manifold, ...) is accepted and reported by report().
+  Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces);
+
+  const std::vector<Point3>& vertices() const { return vertices_; }
+  const std::vector<Face>& faces() const { return faces_; }
+  std::size_t num_vertices() const { return vertices_.size(); }
+  std::size_t num_faces() const { return faces_.size(); }
+  /// Undirected edges (i < j), sorted, each once.
+  const std::vector<std::pair<int, int>>& edges() const { return edges_; }
+
+  /// Exact plane of each face (Newell normal, oriented by the face's vertex order: a face
+  /// listed counter-clockwise seen from outside gets an outward normal). Degenerate (zero
+  /// normal) for zero-area faces. Scaled to primitive integer coefficients (primitive_plane).
+  const std::vector<Plane>& planes() const;
+
+  /// The checks of mesh_checks.hpp, computed once.
+  const MeshReport& report() const;
+
+  /// The OpenMesh mesh: vertex i is handle i, face f is handle f when no face was refused.
+  const Mesh& mesh() const { return *mesh_; }
+  /// Faces that OpenMesh's add_face refused (non-manifold or inconsistently oriented), in
+  /// order. Never dropped silently: report() names them too.
+  const std::vector<int>& refused_faces() const { return refused_; }
+
+  /// The same polyhedron with every face's vertex order reversed.
+  Polyhedron reversed() const;
+
+ private:
+  void build_mesh();
+
+  std::vector<Point3> vertices_;
+  std::vector<Face> faces_;
+  std::vector<std::pair<int, int>> edges_;
+  std::shared_ptr<Mesh> mesh_;
+  std::vector<int> refused_;
+  mutable std::vector<Plane> planes_;
+  mutable bool planes_done_ = false;
+  mutable std::shared_ptr<MeshReport> report_;
+};
+
+/// Orients the faces of a manifold face list consistently (breadth-first over shared edges)
+/// and, for a closed component, outward (positive signed volume, exact). Used for inline
+/// scene bodies whose faces may come in any orientation. Faces on non-manifold edges are left
+/// as they are.
+std::vector<Face> orient_faces(const std::vector<Point3>& vertices, std::vector<Face> faces);
+
+/// Six times the signed volume enclosed by a closed oriented face list (exact); positive
+/// when faces are counter-clockwise seen from outside.
+Rational six_signed_volume(const std::vector<Point3>& vertices, const std::vector<Face>& faces);
+
+}  // namespace hlr

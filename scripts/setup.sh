@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian packages exact-hlr needs (only when something is missing),
+# then configures and builds Release into build/. Idempotent; works as root or via sudo.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD_DIR="${HLR_BUILD_DIR:-$ROOT/build}"
+BUILD_TYPE="${HLR_BUILD_TYPE:-Release}"
+
+PACKAGES=(build-essential cmake pkg-config
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libeigen3-dev libopenmesh-dev
+  libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+  libgtest-dev libbenchmark-dev
+  libcgal-demo)   # libcgal-demo ships data.tar.gz, the mesh corpus used by tests and benchmarks
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  SUDO=""
+  if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+JOBS="$(nproc 2>/dev/null || echo 2)"
+cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" "$@" >/dev/null
+cmake --build "$BUILD_DIR" -j "$JOBS"
