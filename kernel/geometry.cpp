@@ -4,6 +4,8 @@
 #include <CGAL/Interval_nt.h>
 #include <CGAL/mpq_class.h>
 
+#include <ostream>
+
 namespace hlr {
 
 Bounds bounds_of(const Rational& q) {
@@ -103,5 +105,12 @@ std::string to_string(const Point3& p) {
 std::string to_string(const Vector3& v) {
   return "(" + to_string(v.x()) + ", " + to_string(v.y()) + ", " + to_string(v.z()) + ")";
 }
+
+std::string to_string(const Plane& h) {
+  return "[" + to_string(h.a()) + " " + to_string(h.b()) + " " + to_string(h.c()) + " " + to_string(h.d()) + "]";
+}
+std::ostream& operator<<(std::ostream& os, const Point3& p) { return os << to_string(p); }
+std::ostream& operator<<(std::ostream& os, const Vector3& v) { return os << to_string(v); }
+std::ostream& operator<<(std::ostream& os, const Plane& h) { return os << to_string(h); }
 
 }  // namespace hlr

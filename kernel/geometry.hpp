@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <iosfwd>
 #include <string>
 
 #include "kernel/number.hpp"
@@ -108,5 +109,9 @@ Point3 centroid_of_vertices(const Point3* const* points, std::size_t n);
 /// "(x, y, z)" with exact lowest-terms coordinates.
 std::string to_string(const Point3& p);
 std::string to_string(const Vector3& v);
+std::string to_string(const Plane& h);  // "[a b c d]"
+std::ostream& operator<<(std::ostream& os, const Point3& p);
+std::ostream& operator<<(std::ostream& os, const Vector3& v);
+std::ostream& operator<<(std::ostream& os, const Plane& h);
 
 }  // namespace hlr

@@ -34,6 +34,13 @@ bool parse_integer(std::string_view s, mpz_class& out) {
 // Why `text` is not a number, or empty when it is one; fills `out`.
 std::string parse_impl(std::string_view text, Rational& out) {
   if (text.empty()) return "empty";
+  {
+    std::string low;
+    for (char c : text.substr(0, 12)) low += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (!low.empty() && (low[0] == '+' || low[0] == '-')) low.erase(0, 1);
+    if (low == "nan" || low == "inf" || low == "infinity" || low.rfind("nan(", 0) == 0)
+      return "not a finite number (NaN and infinities are not accepted)";
+  }
   if (auto slash = text.find('/'); slash != std::string_view::npos) {
     mpz_class num, den;
     if (!parse_integer(text.substr(0, slash), num)) return "numerator is not an integer";

@@ -1,0 +1,142 @@
+// Mesh readers with exact coordinates (io/mesh_reader.hpp): OFF, OBJ, STL, PLY.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "io/mesh_reader.hpp"
+
+using namespace hlr;
+
+namespace {
+const std::string kData = HLR_DATA_DIR;
+Rational Q(const char* s) { return parse_rational(s); }
+
+std::string temp_file(const std::string& name, const std::string& bytes) {
+  auto dir = std::filesystem::temp_directory_path() / ("hlr_test_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::string path = (dir / name).string();
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path;
+}
+
+std::string binary_stl(const std::vector<std::array<float, 9>>& tris) {
+  std::string b(80, '\0');
+  std::uint32_t n = static_cast<std::uint32_t>(tris.size());
+  b.append(reinterpret_cast<const char*>(&n), 4);
+  for (const auto& t : tris) {
+    float normal[3] = {0, 0, 0};
+    b.append(reinterpret_cast<const char*>(normal), 12);
+    b.append(reinterpret_cast<const char*>(t.data()), 36);
+    b.append(2, '\0');
+  }
+  return b;
+}
+
+const char* kTetraOff = "OFF\n4 4 0\n0.1 0.2 0.3\n1.1 0.2 0.3\n0.1 1.2 0.3\n0.1 0.2 1.3\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+}  // namespace
+
+TEST(MeshIO, OffKeepsDecimalsExact) {
+  Polyhedron p = make_polyhedron(read_off(kTetraOff, "t.off"), "t.off");
+  EXPECT_EQ(p.vertices()[0], Point3(Q("1/10"), Q("1/5"), Q("3/10")));
+  EXPECT_EQ(p.vertices()[1].x(), Q("11/10"));
+  EXPECT_TRUE(p.report().valid_solid());
+}
+
+TEST(MeshIO, OffSkipsColoursAndComments) {
+  MeshData m = read_off("COFF # comment\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 1 1 1 1\n0 1 0 # c\n3 0 1 2 0.5 0.5 0.5\n", "c.off");
+  ASSERT_EQ(m.vertices.size(), 3u);
+  EXPECT_EQ(m.faces[0], (Face{0, 1, 2}));
+  EXPECT_EQ(m.face_lines[0], 6);
+}
+
+TEST(MeshIO, ObjExactWithNegativeAndSlashIndices) {
+  MeshData m = read_obj("v 0.1 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf -3/1 -1 -2\n", "t.obj");
+  ASSERT_EQ(m.faces.size(), 2u);
+  EXPECT_EQ(m.faces[0], (Face{0, 1, 2}));
+  EXPECT_EQ(m.faces[1], (Face{0, 2, 1}));
+  EXPECT_EQ(m.vertices[0].x(), Q("0.1"));
+  Polyhedron t = load_mesh(kData + "/tetra_decimal.obj");
+  EXPECT_EQ(t.vertices()[3], Point3(Q("0.1"), Q("0.2"), Q("1.3")));
+  EXPECT_TRUE(t.report().valid_solid());
+}
+
+TEST(MeshIO, AsciiStlMergesEqualCornersExactly) {
+  std::string stl = "solid t\n";
+  const char* tris[4][3] = {{"0.1 0.2 0.3", "0.1 1.2 0.3", "1.1 0.2 0.3"},
+                            {"0.1 0.2 0.3", "1.1 0.2 0.3", "0.1 0.2 1.3"},
+                            {"0.10 0.2 0.3", "0.1 0.2 1.3", "0.1 1.2 0.3"},  // 0.10 == 0.1
+                            {"1.1 0.2 0.3", "0.1 1.2 0.3", "0.1 0.2 1.3"}};
+  for (auto& t : tris) {
+    stl += "facet normal 0 0 0\nouter loop\n";
+    for (auto* v : t) stl += std::string("vertex ") + v + "\n";
+    stl += "endloop\nendfacet\n";
+  }
+  stl += "endsolid t\n";
+  Polyhedron p = load_mesh(temp_file("t.stl", stl));
+  EXPECT_EQ(p.num_vertices(), 4u);
+  EXPECT_TRUE(p.report().valid_solid());
+  EXPECT_EQ(p.vertices()[0].x(), Q("1/10"));
+}
+
+TEST(MeshIO, BinaryStlKeepsFloatsExactly) {
+  const float a = 0.1f;
+  std::vector<std::array<float, 9>> tris = {{a, 0, 0, 0, 1, 0, 1, 0, 0}, {a, 0, 0, 1, 0, 0, 0, 0, 1},
+                                            {a, 0, 0, 0, 0, 1, 0, 1, 0}, {1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  // A binary file that starts with "solid" is still binary when its size matches.
+  std::string b = binary_stl(tris);
+  std::memcpy(b.data(), "solid binary", 12);
+  Polyhedron p = load_mesh(temp_file("b.stl", b));
+  EXPECT_EQ(p.num_vertices(), 4u);
+  EXPECT_EQ(p.vertices()[0].x(), Rational(static_cast<double>(a)));  // 13421773/134217728
+  EXPECT_EQ(p.vertices()[0].x(), Q("13421773/134217728"));
+  EXPECT_TRUE(p.report().closed());
+}
+
+TEST(MeshIO, AsciiPly) {
+  std::string ply =
+      "ply\nformat ascii 1.0\ncomment t\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "property uchar red\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
+      "0.1 0.2 0.3 9\n1.1 0.2 0.3 9\n0.1 1.2 0.3 9\n0.1 0.2 1.3 9\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  MeshData m = read_ply(ply, "t.ply");
+  EXPECT_EQ(m.vertices[0].x(), Q("0.1"));  // the text's value, not the float's
+  EXPECT_EQ(m.faces[3], (Face{1, 2, 3}));
+  EXPECT_TRUE(make_polyhedron(m, "t.ply").report().valid_solid());
+}
+
+TEST(MeshIO, BinaryPlyBothEndians) {
+  for (bool big : {false, true}) {
+    std::string h = std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") +
+                    " 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty float z\n"
+                    "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
+    auto put = [&](const void* p, int n) {
+      std::string s(static_cast<const char*>(p), n);
+      if (big) std::reverse(s.begin(), s.end());
+      h += s;
+    };
+    double xs[3] = {0.1, 1, 0};
+    for (int i = 0; i < 3; ++i) {
+      double y = i == 2 ? 1 : 0;
+      float z = 0.5f;
+      put(&xs[i], 8);
+      put(&y, 8);
+      put(&z, 4);
+    }
+    unsigned char n = 3;
+    h += static_cast<char>(n);
+    for (std::uint32_t v : {0u, 1u, 2u}) put(&v, 4);
+    MeshData m = read_ply(h, "b.ply");
+    ASSERT_EQ(m.vertices.size(), 3u);
+    EXPECT_EQ(m.vertices[0].x(), rational_from_double(0.1));  // the stored double, exactly
+    EXPECT_EQ(m.vertices[2].y(), 1);
+    EXPECT_EQ(m.vertices[1].z(), Q("1/2"));
+    EXPECT_EQ(m.faces[0], (Face{0, 1, 2}));
+  }
+}
+
+TEST(MeshIO, FileExtensionCaseInsensitive) {
+  std::string p = temp_file("UP.OFF", kTetraOff);
+  EXPECT_EQ(load_mesh(p).num_faces(), 4u);
+}

@@ -1,0 +1,67 @@
+// Filtered exact predicates (kernel/predicates.hpp): answers are exact even when the interval
+// filter cannot decide.
+#include <gtest/gtest.h>
+
+#include "kernel/epeck_bridge.hpp"
+#include "kernel/predicates.hpp"
+
+using namespace hlr;
+
+namespace {
+Rational Q(const char* s) { return parse_rational(s); }
+Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
+}  // namespace
+
+TEST(Predicates, SideOfPlaneExactOnDecimals) {
+  // The plane x + y + z = 0.6 through (0.1, 0.2, 0.3): in doubles 0.1 + 0.2 + 0.3 != 0.6.
+  Plane h(1, 1, 1, Q("-0.6"));
+  EXPECT_EQ(side_of_plane(h, P("0.1", "0.2", "0.3")), Sign::Zero);
+  EXPECT_EQ(side_of_plane(h, P("0.1", "0.2", "0.30000000000000000001")), Sign::Positive);
+  EXPECT_EQ(side_of_plane(h, P("0.1", "0.2", "0.29999999999999999999")), Sign::Negative);
+}
+
+TEST(Predicates, FallbackRunsOnlyWhenNeeded) {
+  Plane h(1, 1, 1, Q("-0.6"));
+  predicate_stats() = {};
+  side_of_plane(h, P("5", "5", "5"));
+  EXPECT_EQ(predicate_stats().evaluations, 1u);
+  EXPECT_EQ(predicate_stats().exact_fallbacks, 0u);
+  side_of_plane(h, P("0.1", "0.2", "0.3"));
+  EXPECT_EQ(predicate_stats().exact_fallbacks, 1u);
+}
+
+TEST(Predicates, OrientationAgreesWithCgalEpeck) {
+  const Point3 pts[] = {P("0", "0", "0"), P("1", "0", "0"), P("0", "1", "0"), P("0", "0", "1"),
+                        P("0.1", "0.2", "0.3"), P("1/3", "1/3", "1/3"), P("0.7", "0.1", "0.2"), P("1e-30", "0", "0")};
+  for (const auto& a : pts)
+    for (const auto& b : pts)
+      for (const auto& c : pts)
+        for (const auto& d : pts) {
+          int ours = static_cast<int>(orientation(a, b, c, d));
+          int cgal = static_cast<int>(CGAL::orientation(to_epeck(a), to_epeck(b), to_epeck(c), to_epeck(d)));
+          ASSERT_EQ(ours, cgal) << to_string(a) << to_string(b) << to_string(c) << to_string(d);
+        }
+}
+
+TEST(Predicates, OrientationSigns) {
+  Point3 o = P("0", "0", "0"), x = P("1", "0", "0"), y = P("0", "1", "0");
+  EXPECT_EQ(orientation(o, x, y, P("0", "0", "1")), Sign::Positive);
+  EXPECT_EQ(orientation(o, x, y, P("0", "0", "-1")), Sign::Negative);
+  EXPECT_EQ(orientation(o, x, y, P("0.3", "0.7", "0")), Sign::Zero);
+  EXPECT_TRUE(collinear(P("0.1", "0.1", "0.1"), P("0.2", "0.2", "0.2"), P("0.3", "0.3", "0.3")));
+  EXPECT_FALSE(collinear(P("0.1", "0.1", "0.1"), P("0.2", "0.2", "0.2"), P("0.3", "0.3", "0.30000000000000001")));
+}
+
+TEST(Predicates, EpeckRoundTrip) {
+  Point3 p = P("1/3", "-0.1", "1e-20");
+  EXPECT_EQ(from_epeck(to_epeck(p)), p);
+}
+
+TEST(Geometry, NewellPlaneOfPolygonAndPrimitiveForm) {
+  Point3 a = P("0", "0", "1/2"), b = P("2", "0", "1/2"), c = P("2", "2", "1/2"), d = P("0", "2", "1/2");
+  const Point3* quad[] = {&a, &b, &c, &d};
+  Plane h = plane_of_polygon(quad, 4);
+  EXPECT_EQ(h, Plane(0, 0, 8, -4));  // twice the area (4) times +z, through z = 1/2
+  EXPECT_EQ(primitive_plane(h), Plane(0, 0, 2, -1));
+  EXPECT_EQ(primitive_plane(Plane(Q("1/2"), Q("-1/3"), 0, Q("5/6"))), Plane(3, -2, 0, 5));
+}
