@@ -99,15 +99,30 @@ Point3 centroid_of_vertices(const Point3* const* p, std::size_t n) {
   return Point3(sx / k, sy / k, sz / k);
 }
 
+namespace {
+std::string join(const char* open, const Rational* c, int n, const char* sep, const char* close) {
+  std::string s = open;
+  for (int i = 0; i < n; ++i) {
+    if (i) s += sep;
+    s += c[i].get_str();
+  }
+  s += close;
+  return s;
+}
+}  // namespace
+
 std::string to_string(const Point3& p) {
-  return "(" + to_string(p.x()) + ", " + to_string(p.y()) + ", " + to_string(p.z()) + ")";
+  const Rational c[3] = {p.x(), p.y(), p.z()};
+  return join("(", c, 3, ", ", ")");
 }
 std::string to_string(const Vector3& v) {
-  return "(" + to_string(v.x()) + ", " + to_string(v.y()) + ", " + to_string(v.z()) + ")";
+  const Rational c[3] = {v.x(), v.y(), v.z()};
+  return join("(", c, 3, ", ", ")");
 }
 
 std::string to_string(const Plane& h) {
-  return "[" + to_string(h.a()) + " " + to_string(h.b()) + " " + to_string(h.c()) + " " + to_string(h.d()) + "]";
+  const Rational c[4] = {h.a(), h.b(), h.c(), h.d()};
+  return join("[", c, 4, " ", "]");
 }
 std::ostream& operator<<(std::ostream& os, const Point3& p) { return os << to_string(p); }
 std::ostream& operator<<(std::ostream& os, const Vector3& v) { return os << to_string(v); }

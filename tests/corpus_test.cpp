@@ -71,7 +71,9 @@ TEST(Corpus, CountsAndVerdictsAgreeWithOpenMesh) {
     bool om_took_all = om.n_vertices() == nv && om.n_faces() == nf;
     // OpenMesh accepted every face as given exactly when we found nothing it refuses.
     EXPECT_EQ(om_took_all, ours.refused_faces().empty());
-    if (r.non_manifold_edges.empty() && r.oriented() && !repeated) EXPECT_TRUE(om_took_all);
+    if (r.non_manifold_edges.empty() && r.oriented() && !repeated) {
+      EXPECT_TRUE(om_took_all);
+    }
     if (om_took_all) {
       EXPECT_TRUE(r.non_manifold_edges.empty());
       EXPECT_TRUE(r.oriented());
