@@ -8,4 +8,7 @@ namespace hlr::cli {
 /// Registers `hlr info` on the app; the callback sets `exit_code`.
 void add_info_command(CLI::App& app, int& exit_code);
 
+/// Registers `hlr render`.
+void add_render_command(CLI::App& app, int& exit_code);
+
 }  // namespace hlr::cli

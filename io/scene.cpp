@@ -217,7 +217,7 @@ View parse_view(const Ctx& c, const YAML::Node& n) {
   if (n["direction"]) {
     v.direction = c.vector(n["direction"], "view direction");
     if (v.direction.is_zero()) c.fail(n["direction"], "view direction has zero length");
-    if (n["target"] || n["up"]) c.fail(n, "'target' and 'up' belong to a perspective view (with 'eye')");
+    if (n["target"]) c.fail(n["target"], "'target' belongs to a perspective view (with 'eye')");
   } else if (n["eye"]) {
     v.type = View::Type::Perspective;
     v.eye = c.point(n["eye"], "eye");
@@ -225,12 +225,13 @@ View parse_view(const Ctx& c, const YAML::Node& n) {
       v.target = c.point(n["target"], "target");
       if (*v.target == v.eye) c.fail(n["target"], "target is the eye point");
     }
-    if (n["up"]) {
-      v.up = c.vector(n["up"], "up");
-      if (v.up.is_zero()) c.fail(n["up"], "up vector has zero length");
-    }
   } else if (n.size() > 0) {
     c.fail(n, "view needs 'direction' or 'eye'");
+  }
+  if (n["up"]) {
+    v.up = c.vector(n["up"], "up");
+    if (v.up.is_zero()) c.fail(n["up"], "up vector has zero length");
+    v.up_given = true;
   }
   return v;
 }

@@ -24,6 +24,7 @@ struct View {
   Point3 eye;
   std::optional<Point3> target;
   Vector3 up{Rational(0), Rational(1), Rational(0)};
+  bool up_given = false;
 };
 
 struct SceneBody {

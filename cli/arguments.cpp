@@ -1,0 +1,53 @@
+// Exact option values and negative numbers after a space (see arguments.hpp).
+#include "cli/arguments.hpp"
+
+#include <stdexcept>
+
+namespace hlr::cli {
+
+const std::vector<std::string>& value_options() {
+  static const std::vector<std::string> opts = {"--view", "--eye", "--target", "--up", "--width", "--stroke"};
+  return opts;
+}
+
+std::vector<std::string> join_negative_values(int argc, char** argv) {
+  std::vector<std::string> out;
+  for (int i = 0; i < argc; ++i) {
+    std::string a = argv[i];
+    bool is_value_opt = false;
+    for (const auto& o : value_options()) is_value_opt = is_value_opt || a == o;
+    if (is_value_opt && i + 1 < argc) {
+      std::string next = argv[i + 1];
+      if (next.size() > 1 && next[0] == '-' && (std::isdigit(static_cast<unsigned char>(next[1])) || next[1] == '.')) {
+        out.push_back(a + "=" + next);
+        ++i;
+        continue;
+      }
+    }
+    out.push_back(a);
+  }
+  return out;
+}
+
+Vector3 parse_vector3(const std::string& option, const std::string& text) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    std::size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (parts.size() != 3) throw std::invalid_argument(option + " needs three numbers X,Y,Z, got '" + text + "'");
+  Rational c[3];
+  for (int i = 0; i < 3; ++i) {
+    try {
+      c[i] = parse_rational(parts[i]);
+    } catch (const NumberError& e) {
+      throw std::invalid_argument(option + ": " + e.what());
+    }
+  }
+  return Vector3(c[0], c[1], c[2]);
+}
+
+}  // namespace hlr::cli

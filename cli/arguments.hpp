@@ -1,0 +1,21 @@
+// Command-line helpers: exact vectors from "X,Y,Z" text, and negative numbers after a space
+// (`--view -1,0.25,0.5`), which option parsers otherwise take for options.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "kernel/geometry.hpp"
+
+namespace hlr::cli {
+
+/// Options whose value is a vector or number that may start with '-'.
+const std::vector<std::string>& value_options();
+
+/// argv with "--opt -1,2,3" joined into "--opt=-1,2,3" for the value options.
+std::vector<std::string> join_negative_values(int argc, char** argv);
+
+/// Parses "X,Y,Z" exactly; throws std::invalid_argument naming the option and the bad part.
+Vector3 parse_vector3(const std::string& option, const std::string& text);
+
+}  // namespace hlr::cli

@@ -1,0 +1,19 @@
+// Writing output files so that nothing half-written is ever left behind: the content goes to
+// a temporary file in the same folder, which is renamed over the target at the end. On any
+// failure the temporary file is removed and OutputError says what went wrong.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace hlr {
+
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Writes `content` to `path` atomically (same-folder temporary file, then rename).
+void write_file_atomically(const std::string& path, const std::string& content);
+
+}  // namespace hlr
