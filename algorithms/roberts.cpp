@@ -356,7 +356,8 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
       ev.push_back(-x);
       if (!(x > 0)) eye_inside = false;
     }
-    if (eye_inside) throw RobertsError(static_cast<int>(i), "the eye " + to_string(camera.eye) + " is inside body " + std::to_string(i));
+    if (eye_inside) throw RobertsError(static_cast<int>(i), "body " + std::to_string(i) + " contains the eye " + to_string(camera.eye) +
+                                                  ": an eye inside a solid sees nothing");
     res.ev.push_back(std::move(ev));
   }
   Projector proj(camera);

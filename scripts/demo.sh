@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs hlr on the bundled demo scene; prints where the output is.
+# Sets up, builds and renders the bundled demo scene (several convex bodies, one pair
+# interpenetrating) to an SVG with hidden lines dashed, and its exact JSON; prints the paths.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$ROOT/scripts/setup.sh"
 BUILD_DIR="${HLR_BUILD_DIR:-$ROOT/build}"
 OUT="$BUILD_DIR/demo"
 mkdir -p "$OUT"
-"$BUILD_DIR/hlr" info --matrix "$ROOT/data/demo.yaml" | tee "$OUT/info.txt"
-echo
-echo "demo: output written to $OUT/info.txt"
+"$BUILD_DIR/hlr" info "$ROOT/data/demo.yaml" > "$OUT/info.txt"
+"$BUILD_DIR/hlr" render "$ROOT/data/demo.yaml" --hidden dashed -o "$OUT/demo.svg"
+"$BUILD_DIR/hlr" render "$ROOT/data/demo.yaml" -o "$OUT/demo.json"
+echo "demo: drawing     $OUT/demo.svg"
+echo "demo: exact JSON  $OUT/demo.json"
+echo "demo: body report $OUT/info.txt"

@@ -37,7 +37,9 @@ TEST(Scene, DemoSceneLoadsAsFiveConvexSolids) {
   Scene s = load_scene(kData + "/demo.yaml");
   ASSERT_EQ(s.bodies.size(), 5u);
   EXPECT_EQ(s.view.type, View::Type::Orthographic);
-  EXPECT_EQ(s.view.direction, Vector3(1, Q("1.3"), Q("1.7")));
+  EXPECT_EQ(s.view.direction, Vector3(Q("1.2"), -2, Q("1.5")));
+  EXPECT_TRUE(s.view.up_given);
+  EXPECT_EQ(s.view.up, Vector3(0, 0, 1));
   ASSERT_TRUE(s.light);
   for (const auto& b : s.bodies) {
     EXPECT_TRUE(b.body.report().valid_solid()) << b.name;

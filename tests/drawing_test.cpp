@@ -1,0 +1,139 @@
+// SVG and JSON output of Roberts' results (io/drawing.hpp) and atomic output files.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <unistd.h>
+
+#include "io/atomic_file.hpp"
+#include "io/drawing.hpp"
+#include "io/scene.hpp"
+
+using namespace hlr;
+
+namespace {
+const std::string kData = HLR_DATA_DIR;
+
+struct Rendered {
+  Scene scene;
+  std::vector<DrawingBody> names;
+  RobertsResult result;
+  Camera camera;
+};
+
+Rendered render(const std::string& scene_file, const Camera& cam) {
+  Rendered r{load_scene(scene_file), {}, {}, cam};
+  std::vector<const Polyhedron*> ptrs;
+  for (auto& b : r.scene.bodies) {
+    ptrs.push_back(&b.body);
+    r.names.push_back({b.name, b.source});
+  }
+  r.result = roberts(ptrs, cam);
+  return r;
+}
+
+std::string temp_dir() {
+  auto dir = std::filesystem::temp_directory_path() / ("hlr_out_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+}  // namespace
+
+TEST(Json, SchemaAndExactCoordinates) {
+  Rendered r = render(kData + "/two_boxes.yaml", make_orthographic(Vector3(1, parse_rational("1.3"), parse_rational("1.7"))));
+  auto j = nlohmann::json::parse(to_json(r.names, r.result, r.camera));
+  EXPECT_EQ(j["view"]["type"], "orthographic");
+  EXPECT_EQ(j["view"]["direction"], nlohmann::json({"1", "13/10", "17/10"}));
+  ASSERT_EQ(j["bodies"].size(), 2u);
+  EXPECT_EQ(j["bodies"][1]["name"], "bar");
+  EXPECT_EQ(j["bodies"][1]["source"], kData + "/two_boxes.yaml");
+  bool saw_intersection = false, saw_fraction = false;
+  for (const auto& s : j["segments"]) {
+    ASSERT_TRUE(s.contains("kind") && s.contains("visible") && s.contains("from") && s.contains("to"));
+    if (s["kind"] == "edge") {
+      ASSERT_TRUE(s["body"].is_number_integer());
+      ASSERT_EQ(s["edge"].size(), 2u);
+    } else {
+      EXPECT_EQ(s["kind"], "intersection");
+      EXPECT_EQ(s["bodies"], nlohmann::json({0, 1}));
+      saw_intersection = true;
+    }
+    for (const auto& c : s["from"]) {
+      std::string v = c;
+      EXPECT_TRUE(std::regex_match(v, std::regex("-?[0-9]+(/[0-9]+)?"))) << v;
+      saw_fraction = saw_fraction || v.find('/') != std::string::npos;
+    }
+  }
+  EXPECT_TRUE(saw_intersection);
+  EXPECT_TRUE(saw_fraction);  // e.g. 1/2 and the exact split points
+  // The pieces of one edge are listed in order and cover it: consecutive, from t 0 to 1.
+  std::string prev_end;
+  for (const auto& s : j["segments"]) {
+    if (s["kind"] != "edge" || s["body"] != 1 || s["edge"] != nlohmann::json({1 | 4, 1 | 2 | 4})) continue;
+    if (prev_end.empty()) EXPECT_EQ(s["t"][0], "0");
+    else EXPECT_EQ(s["t"][0], prev_end);
+    prev_end = s["t"][1];
+  }
+  EXPECT_EQ(prev_end, "1");
+}
+
+TEST(Json, PerspectiveView) {
+  Rendered r = render(kData + "/two_boxes.yaml", make_perspective(Point3(10, 12, 9), Point3(2, 1, 1)));
+  auto j = nlohmann::json::parse(to_json(r.names, r.result, r.camera));
+  EXPECT_EQ(j["view"]["type"], "perspective");
+  EXPECT_EQ(j["view"]["eye"], nlohmann::json({"10", "12", "9"}));
+}
+
+TEST(Svg, GroupsViewBoxAndDeterminism) {
+  Rendered r = render(kData + "/demo.yaml", make_orthographic(Vector3(1, parse_rational("1.3"), parse_rational("1.7"))));
+  SvgOptions o;
+  o.hidden_dashed = true;
+  o.width_mm = 120;
+  std::string a = to_svg(r.names, r.result, r.camera, o);
+  EXPECT_EQ(a, to_svg(r.names, r.result, r.camera, o));  // deterministic
+  EXPECT_NE(a.find("width=\"120.000mm\""), std::string::npos);
+  EXPECT_NE(a.find("viewBox=\"0 0 120.000 "), std::string::npos);
+  EXPECT_NE(a.find("<g id=\"visible\""), std::string::npos);
+  EXPECT_NE(a.find("<g id=\"hidden\""), std::string::npos);
+  EXPECT_NE(a.find("stroke-dasharray"), std::string::npos);
+  EXPECT_NE(a.find("<g id=\"visible-body-0\" data-name=\"base\">"), std::string::npos);
+  EXPECT_NE(a.find("<g id=\"hidden-intersection-0-2\">"), std::string::npos);
+  o.hidden_dashed = false;
+  std::string b = to_svg(r.names, r.result, r.camera, o);
+  EXPECT_EQ(b.find("<g id=\"hidden\""), std::string::npos);
+  // Every coordinate lies inside the viewBox.
+  std::smatch m;
+  std::regex vb("viewBox=\"0 0 ([0-9.]+) ([0-9.]+)\"");
+  ASSERT_TRUE(std::regex_search(a, m, vb));
+  double w = std::stod(m[1]), h = std::stod(m[2]);
+  std::regex num("[xy][12]=\"(-?[0-9.]+)\"");
+  for (auto it = std::sregex_iterator(a.begin(), a.end(), num); it != std::sregex_iterator(); ++it) {
+    double v = std::stod((*it)[1]);
+    EXPECT_GE(v, 0);
+    EXPECT_LE(v, std::max(w, h));
+  }
+}
+
+TEST(AtomicFile, WritesAndReplaces) {
+  std::string path = temp_dir() + "/out.svg";
+  write_file_atomically(path, "one");
+  write_file_atomically(path, "two");
+  std::ifstream in(path);
+  std::string s((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(s, "two");
+  for (const auto& e : std::filesystem::directory_iterator(temp_dir()))
+    EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << "stray temporary file";
+}
+
+TEST(AtomicFile, DirectoryAndUnwritablePathsFailCleanly) {
+  EXPECT_THROW(write_file_atomically(temp_dir(), "x"), OutputError);
+  EXPECT_THROW(write_file_atomically(temp_dir() + "/no/such/folder/out.svg", "x"), OutputError);
+  try {
+    write_file_atomically("/proc/hlr-cannot-write-here.svg", "x");
+    FAIL();
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot write /proc/hlr-cannot-write-here.svg"), std::string::npos);
+  }
+}
