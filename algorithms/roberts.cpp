@@ -7,6 +7,7 @@
 #include <map>
 
 #include "algorithms/convexity.hpp"
+#include "algorithms/int128_interval.hpp"
 
 namespace hlr {
 namespace {
@@ -360,6 +361,8 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
                                                   ": an eye inside a solid sees nothing");
     res.ev.push_back(std::move(ev));
   }
+  std::vector<FastBody> fast;
+  for (const BodyMatrix& bm : res.matrices) fast.push_back(prepare_fast_body(bm.V, g));
   Projector proj(camera);
   PreFilter pre;
   pre.build(bodies, proj, camera.perspective);
@@ -383,7 +386,12 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
     for (int j : cand) {
       if (j == skip_a || j == skip_b) continue;
       ++res.stats.pairs_tested;
-      clip_to_unit(hidden_interval(s.from, s.to, res.matrices[j].V, g), hidden);
+      if (auto iv = fast_hidden_interval(s.from, s.to, fast[j])) {
+        clip_to_unit(*iv, hidden);
+      } else {
+        ++res.stats.pairs_rational;
+        clip_to_unit(hidden_interval(s.from, s.to, res.matrices[j].V, g), hidden);
+      }
     }
     s.pieces = assemble(std::move(hidden), depth_of(s));
   };

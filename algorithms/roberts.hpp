@@ -61,6 +61,7 @@ struct Segment {
 struct RobertsStats {
   std::size_t edges = 0, self_hidden = 0, junction_segments = 0;
   std::size_t pairs_tested = 0, pairs_skipped = 0;
+  std::size_t pairs_rational = 0;  // tested on the rational path (the 128-bit path did not fit)
 };
 
 struct RobertsResult {

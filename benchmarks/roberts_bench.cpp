@@ -23,8 +23,8 @@ std::vector<Polyhedron> random_boxes(int n) {
   std::vector<Polyhedron> boxes;
   for (int i = 0; i < n; ++i) {
     int x = pos(rng), y = pos(rng), z = pos(rng);
-    boxes.push_back(make_box(Point3(Rational(x, 10), Rational(y, 10), Rational(z, 10)),
-                             Point3(Rational(x + size(rng), 10), Rational(y + size(rng), 10), Rational(z + size(rng), 10))));
+    boxes.push_back(make_box(Point3(rational(x, 10), rational(y, 10), rational(z, 10)),
+                             Point3(rational(x + size(rng), 10), rational(y + size(rng), 10), rational(z + size(rng), 10))));
   }
   return boxes;
 }
@@ -33,7 +33,7 @@ void BM_RobertsRandomBoxes(benchmark::State& st) {
   std::vector<Polyhedron> boxes = random_boxes(static_cast<int>(st.range(0)));
   std::vector<const Polyhedron*> ptrs;
   for (auto& b : boxes) ptrs.push_back(&b);
-  Camera cam = make_orthographic(Vector3(1, Rational(13, 10), Rational(17, 10)));
+  Camera cam = make_orthographic(Vector3(1, rational(13, 10), rational(17, 10)));
   RobertsStats stats;
   std::size_t heap = 0, segments = 0, hidden = 0;
   for (auto _ : st) {
@@ -52,6 +52,7 @@ void BM_RobertsRandomBoxes(benchmark::State& st) {
   st.counters["junctions"] = static_cast<double>(stats.junction_segments);
   st.counters["pairs_tested"] = static_cast<double>(stats.pairs_tested);
   st.counters["pairs_skipped"] = static_cast<double>(stats.pairs_skipped);
+  st.counters["pairs_rational"] = static_cast<double>(stats.pairs_rational);
   st.counters["result_MB"] = static_cast<double>(heap) / 1e6;
   st.SetComplexityN(st.range(0));
 }

@@ -175,6 +175,7 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const RobertsResult&
   st["intersection_segments"] = r.stats.junction_segments;
   st["pairs_tested"] = r.stats.pairs_tested;
   st["pairs_skipped_by_prefilter"] = r.stats.pairs_skipped;
+  st["pairs_on_rational_path"] = r.stats.pairs_rational;
   j["stats"] = st;
   // One body and one segment per line: readable, diffable and deterministic.
   std::string out = "{\n \"view\": " + j["view"].dump() + ",\n \"bodies\": [";

@@ -14,6 +14,14 @@ namespace hlr {
 /// The exact rational number type (GMP). Always kept in lowest terms by GMP.
 using Rational = mpq_class;
 
+/// num/den in lowest terms. (GMP's mpq_class(num, den) does not canonicalise, and GMP's
+/// arithmetic on non-canonical values is wrong: always build fractions through this.)
+inline Rational rational(long num, long den) {
+  Rational q(num, den);
+  q.canonicalize();
+  return q;
+}
+
 /// A number in text that is not an exact finite rational. `token()` is the offending text.
 class NumberError : public std::runtime_error {
  public:

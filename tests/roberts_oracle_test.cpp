@@ -78,7 +78,7 @@ Polyhedron random_hull(std::mt19937& rng, int cx, int cy, int cz) {
   std::vector<Epeck::Point_3> pts;
   int n = count(rng);
   for (int i = 0; i < n; ++i) {
-    Rational c[3] = {Rational(coord(rng), den(rng)) + cx, Rational(coord(rng), den(rng)) + cy, Rational(coord(rng), den(rng)) + cz};
+    Rational c[3] = {rational(coord(rng), den(rng)) + cx, rational(coord(rng), den(rng)) + cy, rational(coord(rng), den(rng)) + cz};
     for (auto& q : c) q.canonicalize();
     pts.push_back(to_epeck(Point3(c[0], c[1], c[2])));
   }

@@ -2,6 +2,7 @@
 // name, and the invariants of the pieces.
 #include <gtest/gtest.h>
 
+#include <random>
 #include <set>
 
 #include "algorithms/roberts.hpp"
@@ -306,4 +307,46 @@ TEST(Roberts, PrefilterSkipsFarBodiesAndChangesNothing) {
       EXPECT_EQ(a.segments[i].pieces[k].visible, b.segments[i].pieces[k].visible);
     }
   }
+}
+
+#include "algorithms/int128_interval.hpp"
+
+TEST(RobertsFastPath, AgreesWithTheRationalPathAndFallsBackWhenTooBig) {
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> c(-40, 40), den(1, 12), big(0, 9);
+  int fast = 0, fallback = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    auto R = [&] {
+      Rational q = rational(c(rng), den(rng));
+      if (big(rng) == 0) q += Rational(mpz_class("123456789012345678901"), 7);  // too big for 128 bits
+      q.canonicalize();
+      return q;
+    };
+    Polyhedron b = make_box(Point3(rational(c(rng) - 60, den(rng)), rational(c(rng) - 60, den(rng)), rational(c(rng) - 60, den(rng))),
+                            Point3(rational(c(rng) + 60, den(rng)), rational(c(rng) + 60, den(rng)), rational(c(rng) + 60, den(rng))));
+    BodyMatrix bm = body_matrix(b);
+    RowVector4 g;
+    if (trial % 2)
+      g << rational(c(rng), den(rng)), rational(c(rng), den(rng)), rational(c(rng), den(rng)), 0;
+    else
+      g << rational(c(rng) * 5, den(rng)), rational(c(rng) * 5, den(rng)), 300, 1;
+    if (g(0) == 0 && g(1) == 0 && g(2) == 0) continue;
+    Point3 p1(R(), R(), R()), p2(R(), R(), R());
+    if (p1 == p2) continue;
+    OpenInterval slow = hidden_interval(p1, p2, bm.V, g);
+    auto quick = fast_hidden_interval(p1, p2, prepare_fast_body(bm.V, g));
+    if (!quick) {
+      ++fallback;
+      continue;
+    }
+    ++fast;
+    ASSERT_EQ(quick->empty, slow.empty);
+    if (slow.empty) continue;
+    ASSERT_EQ(quick->lo.has_value(), slow.lo.has_value());
+    ASSERT_EQ(quick->hi.has_value(), slow.hi.has_value());
+    if (slow.lo) EXPECT_EQ(*quick->lo, *slow.lo);
+    if (slow.hi) EXPECT_EQ(*quick->hi, *slow.hi);
+  }
+  EXPECT_GT(fast, 1000);
+  EXPECT_GT(fallback, 100);
 }
