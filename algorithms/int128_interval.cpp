@@ -6,8 +6,8 @@
 namespace hlr {
 namespace {
 
-using i128 = __int128;
-using u128 = unsigned __int128;
+using i128 = Int128;
+__extension__ typedef unsigned __int128 u128;
 
 constexpr i128 kInputLimit = static_cast<i128>(1) << 40;  // plane coefficients, scaled coordinates
 constexpr i128 kValueLimit = static_cast<i128>(1) << 62;  // p, q, w

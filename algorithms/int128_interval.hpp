@@ -14,11 +14,13 @@
 
 namespace hlr {
 
+__extension__ typedef __int128 Int128;  // GCC/Clang extension, exact 128-bit integers
+
 /// A body matrix (and the viewpoint's values) prepared for the fast path.
 struct FastBody {
   bool usable = false;
-  std::vector<std::array<__int128, 4>> planes;  // integer (a, b, c, d) per face
-  std::vector<__int128> w;                      // G·V_j for the integer-scaled viewpoint G
+  std::vector<std::array<Int128, 4>> planes;  // integer (a, b, c, d) per face
+  std::vector<Int128> w;                       // G·V_j for the integer-scaled viewpoint G
 };
 
 FastBody prepare_fast_body(const BodyMatrixData& V, const RowVector4& g);

@@ -16,20 +16,24 @@ namespace hlr {
 void write_file_atomically(const std::string& path, const std::string& content) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (fs::is_directory(path, ec)) throw OutputError("cannot write " + path + ": it is a directory");
+  const std::string what = std::string("cannot write ").append(path);
+  if (fs::is_directory(path, ec)) throw OutputError(what + ": it is a directory");
   fs::path target(path);
   fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  std::string tmpl = (dir / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
+  std::string base = target.filename().string();
+  base.insert(0, 1, '.');
+  base.append(".tmp-XXXXXX");
+  std::string tmpl = (dir / base).string();
   std::vector<char> name(tmpl.begin(), tmpl.end());
   name.push_back('\0');
   int fd = ::mkstemp(name.data());
-  if (fd < 0) throw OutputError("cannot write " + path + ": " + std::strerror(errno));
+  if (fd < 0) throw OutputError(what + ": " + std::strerror(errno));
   const std::string tmp(name.data());
-  auto fail = [&](const std::string& what) {
+  auto fail = [&](const std::string& step) {
     int err = errno;
     ::close(fd);
     ::unlink(tmp.c_str());
-    throw OutputError("cannot write " + path + ": " + what + ": " + std::strerror(err));
+    throw OutputError(what + ": " + step + ": " + std::strerror(err));
   };
   std::size_t done = 0;
   while (done < content.size()) {
@@ -44,12 +48,12 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   if (::fsync(fd) != 0 && errno != EINVAL) fail("fsync failed");
   if (::close(fd) != 0) {
     ::unlink(tmp.c_str());
-    throw OutputError("cannot write " + path + ": close failed");
+    throw OutputError(what + ": close failed");
   }
   if (::rename(tmp.c_str(), path.c_str()) != 0) {
     int err = errno;
     ::unlink(tmp.c_str());
-    throw OutputError("cannot write " + path + ": " + std::strerror(err));
+    throw OutputError(what + ": " + std::strerror(err));
   }
 }
 

@@ -137,7 +137,9 @@ TEST(Roberts, PenetratingBarHasItsJunctionRectangles) {
   // rectangle is hidden by the block; on y = 2 the bar hides the far-side pieces of its own
   // junction (rays enter the bar) except the edges nearest the viewer.
   for (const Segment& seg : r.segments)
-    if (seg.kind == Segment::Kind::Intersection && seg.from.y() == 0) EXPECT_TRUE(fully(seg, false));
+    if (seg.kind == Segment::Kind::Intersection && seg.from.y() == 0) {
+      EXPECT_TRUE(fully(seg, false));
+    }
   int visible_on_y2 = 0;
   for (const Segment& seg : r.segments)
     if (seg.kind == Segment::Kind::Intersection && seg.from.y() == 2) visible_on_y2 += fully(seg, true);
@@ -252,7 +254,9 @@ TEST(RobertsDegenerate, EdgeGrazingAVertex) {
   Polyhedron a = box("2", "2", "-2", "3", "3", "-1");  // its corner (2,2,-1) is under B's corner
   RobertsResult r = run({&b, &a}, make_orthographic(V("0", "0", "1")));
   for (const Segment& s : r.segments)
-    if (s.body == 1) EXPECT_TRUE(fully(s, true));
+    if (s.body == 1) {
+      EXPECT_TRUE(fully(s, true));
+    }
 }
 
 TEST(RobertsDegenerate, EdgeExactlyBehindAnotherBodysEdge) {
@@ -344,8 +348,12 @@ TEST(RobertsFastPath, AgreesWithTheRationalPathAndFallsBackWhenTooBig) {
     if (slow.empty) continue;
     ASSERT_EQ(quick->lo.has_value(), slow.lo.has_value());
     ASSERT_EQ(quick->hi.has_value(), slow.hi.has_value());
-    if (slow.lo) EXPECT_EQ(*quick->lo, *slow.lo);
-    if (slow.hi) EXPECT_EQ(*quick->hi, *slow.hi);
+    if (slow.lo) {
+      EXPECT_EQ(*quick->lo, *slow.lo);
+    }
+    if (slow.hi) {
+      EXPECT_EQ(*quick->hi, *slow.hi);
+    }
   }
   EXPECT_GT(fast, 1000);
   EXPECT_GT(fallback, 100);
