@@ -7,12 +7,9 @@ namespace hlr {
 namespace {
 
 using i128 = Int128;
-__extension__ typedef unsigned __int128 u128;
 
 constexpr i128 kInputLimit = static_cast<i128>(1) << 40;  // plane coefficients, scaled coordinates
 constexpr i128 kValueLimit = static_cast<i128>(1) << 62;  // p, q, w
-
-i128 abs128(i128 v) { return v < 0 ? -v : v; }
 
 // Rational -> integer if it is one and small.
 bool small_integer(const Rational& q, i128& out) {
@@ -21,81 +18,11 @@ bool small_integer(const Rational& q, i128& out) {
   return abs128(out) < kInputLimit;
 }
 
-std::uint64_t gcd64(std::uint64_t a, std::uint64_t b) {
-  while (b) {
-    std::uint64_t t = a % b;
-    a = b;
-    b = t;
-  }
-  return a;
-}
-
-// Common denominator of the given rationals, if small.
-bool common_denominator(const Rational* const* qs, int n, std::uint64_t& L) {
-  L = 1;
-  for (int i = 0; i < n; ++i) {
-    if (!qs[i]->get_den().fits_ulong_p()) return false;
-    std::uint64_t d = qs[i]->get_den().get_ui();
-    std::uint64_t g = gcd64(L, d);
-    u128 l = static_cast<u128>(L / g) * d;
-    if (l >= static_cast<u128>(kInputLimit)) return false;
-    L = static_cast<std::uint64_t>(l);
-  }
-  return true;
-}
-
-// q·L as a small integer (q's denominator divides L).
-bool scaled(const Rational& q, std::uint64_t L, i128& out) {
-  if (!q.get_num().fits_slong_p()) return false;
-  i128 num = q.get_num().get_si();
-  std::uint64_t den = q.get_den().get_ui();
-  out = num * static_cast<i128>(L / den);
-  return abs128(out) < kInputLimit;
-}
-
-// Signed 256-bit product compare: sign of a·b - c·d for |a|, |b|, |c|, |d| < 2^127.
-struct U256 {
-  u128 hi, lo;
-};
-U256 mul(u128 a, u128 b) {
-  const u128 m = 0xffffffffffffffffULL;
-  u128 a0 = a & m, a1 = a >> 64, b0 = b & m, b1 = b >> 64;
-  u128 p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
-  u128 mid = (p00 >> 64) + (p01 & m) + (p10 & m);
-  u128 lo = (p00 & m) | (mid << 64);
-  u128 hi = p11 + (p01 >> 64) + (p10 >> 64) + (mid >> 64);
-  return {hi, lo};
-}
-int cmp_u256(const U256& x, const U256& y) {
-  if (x.hi != y.hi) return x.hi < y.hi ? -1 : 1;
-  if (x.lo != y.lo) return x.lo < y.lo ? -1 : 1;
-  return 0;
-}
-// Compare a·b with c·d (signed).
-int cmp_products(i128 a, i128 b, i128 c, i128 d) {
-  int sl = (a == 0 || b == 0) ? 0 : ((a < 0) != (b < 0) ? -1 : 1);
-  int sr = (c == 0 || d == 0) ? 0 : ((c < 0) != (d < 0) ? -1 : 1);
-  if (sl != sr) return sl < sr ? -1 : 1;
-  if (sl == 0) return 0;
-  int m = cmp_u256(mul(static_cast<u128>(abs128(a)), static_cast<u128>(abs128(b))),
-                   mul(static_cast<u128>(abs128(c)), static_cast<u128>(abs128(d))));
-  return sl > 0 ? m : -m;
-}
-
 // A fraction n/d with d > 0.
 struct Frac {
   i128 n, d;
 };
-int cmp(const Frac& x, const Frac& y) { return cmp_products(x.n, y.d, y.n, x.d); }
-
-mpz_class to_mpz(i128 v) {
-  bool neg = v < 0;
-  u128 u = neg ? static_cast<u128>(-v) : static_cast<u128>(v);
-  mpz_class hi(static_cast<unsigned long>(static_cast<std::uint64_t>(u >> 64)));
-  mpz_class lo(static_cast<unsigned long>(static_cast<std::uint64_t>(u)));
-  mpz_class r = (hi << 64) + lo;
-  return neg ? mpz_class(-r) : r;
-}
+int cmp(const Frac& x, const Frac& y) { return compare_products(x.n, y.d, y.n, x.d); }
 
 Rational to_rational(const Frac& f) {
   Rational q(to_mpz(f.n), to_mpz(f.d));
@@ -110,10 +37,10 @@ FastBody prepare_fast_body(const BodyMatrixData& V, const RowVector4& g) {
   // The viewpoint scaled to integers (a positive factor changes no t).
   std::uint64_t L;
   const Rational* gs[4] = {&g(0), &g(1), &g(2), &g(3)};
-  if (!common_denominator(gs, 4, L)) return fb;
+  if (!common_denominator(gs, 4, kInputLimit, L)) return fb;
   i128 G[4];
   for (int k = 0; k < 4; ++k)
-    if (!scaled(g(k), L, G[k])) return fb;
+    if (!scaled_integer(g(k), L, kInputLimit, G[k])) return fb;
   for (int j = 0; j < V.cols(); ++j) {
     std::array<i128, 4> h;
     for (int k = 0; k < 4; ++k)
@@ -131,11 +58,11 @@ std::optional<OpenInterval> fast_hidden_interval(const Point3& p1, const Point3&
   if (!body.usable) return std::nullopt;
   const Rational* qs[6] = {&p1.x(), &p1.y(), &p1.z(), &p2.x(), &p2.y(), &p2.z()};
   std::uint64_t L;
-  if (!common_denominator(qs, 6, L)) return std::nullopt;
+  if (!common_denominator(qs, 6, kInputLimit, L)) return std::nullopt;
   i128 A[3], B[3];
   for (int k = 0; k < 3; ++k) {
     i128 b;
-    if (!scaled(p1[k], L, A[k]) || !scaled(p2[k], L, b)) return std::nullopt;
+    if (!scaled_integer(p1[k], L, kInputLimit, A[k]) || !scaled_integer(p2[k], L, kInputLimit, b)) return std::nullopt;
     B[k] = b - A[k];
   }
   const std::size_t n = body.planes.size();

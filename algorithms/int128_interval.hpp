@@ -11,10 +11,9 @@
 #include <vector>
 
 #include "algorithms/roberts.hpp"
+#include "kernel/int128.hpp"
 
 namespace hlr {
-
-__extension__ typedef __int128 Int128;  // GCC/Clang extension, exact 128-bit integers
 
 /// A body matrix (and the viewpoint's values) prepared for the fast path.
 struct FastBody {

@@ -103,6 +103,11 @@ Plane plane_of_polygon(const Point3* const* vertices, std::size_t n);
 /// A degenerate plane is returned unchanged.
 Plane primitive_plane(const Plane& h);
 
+/// primitive_plane(plane_of_polygon(...)) computed in 128-bit integers when the polygon's
+/// coordinates share a small common denominator (decimal input does), else in rationals.
+/// Same exact result either way.
+Plane primitive_plane_of_polygon(const Point3* const* vertices, std::size_t n);
+
 /// Average of points (exact), e.g. the course notes' interior point of a convex body.
 Point3 centroid_of_vertices(const Point3* const* points, std::size_t n);
 

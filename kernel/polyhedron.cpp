@@ -59,7 +59,7 @@ const std::vector<Plane>& Polyhedron::planes() const {
     for (const auto& f : faces_) {
       pts.clear();
       for (int v : f) pts.push_back(&vertices_[v]);
-      planes_.push_back(primitive_plane(plane_of_polygon(pts.data(), pts.size())));
+      planes_.push_back(primitive_plane_of_polygon(pts.data(), pts.size()));
     }
     planes_done_ = true;
   }

@@ -65,3 +65,34 @@ TEST(Geometry, NewellPlaneOfPolygonAndPrimitiveForm) {
   EXPECT_EQ(primitive_plane(h), Plane(0, 0, 2, -1));
   EXPECT_EQ(primitive_plane(Plane(Q("1/2"), Q("-1/3"), 0, Q("5/6"))), Plane(3, -2, 0, 5));
 }
+
+#include <random>
+
+TEST(Geometry, FastPrimitivePlaneEqualsTheRationalOne) {
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> c(-1000, 1000), den(1, 40), big(0, 15), nverts(3, 7);
+  int checked = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    // A planar polygon: points a + s·u + t·w on a random plane (or off it, for non-planar).
+    auto R = [&] {
+      Rational q = rational(c(rng), den(rng));
+      if (big(rng) == 0) q += Rational(mpz_class("98765432109876543210"), 3);  // beyond 128 bits
+      return q;
+    };
+    Point3 a(R(), R(), R());
+    Vector3 u(R(), R(), R()), w(R(), R(), R());
+    int n = nverts(rng);
+    std::vector<Point3> pts;
+    for (int i = 0; i < n; ++i) {
+      double ang = 6.283185307179586 * i / n;
+      Rational s = rational(static_cast<long>(std::lround(100 * std::cos(ang))), 7);
+      Rational t = rational(static_cast<long>(std::lround(100 * std::sin(ang))), 9);
+      pts.push_back(a + (s * u + t * w));
+    }
+    std::vector<const Point3*> ptr;
+    for (auto& p : pts) ptr.push_back(&p);
+    EXPECT_EQ(primitive_plane_of_polygon(ptr.data(), n), primitive_plane(plane_of_polygon(ptr.data(), n)));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 4000);
+}
