@@ -43,6 +43,10 @@ struct Piece {
   Rational t0, t1;
   bool visible = true;
   bool behind_eye = false;  // perspective: behind the eye, never drawn
+  bool clipped = false;     // outside the clipping volume or nearer than the near plane
+  bool same_kind(const Piece& o) const {
+    return visible == o.visible && behind_eye == o.behind_eye && clipped == o.clipped;
+  }
 };
 
 struct Segment {

@@ -67,7 +67,7 @@ std::string to_svg(const std::vector<DrawingBody>& bodies, const RobertsResult& 
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
   for (const Segment& s : r.segments)
     for (const Piece& p : s.pieces) {
-      if (p.behind_eye || (!p.visible && !opt.hidden_dashed)) continue;
+      if (p.behind_eye || p.clipped || (!p.visible && !opt.hidden_dashed)) continue;
       Line2 l;
       if (!piece_line(s, p, proj, camera.perspective, near, l)) continue;
       bool junction = s.kind == Segment::Kind::Intersection;
@@ -166,6 +166,7 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const RobertsResult&
       o["t"] = Json::array({to_string(p.t0), to_string(p.t1)});
       if (s.self_hidden) o["self_hidden"] = true;
       if (p.behind_eye) o["behind_eye"] = true;
+      if (p.clipped) o["clipped"] = true;
       segs.push_back(o);
     }
   j["segments"] = segs;

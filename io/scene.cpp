@@ -244,18 +244,6 @@ bool is_scene_file(const std::string& path) {
   return ext == ".yaml" || ext == ".yml" || ext == ".json";
 }
 
-Polyhedron make_box(const Point3& lo, const Point3& hi) {
-  for (int i = 0; i < 3; ++i)
-    if (!(lo[i] < hi[i])) throw std::invalid_argument("box min must be below max in x, y and z");
-  std::vector<Point3> vs;
-  for (int k = 0; k < 8; ++k)  // bit 0: x, bit 1: y, bit 2: z
-    vs.emplace_back(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
-  // Counter-clockwise seen from outside, in the course notes' order: left (x min), right,
-  // bottom (y min), top, back (z min), front.
-  std::vector<Face> faces = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-  return Polyhedron(std::move(vs), std::move(faces));
-}
-
 Scene scene_from_mesh(const std::string& path) {
   Scene s;
   s.file = path;

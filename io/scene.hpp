@@ -51,8 +51,4 @@ Scene load_scene(const std::string& path);
 /// A scene of one body from a mesh file (name: the file's stem), default view.
 Scene scene_from_mesh(const std::string& path);
 
-/// The box [min, max] as a closed polyhedron with outward quad faces (min < max in each
-/// coordinate, else std::invalid_argument).
-Polyhedron make_box(const Point3& min, const Point3& max);
-
 }  // namespace hlr

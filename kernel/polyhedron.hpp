@@ -84,6 +84,12 @@ class Polyhedron {
 /// as they are.
 std::vector<Face> orient_faces(const std::vector<Point3>& vertices, std::vector<Face> faces);
 
+/// The box [min, max] as a closed polyhedron with outward quad faces (min < max in each
+/// coordinate, else std::invalid_argument). Vertex i has x = max when bit 0 of i is set, y =
+/// max for bit 1, z = max for bit 2; faces in the course notes' order: left, right, bottom,
+/// top, back, front.
+Polyhedron make_box(const Point3& min, const Point3& max);
+
 /// Six times the signed volume enclosed by a closed oriented face list (exact); positive
 /// when faces are counter-clockwise seen from outside.
 Rational six_signed_volume(const std::vector<Point3>& vertices, const std::vector<Face>& faces);

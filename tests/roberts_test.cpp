@@ -31,7 +31,7 @@ void check_invariants(const RobertsResult& r) {
       EXPECT_LT(s.pieces[i].t0, s.pieces[i].t1);
       if (i > 0) {
         EXPECT_EQ(s.pieces[i - 1].t1, s.pieces[i].t0);
-        EXPECT_TRUE(s.pieces[i - 1].visible != s.pieces[i].visible || s.pieces[i - 1].behind_eye != s.pieces[i].behind_eye);
+        EXPECT_FALSE(s.pieces[i - 1].same_kind(s.pieces[i]));
       }
     }
   }

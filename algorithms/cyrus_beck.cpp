@@ -1,0 +1,146 @@
+// Exact 3D Cyrus-Beck clipping, course notes section 22 (see cyrus_beck.hpp).
+#include "algorithms/cyrus_beck.hpp"
+
+#include <stdexcept>
+
+#include "algorithms/convexity.hpp"
+
+namespace hlr {
+
+ConvexClipper make_clipper(Polyhedron body, std::string name) {
+  const MeshReport& r = body.report();
+  if (!r.valid_solid())
+    throw std::invalid_argument("the clipper '" + name +
+                                "' is not a closed, manifold, oriented solid with planar non-degenerate faces");
+  ConvexityResult cv = convexity(body);
+  if (!cv.convex()) throw std::invalid_argument("the clipper '" + name + "' is " + describe(cv) + "; Cyrus-Beck needs a convex clipper");
+  BodyMatrix bm = body_matrix(body);
+  return ConvexClipper{std::move(name), std::move(body), std::move(bm)};
+}
+
+ConvexClipper box_clipper(const Rational& xmin, const Rational& xmax, const Rational& ymin, const Rational& ymax,
+                          const Rational& zmin, const Rational& zmax) {
+  if (!(xmin < xmax && ymin < ymax && zmin < zmax))
+    throw std::invalid_argument("box clipper: need XMIN < XMAX, YMIN < YMAX, ZMIN < ZMAX");
+  return make_clipper(make_box(Point3(xmin, ymin, zmin), Point3(xmax, ymax, zmax)), "box");
+}
+
+ConvexClipper frustum_clipper(const Rational& xl, const Rational& xr, const Rational& yb, const Rational& yt,
+                              const Rational& znear, const Rational& zfar, const Rational& zcp) {
+  if (!(xl < xr && yb < yt)) throw std::invalid_argument("frustum clipper: need XL < XR and YB < YT");
+  if (!(zcp > znear && znear > zfar)) throw std::invalid_argument("frustum clipper: need ZCP > ZNEAR > ZFAR (viewer on +z)");
+  // Side planes pass through (0, 0, zcp); the window is at the far plane; at the near plane it
+  // shrinks by s = (znear - zcp) / (zfar - zcp).
+  Rational s = (znear - zcp) / (zfar - zcp);
+  std::vector<Point3> vs = {Point3(xl, yb, zfar), Point3(xr, yb, zfar), Point3(xr, yt, zfar), Point3(xl, yt, zfar),
+                            Point3(xl * s, yb * s, znear), Point3(xr * s, yb * s, znear), Point3(xr * s, yt * s, znear),
+                            Point3(xl * s, yt * s, znear)};
+  // Faces in the notes' order: left, right, bottom, top, near, far; counter-clockwise from outside.
+  std::vector<Face> faces = {{0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 7, 6, 2}, {4, 5, 6, 7}, {0, 3, 2, 1}};
+  return make_clipper(Polyhedron(std::move(vs), std::move(faces)), "frustum");
+}
+
+CyrusBeckResult cyrus_beck(const ConvexClipper& c, const Point3& p1, const Point3& p2) {
+  CyrusBeckResult r;
+  const BodyMatrixData& V = c.planes.V;
+  Vector3 d = p2 - p1;
+  r.degenerate_point = d.is_zero();
+  Rational tl = 0, tu = 1;
+  bool outside = false, on_boundary = false;
+  for (int j = 0; j < V.cols(); ++j) {
+    CyrusBeckRow row;
+    row.face = j;
+    row.n = Vector3(V(0, j), V(1, j), V(2, j));
+    // W·n = n·P1 + d_j: the face's test function at P1 (W = P1 - f for any f on the face).
+    row.wn = dot(row.n, Vector3(p1.x(), p1.y(), p1.z())) + V(3, j);
+    row.dn = dot(row.n, d);
+    if (row.dn == 0) {
+      row.kind = row.wn < 0 ? CyrusBeckRow::Kind::ParallelOutside : CyrusBeckRow::Kind::ParallelInside;
+      if (row.wn < 0) outside = true;
+      if (row.wn == 0) on_boundary = true;
+    } else {
+      Rational t = -row.wn / row.dn;
+      row.t = t;
+      if (row.dn > 0) {
+        row.kind = CyrusBeckRow::Kind::Lower;
+        if (t > tl) tl = t;
+      } else {
+        row.kind = CyrusBeckRow::Kind::Upper;
+        if (t < tu) tu = t;
+      }
+    }
+    r.table.push_back(row);
+  }
+  if (r.degenerate_point)
+    r.point_class = outside ? CyrusBeckResult::PointClass::Outside
+                            : on_boundary ? CyrusBeckResult::PointClass::OnBoundary : CyrusBeckResult::PointClass::Inside;
+  r.t_lower = tl;
+  r.t_upper = tu;
+  if (outside || tl > tu)
+    r.status = CyrusBeckResult::Status::Outside;
+  else if (tl == tu || r.degenerate_point)
+    r.status = CyrusBeckResult::Status::Point;
+  else
+    r.status = CyrusBeckResult::Status::Visible;
+  return r;
+}
+
+namespace {
+
+// Keeps the pieces' kinds inside [a, b] (a < b) and marks the rest clipped.
+void keep_only(Segment& s, const std::optional<std::pair<Rational, Rational>>& keep) {
+  std::vector<Piece> out;
+  auto push = [&](Piece p) {
+    if (!(p.t0 < p.t1)) return;
+    if (!out.empty() && out.back().same_kind(p))
+      out.back().t1 = p.t1;
+    else
+      out.push_back(p);
+  };
+  for (const Piece& p : s.pieces) {
+    Piece clipped = p;
+    clipped.visible = false;
+    clipped.clipped = true;
+    if (!keep) {
+      push(clipped);
+      continue;
+    }
+    const Rational& a = keep->first;
+    const Rational& b = keep->second;
+    Piece before = clipped, inside = p, after = clipped;
+    before.t1 = std::min(p.t1, a);
+    inside.t0 = std::max(p.t0, a);
+    inside.t1 = std::min(p.t1, b);
+    after.t0 = std::max(p.t0, b);
+    push(before);
+    push(inside);
+    push(after);
+  }
+  s.pieces = std::move(out);
+}
+
+}  // namespace
+
+void clip_pieces(Segment& s, const ConvexClipper& c) {
+  CyrusBeckResult r = cyrus_beck(c, s.from, s.to);
+  if (r.visible())
+    keep_only(s, std::make_pair(r.t_lower, r.t_upper));
+  else
+    keep_only(s, std::nullopt);  // outside, or a single point: drawn as nothing
+}
+
+void clip_near(Segment& s, const Camera& cam, const Rational& k) {
+  if (!cam.perspective) return;
+  Vector3 f = cam.target - cam.eye;
+  Rational threshold = k * dot(f, f);
+  Rational d0 = cam.depth(s.from) - threshold, d1 = cam.depth(s.to) - threshold;  // kept where >= 0
+  if (d0 >= 0 && d1 >= 0) return;
+  if (d0 < 0 && d1 < 0) return keep_only(s, std::nullopt);
+  Rational t = d0 / (d0 - d1);
+  if (d0 < 0)
+    keep_only(s, std::make_pair(t, Rational(1)));
+  else
+    keep_only(s, std::make_pair(Rational(0), t));
+}
+
+}  // namespace hlr
