@@ -6,7 +6,7 @@
 namespace hlr::cli {
 
 const std::vector<std::string>& value_options() {
-  static const std::vector<std::string> opts = {"--view", "--eye", "--target", "--up", "--width", "--stroke"};
+  static const std::vector<std::string> opts = {"--view", "--eye", "--target", "--up", "--width", "--stroke", "--segment", "--near"};
   return opts;
 }
 

@@ -11,4 +11,7 @@ void add_info_command(CLI::App& app, int& exit_code);
 /// Registers `hlr render`.
 void add_render_command(CLI::App& app, int& exit_code);
 
+/// Registers `hlr clip`.
+void add_clip_command(CLI::App& app, int& exit_code);
+
 }  // namespace hlr::cli

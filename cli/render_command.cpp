@@ -4,7 +4,9 @@
 #include <iostream>
 
 #include "algorithms/roberts.hpp"
+#include "algorithms/cyrus_beck.hpp"
 #include "cli/arguments.hpp"
+#include "cli/clipper_spec.hpp"
 #include "cli/commands.hpp"
 #include "io/atomic_file.hpp"
 #include "io/drawing.hpp"
@@ -15,7 +17,7 @@ namespace {
 
 struct RenderArgs {
   std::vector<std::string> inputs;
-  std::string output, format, view, eye, target, up, hidden = "none", edges = "feature";
+  std::string output, format, view, eye, target, up, hidden = "none", edges = "feature", clip, near = "1/1000";
   double width = 150, stroke = 0.35;
 };
 
@@ -90,6 +92,20 @@ int run_render(const RenderArgs& a) {
     std::cerr << "hlr render: " << b->source << ": " << msg << "\n";
     return 1;
   }
+  // Clipping: the near plane (perspective) and the clipping volume, exactly, in world space.
+  Rational near;
+  try {
+    near = parse_rational(a.near);
+  } catch (const NumberError& e) {
+    throw std::invalid_argument(std::string("--near: ") + e.what());
+  }
+  if (!(near > 0)) throw std::invalid_argument("--near must be positive (a fraction of the distance from the eye to the target)");
+  std::optional<ClipperSpec> clip;
+  if (!a.clip.empty()) clip = parse_clipper("--clip", a.clip);
+  for (Segment& s : result.segments) {
+    if (camera.perspective) clip_near(s, camera, near);
+    if (clip) clip_pieces(s, clip->clipper);
+  }
   SvgOptions so;
   so.hidden_dashed = a.hidden == "dashed";
   so.width_mm = a.width;
@@ -118,6 +134,10 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--hidden", a->hidden, "none or dashed (default none)")->check(CLI::IsMember({"none", "dashed"}));
   cmd->add_option("--edges", a->edges, "feature (default: leave out edges between coplanar faces) or all")
       ->check(CLI::IsMember({"all", "feature"}));
+  cmd->add_option("--clip", a->clip,
+                  "Clip the drawing to box:XMIN,XMAX,YMIN,YMAX,ZMIN,ZMAX, frustum:XL,XR,YB,YT,ZNEAR,ZFAR,ZCP or a convex mesh file");
+  cmd->add_option("--near", a->near,
+                  "Perspective near plane at this fraction of the eye-target distance from the eye (default 1/1000)");
   cmd->add_option("--width", a->width, "Drawing width in millimetres (default 150)");
   cmd->add_option("--stroke", a->stroke, "Stroke width of visible lines in millimetres (default 0.35)");
   cmd->callback([a, &exit_code] { exit_code = run_render(*a); });
