@@ -1,6 +1,7 @@
 // Exact 3D Cyrus-Beck clipping, course notes section 22 (see cyrus_beck.hpp).
 #include "algorithms/cyrus_beck.hpp"
 
+#include <optional>
 #include <stdexcept>
 
 #include "algorithms/convexity.hpp"
@@ -15,7 +16,22 @@ ConvexClipper make_clipper(Polyhedron body, std::string name) {
   ConvexityResult cv = convexity(body);
   if (!cv.convex()) throw std::invalid_argument("the clipper '" + name + "' is " + describe(cv) + "; Cyrus-Beck needs a convex clipper");
   BodyMatrix bm = body_matrix(body);
-  return ConvexClipper{std::move(name), std::move(body), std::move(bm)};
+  std::vector<std::array<Int128, 4>> ints;
+  const Int128 limit = static_cast<Int128>(1) << 40;
+  for (int j = 0; j < bm.V.cols(); ++j) {
+    std::array<Int128, 4> h;
+    for (int k = 0; k < 4; ++k) {
+      const Rational& q = bm.V(k, j);
+      if (q.get_den() != 1 || !q.get_num().fits_slong_p() || abs128(q.get_num().get_si()) >= limit) {
+        ints.clear();
+        j = static_cast<int>(bm.V.cols());
+        break;
+      }
+      h[k] = q.get_num().get_si();
+    }
+    if (j < bm.V.cols()) ints.push_back(h);
+  }
+  return ConvexClipper{std::move(name), std::move(body), std::move(bm), std::move(ints)};
 }
 
 ConvexClipper box_clipper(const Rational& xmin, const Rational& xmax, const Rational& ymin, const Rational& ymax,
@@ -40,7 +56,64 @@ ConvexClipper frustum_clipper(const Rational& xl, const Rational& xr, const Rati
   return make_clipper(Polyhedron(std::move(vs), std::move(faces)), "frustum");
 }
 
-CyrusBeckResult cyrus_beck(const ConvexClipper& c, const Point3& p1, const Point3& p2) {
+namespace {
+
+// The table-free clip in 128-bit integers: the segment scaled by the common denominator L of
+// its ends, W·n·L and D·n·L integers below 2^83, limits compared by 256-bit products.
+std::optional<CyrusBeckResult> cyrus_beck_int128(const ConvexClipper& c, const Point3& p1, const Point3& p2) {
+  if (c.int_planes.empty()) return std::nullopt;
+  const Int128 limit = static_cast<Int128>(1) << 40;
+  const Rational* qs[6] = {&p1.x(), &p1.y(), &p1.z(), &p2.x(), &p2.y(), &p2.z()};
+  std::uint64_t L;
+  if (!common_denominator(qs, 6, static_cast<std::uint64_t>(limit), L)) return std::nullopt;
+  Int128 A[3], B[3];
+  for (int k = 0; k < 3; ++k) {
+    Int128 b;
+    if (!scaled_integer(p1[k], L, limit, A[k]) || !scaled_integer(p2[k], L, limit, b)) return std::nullopt;
+    B[k] = b - A[k];
+  }
+  CyrusBeckResult r;
+  r.degenerate_point = B[0] == 0 && B[1] == 0 && B[2] == 0;
+  // Limits as fractions n/d with d > 0; lower starts at 0/1, upper at 1/1.
+  Int128 ln = 0, ld = 1, un = 1, ud = 1;
+  bool outside = false, on_boundary = false;
+  for (const auto& h : c.int_planes) {
+    Int128 wn = h[0] * A[0] + h[1] * A[1] + h[2] * A[2] + h[3] * static_cast<Int128>(L);
+    Int128 dn = h[0] * B[0] + h[1] * B[1] + h[2] * B[2];
+    if (dn == 0) {
+      if (wn < 0) outside = true;
+      if (wn == 0) on_boundary = true;
+    } else if (dn > 0) {  // t >= -wn/dn
+      if (compare_products(-wn, ld, ln, dn) > 0) ln = -wn, ld = dn;
+    } else {  // t <= wn/(-dn)
+      if (compare_products(wn, ud, un, -dn) < 0) un = wn, ud = -dn;
+    }
+  }
+  auto frac = [](Int128 n, Int128 d) {
+    Rational q(to_mpz(n), to_mpz(d));
+    q.canonicalize();
+    return q;
+  };
+  r.t_lower = frac(ln, ld);
+  r.t_upper = frac(un, ud);
+  if (r.degenerate_point)
+    r.point_class = outside ? CyrusBeckResult::PointClass::Outside
+                            : on_boundary ? CyrusBeckResult::PointClass::OnBoundary : CyrusBeckResult::PointClass::Inside;
+  int order = compare_products(ln, ud, un, ld);
+  if (outside || order > 0)
+    r.status = CyrusBeckResult::Status::Outside;
+  else if (order == 0 || r.degenerate_point)
+    r.status = CyrusBeckResult::Status::Point;
+  else
+    r.status = CyrusBeckResult::Status::Visible;
+  return r;
+}
+
+}  // namespace
+
+CyrusBeckResult cyrus_beck(const ConvexClipper& c, const Point3& p1, const Point3& p2, bool table) {
+  if (!table)
+    if (auto fast = cyrus_beck_int128(c, p1, p2)) return *fast;
   CyrusBeckResult r;
   const BodyMatrixData& V = c.planes.V;
   Vector3 d = p2 - p1;
@@ -122,7 +195,7 @@ void keep_only(Segment& s, const std::optional<std::pair<Rational, Rational>>& k
 }  // namespace
 
 void clip_pieces(Segment& s, const ConvexClipper& c) {
-  CyrusBeckResult r = cyrus_beck(c, s.from, s.to);
+  CyrusBeckResult r = cyrus_beck(c, s.from, s.to, false);
   if (r.visible())
     keep_only(s, std::make_pair(r.t_lower, r.t_upper));
   else

@@ -13,6 +13,7 @@
 
 #include "algorithms/roberts.hpp"
 #include "kernel/body_matrix.hpp"
+#include "kernel/int128.hpp"
 
 namespace hlr {
 
@@ -21,6 +22,7 @@ struct ConvexClipper {
   std::string name;
   Polyhedron body;
   BodyMatrix planes;  // sign-corrected: column j is face j's plane, positive inside
+  std::vector<std::array<Int128, 4>> int_planes;  // the same in 128-bit integers, when they fit
 };
 
 /// Builds a clipper; throws std::invalid_argument naming the check or the face that shows the
@@ -54,8 +56,9 @@ struct CyrusBeckResult {
   bool visible() const { return status == Status::Visible; }
 };
 
-/// Clips P1P2 exactly.
-CyrusBeckResult cyrus_beck(const ConvexClipper& clipper, const Point3& p1, const Point3& p2);
+/// Clips P1P2 exactly. With `table` the notes' per-face table is filled in too; without it the
+/// common case runs in 128-bit integers (exact; rationals when numbers do not fit).
+CyrusBeckResult cyrus_beck(const ConvexClipper& clipper, const Point3& p1, const Point3& p2, bool table = true);
 
 /// Clips the pieces of a drawn segment to the clipper: pieces (or parts) outside it are marked
 /// clipped (never drawn); the pieces still cover [0, 1] in order.

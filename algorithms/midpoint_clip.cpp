@@ -16,12 +16,40 @@ Point3 midpoint(const Point3& a, const Point3& b) {
   return Point3((a.x() + b.x()) / 2, (a.y() + b.y()) / 2, (a.z() + b.z()) / 2);
 }
 
+// The notes' coefficients, computed once per clip.
+struct Coefficients {
+  Rational a1, a2, b1, b2, g1, g2, d1, d2;
+  explicit Coefficients(const FrustumWindow& f)
+      : a1(f.alpha1()), a2(f.alpha2()), b1(f.beta1()), b2(f.beta2()), g1(f.gamma1()), g2(f.gamma2()), d1(f.delta1()),
+        d2(f.delta2()) {}
+};
+
+unsigned frustum_code(const FrustumWindow& f, const Coefficients& k, const Point3& p) {
+  unsigned c = 0;
+  if (p.x() - p.z() * k.b1 - k.b2 < 0) c |= kLeft;
+  if (p.x() - p.z() * k.a1 - k.a2 > 0) c |= kRight;
+  if (p.y() - p.z() * k.d1 - k.d2 < 0) c |= kBelow;
+  if (p.y() - p.z() * k.g1 - k.g2 > 0) c |= kAbove;
+  if (p.z() - f.znear > 0) c |= kNear;
+  if (p.z() - f.zfar < 0) c |= kFar;
+  return c;
+}
+
+unsigned box_code(const BoxWindow& b, const Point3& p);
+
 struct Search {
   const Window& w;
   Rational eps2;
   long subdivisions = 0;
+  std::optional<Coefficients> k;
 
-  unsigned code(const Point3& p) const { return outcode(w, p); }
+  Search(const Window& win, Rational e2) : w(win), eps2(std::move(e2)) {
+    if (const auto* f = std::get_if<FrustumWindow>(&w)) k.emplace(*f);
+  }
+  unsigned code(const Point3& p) const {
+    if (k) return frustum_code(std::get<FrustumWindow>(w), *k, p);
+    return box_code(std::get<BoxWindow>(w), p);
+  }
 
   // An inside point of [a, b] found by recursive subdivision, if the visible part is long
   // enough to be met (see the bound in the header).
@@ -62,23 +90,10 @@ unsigned box_code(const BoxWindow& b, const Point3& p) {
   return c;
 }
 
-unsigned frustum_code(const FrustumWindow& f, const Point3& p) {
-  unsigned c = 0;
-  if (p.x() - p.z() * f.beta1() - f.beta2() < 0) c |= kLeft;
-  if (p.x() - p.z() * f.alpha1() - f.alpha2() > 0) c |= kRight;
-  if (p.y() - p.z() * f.delta1() - f.delta2() < 0) c |= kBelow;
-  if (p.y() - p.z() * f.gamma1() - f.gamma2() > 0) c |= kAbove;
-  if (p.z() - f.znear > 0) c |= kNear;
-  if (p.z() - f.zfar < 0) c |= kFar;
-  return c;
-}
 
 }  // namespace
 
-unsigned outcode(const Window& w, const Point3& p) {
-  if (const auto* b = std::get_if<BoxWindow>(&w)) return box_code(*b, p);
-  return frustum_code(std::get<FrustumWindow>(w), p);
-}
+unsigned outcode(const Window& w, const Point3& p) { return Search(w, Rational(0)).code(p); }
 
 unsigned notes_outcode(const Window& w, const Point3& p) {
   unsigned c = outcode(w, p);
@@ -96,7 +111,7 @@ std::string outcode_bits(unsigned code) {
 MidpointResult midpoint_clip(const Window& w, const Point3& p1, const Point3& p2, const Rational& eps) {
   if (!(eps > 0)) throw std::invalid_argument("midpoint clipping needs a tolerance eps > 0");
   MidpointResult r;
-  Search s{w, eps * eps};
+  Search s(w, eps * eps);
   r.code1 = s.code(p1);
   r.code2 = s.code(p2);
   if (r.code1 == 0 && r.code2 == 0) {

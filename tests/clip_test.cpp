@@ -140,6 +140,29 @@ TEST(CyrusBeck, ClipPiecesKeepsKindsInsideAndCoversTheSegment) {
   EXPECT_FALSE(s.pieces[2].clipped);
 }
 
+TEST(CyrusBeck, IntegerPathEqualsTheTablePath) {
+  std::mt19937 rng(12);
+  std::uniform_int_distribution<int> c(-30, 30), den(1, 8), big(0, 20);
+  std::vector<ConvexClipper> clippers = {octahedron(), tilted_prism(), frustum(), box_clipper(0, 2, 0, 2, 0, 2)};
+  for (int i = 0; i < 4000; ++i) {
+    const ConvexClipper& cl = clippers[i % clippers.size()];
+    auto R = [&] {
+      Rational q = rational(c(rng), den(rng));
+      if (big(rng) == 0) q += Rational(mpz_class("1000000000000000000000"), 3);
+      return q;
+    };
+    Point3 a(R(), R(), R()), b = i % 50 == 0 ? a : Point3(R(), R(), R());
+    CyrusBeckResult x = cyrus_beck(cl, a, b, true), y = cyrus_beck(cl, a, b, false);
+    ASSERT_EQ(x.status, y.status);
+    ASSERT_EQ(x.degenerate_point, y.degenerate_point);
+    if (x.degenerate_point) ASSERT_EQ(x.point_class, y.point_class);
+    if (x.status != CyrusBeckResult::Status::Outside) {
+      ASSERT_EQ(x.t_lower, y.t_lower);
+      ASSERT_EQ(x.t_upper, y.t_upper);
+    }
+  }
+}
+
 TEST(CyrusBeck, AgreesWithBruteForcePointInConvex) {
   std::mt19937 rng(11);
   std::uniform_int_distribution<int> c(-30, 30), den(1, 8);
@@ -149,7 +172,7 @@ TEST(CyrusBeck, AgreesWithBruteForcePointInConvex) {
     const ConvexClipper& cl = clippers[i % clippers.size()];
     auto R = [&] { return rational(c(rng), den(rng) * 2); };
     Point3 a(R(), R(), R()), b(R(), R(), R());
-    CyrusBeckResult r = cyrus_beck(cl, a, b);
+    CyrusBeckResult r = cyrus_beck(cl, a, b, i % 2 == 0);
     for (int k = 0; k <= 16; ++k) {
       Rational t = rational(k, 16);
       Point3 x = a + t * (b - a);
