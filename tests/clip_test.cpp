@@ -155,7 +155,9 @@ TEST(CyrusBeck, IntegerPathEqualsTheTablePath) {
     CyrusBeckResult x = cyrus_beck(cl, a, b, true), y = cyrus_beck(cl, a, b, false);
     ASSERT_EQ(x.status, y.status);
     ASSERT_EQ(x.degenerate_point, y.degenerate_point);
-    if (x.degenerate_point) ASSERT_EQ(x.point_class, y.point_class);
+    if (x.degenerate_point) {
+      ASSERT_EQ(x.point_class, y.point_class);
+    }
     if (x.status != CyrusBeckResult::Status::Outside) {
       ASSERT_EQ(x.t_lower, y.t_lower);
       ASSERT_EQ(x.t_upper, y.t_upper);
