@@ -15,14 +15,9 @@ namespace {
 // [x y z w]·V_j for every column j.
 std::vector<Rational> values(const Rational& x, const Rational& y, const Rational& z, const Rational& w,
                              const BodyMatrixData& V) {
-  std::vector<Rational> out(V.cols());
-  for (int j = 0; j < V.cols(); ++j) {
-    Rational s = x * V(0, j) + y * V(1, j);
-    s += z * V(2, j);
-    if (w != 0) s += w * V(3, j);
-    out[j] = s;
-  }
-  return out;
+  RowVector4 row;
+  row << x, y, z, w;
+  return row_times_matrix(row, V);
 }
 
 // ---------------------------------------------------------------- Stage 0: checks

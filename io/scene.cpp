@@ -252,9 +252,10 @@ Scene scene_from_mesh(const std::string& path) {
   return s;
 }
 
-Scene load_scene(const std::string& path) {
+Scene load_scene(const std::string& path) { return load_scene_text(read_file_bytes(path), path); }
+
+Scene load_scene_text(const std::string& bytes, const std::string& path) {
   Ctx c{path};
-  std::string bytes = read_file_bytes(path);
   YAML::Node root;
   try {
     root = YAML::Load(bytes);

@@ -48,6 +48,9 @@ bool is_scene_file(const std::string& path);
 /// Loads and checks a scene file. Throws InputError with file and line.
 Scene load_scene(const std::string& path);
 
+/// The same from the file's text; `path` names it in messages and anchors relative mesh paths.
+Scene load_scene_text(const std::string& text, const std::string& path);
+
 /// A scene of one body from a mesh file (name: the file's stem), default view.
 Scene scene_from_mesh(const std::string& path);
 

@@ -12,6 +12,11 @@ namespace hlr {
 std::string read_file_bytes(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a file");
+  auto status = std::filesystem::status(path, ec);
+  if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw InputError(path, 0, "is not a regular file");
+  if (!ec && std::filesystem::exists(status) && std::filesystem::file_size(path, ec) > kMaxInputBytes)
+    throw InputError(path, 0, "is larger than " + std::to_string(kMaxInputBytes >> 30) + " GiB, the most hlr reads");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
   std::ostringstream ss;
@@ -86,10 +91,12 @@ long TokenStream::integer(const char* what, long lo, long hi) {
   if (i < t.size() && (t[i] == '-' || t[i] == '+')) neg = t[i++] == '-';
   if (i == t.size()) fail(std::string(what) + ": '" + std::string(t) + "' is not an integer");
   long v = 0;
+  const std::size_t first_digit = i;
   for (; i < t.size(); ++i) {
     if (t[i] < '0' || t[i] > '9')
       fail(std::string(what) + ": '" + std::string(t.substr(0, 40)) + "' is not an integer");
-    if (i >= 19) fail(std::string(what) + " " + std::string(t.substr(0, 40)) + " is out of range");
+    // 18 digits always fit in a long; more are out of every range used here.
+    if (i - first_digit >= 18) fail(std::string(what) + " " + std::string(t.substr(0, 40)) + " is out of range");
     v = v * 10 + (t[i] - '0');
   }
   if (neg) v = -v;

@@ -3,6 +3,7 @@
 // OBJ, ASCII STL and ASCII PLY readers.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -11,7 +12,11 @@
 
 namespace hlr {
 
-/// The bytes of a file. Throws InputError (missing file, a folder, unreadable).
+/// The largest input file hlr reads (bytes).
+inline constexpr std::uintmax_t kMaxInputBytes = std::uintmax_t(4) << 30;
+
+/// The bytes of a file. Throws InputError (missing file, a folder, not a regular file such as
+/// /dev/zero, larger than kMaxInputBytes, unreadable).
 std::string read_file_bytes(const std::string& path);
 
 class TokenStream {

@@ -11,6 +11,7 @@ PACKAGES=(build-essential cmake pkg-config
   libeigen3-dev libopenmesh-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
+  clang libclang-rt-14-dev   # the sanitizer build and the libFuzzer targets
   libcgal-demo)   # libcgal-demo ships data.tar.gz, the mesh corpus used by tests and benchmarks
 
 missing=()

@@ -70,7 +70,9 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"scene_invalid_yaml.yaml", 4, "not valid YAML/JSON"},
         Case{"scene_zero_view.yaml", 4, "view direction has zero length"},
         Case{"scene_bad_rotation.yaml", 4, "cos^2 + sin^2 = 1/2, not 1"},
-        Case{"scene_flat_box.yaml", 2, "box min must be below max"}),
+        Case{"scene_flat_box.yaml", 2, "box min must be below max"},
+        // Found by fuzzing (fuzz_off): a 19-digit index overflowed the integer reader.
+        Case{"fuzz_long_integer.off", 6, "vertex index 9999999999999999999 is out of range"}),
     [](const auto& info) {
       std::string n = info.param.file;
       for (char& ch : n)
