@@ -34,6 +34,11 @@ void check_body(const Polyhedron& p, int i) {
   if (!r.duplicate_vertices.empty())
     fail("has duplicate vertices (" + std::to_string(r.duplicate_vertices[0].first) + " and " +
          std::to_string(r.duplicate_vertices[0].second) + ")");
+  if (!r.t_junctions.empty())
+    fail("has a T-junction (vertex " + std::to_string(r.t_junctions[0].vertex) + " inside edge " +
+         to_string(r.t_junctions[0].edge) + ")");
+  if (!r.self_intersecting_faces.empty())
+    fail("has a self-intersecting face (face " + std::to_string(r.self_intersecting_faces[0]) + ")");
   ConvexityResult cv = convexity(p);
   if (!cv.convex())
     fail("is " + describe(cv) + "; Roberts' algorithm takes convex bodies (split non-convex ones into convex pieces first)");

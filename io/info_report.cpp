@@ -73,6 +73,12 @@ std::string info_report(const SceneBody& b, int index, const InfoOptions& opt) {
   o << check_line("distinct vertices", r.duplicate_vertices.empty(), list(r.duplicate_vertices, m, [](const std::pair<int, int>& d) {
                     return std::to_string(d.first) + " = " + std::to_string(d.second);
                   }));
+  if (!r.t_junctions.empty())
+    o << "  T-junctions: " << list(r.t_junctions, m, [](const MeshReport::TJunction& t) {
+      return "vertex " + std::to_string(t.vertex) + " inside edge " + to_string(t.edge);
+    }) << "\n";
+  if (!r.self_intersecting_faces.empty())
+    o << "  self-intersecting faces: " << ints_text(r.self_intersecting_faces, m) << "\n";
   if (!r.isolated_vertices.empty()) o << "  unused vertices: " << ints_text(r.isolated_vertices, m) << "\n";
   if (!r.refused_faces.empty())
     o << "  faces OpenMesh refused: " << ints_text(r.refused_faces, m) << "\n";
@@ -120,7 +126,9 @@ std::string requirement_failure(const SceneBody& b, const std::string& name) {
   if (name == "distinct" && !r.duplicate_vertices.empty())
     return "has duplicate vertices (" + std::to_string(r.duplicate_vertices[0].first) + " and " +
            std::to_string(r.duplicate_vertices[0].second) + ")";
-  if (name == "solid" && !r.valid_solid()) return "is not a valid solid (closed, manifold, oriented, planar, no degenerate faces, distinct vertices)";
+  if (name == "solid" && !r.valid_solid())
+    return "is not a valid solid (closed, manifold, oriented, planar, no degenerate or self-intersecting faces, "
+           "distinct vertices, no T-junctions)";
   if (name == "convex") {
     ConvexityResult cv = convexity(b.body);
     if (!cv.convex()) return "is " + describe(cv);

@@ -133,6 +133,77 @@ void check_duplicates(const std::vector<Point3>& vs, MeshReport& r) {
   std::sort(r.duplicate_vertices.begin(), r.duplicate_vertices.end());
 }
 
+// Vertices strictly inside a boundary edge (a T-junction leaves the long edge unmatched, so a
+// closed mesh with one shows it as boundary edges). Candidates by a sort on x, exact test.
+void check_t_junctions(const std::vector<Point3>& vs, MeshReport& r) {
+  if (r.boundary_edges.empty()) return;
+  std::vector<int> by_x(vs.size());
+  std::iota(by_x.begin(), by_x.end(), 0);
+  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) { return vs[a].approx(0).lo < vs[b].approx(0).lo; });
+  for (const Edge& e : r.boundary_edges) {
+    const Point3 &a = vs[e.first], &b = vs[e.second];
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(a.approx(k).lo, b.approx(k).lo);
+      hi[k] = std::max(a.approx(k).hi, b.approx(k).hi);
+    }
+    auto it = std::lower_bound(by_x.begin(), by_x.end(), lo[0], [&](int v, double x) { return vs[v].approx(0).hi < x; });
+    for (; it != by_x.end() && vs[*it].approx(0).lo <= hi[0]; ++it) {
+      int v = *it;
+      if (v == e.first || v == e.second) continue;
+      const Point3& p = vs[v];
+      if (p.approx(1).hi < lo[1] || p.approx(1).lo > hi[1] || p.approx(2).hi < lo[2] || p.approx(2).lo > hi[2]) continue;
+      if (!collinear(a, b, p)) continue;
+      if (dot(p - a, b - a) > 0 && dot(p - b, a - b) > 0) r.t_junctions.push_back({v, e});
+    }
+  }
+}
+
+// Sign of the 2D orientation of (a, b, c) in the coordinate plane that drops axis `drop`.
+int orient2(const Point3& a, const Point3& b, const Point3& c, int drop) {
+  int u = (drop + 1) % 3, w = (drop + 2) % 3;
+  Rational d = (b[u] - a[u]) * (c[w] - a[w]) - (b[w] - a[w]) * (c[u] - a[u]);
+  return sgn(d);
+}
+
+bool on_segment2(const Point3& a, const Point3& b, const Point3& p, int drop) {
+  int u = (drop + 1) % 3, w = (drop + 2) % 3;
+  return std::min(a[u], b[u]) <= p[u] && p[u] <= std::max(a[u], b[u]) && std::min(a[w], b[w]) <= p[w] &&
+         p[w] <= std::max(a[w], b[w]);
+}
+
+// Do the closed segments ab and cd meet (in the projection)? Exact.
+bool segments_meet2(const Point3& a, const Point3& b, const Point3& c, const Point3& d, int drop) {
+  int o1 = orient2(a, b, c, drop), o2 = orient2(a, b, d, drop), o3 = orient2(c, d, a, drop), o4 = orient2(c, d, b, drop);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return (o1 == 0 && on_segment2(a, b, c, drop)) || (o2 == 0 && on_segment2(a, b, d, drop)) ||
+         (o3 == 0 && on_segment2(c, d, a, drop)) || (o4 == 0 && on_segment2(c, d, b, drop));
+}
+
+// Planar, non-degenerate faces of 4+ vertices whose non-adjacent edges meet.
+void check_self_intersections(const std::vector<Point3>& vs, const std::vector<std::vector<int>>& faces,
+                              const std::vector<Plane>& planes, MeshReport& r) {
+  std::vector<char> skip(faces.size(), 0);
+  for (const auto& d : r.degenerate_faces) skip[d.face] = 1;
+  for (const auto& n : r.non_planar_faces) skip[n.face] = 1;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const auto& face = faces[f];
+    const std::size_t k = face.size();
+    if (skip[f] || k < 4 || k > kMaxSelfIntersectionCheck) continue;
+    // Drop the axis of the normal's largest component: the projection keeps the polygon's shape.
+    int drop = 0;
+    for (int a = 1; a < 3; ++a)
+      if (abs(planes[f][a]) > abs(planes[f][drop])) drop = a;
+    bool crossing = false;
+    for (std::size_t i = 0; i < k && !crossing; ++i)
+      for (std::size_t j = i + 2; j < k && !crossing; ++j) {
+        if (i == 0 && j == k - 1) continue;  // adjacent through the closing edge
+        crossing = segments_meet2(vs[face[i]], vs[face[(i + 1) % k]], vs[face[j]], vs[face[(j + 1) % k]], drop);
+      }
+    if (crossing) r.self_intersecting_faces.push_back(static_cast<int>(f));
+  }
+}
+
 }  // namespace
 
 MeshReport check_mesh(const std::vector<Point3>& vertices,
@@ -143,6 +214,8 @@ MeshReport check_mesh(const std::vector<Point3>& vertices,
   check_vertices(vertices.size(), faces, r);
   check_faces(vertices, faces, planes, r);
   check_duplicates(vertices, r);
+  check_t_junctions(vertices, r);
+  check_self_intersections(vertices, faces, planes, r);
   return r;
 }
 

@@ -34,6 +34,12 @@ struct MeshReport {
   std::vector<std::pair<int, int>> duplicate_vertices;  // (first, later) with equal coordinates
   std::vector<int> isolated_vertices;                   // used by no face
   std::vector<int> refused_faces;                       // refused by OpenMesh's add_face
+  struct TJunction {
+    int vertex;  // lies strictly inside...
+    Edge edge;   // ...this boundary edge, without being one of its faces' vertices
+  };
+  std::vector<TJunction> t_junctions;
+  std::vector<int> self_intersecting_faces;  // planar faces whose own edges cross
 
   bool manifold() const { return non_manifold_edges.empty() && non_manifold_vertices.empty(); }
   bool closed() const { return boundary_edges.empty() && non_manifold_edges.empty(); }
@@ -41,9 +47,12 @@ struct MeshReport {
   bool planar() const { return non_planar_faces.empty(); }
   bool valid_solid() const {
     return manifold() && closed() && oriented() && planar() && degenerate_faces.empty() &&
-           duplicate_vertices.empty();
+           duplicate_vertices.empty() && t_junctions.empty() && self_intersecting_faces.empty();
   }
 };
+
+/// Faces with more vertices than this are not tested for self-intersection (quadratic).
+inline constexpr std::size_t kMaxSelfIntersectionCheck = 256;
 
 /// Computes every check. `planes` are the faces' exact planes (Polyhedron::planes()).
 MeshReport check_mesh(const std::vector<Point3>& vertices,

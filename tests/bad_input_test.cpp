@@ -95,4 +95,13 @@ TEST(BadFile, ParsedFilesFailTheirCheck) {
   EXPECT_FALSE(report("degenerate_face.off").degenerate_faces.empty());
   EXPECT_FALSE(report("duplicate_vertex.off").duplicate_vertices.empty());
   EXPECT_FALSE(report("repeated_index.off").refused_faces.empty());
+  auto tj = report("t_junction.off").t_junctions;
+  ASSERT_EQ(tj.size(), 2u);
+  EXPECT_EQ(tj[0].vertex, 9);
+  EXPECT_EQ(tj[0].edge, Edge(4, 5));
+  EXPECT_EQ(tj[1].vertex, 8);
+  EXPECT_EQ(tj[1].edge, Edge(6, 7));
+  EXPECT_EQ(report("self_intersecting_face.off").self_intersecting_faces, std::vector<int>{0});
+  // A convex pentagon is not self-intersecting; nor is a quad with a vertex on the line of an edge.
+  EXPECT_TRUE(report("../cube.off").self_intersecting_faces.empty());
 }
