@@ -92,6 +92,13 @@ int run_render(const RenderArgs& a) {
     std::cerr << "hlr render: " << b->source << ": " << msg << "\n";
     return 1;
   }
+  // Degenerate but drawable views get a note, never a wrong picture.
+  if (camera.perspective)
+    for (std::size_t i = 0; i < result.ev.size(); ++i)
+      for (std::size_t f = 0; f < result.ev[i].size(); ++f)
+        if (result.ev[i][f] == 0)
+          std::cerr << "hlr render: note: the eye lies in the plane of face " << f << " of body '" << bodies[i]->name
+                    << "': that face is seen edge-on\n";
   // Clipping: the near plane (perspective) and the clipping volume, exactly, in world space.
   Rational near;
   try {

@@ -6,12 +6,40 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <vector>
 
 namespace hlr {
+namespace {
+
+// The temporary file being written, removed if the process is interrupted (SIGINT, SIGTERM,
+// SIGHUP) before the rename. A SIGKILL cannot be caught: the temporary file is then left, with
+// a name that says what it is (.NAME.tmp-XXXXXX beside NAME), and never the target itself.
+char g_temp[4096] = {0};
+volatile std::sig_atomic_t g_temp_active = 0;
+
+extern "C" void remove_temp_and_reraise(int sig) {
+  if (g_temp_active) ::unlink(g_temp);
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+
+void install_handlers() {
+  static bool installed = false;
+  if (installed) return;
+  installed = true;
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction sa {};
+    sa.sa_handler = remove_temp_and_reraise;
+    sigemptyset(&sa.sa_mask);
+    ::sigaction(sig, &sa, nullptr);
+  }
+}
+
+}  // namespace
 
 void write_file_atomically(const std::string& path, const std::string& content) {
   namespace fs = std::filesystem;
@@ -26,9 +54,17 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   std::string tmpl = (dir / base).string();
   std::vector<char> name(tmpl.begin(), tmpl.end());
   name.push_back('\0');
+  install_handlers();
   int fd = ::mkstemp(name.data());
   if (fd < 0) throw OutputError(what + ": " + std::strerror(errno));
   const std::string tmp(name.data());
+  if (tmp.size() < sizeof g_temp) {
+    std::memcpy(g_temp, tmp.c_str(), tmp.size() + 1);
+    g_temp_active = 1;
+  }
+  struct Done {
+    ~Done() { g_temp_active = 0; }
+  } guard;
   auto fail = [&](const std::string& step) {
     int err = errno;
     ::close(fd);
