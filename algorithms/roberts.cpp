@@ -59,12 +59,14 @@ struct PreFilter {
   mutable std::vector<unsigned> stamp;
   mutable unsigned current = 0;
 
-  Box2 bound(const std::vector<std::array<double, 3>>& pts, bool perspective) const {
+  // `in_front_exactly`: every point is strictly in front of the eye, decided exactly; otherwise
+  // (perspective) the box is marked `always` and nothing is skipped against it.
+  Box2 bound(const std::vector<std::array<double, 3>>& pts, bool perspective, bool in_front_exactly = true) const {
     Box2 b{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
            -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
            std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
     for (const auto& p : pts) {
-      if (perspective && !(p[2] > 1e-9)) b.always = true;
+      if (perspective && !in_front_exactly) b.always = true;
       b.x0 = std::min(b.x0, p[0]);
       b.y0 = std::min(b.y0, p[1]);
       b.x1 = std::max(b.x1, p[0]);
@@ -75,17 +77,23 @@ struct PreFilter {
     return b;
   }
 
-  void build(const std::vector<const Polyhedron*>& bodies, const Projector& proj, bool perspective) {
+  void build(const std::vector<const Polyhedron*>& bodies, const Projector& proj, const Camera& cam) {
+    const bool perspective = cam.perspective;
     double ext = 0;
     for (const Polyhedron* p : bodies) {
       std::vector<std::array<double, 3>> pts;
-      for (const Point3& v : p->vertices()) pts.push_back(proj.project(v));
-      boxes.push_back(bound(pts, perspective));
+      bool front = true;
+      for (const Point3& v : p->vertices()) {
+        pts.push_back(proj.project(v));
+        front = front && (!perspective || cam.in_front(v) == Sign::Positive);
+      }
+      boxes.push_back(bound(pts, perspective, front));
       const Box2& b = boxes.back();
       if (!b.always)
         ext = std::max({ext, std::fabs(b.x0), std::fabs(b.x1), std::fabs(b.y0), std::fabs(b.y1), std::fabs(b.d0), std::fabs(b.d1)});
     }
-    // Double projections are within ~1e-15 relative of the exact ones; the margin is far wider.
+    // A conservative filter only (it skips work, never decides visibility): double projections
+    // are within ~1e-15 relative of the exact ones, and the margin is far wider.
     margin = 1e-7 * (ext + 1e-300);
     double X0 = std::numeric_limits<double>::infinity(), Y0 = X0, X1 = -X0, Y1 = -X0;
     for (std::size_t i = 0; i < boxes.size(); ++i) {
@@ -365,7 +373,7 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
   for (const BodyMatrix& bm : res.matrices) fast.push_back(prepare_fast_body(bm.V, g));
   Projector proj(camera);
   PreFilter pre;
-  pre.build(bodies, proj, camera.perspective);
+  pre.build(bodies, proj, camera);
 
   auto depth_of = [&](const Segment& s) -> std::optional<std::pair<Rational, Rational>> {
     if (!camera.perspective) return std::nullopt;
@@ -375,7 +383,9 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
   auto solve = [&](Segment& s, int skip_a, int skip_b) {
     std::vector<Span> hidden;
     auto a = proj.project(s.from), b = proj.project(s.to);
-    Box2 eb = pre.bound({a, b}, camera.perspective);
+    bool front = !camera.perspective ||
+                 (camera.in_front(s.from) == Sign::Positive && camera.in_front(s.to) == Sign::Positive);
+    Box2 eb = pre.bound({a, b}, camera.perspective, front);
     if (opt.prefilter) {
       pre.candidates(eb, cand);
     } else {
