@@ -195,7 +195,7 @@ void keep_only(Segment& s, const std::optional<std::pair<Rational, Rational>>& k
 }  // namespace
 
 void clip_pieces(Segment& s, const ConvexClipper& c) {
-  CyrusBeckResult r = cyrus_beck(c, s.from, s.to, false);
+  CyrusBeckResult r = cyrus_beck(c, s.from(), s.to(), false);
   if (r.visible())
     keep_only(s, std::make_pair(r.t_lower, r.t_upper));
   else
@@ -206,7 +206,7 @@ void clip_near(Segment& s, const Camera& cam, const Rational& k) {
   if (!cam.perspective) return;
   Vector3 f = cam.target - cam.eye;
   Rational threshold = k * dot(f, f);
-  Rational d0 = cam.depth(s.from) - threshold, d1 = cam.depth(s.to) - threshold;  // kept where >= 0
+  Rational d0 = cam.depth(s.from()) - threshold, d1 = cam.depth(s.to()) - threshold;  // kept where >= 0
   if (d0 >= 0 && d1 >= 0) return;
   if (d0 < 0 && d1 < 0) return keep_only(s, std::nullopt);
   Rational t = d0 / (d0 - d1);

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "algorithms/convexity.hpp"
+#include "algorithms/crease_angle.hpp"
 #include "algorithms/int128_interval.hpp"
 
 namespace hlr {
@@ -289,12 +290,12 @@ void junctions(int a, int b, const BodyMatrixData& A, const BodyMatrixData& B, s
       if (on_other_plane(A, ca, f) || on_other_plane(B, cb, g)) continue;
       Segment s;
       s.kind = Segment::Kind::Intersection;
+      s.line = LineKind::Intersection;
       s.body = a;
       s.body2 = b;
       s.face0 = f;
       s.face1 = g;
-      s.from = p0;
-      s.to = p1;
+      s.set_ends(p0, p1);
       out.push_back(std::move(s));
     }
 }
@@ -307,10 +308,39 @@ bool boxes_meet(const Bounds3& x, const Bounds3& y) {
 
 }  // namespace
 
+std::vector<Piece> pieces_from_hidden(std::vector<std::pair<Rational, Rational>> hidden,
+                                      const std::optional<std::pair<Rational, Rational>>& depth) {
+  // Common cases without any arithmetic: nothing hidden, or one span over the whole edge.
+  if (!depth && hidden.empty()) return {Piece{Rational(0), Rational(1), true}};
+  if (!depth && hidden.size() == 1 && hidden[0].first == 0 && hidden[0].second == 1)
+    return {Piece{Rational(0), Rational(1), false}};
+  std::vector<Span> spans;
+  spans.reserve(hidden.size());
+  for (auto& h : hidden) spans.push_back({std::move(h.first), std::move(h.second)});
+  return assemble(std::move(spans), depth);
+}
+
+const char* to_string(LineKind k) {
+  switch (k) {
+    case LineKind::Boundary: return "boundary";
+    case LineKind::Crease: return "crease";
+    case LineKind::Silhouette: return "silhouette";
+    case LineKind::Intersection: return "intersection";
+    case LineKind::Edge: break;
+  }
+  return "edge";
+}
+
 Point3 Segment::at(const Rational& t) const {
-  if (t == 0) return from;
-  if (t == 1) return to;
-  return from + t * (to - from);
+  if (t == 0) return from();
+  if (t == 1) return to();
+  return from() + t * (to() - from());
+}
+
+void Segment::set_ends(Point3 a, Point3 b) {
+  own_ = std::make_shared<const std::array<Point3, 2>>(std::array<Point3, 2>{std::move(a), std::move(b)});
+  a_ = &(*own_)[0];
+  b_ = &(*own_)[1];
 }
 
 OpenInterval hidden_interval(const Point3& p1, const Point3& p2, const BodyMatrixData& V, const RowVector4& g) {
@@ -367,8 +397,12 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
     }
     if (eye_inside) throw RobertsError(static_cast<int>(i), "body " + std::to_string(i) + " contains the eye " + to_string(camera.eye) +
                                                   ": an eye inside a solid sees nothing");
+    std::vector<signed char> fc;
+    for (const Rational& e : ev) fc.push_back(static_cast<signed char>(sgn(e)));
+    res.facing.push_back(std::move(fc));
     res.ev.push_back(std::move(ev));
   }
+  CreaseAngle crease(opt.crease_degrees);
   std::vector<FastBody> fast;
   for (const BodyMatrix& bm : res.matrices) fast.push_back(prepare_fast_body(bm.V, g));
   Projector proj(camera);
@@ -377,14 +411,14 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
 
   auto depth_of = [&](const Segment& s) -> std::optional<std::pair<Rational, Rational>> {
     if (!camera.perspective) return std::nullopt;
-    return std::make_pair(camera.depth(s.from), camera.depth(s.to));
+    return std::make_pair(camera.depth(s.from()), camera.depth(s.to()));
   };
   std::vector<int> cand;
   auto solve = [&](Segment& s, int skip_a, int skip_b) {
     std::vector<Span> hidden;
-    auto a = proj.project(s.from), b = proj.project(s.to);
+    auto a = proj.project(s.from()), b = proj.project(s.to());
     bool front = !camera.perspective ||
-                 (camera.in_front(s.from) == Sign::Positive && camera.in_front(s.to) == Sign::Positive);
+                 (camera.in_front(s.from()) == Sign::Positive && camera.in_front(s.to()) == Sign::Positive);
     Box2 eb = pre.bound({a, b}, camera.perspective, front);
     if (opt.prefilter) {
       pre.candidates(eb, cand);
@@ -396,11 +430,11 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
     for (int j : cand) {
       if (j == skip_a || j == skip_b) continue;
       ++res.stats.pairs_tested;
-      if (auto iv = fast_hidden_interval(s.from, s.to, fast[j])) {
+      if (auto iv = fast_hidden_interval(s.from(), s.to(), fast[j])) {
         clip_to_unit(*iv, hidden);
       } else {
         ++res.stats.pairs_rational;
-        clip_to_unit(hidden_interval(s.from, s.to, res.matrices[j].V, g), hidden);
+        clip_to_unit(hidden_interval(s.from(), s.to(), res.matrices[j].V, g), hidden);
       }
     }
     s.pieces = assemble(std::move(hidden), depth_of(s));
@@ -420,15 +454,26 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
       }
     }
     for (const auto& [e, ff] : faces_of) {
-      if (opt.edges == EdgeSelection::Feature && p.planes()[ff.first] == p.planes()[ff.second]) continue;
+      LineKind kind = LineKind::Edge;
+      if (opt.edges == EdgeSelection::Feature) {
+        if (p.planes()[ff.first] == p.planes()[ff.second]) continue;
+        if ((res.ev[i][ff.first] > 0) != (res.ev[i][ff.second] > 0)) {
+          kind = LineKind::Silhouette;
+        } else {
+          mpz_class na[3], nb[3];
+          for (int k = 0; k < 3; ++k) na[k] = p.planes()[ff.first][k].get_num(), nb[k] = p.planes()[ff.second][k].get_num();
+          if (!crease.exceeds(na, nb)) continue;
+          kind = LineKind::Crease;
+        }
+      }
       Segment s;
+      s.line = kind;
       s.body = static_cast<int>(i);
       s.v0 = e.first;
       s.v1 = e.second;
       s.face0 = ff.first;
       s.face1 = ff.second;
-      s.from = p.vertices()[e.first];
-      s.to = p.vertices()[e.second];
+      s.borrow_ends(p.vertices()[e.first], p.vertices()[e.second]);
       ++res.stats.edges;
       s.self_hidden = res.ev[i][ff.first] < 0 && res.ev[i][ff.second] < 0;
       if (s.self_hidden) {

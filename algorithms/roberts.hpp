@@ -13,7 +13,10 @@
 // a = b / (1 - b) in (0, inf) gives h_j(Q)·(1 + a) = h_j(P) + a·h_j(E).
 #pragma once
 
+#include <array>
+#include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "algorithms/camera.hpp"
@@ -34,7 +37,8 @@ OpenInterval hidden_interval(const Point3& p1, const Point3& p2, const BodyMatri
 enum class EdgeSelection { All, Feature };
 
 struct RobertsOptions {
-  EdgeSelection edges = EdgeSelection::Feature;  // Feature: skip edges between coplanar faces
+  EdgeSelection edges = EdgeSelection::Feature;  // Feature: silhouettes and creases only
+  Rational crease_degrees = 30;                   // Feature: creases over this angle
   bool prefilter = true;                          // spatial pre-filter of (edge, body) pairs
 };
 
@@ -49,29 +53,63 @@ struct Piece {
   }
 };
 
+/// What a drawn line is (issue 4, `--edges feature`): a boundary edge of an open surface, a
+/// crease (dihedral angle over the threshold), a silhouette (one face toward the viewer, the
+/// other not), an intersection line, or any mesh edge (`--edges all`).
+enum class LineKind { Edge, Boundary, Crease, Silhouette, Intersection };
+const char* to_string(LineKind k);
+
 struct Segment {
   enum class Kind { Edge, Intersection };
   Kind kind = Kind::Edge;
+  LineKind line = LineKind::Edge;
   int body = -1;                 // Edge: the body; Intersection: the first body
   int body2 = -1;                // Intersection: the second body
   int v0 = -1, v1 = -1;          // Edge: input vertex indices, from v0 toward v1
   int face0 = -1, face1 = -1;    // Edge: its two faces; Intersection: the facets' faces
-  Point3 from, to;               // world coordinates
   bool self_hidden = false;      // Stage 1
   std::vector<Piece> pieces;     // in order of t, covering [0, 1]
   Point3 at(const Rational& t) const;
+
+  /// The ends, world coordinates (set before use).
+  const Point3& from() const { return *a_; }
+  const Point3& to() const { return *b_; }
+  /// Ends owned by the segment (shared between copies).
+  void set_ends(Point3 a, Point3 b);
+  /// Ends borrowed from storage that outlives the segment (a body's vertices): a segment of a
+  /// million-edge mesh then costs no exact numbers of its own.
+  void borrow_ends(const Point3& a, const Point3& b) {
+    own_.reset();
+    a_ = &a;
+    b_ = &b;
+  }
+
+ private:
+  std::shared_ptr<const std::array<Point3, 2>> own_;
+  const Point3* a_ = nullptr;
+  const Point3* b_ = nullptr;
 };
 
 struct RobertsStats {
   std::size_t edges = 0, self_hidden = 0, junction_segments = 0;
   std::size_t pairs_tested = 0, pairs_skipped = 0;
   std::size_t pairs_rational = 0;  // tested on the rational path (the 128-bit path did not fit)
+  // Per-face occluders (face_occluders.hpp):
+  std::string method = "roberts";
+  std::size_t occluders = 0;             // triangles used as occluders
+  std::size_t comparisons = 0;           // comparisons of split parameters
+  std::size_t comparisons_exact = 0;     // ... that the double filter could not decide
+  bool integer_path = true;              // coordinates fitted the 64/128-bit integer path
+  std::size_t intersection_pairs = 0;    // triangle pairs tested exactly for intersection lines
+  double setup_seconds = 0, intersections_seconds = 0, visibility_seconds = 0;  // wall clock
 };
 
 struct RobertsResult {
   /// Per body: the course notes' E·[V] per face (E = -g): negative = non-facing,
   /// zero = edge-on, positive = facing.
   std::vector<std::vector<Rational>> ev;
+  /// Per body and face: sign of facing, 1 facing, 0 edge-on, -1 non-facing (both routes).
+  std::vector<std::vector<signed char>> facing;
   std::vector<BodyMatrix> matrices;
   std::vector<Segment> segments;
   RobertsStats stats;
@@ -87,6 +125,13 @@ class RobertsError : public std::runtime_error {
  private:
   int body_;
 };
+
+/// The pieces of [0, 1] given the hidden open spans (lo < hi, inside [0, 1], any order,
+/// overlapping allowed) and, for perspective, the depths (P - E)·(target - E) at t = 0 and 1
+/// (the part at depth <= 0 is behind the eye). Touching spans are merged (a single visible
+/// point is not a line).
+std::vector<Piece> pieces_from_hidden(std::vector<std::pair<Rational, Rational>> hidden,
+                                      const std::optional<std::pair<Rational, Rational>>& depth);
 
 /// Runs the algorithm. Bodies must be closed, manifold, oriented, planar, convex solids.
 RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera& camera,

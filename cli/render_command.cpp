@@ -1,8 +1,11 @@
-// `hlr render [options] INPUT...`: exact hidden-line drawing of convex bodies by Roberts'
-// algorithm, written as SVG or exact JSON (atomically: no partial output on failure).
+// `hlr render [options] INPUT...`: exact hidden-line drawing of any meshes (per-face occluders)
+// or of convex bodies by Roberts' algorithm, written as SVG or exact JSON (atomically: no
+// partial output on failure).
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 
+#include "algorithms/face_occluders.hpp"
 #include "algorithms/roberts.hpp"
 #include "algorithms/cyrus_beck.hpp"
 #include "cli/arguments.hpp"
@@ -18,6 +21,9 @@ namespace {
 struct RenderArgs {
   std::vector<std::string> inputs;
   std::string output, format, view, eye, target, up, hidden = "none", edges = "feature", clip, near = "1/1000";
+  std::string method = "faces", crease = "30";
+  unsigned threads = 0;
+  bool timings = false;
   double width = 150, stroke = 0.35;
 };
 
@@ -67,6 +73,8 @@ int run_render(const RenderArgs& a) {
     std::string ext = std::filesystem::path(a.output).extension().string();
     format = ext == ".json" ? "json" : "svg";
   }
+  using Clock = std::chrono::steady_clock;
+  auto t_start = Clock::now();
   std::vector<Scene> scenes;
   for (const auto& in : a.inputs) scenes.push_back(is_scene_file(in) ? load_scene(in) : scene_from_mesh(in));
   std::vector<SceneBody*> bodies;
@@ -78,12 +86,31 @@ int run_render(const RenderArgs& a) {
       polys.push_back(&b.body);
       names.push_back({b.name, b.source});
     }
+  if (a.method == "roberts")
+    for (const Polyhedron* p : polys) p->report();  // Roberts' checks belong to loading
+  auto t_loaded = Clock::now();
   Camera camera = choose_camera(a, scenes, bodies);
-  RobertsOptions ro;
-  ro.edges = a.edges == "all" ? EdgeSelection::All : EdgeSelection::Feature;
+  Rational crease;
+  try {
+    crease = parse_rational(a.crease);
+  } catch (const NumberError& e) {
+    throw std::invalid_argument(std::string("--crease: ") + e.what());
+  }
+  if (crease < 0 || crease > 180) throw std::invalid_argument("--crease must be an angle in degrees from 0 to 180");
   RobertsResult result;
   try {
-    result = roberts(polys, camera, ro);
+    if (a.method == "roberts") {
+      RobertsOptions ro;
+      ro.edges = a.edges == "all" ? EdgeSelection::All : EdgeSelection::Feature;
+      ro.crease_degrees = crease;
+      result = roberts(polys, camera, ro);
+    } else {
+      LineOptions lo;
+      lo.edges = a.edges == "all" ? EdgeSelection::All : EdgeSelection::Feature;
+      lo.crease_degrees = crease;
+      lo.threads = a.threads;
+      result = face_occluders(polys, camera, lo);
+    }
   } catch (const RobertsError& e) {
     const SceneBody* b = bodies[e.body()];
     std::string msg = e.what();
@@ -94,9 +121,9 @@ int run_render(const RenderArgs& a) {
   }
   // Degenerate but drawable views get a note, never a wrong picture.
   if (camera.perspective)
-    for (std::size_t i = 0; i < result.ev.size(); ++i)
-      for (std::size_t f = 0; f < result.ev[i].size(); ++f)
-        if (result.ev[i][f] == 0)
+    for (std::size_t i = 0; i < result.facing.size(); ++i)
+      for (std::size_t f = 0; f < result.facing[i].size(); ++f)
+        if (result.facing[i][f] == 0)
           std::cerr << "hlr render: note: the eye lies in the plane of face " << f << " of body '" << bodies[i]->name
                     << "': that face is seen edge-on\n";
   // Clipping: the near plane (perspective) and the clipping volume, exactly, in world space.
@@ -113,6 +140,7 @@ int run_render(const RenderArgs& a) {
     if (camera.perspective) clip_near(s, camera, near);
     if (clip) clip_pieces(s, clip->clipper);
   }
+  auto t_solved = Clock::now();
   SvgOptions so;
   so.hidden_dashed = a.hidden == "dashed";
   so.width_mm = a.width;
@@ -122,6 +150,19 @@ int run_render(const RenderArgs& a) {
     std::cout << text;
   else
     write_file_atomically(a.output, text);
+  if (a.timings) {
+    auto t_end = Clock::now();
+    auto sec = [](auto d) { return std::chrono::duration<double>(d).count(); };
+    std::size_t tris = 0;
+    for (const Polyhedron* p : polys) tris += p->num_faces();
+    std::cerr << std::fixed;
+    std::cerr.precision(3);
+    std::cerr << "timings: faces " << tris << ", load " << sec(t_loaded - t_start) << " s, setup " << result.stats.setup_seconds
+              << " s, intersections " << result.stats.intersections_seconds << " s, visibility " << result.stats.visibility_seconds
+              << " s, solve total " << sec(t_solved - t_loaded) << " s, output " << sec(t_end - t_solved) << " s, segments "
+              << result.segments.size() << ", exact comparisons " << result.stats.comparisons_exact << "/" << result.stats.comparisons
+              << "\n";
+  }
   return 0;
 }
 
@@ -139,8 +180,15 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--target", a->target, "Perspective: the point looked at (default: centre of the scene's bounding box)");
   cmd->add_option("--up", a->up, "Up direction X,Y,Z (default 0,1,0, or 0,0,1 when looking along y)");
   cmd->add_option("--hidden", a->hidden, "none or dashed (default none)")->check(CLI::IsMember({"none", "dashed"}));
-  cmd->add_option("--edges", a->edges, "feature (default: leave out edges between coplanar faces) or all")
+  cmd->add_option("--edges", a->edges,
+                  "feature (default: boundaries, silhouettes, creases over --crease, intersection lines) or all (every mesh edge)")
       ->check(CLI::IsMember({"all", "feature"}));
+  cmd->add_option("--crease", a->crease, "Crease threshold in degrees between face normals (default 30; 0 keeps every edge between non-coplanar faces)");
+  cmd->add_option("--method", a->method,
+                  "faces (default: per-face occluders, any mesh) or roberts (the course's algorithm on convex bodies)")
+      ->check(CLI::IsMember({"faces", "roberts"}));
+  cmd->add_option("--threads", a->threads, "Threads for the visibility stage (default: all cores)");
+  cmd->add_flag("--timings", a->timings, "Print the time of each stage to standard error");
   cmd->add_option("--clip", a->clip,
                   "Clip the drawing to box:XMIN,XMAX,YMIN,YMAX,ZMIN,ZMAX, frustum:XL,XR,YB,YT,ZNEAR,ZFAR,ZCP or a convex mesh file");
   cmd->add_option("--near", a->near,

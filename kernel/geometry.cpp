@@ -1,6 +1,8 @@
 // Exact constructions on points, vectors and planes (see geometry.hpp).
 #include "kernel/geometry.hpp"
 
+#include <cmath>
+
 #include "kernel/int128.hpp"
 
 #include <CGAL/Interval_nt.h>
@@ -14,6 +16,16 @@
 namespace hlr {
 
 Bounds bounds_of(const Rational& q) {
+  // Fast path: numerator and denominator exact in doubles; IEEE division is correctly rounded,
+  // so the quotient is within one unit in the last place (exact for integers).
+  const mpz_class& n = q.get_num();
+  const mpz_class& d = q.get_den();
+  if (mpz_sizeinbase(n.get_mpz_t(), 2) <= 53 && mpz_sizeinbase(d.get_mpz_t(), 2) <= 53) {
+    double x = n.get_d(), y = d.get_d();
+    if (y == 1) return {x, x};
+    double v = x / y;
+    return {std::nextafter(v, -HUGE_VAL), std::nextafter(v, HUGE_VAL)};
+  }
   std::pair<double, double> iv = CGAL::to_interval(q);
   return {iv.first, iv.second};
 }

@@ -23,19 +23,35 @@ Polyhedron::Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces)
                                                  std::to_string(v) + ", but there are only " +
                                                  std::to_string(nv) + " vertices");
   }
-  for (const auto& f : faces_)
-    for (std::size_t i = 0; i < f.size(); ++i) {
-      int a = f[i], b = f[(i + 1) % f.size()];
-      if (a != b) edges_.push_back({std::min(a, b), std::max(a, b)});
-    }
-  std::sort(edges_.begin(), edges_.end());
-  edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
-  build_mesh();
 }
 
-void Polyhedron::build_mesh() {
+const std::vector<std::pair<int, int>>& Polyhedron::edges() const {
+  if (!edges_done_) {
+    for (const auto& f : faces_)
+      for (std::size_t i = 0; i < f.size(); ++i) {
+        int a = f[i], b = f[(i + 1) % f.size()];
+        if (a != b) edges_.push_back({std::min(a, b), std::max(a, b)});
+      }
+    std::sort(edges_.begin(), edges_.end());
+    edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
+    edges_done_ = true;
+  }
+  return edges_;
+}
+
+const Mesh& Polyhedron::mesh() const {
+  if (!mesh_) build_mesh();
+  return *mesh_;
+}
+
+const std::vector<int>& Polyhedron::refused_faces() const {
+  if (!mesh_) build_mesh();
+  return refused_;
+}
+
+void Polyhedron::build_mesh() const {
   mesh_ = std::make_shared<Mesh>();
-  mesh_->reserve(vertices_.size(), edges_.size(), faces_.size());
+  mesh_->reserve(vertices_.size(), edges().size(), faces_.size());
   for (const Point3& p : vertices_)
     mesh_->add_vertex(Mesh::Point(to_double(p.x()), to_double(p.y()), to_double(p.z())));
   // add_face only logs on failure; silence the log and record the refused faces instead.
@@ -70,7 +86,7 @@ const std::vector<Plane>& Polyhedron::planes() const {
 const MeshReport& Polyhedron::report() const {
   if (!report_) {
     report_ = std::make_shared<MeshReport>(check_mesh(vertices_, faces_, planes()));
-    report_->refused_faces = refused_;
+    report_->refused_faces = refused_faces();
   }
   return *report_;
 }

@@ -45,8 +45,8 @@ class Polyhedron {
   const std::vector<Face>& faces() const { return faces_; }
   std::size_t num_vertices() const { return vertices_.size(); }
   std::size_t num_faces() const { return faces_.size(); }
-  /// Undirected edges (i < j), sorted, each once.
-  const std::vector<std::pair<int, int>>& edges() const { return edges_; }
+  /// Undirected edges (i < j), sorted, each once. Computed on first use (not thread-safe then).
+  const std::vector<std::pair<int, int>>& edges() const;
 
   /// Exact plane of each face (Newell normal, oriented by the face's vertex order: a face
   /// listed counter-clockwise seen from outside gets an outward normal). Degenerate (zero
@@ -57,22 +57,24 @@ class Polyhedron {
   const MeshReport& report() const;
 
   /// The OpenMesh mesh: vertex i is handle i, face f is handle f when no face was refused.
-  const Mesh& mesh() const { return *mesh_; }
+  /// Built on first use (the per-face route never needs it); not thread-safe on that call.
+  const Mesh& mesh() const;
   /// Faces that OpenMesh's add_face refused (non-manifold or inconsistently oriented), in
   /// order. Never dropped silently: report() names them too.
-  const std::vector<int>& refused_faces() const { return refused_; }
+  const std::vector<int>& refused_faces() const;
 
   /// The same polyhedron with every face's vertex order reversed.
   Polyhedron reversed() const;
 
  private:
-  void build_mesh();
+  void build_mesh() const;
 
   std::vector<Point3> vertices_;
   std::vector<Face> faces_;
-  std::vector<std::pair<int, int>> edges_;
-  std::shared_ptr<Mesh> mesh_;
-  std::vector<int> refused_;
+  mutable std::vector<std::pair<int, int>> edges_;
+  mutable bool edges_done_ = false;
+  mutable std::shared_ptr<Mesh> mesh_;
+  mutable std::vector<int> refused_;
   mutable std::vector<Plane> planes_;
   mutable bool planes_done_ = false;
   mutable std::shared_ptr<MeshReport> report_;

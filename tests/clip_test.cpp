@@ -106,8 +106,7 @@ TEST(CyrusBeckDegenerate, SinglePointIsReportedAndDrawnAsNothing) {
   EXPECT_EQ(r.t_lower, Q("1/2"));
   EXPECT_EQ(r.t_upper, Q("1/2"));
   Segment s;
-  s.from = P("-1", "1", "1");
-  s.to = P("1", "3", "1");
+  s.set_ends(P("-1", "1", "1"), P("1", "3", "1"));
   s.pieces = {Piece{0, 1, true, false, false}};
   clip_pieces(s, box);
   ASSERT_EQ(s.pieces.size(), 1u);
@@ -127,8 +126,7 @@ TEST(CyrusBeckDegenerate, NonConvexClipperNamesAFace) {
 TEST(CyrusBeck, ClipPiecesKeepsKindsInsideAndCoversTheSegment) {
   ConvexClipper box = box_clipper(0, 2, 0, 2, 0, 2);
   Segment s;
-  s.from = P("-2", "1", "1");
-  s.to = P("2", "1", "1");  // inside for t in [1/2, 1]
+  s.set_ends(P("-2", "1", "1"), P("2", "1", "1"));  // inside for t in [1/2, 1]
   s.pieces = {Piece{0, Q("3/4"), true, false, false}, Piece{Q("3/4"), 1, false, false, false}};
   clip_pieces(s, box);
   ASSERT_EQ(s.pieces.size(), 3u);

@@ -147,7 +147,7 @@ void check_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, EdgeS
         }
         if (hidden == p.visible) {
           ++tally.disagreements;
-          ADD_FAILURE() << "piece of segment " << s.from << "-" << s.to << " t " << p.t0 << ".." << p.t1
+          ADD_FAILURE() << "piece of segment " << s.from() << "-" << s.to() << " t " << p.t0 << ".." << p.t1
                         << " says visible=" << p.visible;
         }
       }

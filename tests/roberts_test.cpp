@@ -123,7 +123,7 @@ TEST(Roberts, PenetratingBarHasItsJunctionRectangles) {
     if (seg.kind == Segment::Kind::Intersection) {
       EXPECT_EQ(seg.body, 0);
       EXPECT_EQ(seg.body2, 1);
-      got.insert({std::min(seg.from, seg.to), std::max(seg.from, seg.to)});
+      got.insert({std::min(seg.from(), seg.to()), std::max(seg.from(), seg.to())});
     }
   std::set<std::pair<Point3, Point3>> want;
   for (const char* y : {"0", "2"}) {
@@ -137,12 +137,12 @@ TEST(Roberts, PenetratingBarHasItsJunctionRectangles) {
   // rectangle is hidden by the block; on y = 2 the bar hides the far-side pieces of its own
   // junction (rays enter the bar) except the edges nearest the viewer.
   for (const Segment& seg : r.segments)
-    if (seg.kind == Segment::Kind::Intersection && seg.from.y() == 0) {
+    if (seg.kind == Segment::Kind::Intersection && seg.from().y() == 0) {
       EXPECT_TRUE(fully(seg, false));
     }
   int visible_on_y2 = 0;
   for (const Segment& seg : r.segments)
-    if (seg.kind == Segment::Kind::Intersection && seg.from.y() == 2) visible_on_y2 += fully(seg, true);
+    if (seg.kind == Segment::Kind::Intersection && seg.from().y() == 2) visible_on_y2 += fully(seg, true);
   EXPECT_EQ(visible_on_y2, 2);  // x = 2 and z = 3/2 sides: the bar does not cover them
   // The bar's top right edge (2,-1,3/2)-(2,3,3/2) is hidden inside the block (y in (0, 2)) and
   // before it, where its rays still enter the block's face y = 0 below the block's top z = 2:

@@ -1,0 +1,104 @@
+// Generates test and benchmark meshes as OFF with decimal coordinates (7 places, so the exact
+// value of each coordinate is the decimal the file shows):
+//   gen_mesh sphere F   geodesic icosphere, 20·F² triangles (F = 22: 9,680; 71: 100,820; 224: 1,003,520)
+//   gen_mesh torus N M  torus with N x M quads split into 2·N·M triangles
+// Writes to standard output.
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <algorithm>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace {
+
+using P = std::array<double, 3>;
+
+void write(const std::vector<P>& v, const std::vector<std::array<int, 3>>& f) {
+  std::printf("OFF\n%zu %zu 0\n", v.size(), f.size());
+  for (const P& p : v) std::printf("%.7f %.7f %.7f\n", p[0], p[1], p[2]);
+  for (const auto& t : f) std::printf("3 %d %d %d\n", t[0], t[1], t[2]);
+}
+
+P unit(P p) {
+  double l = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+  return {p[0] / l, p[1] / l, p[2] / l};
+}
+
+void sphere(int F) {
+  const double t = (1 + std::sqrt(5.0)) / 2;
+  std::vector<P> ico = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                        {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  const int faces[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                            {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                            {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  std::vector<P> v;
+  std::vector<std::array<int, 3>> f;
+  // Shared points are keyed by their barycentric position on the icosahedron's edges/vertices.
+  std::map<std::array<int, 6>, int> id;
+  auto point = [&](int a, int b, int c, int i, int j) {
+    int k = F - i - j;  // weights i on a, j on b, k on c
+    std::array<std::pair<int, int>, 3> w = {{{a, i}, {b, j}, {c, k}}};
+    std::array<int, 6> key{-1, 0, -1, 0, -1, 0};
+    int n = 0;
+    std::sort(w.begin(), w.end());
+    for (auto& [vv, ww] : w)
+      if (ww > 0) key[2 * n] = vv, key[2 * n + 1] = ww, ++n;
+    auto it = id.find(key);
+    if (it != id.end()) return it->second;
+    P p{0, 0, 0};
+    for (auto& [vv, ww] : w)
+      for (int d = 0; d < 3; ++d) p[d] += ico[vv][d] * ww / F;
+    v.push_back(unit(p));
+    return id[key] = static_cast<int>(v.size()) - 1;
+  };
+  for (auto& fc : faces) {
+    int a = fc[0], b = fc[1], c = fc[2];
+    for (int i = 0; i < F; ++i)
+      for (int j = 0; j < F - i; ++j) {
+        int p0 = point(a, b, c, F - i - j, j), p1 = point(a, b, c, F - i - j - 1, j + 1), p2 = point(a, b, c, F - i - j - 1, j);
+        f.push_back({p0, p1, p2});
+        if (i + j + 1 < F) {
+          int p3 = point(a, b, c, F - i - j - 2, j + 1);
+          f.push_back({p1, p3, p2});
+        }
+      }
+  }
+  write(v, f);
+}
+
+void torus(int N, int M) {
+  std::vector<P> v;
+  std::vector<std::array<int, 3>> f;
+  const double R = 1, r = 0.4;
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < M; ++j) {
+      double u = 2 * M_PI * i / N, w = 2 * M_PI * j / M;
+      v.push_back({(R + r * std::cos(w)) * std::cos(u), (R + r * std::cos(w)) * std::sin(u), r * std::sin(w)});
+    }
+  auto at = [&](int i, int j) { return (i % N) * M + (j % M); };
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < M; ++j) {
+      f.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      f.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  write(v, f);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string what = argc > 1 ? argv[1] : "";
+  if (what == "sphere" && argc == 3) {
+    sphere(std::atoi(argv[2]));
+    return 0;
+  }
+  if (what == "torus" && argc == 4) {
+    torus(std::atoi(argv[2]), std::atoi(argv[3]));
+    return 0;
+  }
+  std::fprintf(stderr, "usage: gen_mesh sphere F | gen_mesh torus N M\n");
+  return 2;
+}
