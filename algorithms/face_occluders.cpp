@@ -105,6 +105,7 @@ struct Occluder {
   typename P::V c[4];  // constraint k: m[k]·X - c[k] > 0 (or >= 0 when closed[k])
   bool closed[4] = {false, false, false, false};
   int body, face;
+  std::array<int, 3> v;  // global vertex ids, oriented toward the viewer (side k+1: v[k] -> v[k+1])
 };
 
 struct Box {
@@ -413,7 +414,33 @@ class Engine {
     return third >= 0;
   }
 
+  // A vertex hides the sight line just behind it when every face around it faces the viewer
+  // (solid: all front, so the surface is locally a graph over the image with material behind;
+  // open surface: all one way and not on the boundary, so the ray crosses it). Faces that are
+  // edge-on or turn away around a vertex: not closed (a ray along the boundary).
+  void vertex_rules() {
+    // 0 unset, 1 all facing, 2 all non-facing, 3 mixed or edge-on or boundary.
+    std::vector<char> state(X_.size(), 0);
+    auto mark = [&](int g, char st) {
+      char& x = state[g];
+      x = (x == 0 || x == st) ? st : 3;
+    };
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      const auto& faces = bodies_[b]->faces();
+      for (std::size_t f = 0; f < faces.size(); ++f) {
+        int fs = facing_[b][f];
+        char st = degenerate_[b][f] || fs == 0 ? 3 : (fs > 0 ? 1 : (solid_[b] ? 3 : 2));
+        for (int v : faces[f]) mark(voff_[b] + v, st);
+      }
+      for (const BodyEdge& e : edges_[b])
+        if (e.uses.size() != 2) mark(voff_[b] + e.u, 3), mark(voff_[b] + e.v, 3);
+    }
+    vertex_closed_.resize(X_.size());
+    for (std::size_t g = 0; g < X_.size(); ++g) vertex_closed_[g] = state[g] == 1 || state[g] == 2;
+  }
+
   void build_occluders() {
+    vertex_rules();
     occ_.reserve(tris_.size() / 2 + 1);
     std::vector<Box> boxes;
     std::vector<char> always;
@@ -436,6 +463,7 @@ class Engine {
       Occluder<P> o;
       o.body = b;
       o.face = t.face;
+      o.v = t.v;
       Vec<P> n = normal(t);
       // Constraint 0: strictly behind the plane: -n·(X - a) > 0.
       o.m[0] = neg<P>(n);
@@ -879,13 +907,17 @@ class Engine {
     ++wk.c.pairs;
     bool has_lo = false, has_hi = false;
     Frac<P> lo{V(0), V(1), 0.0}, hi{V(1), V(1), 1.0};
+    int on_side = 0;  // bit k: the segment lies in side plane k (closed)
     for (int k = 0; k < 4; ++k) {
       V f0 = dot<P>(o.m[k], X0) - o.c[k];
       V f1 = dot<P>(o.m[k], X1) - o.c[k];
       int s0 = P::sign(f0), s1 = P::sign(f1);
       if (s0 > 0 && s1 > 0) continue;
       if (s0 <= 0 && s1 <= 0) {
-        if (o.closed[k] && s0 == 0 && s1 == 0) continue;
+        if (o.closed[k] && s0 == 0 && s1 == 0) {
+          on_side |= 1 << k;
+          continue;
+        }
         return;
       }
       if (s0 > 0) {  // upper bound t < f0 / (f0 - f1)
@@ -899,6 +931,11 @@ class Engine {
         if (!has_lo || compare(r, lo, wk.c) > 0) lo = r, has_lo = true;
       }
     }
+    // In two side planes: the segment runs along the sight line through their common vertex
+    // (an edge seen end-on); hidden only where the ray just behind that vertex is inside.
+    if (on_side == 6 && !vertex_closed_[o.v[1]]) return;
+    if (on_side == 12 && !vertex_closed_[o.v[2]]) return;
+    if (on_side == 10 && !vertex_closed_[o.v[0]]) return;
     if (has_lo && has_hi && compare(lo, hi, wk.c) >= 0) return;
     wk.spans.push_back({lo, hi});
   }
@@ -928,6 +965,7 @@ class Engine {
                      std::vector<std::pair<Rational, Rational>>& out, Work& wk) const {
     ++wk.c.pairs;
     Rational lo = 0, hi = 1;
+    int on_side = 0;
     for (int k = 0; k < 4; ++k) {
       Rational f0 = -Rational(P::z(o.c[k])), f1 = f0;
       for (int j = 0; j < 3; ++j) {
@@ -938,13 +976,19 @@ class Engine {
       int s0 = sgn(f0), s1 = sgn(f1);
       if (s0 > 0 && s1 > 0) continue;
       if (s0 <= 0 && s1 <= 0) {
-        if (o.closed[k] && s0 == 0 && s1 == 0) continue;
+        if (o.closed[k] && s0 == 0 && s1 == 0) {
+          on_side |= 1 << k;
+          continue;
+        }
         return;
       }
       Rational t = f0 / (f0 - f1);
       if (s0 > 0) hi = std::min(hi, t);
       else lo = std::max(lo, t);
     }
+    if (on_side == 6 && !vertex_closed_[o.v[1]]) return;
+    if (on_side == 12 && !vertex_closed_[o.v[2]]) return;
+    if (on_side == 10 && !vertex_closed_[o.v[0]]) return;
     if (lo < hi) out.push_back({lo, hi});
   }
 
@@ -971,6 +1015,7 @@ class Engine {
   double margin_ = 0;
   std::vector<std::array<double, 3>> vproj_;
   std::vector<char> vfront_;
+  std::vector<char> vertex_closed_;
   std::vector<std::array<int, 2>> gv_;  // global vertex ids of each segment's ends (-1: rational ends)
 };
 
