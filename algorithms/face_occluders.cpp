@@ -308,6 +308,21 @@ class Engine {
       for (std::size_t i = first_tri; i < tris_.size(); ++i)
         volume6 += dot<P>(X_[tris_[i].v[0]], cross<P>(X_[tris_[i].v[1]], X_[tris_[i].v[2]]));
     solid_[b] = closed && P::sign(volume6) != 0;
+    if (!solid_[b]) {
+      std::string why = "has zero volume";
+      for (const BodyEdge& e : edges_[b])
+        if (e.uses.size() != 2 || e.uses[0].forward == e.uses[1].forward) {
+          why = e.uses.size() == 1   ? "is open (edge " + std::to_string(e.u) + "-" + std::to_string(e.v) + " is in one face)"
+                : e.uses.size() != 2 ? "is not manifold (edge " + std::to_string(e.u) + "-" + std::to_string(e.v) + " is in " +
+                                           std::to_string(e.uses.size()) + " faces)"
+                                     : "is not consistently oriented (edge " + std::to_string(e.u) + "-" + std::to_string(e.v) + ")";
+          break;
+        }
+      res.notes.push_back({b, "body " + std::to_string(b) + " " + why + ": drawn as a surface (hidden where a sight ray crosses it)"});
+    }
+    if (solid_[b] && cam_.perspective && eye_inside(static_cast<int>(first_tri)))
+      throw RobertsError(b, "body " + std::to_string(b) + " contains the eye " + to_string(cam_.eye) +
+                                ": an eye inside a solid sees nothing");
     if (solid_[b] && P::sign(volume6) < 0) {  // inside out: turn it
       for (std::size_t i = first_tri; i < tris_.size(); ++i) flip(tris_[i]);
       for (int& s : facing) s = -s;
@@ -363,6 +378,33 @@ class Engine {
       E.push_back(std::move(e));
       i = j;
     }
+  }
+
+  // Parity of the crossings of a ray from the eye with the body's triangles (from `first`
+  // on), exactly; a ray through an edge or a vertex is replaced by the next direction.
+  bool eye_inside(int first) const {
+    static const int dirs[][3] = {{7, 3, 5}, {2, 11, 3}, {-13, 1, 7}, {5, -9, 2}, {1, 4, -11}, {-3, -5, 8}, {17, 6, -1}, {-2, 3, -19}};
+    for (const auto& dd : dirs) {
+      Vec<P> d{C(dd[0]), C(dd[1]), C(dd[2])};
+      bool degenerate = false;
+      int crossings = 0;
+      for (std::size_t i = first; i < tris_.size() && tris_[i].body == tris_[first].body && !degenerate; ++i) {
+        const Tri& t = tris_[i];
+        Vec<P> a = sub<P>(X_[t.v[0]], view_), b = sub<P>(X_[t.v[1]], view_), c = sub<P>(X_[t.v[2]], view_);
+        int o1 = P::sign(dot<P>(a, cross<P>(b, d))), o2 = P::sign(dot<P>(b, cross<P>(c, d))), o3 = P::sign(dot<P>(c, cross<P>(a, d)));
+        if (!((o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0))) continue;  // the line misses it
+        if (o1 == 0 || o2 == 0 || o3 == 0) {
+          degenerate = true;  // through an edge or a vertex (or in its plane)
+          break;
+        }
+        Vec<P> n = normal(t);
+        int sa = P::sign(dot<P>(n, a)), sd = P::sign(dot<P>(n, d));
+        if (sa == 0) return false;  // the eye lies on the surface: not inside
+        if (sa == sd) ++crossings;  // the crossing is ahead of the eye
+      }
+      if (!degenerate) return crossings % 2 == 1;
+    }
+    return false;
   }
 
   template <class T>

@@ -113,6 +113,8 @@ struct RobertsResult {
   std::vector<BodyMatrix> matrices;
   std::vector<Segment> segments;
   RobertsStats stats;
+  /// Remarks for the user, each "body N ..." (e.g. a body drawn as an open surface).
+  std::vector<std::pair<int, std::string>> notes;
 };
 
 /// Thrown for a body Roberts' algorithm cannot take (not a valid solid, not convex) or a bad

@@ -120,12 +120,20 @@ int run_render(const RenderArgs& a) {
     return 1;
   }
   // Degenerate but drawable views get a note, never a wrong picture.
+  for (const auto& [i, note] : result.notes) {
+    std::string msg = note, prefix = "body " + std::to_string(i);
+    if (msg.rfind(prefix, 0) == 0) msg = "body '" + bodies[i]->name + "'" + msg.substr(prefix.size());
+    std::cerr << "hlr render: note: " << bodies[i]->source << ": " << msg << "\n";
+  }
   if (camera.perspective)
-    for (std::size_t i = 0; i < result.facing.size(); ++i)
+    for (std::size_t i = 0; i < result.facing.size(); ++i) {
+      std::size_t count = 0;
       for (std::size_t f = 0; f < result.facing[i].size(); ++f)
-        if (result.facing[i][f] == 0)
+        if (result.facing[i][f] == 0 && ++count <= 3)
           std::cerr << "hlr render: note: the eye lies in the plane of face " << f << " of body '" << bodies[i]->name
                     << "': that face is seen edge-on\n";
+      if (count > 3) std::cerr << "hlr render: note: ... and " << count - 3 << " more faces of body '" << bodies[i]->name << "'\n";
+    }
   // Clipping: the near plane (perspective) and the clipping volume, exactly, in world space.
   Rational near;
   try {

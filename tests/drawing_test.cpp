@@ -52,7 +52,7 @@ TEST(Json, SchemaAndExactCoordinates) {
   bool saw_intersection = false, saw_fraction = false;
   for (const auto& s : j["segments"]) {
     ASSERT_TRUE(s.contains("kind") && s.contains("visible") && s.contains("from") && s.contains("to"));
-    if (s["kind"] == "edge") {
+    if (s["kind"] == "edge" || s["kind"] == "crease" || s["kind"] == "silhouette") {
       ASSERT_TRUE(s["body"].is_number_integer());
       ASSERT_EQ(s["edge"].size(), 2u);
     } else {
@@ -71,7 +71,7 @@ TEST(Json, SchemaAndExactCoordinates) {
   // The pieces of one edge are listed in order and cover it: consecutive, from t 0 to 1.
   std::string prev_end;
   for (const auto& s : j["segments"]) {
-    if (s["kind"] != "edge" || s["body"] != 1 || s["edge"] != nlohmann::json({1 | 4, 1 | 2 | 4})) continue;
+    if (s["kind"] == "intersection" || s["body"] != 1 || s["edge"] != nlohmann::json({1 | 4, 1 | 2 | 4})) continue;
     if (prev_end.empty()) EXPECT_EQ(s["t"][0], "0");
     else EXPECT_EQ(s["t"][0], prev_end);
     prev_end = s["t"][1];
@@ -98,7 +98,10 @@ TEST(Svg, GroupsViewBoxAndDeterminism) {
   EXPECT_NE(a.find("<g id=\"visible\""), std::string::npos);
   EXPECT_NE(a.find("<g id=\"hidden\""), std::string::npos);
   EXPECT_NE(a.find("stroke-dasharray"), std::string::npos);
-  EXPECT_NE(a.find("<g id=\"visible-body-0\" data-name=\"base\">"), std::string::npos);
+  // One group per line kind inside visible and hidden, one per body (or pair) inside those.
+  EXPECT_NE(a.find("<g id=\"visible-crease\">"), std::string::npos);
+  EXPECT_NE(a.find("<g id=\"visible-silhouette\">"), std::string::npos);
+  EXPECT_NE(a.find("<g id=\"visible-silhouette-body-0\" data-name=\"base\">"), std::string::npos);
   EXPECT_NE(a.find("<g id=\"hidden-intersection-0-2\">"), std::string::npos);
   o.hidden_dashed = false;
   std::string b = to_svg(r.names, r.result, r.camera, o);

@@ -116,12 +116,15 @@ void check(const Polyhedron& body, const Camera& cam, const Oracle& oracle, Tall
   }
 }
 
-std::string corpus_file(const std::string& name) { return std::string(HLR_CORPUS_DIR) + "/" + name + ".off"; }
+std::string corpus_file(const std::string& name) {
+  if (name.rfind("data:", 0) == 0) return std::string(HLR_DATA_DIR) + "/" + name.substr(5) + ".off";
+  return std::string(HLR_CORPUS_DIR) + "/" + name + ".off";
+}
 
 }  // namespace
 
 TEST(MeshOracle, CgalMeshesAgreeWithExactRayCasting) {
-  const std::vector<std::string> names = {"cross", "joint", "part", "tripod", "u", "couplingdown"};
+  const std::vector<std::string> names = {"cross", "joint", "part", "tripod", "u", "couplingdown", "data:frame", "data:l_prism"};
   Tally tally;
   for (const std::string& name : names) {
     std::string path = corpus_file(name);

@@ -2,14 +2,18 @@
 // of every piece against every body's face planes, sharing no code with the algorithm (it
 // builds its own planes from the triangles and solves its own one-variable inequalities).
 // Random scenes of random convex bodies (convex hulls of random rational points, built with
-// CGAL), orthographic and perspective: zero disagreements.
+// CGAL), orthographic and perspective: zero disagreements. The per-face route (issue 4) runs on
+// the same scenes: the same oracle, and exactly the same pieces for every edge.
 #include <gtest/gtest.h>
 
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 
+#include <map>
 #include <random>
+#include <tuple>
 
+#include "algorithms/face_occluders.hpp"
 #include "algorithms/roberts.hpp"
 #include "io/scene.hpp"
 #include "kernel/epeck_bridge.hpp"
@@ -100,27 +104,12 @@ Polyhedron random_hull(std::mt19937& rng, int cx, int cy, int cz) {
 }
 
 struct Tally {
-  long samples = 0, disagreements = 0, scenes = 0, junctions = 0, hidden_samples = 0, isolated_points = 0;
+  long samples = 0, disagreements = 0, scenes = 0, junctions = 0, hidden_samples = 0, isolated_points = 0, route_mismatches = 0;
 };
 
-void check_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, EdgeSelection edges, Tally& tally) {
-  std::vector<const Polyhedron*> ptrs;
-  std::vector<std::vector<OraclePlane>> planes;
-  for (const auto& b : bodies) {
-    ptrs.push_back(&b);
-    planes.push_back(oracle_planes(b));
-  }
-  RobertsOptions opt;
-  opt.edges = edges;
-  RobertsResult r;
-  try {
-    r = roberts(ptrs, cam, opt);
-  } catch (const RobertsError&) {
-    return;  // a degenerate hull or an eye inside: not a scene for this test
-  }
-  ++tally.scenes;
+void sample_check(const RobertsResult& r, const std::vector<std::vector<OraclePlane>>& planes, const Camera& cam, Tally& tally,
+                  const char* route) {
   for (const Segment& s : r.segments) {
-    if (s.kind == Segment::Kind::Intersection) ++tally.junctions;
     for (const Piece& p : s.pieces) {
       if (p.behind_eye) continue;
       for (Rational f : {Rational(1, 2), Rational(1, 4), Rational(3, 4)}) {
@@ -147,11 +136,65 @@ void check_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, EdgeS
         }
         if (hidden == p.visible) {
           ++tally.disagreements;
-          ADD_FAILURE() << "piece of segment " << s.from() << "-" << s.to() << " t " << p.t0 << ".." << p.t1
+          ADD_FAILURE() << route << ": piece of segment " << s.from() << "-" << s.to() << " t " << p.t0 << ".." << p.t1
                         << " says visible=" << p.visible;
         }
       }
     }
+  }
+}
+
+// Roberts' route and the per-face route (issue 4) on the same convex scene: the oracle checks
+// both, and every edge must come out in exactly the same pieces.
+void check_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, EdgeSelection edges, Tally& tally) {
+  std::vector<const Polyhedron*> ptrs;
+  std::vector<std::vector<OraclePlane>> planes;
+  for (const auto& b : bodies) {
+    ptrs.push_back(&b);
+    planes.push_back(oracle_planes(b));
+  }
+  RobertsOptions opt;
+  opt.edges = edges;
+  RobertsResult r;
+  try {
+    r = roberts(ptrs, cam, opt);
+  } catch (const RobertsError&) {
+    return;  // a degenerate hull or an eye inside: not a scene for this test
+  }
+  ++tally.scenes;
+  for (const Segment& s : r.segments)
+    if (s.kind == Segment::Kind::Intersection) ++tally.junctions;
+  sample_check(r, planes, cam, tally, "roberts");
+  LineOptions lo;
+  lo.edges = edges;
+  RobertsResult f = face_occluders(ptrs, cam, lo);
+  sample_check(f, planes, cam, tally, "faces");
+  std::map<std::tuple<int, int, int>, const Segment*> by_edge;
+  for (const Segment& s : f.segments)
+    if (s.kind == Segment::Kind::Edge) by_edge[{s.body, s.v0, s.v1}] = &s;
+  std::size_t edges_r = 0;
+  for (const Segment& s : r.segments) {
+    if (s.kind != Segment::Kind::Edge) continue;
+    ++edges_r;
+    auto it = by_edge.find({s.body, s.v0, s.v1});
+    if (it == by_edge.end()) {
+      ++tally.route_mismatches;
+      ADD_FAILURE() << "edge " << s.v0 << "-" << s.v1 << " of body " << s.body << " missing from the per-face route";
+      continue;
+    }
+    const Segment& g = *it->second;
+    bool same = g.pieces.size() == s.pieces.size();
+    for (std::size_t i = 0; same && i < s.pieces.size(); ++i)
+      same = g.pieces[i].t0 == s.pieces[i].t0 && g.pieces[i].t1 == s.pieces[i].t1 && g.pieces[i].visible == s.pieces[i].visible &&
+             g.pieces[i].behind_eye == s.pieces[i].behind_eye;
+    if (!same) {
+      ++tally.route_mismatches;
+      ADD_FAILURE() << "edge " << s.from() << "-" << s.to() << " of body " << s.body << ": the routes split it differently";
+    }
+  }
+  if (edges_r != by_edge.size()) {
+    ++tally.route_mismatches;
+    ADD_FAILURE() << "roberts draws " << edges_r << " edges, the per-face route " << by_edge.size();
   }
 }
 
@@ -183,6 +226,7 @@ TEST(RobertsOracle, RandomConvexHullScenesAgreeWithRayCasting) {
   EXPECT_GT(tally.hidden_samples, tally.samples / 10);  // the scenes do hide things
   EXPECT_GT(tally.junctions, 50);                        // and interpenetrate
   EXPECT_EQ(tally.disagreements, 0);
+  EXPECT_EQ(tally.route_mismatches, 0);
 }
 
 TEST(RobertsOracle, AxisViewsOfTouchingAndStackedBoxes) {
@@ -201,4 +245,5 @@ TEST(RobertsOracle, AxisViewsOfTouchingAndStackedBoxes) {
   EXPECT_EQ(tally.scenes, 10);
   EXPECT_GT(tally.isolated_points, 0);  // the scene is built to have them
   EXPECT_EQ(tally.disagreements, 0);
+  EXPECT_EQ(tally.route_mismatches, 0);
 }

@@ -1,0 +1,237 @@
+// The per-face route (algorithms/face_occluders.hpp, issue 4): exact pieces on hand-made
+// scenes for each degenerate case by name (axis views, a ray leaving a solid exactly through
+// an edge, holes, open surfaces, intersection lines, crease thresholds) and the line kinds.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "algorithms/crease_angle.hpp"
+#include "algorithms/face_occluders.hpp"
+#include "io/mesh_reader.hpp"
+
+using namespace hlr;
+
+namespace {
+const std::string kData = HLR_DATA_DIR;
+Rational Q(const char* s) { return parse_rational(s); }
+Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
+
+Polyhedron box(const char* x0, const char* y0, const char* z0, const char* x1, const char* y1, const char* z1) {
+  return make_box(P(x0, y0, z0), P(x1, y1, z1));
+}
+
+RobertsResult run(const std::vector<const Polyhedron*>& bodies, const Camera& c, EdgeSelection e = EdgeSelection::All,
+                  const char* crease = "30") {
+  LineOptions o;
+  o.edges = e;
+  o.crease_degrees = Q(crease);
+  RobertsResult r = face_occluders(bodies, c, o);
+  for (const Segment& s : r.segments) {  // pieces partition [0, 1]
+    EXPECT_EQ(s.pieces.front().t0, 0);
+    EXPECT_EQ(s.pieces.back().t1, 1);
+    for (std::size_t i = 1; i < s.pieces.size(); ++i) EXPECT_EQ(s.pieces[i - 1].t1, s.pieces[i].t0);
+  }
+  return r;
+}
+
+const Segment* find_edge(const RobertsResult& r, int body, int a, int b) {
+  for (const Segment& s : r.segments)
+    if (s.kind == Segment::Kind::Edge && s.body == body && s.v0 == std::min(a, b) && s.v1 == std::max(a, b)) return &s;
+  return nullptr;
+}
+
+const Segment& edge(const RobertsResult& r, int body, int a, int b) {
+  const Segment* s = find_edge(r, body, a, b);
+  if (!s) throw std::runtime_error("no such edge");
+  return *s;
+}
+
+bool visible_at(const Segment& s, const Rational& t) {
+  for (const Piece& p : s.pieces)
+    if (p.t0 < t && t < p.t1) return p.visible;
+  throw std::runtime_error("t on a piece boundary");
+}
+
+// "v h v" style summary of the pieces with their ends.
+std::string pieces(const Segment& s) {
+  std::string out = "0";
+  for (const Piece& p : s.pieces) out += std::string(p.visible ? " v " : " h ") + to_string(p.t1);
+  return out;
+}
+
+}  // namespace
+
+// Course notes, "Visibility semantics": the cube [0,2]^3 along (1,1,0). Only the vertical edge
+// at x = y = 0 is hidden: its rays enter the cube exactly through the front vertical edge. The
+// top and bottom back edges stay visible (their rays run along edge-on faces).
+TEST(FaceOccluders, CubeAlong110HidesOnlyTheBackVerticalEdge) {
+  Polyhedron cube = box("0", "0", "0", "2", "2", "2");
+  for (EdgeSelection e : {EdgeSelection::All, EdgeSelection::Feature}) {
+    RobertsResult r = run({&cube}, make_orthographic(Vector3(1, 1, 0)), e);
+    ASSERT_EQ(r.segments.size(), 12u);
+    for (const Segment& s : r.segments) {
+      bool back = s.v0 == 0 && s.v1 == 4;  // (0,0,0)-(0,0,2)
+      EXPECT_EQ(pieces(s), back ? "0 h 1" : "0 v 1") << s.v0 << "-" << s.v1;
+    }
+  }
+}
+
+// A ray that leaves a solid exactly through a concave edge whose other face is seen edge-on:
+// the L-prism seen along +y. Behind the concave edge x = 1 the rays pass through the L's lower
+// arm, so the rod's vertical edge exactly behind it is hidden (open prisms alone would miss it).
+TEST(FaceOccluders, ConcaveEdgeHidesWhatIsExactlyBehindIt) {
+  Polyhedron l = load_mesh(kData + "/l_prism.off");
+  Polyhedron rod = box("1", "-2", "1/4", "3", "-1", "3/4");
+  RobertsResult r = run({&l, &rod}, make_orthographic(Vector3(0, 1, 0)));
+  // Rod vertices: bit 0 x, bit 1 y, bit 2 z. Edge 2-6: x = 1, y = -1 (the front left edge).
+  EXPECT_EQ(pieces(edge(r, 1, 2, 6)), "0 h 1");
+  // Its top front edge 6-7 (x from 1 to 3 at y = -1, z = 3/4): hidden behind the L up to x = 2.
+  EXPECT_EQ(pieces(edge(r, 1, 6, 7)), "0 h 1/2 v 1");
+  // The L's own concave edge (3-9) faces the viewer: visible.
+  EXPECT_EQ(pieces(edge(r, 0, 3, 9)), "0 v 1");
+}
+
+// A cube with a cubic hole, seen along z: the rod below shows through the hole only.
+TEST(FaceOccluders, CubeWithCubicHoleShowsWhatIsBelowTheHole) {
+  Polyhedron frame = load_mesh(kData + "/frame.off");
+  Polyhedron rod = box("-1", "7/5", "-2", "4", "8/5", "-1");
+  RobertsResult r = run({&frame, &rod}, make_orthographic(Vector3(0, 0, 1)));
+  EXPECT_EQ(pieces(edge(r, 1, 4, 5)), "0 v 1/5 h 2/5 v 3/5 h 4/5 v 1");  // x = -1 .. 4 at y = 7/5
+  // The inner vertical edges of the hole are seen end-on along the hole's walls: visible.
+  EXPECT_EQ(pieces(edge(r, 0, 4, 12)), "0 v 1");
+  // Seen from below the rod is in front: it hides the frame's bottom edge x = 0 (y from 0 to 3)
+  // where it crosses under it, y in (7/5, 8/5).
+  RobertsResult b = run({&frame, &rod}, make_orthographic(Vector3(0, 0, -1)));
+  EXPECT_EQ(pieces(edge(b, 0, 0, 3)), "0 v 7/15 h 8/15 v 1");
+}
+
+// A torus seen along its axis: the rod below shows through the hole and outside, not under the
+// ring. Coordinates are doubles' exact values (denominators 2^52): the GMP path runs.
+TEST(FaceOccluders, TorusSeenThroughItsHole) {
+  const int N = 24, M = 12;
+  std::vector<Point3> vs;
+  std::vector<Face> fs;
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < M; ++j) {
+      double u = 2 * M_PI * i / N, w = 2 * M_PI * j / M;
+      vs.emplace_back(rational_from_double((1 + 0.4 * std::cos(w)) * std::cos(u)), rational_from_double((1 + 0.4 * std::cos(w)) * std::sin(u)),
+                      rational_from_double(0.4 * std::sin(w)));
+    }
+  auto at = [&](int i, int j) { return (i % N) * M + (j % M); };
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < M; ++j) {
+      fs.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      fs.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  Polyhedron torus(vs, fs);
+  Polyhedron rod = box("-2", "-1/20", "-1", "2", "1/20", "-9/10");
+  RobertsResult r = run({&torus, &rod}, make_orthographic(Vector3(0, 0, 1)));
+  EXPECT_FALSE(r.stats.integer_path);
+  const Segment& top = edge(r, 1, 4, 5);  // x from -2 to 2 at y = -1/20, z = -9/10
+  auto t_of = [](double x) { return rational_from_double((x + 2) / 4); };
+  EXPECT_TRUE(visible_at(top, t_of(0)));      // through the hole
+  EXPECT_FALSE(visible_at(top, t_of(1)));     // under the ring
+  EXPECT_FALSE(visible_at(top, t_of(-1)));
+  EXPECT_TRUE(visible_at(top, t_of(1.8)));    // outside
+  EXPECT_TRUE(visible_at(top, t_of(-1.8)));
+  EXPECT_EQ(top.pieces.size(), 5u);
+}
+
+// Two meshes that interpenetrate get their intersection lines, exactly, once, merged across
+// face diagonals: box B pokes out of box A's face x = 2 in the square y, z in [1/2, 3/2].
+TEST(FaceOccluders, InterpenetratingMeshesGetTheirIntersectionLines) {
+  Polyhedron a = box("0", "0", "0", "2", "2", "2"), b = box("1", "1/2", "1/2", "3", "3/2", "3/2");
+  RobertsResult r = run({&a, &b}, make_orthographic(Vector3(1, Q("1.3"), Q("1.7"))), EdgeSelection::Feature);
+  std::map<std::pair<std::string, std::string>, std::string> got;
+  for (const Segment& s : r.segments)
+    if (s.kind == Segment::Kind::Intersection) {
+      EXPECT_EQ(s.line, LineKind::Intersection);
+      EXPECT_EQ(s.body, 0);
+      EXPECT_EQ(s.body2, 1);
+      got[{to_string(std::min(s.from(), s.to())), to_string(std::max(s.from(), s.to()))}] = pieces(s);
+    }
+  // On A's front face x = 2; the two lines on B's back faces (y = 1/2, z = 1/2) are hidden by
+  // B itself, whose rays run into B.
+  std::map<std::pair<std::string, std::string>, std::string> want = {
+      {{"(2, 1/2, 1/2)", "(2, 1/2, 3/2)"}, "0 h 1"}, {{"(2, 1/2, 1/2)", "(2, 3/2, 1/2)"}, "0 h 1"},
+      {{"(2, 1/2, 3/2)", "(2, 3/2, 3/2)"}, "0 v 1"}, {{"(2, 3/2, 1/2)", "(2, 3/2, 3/2)"}, "0 v 1"}};
+  EXPECT_EQ(got, want);
+  // B's front edge 6-7 (x 1..3 at y = z = 3/2) is inside A up to x = 2.
+  EXPECT_EQ(pieces(edge(r, 1, 6, 7)), "0 h 1/2 v 1");
+}
+
+// An open surface (one square) hides what is behind it and is hidden; its edges are boundaries.
+TEST(FaceOccluders, OpenSquareHidesAndIsHidden) {
+  Polyhedron square({P("1/2", "-1", "3"), P("3/2", "-1", "3"), P("3/2", "3", "3"), P("1/2", "3", "3")}, {{0, 1, 2, 3}});
+  Polyhedron cube = box("0", "0", "0", "2", "2", "2");
+  for (const Vector3& v : {Vector3(0, 0, 1), Vector3(0, 0, -1)}) {
+    RobertsResult r = run({&square, &cube}, make_orthographic(v), EdgeSelection::Feature);
+    for (const Segment& s : r.segments)
+      if (s.body == 0) EXPECT_EQ(s.line, LineKind::Boundary);
+    if (v.z() > 0) {
+      EXPECT_EQ(pieces(edge(r, 1, 6, 7)), "0 v 1/4 h 3/4 v 1");  // the cube's top edge y = 2, x 0..2
+      EXPECT_EQ(pieces(edge(r, 0, 0, 3)), "0 v 1");             // the square's edge x = 1/2
+    } else {
+      EXPECT_EQ(pieces(edge(r, 0, 0, 3)), "0 v 1/4 h 3/4 v 1");  // y -1..3: under the cube for y in (0, 2)
+    }
+  }
+  // Seen from its back side the square still hides (open surfaces hide from both sides).
+  Polyhedron flipped = square.reversed();
+  RobertsResult r = run({&flipped, &cube}, make_orthographic(Vector3(0, 0, 1)));
+  EXPECT_EQ(pieces(edge(r, 1, 6, 7)), "0 v 1/4 h 3/4 v 1");
+}
+
+// An open box (no top) seen from above shows its inside bottom; closed, it would hide it.
+TEST(FaceOccluders, OpenBoxShowsItsInside) {
+  Polyhedron closed = box("0", "0", "0", "2", "2", "2");
+  std::vector<Face> faces = closed.faces();
+  faces.erase(faces.begin() + 5);  // the top (z max) face
+  Polyhedron open(closed.vertices(), faces);
+  Camera cam = make_orthographic(Vector3(Q("0.2"), Q("0.3"), 1));
+  RobertsResult r = run({&open}, cam, EdgeSelection::Feature);
+  // Bottom edge y = 0, x 0..2: seen through the opening up to x = 1.6, then behind the wall x = 2.
+  EXPECT_EQ(pieces(edge(r, 0, 0, 1)), "0 v 4/5 h 1");
+  EXPECT_EQ(edge(r, 0, 4, 5).line, LineKind::Boundary);
+  RobertsResult c = run({&closed}, cam, EdgeSelection::Feature);
+  EXPECT_EQ(pieces(edge(c, 0, 0, 1)), "0 h 1");
+}
+
+// Crease threshold, decided exactly: the roof's faces meet at exactly 45 degrees.
+TEST(FaceOccluders, CreaseThresholdIsExact) {
+  // Profile in x-z: (0,0) (4,0) (4,1) (3,2) (0,2), extruded along y in [0, 1].
+  std::vector<Point3> v;
+  for (const char* y : {"0", "1"})
+    for (auto [x, z] : std::vector<std::pair<const char*, const char*>>{{"0", "0"}, {"4", "0"}, {"4", "1"}, {"3", "2"}, {"0", "2"}})
+      v.push_back(P(x, y, z));
+  std::vector<Face> f = {{0, 4, 3, 2, 1}, {5, 6, 7, 8, 9}, {0, 1, 6, 5}, {1, 2, 7, 6}, {2, 3, 8, 7}, {3, 4, 9, 8}, {4, 0, 5, 9}};
+  Polyhedron roof(v, orient_faces(v, f));
+  Camera cam = make_orthographic(Vector3(Q("0.2"), Q("-1"), Q("3")));  // top, slant and x = 4 all facing
+  auto has = [&](const RobertsResult& r, int a, int b) { return find_edge(r, 0, a, b) != nullptr; };
+  RobertsResult r45 = run({&roof}, cam, EdgeSelection::Feature, "45");
+  EXPECT_FALSE(has(r45, 3, 8));  // top-slant: exactly 45, not over
+  EXPECT_FALSE(has(r45, 2, 7));  // slant-side: exactly 45
+  EXPECT_TRUE(has(r45, 1, 6));   // side-bottom: 90
+  RobertsResult r44 = run({&roof}, cam, EdgeSelection::Feature, "44.999999");
+  EXPECT_TRUE(has(r44, 3, 8));
+  EXPECT_EQ(edge(r44, 0, 3, 8).line, LineKind::Crease);
+  RobertsResult r0 = run({&roof}, cam, EdgeSelection::Feature, "0");
+  EXPECT_TRUE(has(r0, 3, 8));
+}
+
+// Silhouette edges are decided exactly from the facing of the two faces.
+TEST(FaceOccluders, SilhouetteKinds) {
+  Polyhedron cube = box("0", "0", "0", "2", "2", "2");
+  RobertsResult r = run({&cube}, make_orthographic(Vector3(1, 2, 3)), EdgeSelection::Feature, "100");
+  std::size_t silhouettes = 0;
+  for (const Segment& s : r.segments) {
+    EXPECT_EQ(s.line, LineKind::Silhouette);  // creases over 100 degrees: none; only silhouettes drawn
+    ++silhouettes;
+  }
+  EXPECT_EQ(silhouettes, 6u);
+  CreaseAngle a(Q("30"));
+  long n1[3] = {0, 0, 1}, n2[3] = {0, 1, 1};
+  EXPECT_TRUE(a.exceeds(n1, n2));  // 45 > 30
+  EXPECT_THROW(CreaseAngle(Q("181")), std::invalid_argument);
+}
