@@ -6,7 +6,9 @@
 #include <iostream>
 
 #include "algorithms/face_occluders.hpp"
+#include "algorithms/convexity.hpp"
 #include "algorithms/roberts.hpp"
+#include "algorithms/roberts_pieces.hpp"
 #include "algorithms/cyrus_beck.hpp"
 #include "cli/arguments.hpp"
 #include "cli/clipper_spec.hpp"
@@ -103,7 +105,9 @@ int run_render(const RenderArgs& a) {
       RobertsOptions ro;
       ro.edges = a.edges == "all" ? EdgeSelection::All : EdgeSelection::Feature;
       ro.crease_degrees = crease;
-      result = roberts(polys, camera, ro);
+      bool all_convex = true;
+      for (const Polyhedron* p : polys) all_convex = all_convex && p->report().valid_solid() && convexity(*p).convex();
+      result = all_convex ? roberts(polys, camera, ro) : roberts_pieces(polys, camera, ro);
     } else {
       LineOptions lo;
       lo.edges = a.edges == "all" ? EdgeSelection::All : EdgeSelection::Feature;
@@ -193,7 +197,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"all", "feature"}));
   cmd->add_option("--crease", a->crease, "Crease threshold in degrees between face normals (default 30; 0 keeps every edge between non-coplanar faces)");
   cmd->add_option("--method", a->method,
-                  "faces (default: per-face occluders, any mesh) or roberts (the course's algorithm on convex bodies)")
+                  "faces (default: per-face occluders, any mesh) or roberts (the course's algorithm; non-convex solids are split into convex pieces)")
       ->check(CLI::IsMember({"faces", "roberts"}));
   cmd->add_option("--threads", a->threads, "Threads for the visibility stage (default: all cores)");
   cmd->add_flag("--timings", a->timings, "Print the time of each stage to standard error");
