@@ -262,9 +262,10 @@ class Engine {
     face_normal_[b].resize(faces.size());
     const std::size_t first_tri = tris_.size();
     std::vector<const Point3*> pts;
+    std::vector<FaceTriangle> ft;
     for (std::size_t f = 0; f < faces.size(); ++f) {
       const Face& face = faces[f];
-      std::vector<FaceTriangle> ft;
+      ft.clear();
       if (face.size() == 3) {
         ft.push_back({{0, 1, 2}, {true, true, true}});
         Tri probe{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}};
@@ -495,57 +496,18 @@ class Engine {
         vproj_[voff_[b] + i] = proj_.project(q);
         if (cam_.perspective) vfront_[voff_[b] + i] = cam_.in_front(q) == Sign::Positive;
       }
-    for (const Tri& t0 : tris_) {
-      const int b = t0.body;
-      int fs = facing_[b][t0.face];
-      if (fs == 0) continue;                 // edge-on: sight rays graze it
-      if (solid_[b] && fs < 0) continue;     // a closed solid is hidden by its front faces
-      Tri t = t0;
-      if (fs < 0) flip(t);  // open surface seen from its back: orient toward the viewer
-      Occluder<P> o;
-      o.body = b;
-      o.face = t.face;
-      o.v = t.v;
-      Vec<P> n = normal(t);
-      // Constraint 0: strictly behind the plane: -n·(X - a) > 0.
-      o.m[0] = neg<P>(n);
-      o.c[0] = dot<P>(o.m[0], X_[t.v[0]]);
-      for (int k = 0; k < 3; ++k) {
-        int p = t.v[k], q = t.v[(k + 1) % 3], r = t.v[(k + 2) % 3];
-        Vec<P> m;
-        V c;
-        if (cam_.perspective) {
-          m = cross<P>(sub<P>(X_[p], view_), sub<P>(X_[q], view_));
-          c = dot<P>(m, view_);
-        } else {
-          m = cross<P>(view_, sub<P>(X_[q], X_[p]));
-          c = dot<P>(m, X_[p]);
-        }
-        if (P::sign(dot<P>(m, X_[r]) - c) < 0) {
-          m = neg<P>(m);
-          c = -c;
-        }
-        o.m[k + 1] = m;
-        o.c[k + 1] = c;
-        o.closed[k + 1] = !t.edge[k] || closed_side(t, k, m, c, fs);
-      }
-      occ_.push_back(std::move(o));
-      Box bx{std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
-             -std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
-             std::numeric_limits<double>::infinity()};
-      bool all_front = true;
-      for (int v : t.v) {
-        const auto& pr = vproj_[v];
-        bx.x0 = std::min(bx.x0, std::nextafter(static_cast<float>(pr[0]), -INFINITY));
-        bx.y0 = std::min(bx.y0, std::nextafter(static_cast<float>(pr[1]), -INFINITY));
-        bx.x1 = std::max(bx.x1, std::nextafter(static_cast<float>(pr[0]), INFINITY));
-        bx.y1 = std::max(bx.y1, std::nextafter(static_cast<float>(pr[1]), INFINITY));
-        bx.dmin = std::min(bx.dmin, pr[2]);
-        all_front = all_front && vfront_[v];
-      }
-      boxes.push_back(bx);
-      always.push_back(!all_front);
+    std::vector<int> sel;
+    for (std::size_t i = 0; i < tris_.size(); ++i) {
+      const Tri& t0 = tris_[i];
+      int fs = facing_[t0.body][t0.face];
+      if (fs == 0) continue;                       // edge-on: sight rays graze it
+      if (solid_[t0.body] && fs < 0) continue;     // a closed solid is hidden by its front faces
+      sel.push_back(static_cast<int>(i));
     }
+    occ_.resize(sel.size());
+    boxes.resize(sel.size());
+    always.resize(sel.size());
+    parallel_for(sel.size(), [&](std::size_t i) { make_occluder(tris_[sel[i]], occ_[i], boxes[i], always[i]); });
     // Widen every box by a margin far above the error of the double projections (a filter
     // only: it skips work, never decides).
     double ext = 1e-300;
@@ -564,6 +526,74 @@ class Engine {
     }
     boxes_ = std::move(boxes);
     grid_.build(boxes_, always);
+  }
+
+  template <class F>
+  void parallel_for(std::size_t n, F&& f) const {
+    unsigned threads = opt_.threads ? opt_.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, n / 4096)));
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+      for (;;) {
+        std::size_t i0 = next.fetch_add(1024);
+        if (i0 >= n) break;
+        for (std::size_t i = i0; i < std::min(n, i0 + 1024); ++i) f(i);
+      }
+    };
+    if (threads <= 1) {
+      worker();
+      return;
+    }
+    std::vector<std::thread> pool;
+    for (unsigned w = 0; w < threads; ++w) pool.emplace_back(worker);
+    for (auto& t : pool) t.join();
+  }
+
+  void make_occluder(const Tri& t0, Occluder<P>& o, Box& bx, char& always) const {
+    const int b = t0.body;
+    const int fs = facing_[b][t0.face];
+    Tri t = t0;
+    if (fs < 0) flip(t);  // open surface seen from its back: orient toward the viewer
+    o.body = b;
+    o.face = t.face;
+    o.v = t.v;
+    Vec<P> n = normal(t);
+    // Constraint 0: strictly behind the plane: -n·(X - a) > 0.
+    o.m[0] = neg<P>(n);
+    o.c[0] = dot<P>(o.m[0], X_[t.v[0]]);
+    for (int k = 0; k < 3; ++k) {
+      int p = t.v[k], q = t.v[(k + 1) % 3], r = t.v[(k + 2) % 3];
+      Vec<P> m;
+      V c;
+      if (cam_.perspective) {
+        m = cross<P>(sub<P>(X_[p], view_), sub<P>(X_[q], view_));
+        c = dot<P>(m, view_);
+      } else {
+        m = cross<P>(view_, sub<P>(X_[q], X_[p]));
+        c = dot<P>(m, X_[p]);
+      }
+      if (P::sign(dot<P>(m, X_[r]) - c) < 0) {
+        m = neg<P>(m);
+        c = -c;
+      }
+      o.m[k + 1] = m;
+      o.c[k + 1] = c;
+      o.closed[k + 1] = !t.edge[k] || closed_side(t, k, m, c, fs);
+    }
+    bx = Box{std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
+             -std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+             std::numeric_limits<double>::infinity()};
+    bool all_front = true;
+    for (int v : t.v) {
+      const auto& pr = vproj_[v];
+      bx.x0 = std::min(bx.x0, std::nextafter(static_cast<float>(pr[0]), -INFINITY));
+      bx.y0 = std::min(bx.y0, std::nextafter(static_cast<float>(pr[1]), -INFINITY));
+      bx.x1 = std::max(bx.x1, std::nextafter(static_cast<float>(pr[0]), INFINITY));
+      bx.y1 = std::max(bx.y1, std::nextafter(static_cast<float>(pr[1]), INFINITY));
+      bx.dmin = std::min(bx.dmin, pr[2]);
+      all_front = all_front && vfront_[v];
+    }
+    always = !all_front;
   }
 
   // Is the sight ray just behind the polygon edge under side k inside the body (closed side)?
@@ -670,7 +700,7 @@ class Engine {
     for (std::size_t i = 0; i < n; ++i) {
       std::array<double, 6> b{INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
       for (int v : tris_[i].v) {
-        const Point3& q = world(v);
+        const Point3& q = bodies_[tris_[i].body]->vertices()[v - voff_[tris_[i].body]];
         for (int k = 0; k < 3; ++k) {
           b[k] = std::min(b[k], q.approx(k).lo);
           b[k + 3] = std::max(b[k + 3], q.approx(k).hi);
@@ -682,8 +712,17 @@ class Engine {
     double lo[3] = {INFINITY, INFINITY, INFINITY};
     for (const auto& b : bb)
       for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], b[k]);
+    double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (const auto& b : bb)
+      for (int k = 0; k < 3; ++k) hi[k] = std::max(hi[k], b[k + 3]);
     double cell = std::max(2 * mean / static_cast<double>(n), 1e-300);
     auto key = [&](int k, double x) { return static_cast<std::int64_t>(std::floor((x - lo[k]) / cell)); };
+    // Dense cell numbers (x, y, z) -> (x·ny + y)·nz + z keep the radix sort short.
+    std::int64_t dims[3];
+    for (int k = 0; k < 3; ++k) dims[k] = key(k, hi[k]) + 1;
+    auto cell_id = [&](std::int64_t x, std::int64_t y, std::int64_t z) {
+      return static_cast<std::uint64_t>((x * dims[1] + y) * dims[2] + z);
+    };
     struct Entry {
       std::uint64_t cell;
       std::uint32_t tri;
@@ -694,14 +733,14 @@ class Engine {
     for (std::size_t i = 0; i < n && !coarse; ++i) {
       std::int64_t c0[3], c1[3];
       for (int k = 0; k < 3; ++k) c0[k] = key(k, bb[i][k]), c1[k] = key(k, bb[i][k + 3]);
-      if ((c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1) > 64 || c1[0] >= (1 << 20) || c1[1] >= (1 << 20) || c1[2] >= (1 << 20)) {
+      if ((c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1) > 64 || dims[0] >= (1 << 20) || dims[1] >= (1 << 20) || dims[2] >= (1 << 20)) {
         coarse = true;  // a huge triangle among small ones: fall back to one coarse cell list
         break;
       }
       for (std::int64_t x = c0[0]; x <= c1[0]; ++x)
         for (std::int64_t y = c0[1]; y <= c1[1]; ++y)
           for (std::int64_t z = c0[2]; z <= c1[2]; ++z)
-            entries.push_back({(static_cast<std::uint64_t>(x) << 42) | (static_cast<std::uint64_t>(y) << 21) | static_cast<std::uint64_t>(z),
+            entries.push_back({cell_id(x, y, z),
                                static_cast<std::uint32_t>(i)});
     }
     if (coarse) {
@@ -709,33 +748,37 @@ class Engine {
       for (std::size_t i = 0; i < n; ++i) entries.push_back({0, static_cast<std::uint32_t>(i)});
     }
     radix_sort(entries);
+    // Cells in ranges for the threads; each keeps its own hits.
+    std::vector<std::size_t> cell_start;
+    for (std::size_t i = 0; i < entries.size(); ++i)
+      if (i == 0 || entries[i].cell != entries[i - 1].cell) cell_start.push_back(i);
+    cell_start.push_back(entries.size());
+    const std::size_t ncells = cell_start.size() - 1;
+    unsigned threads = opt_.threads ? opt_.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, ncells / 64)));
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(threads);
+    std::vector<std::size_t> counted(threads, 0);
+    std::atomic<std::size_t> next_cell{0};
+    auto worker = [&](unsigned w) {
+      for (;;) {
+        std::size_t c0 = next_cell.fetch_add(256);
+        if (c0 >= ncells) break;
+        for (std::size_t c = c0; c < std::min(ncells, c0 + 256); ++c)
+          pairs_in_cell(entries, cell_start[c], cell_start[c + 1], bb, coarse, key, cell_id, found[w], counted[w]);
+      }
+    };
+    if (threads <= 1) {
+      worker(0);
+    } else {
+      std::vector<std::thread> pool;
+      for (unsigned w = 0; w < threads; ++w) pool.emplace_back(worker, w);
+      for (auto& t : pool) t.join();
+    }
     std::vector<std::pair<std::uint32_t, std::uint32_t>> hits;
     std::size_t tested = 0;
-    for (std::size_t i = 0; i < entries.size();) {
-      std::size_t j = i;
-      while (j < entries.size() && entries[j].cell == entries[i].cell) ++j;
-      for (std::size_t a = i; a < j; ++a)
-        for (std::size_t c = a + 1; c < j; ++c) {
-          std::uint32_t ta = entries[a].tri, tc = entries[c].tri;
-          const auto &A = bb[ta], &B = bb[tc];
-          if (A[0] > B[3] || B[0] > A[3] || A[1] > B[4] || B[1] > A[4] || A[2] > B[5] || B[2] > A[5]) continue;
-          if (!coarse) {  // test the pair only in the cell of the overlap's low corner
-            std::uint64_t own = (static_cast<std::uint64_t>(key(0, std::max(A[0], B[0]))) << 42) |
-                                (static_cast<std::uint64_t>(key(1, std::max(A[1], B[1]))) << 21) |
-                                static_cast<std::uint64_t>(key(2, std::max(A[2], B[2])));
-            if (own != entries[i].cell) continue;
-          }
-          const Tri &x = tris_[ta], &y = tris_[tc];
-          if (x.body == y.body) {
-            bool shared = false;
-            for (int u : x.v)
-              for (int w : y.v) shared = shared || u == w;
-            if (shared || x.face == y.face) continue;
-          }
-          ++tested;
-          if (straddles(x, y) && straddles(y, x)) hits.push_back({std::min(ta, tc), std::max(ta, tc)});
-        }
-      i = j;
+    for (unsigned w = 0; w < threads; ++w) {
+      hits.insert(hits.end(), found[w].begin(), found[w].end());
+      tested += counted[w];
     }
     res.stats.intersection_pairs = tested;
     std::sort(hits.begin(), hits.end());
@@ -824,6 +867,31 @@ class Engine {
       for (const E& e : v) tmp[count[(e.cell >> shift) & 2047]++] = e;
       v.swap(tmp);
     }
+  }
+
+  template <class E, class Key, class Id>
+  void pairs_in_cell(const std::vector<E>& entries, std::size_t i, std::size_t j, const std::vector<std::array<double, 6>>& bb,
+                     bool coarse, const Key& key, const Id& cell_id, std::vector<std::pair<std::uint32_t, std::uint32_t>>& hits,
+                     std::size_t& tested) const {
+    for (std::size_t a = i; a < j; ++a)
+      for (std::size_t c = a + 1; c < j; ++c) {
+        std::uint32_t ta = entries[a].tri, tc = entries[c].tri;
+        const auto &A = bb[ta], &B = bb[tc];
+        if (A[0] > B[3] || B[0] > A[3] || A[1] > B[4] || B[1] > A[4] || A[2] > B[5] || B[2] > A[5]) continue;
+        if (!coarse) {  // test the pair only in the cell of the overlap's low corner
+          std::uint64_t own = cell_id(key(0, std::max(A[0], B[0])), key(1, std::max(A[1], B[1])), key(2, std::max(A[2], B[2])));
+          if (own != entries[i].cell) continue;
+        }
+        const Tri &x = tris_[ta], &y = tris_[tc];
+        if (x.body == y.body) {
+          bool shared = false;
+          for (int u : x.v)
+            for (int w : y.v) shared = shared || u == w;
+          if (shared || x.face == y.face) continue;
+        }
+        ++tested;
+        if (straddles(x, y) && straddles(y, x)) hits.push_back({std::min(ta, tc), std::max(ta, tc)});
+      }
   }
 
   const Point3& world(int g) const {

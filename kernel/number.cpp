@@ -32,8 +32,43 @@ bool parse_integer(std::string_view s, mpz_class& out) {
 }
 
 // Why `text` is not a number, or empty when it is one; fills `out`.
+// Fast path for the common plain decimal ("-0.0378297", "12", "3.5") with at most 18 digits:
+// an integer over a power of ten, reduced by its factors of 2 and 5 (the only common ones), so
+// no general gcd and no string copies. False: not this form, take the general parser.
+bool parse_plain_decimal(std::string_view t, Rational& out) {
+  std::size_t i = 0;
+  bool neg = false;
+  if (i < t.size() && (t[i] == '-' || t[i] == '+')) neg = t[i++] == '-';
+  long long n = 0;
+  int digits = 0, frac = -1;
+  for (; i < t.size(); ++i) {
+    char c = t[i];
+    if (c >= '0' && c <= '9') {
+      if (++digits > 18) return false;
+      n = n * 10 + (c - '0');
+      if (frac >= 0) ++frac;
+    } else if (c == '.' && frac < 0) {
+      frac = 0;
+    } else {
+      return false;
+    }
+  }
+  if (digits == 0) return false;
+  int twos = frac > 0 ? frac : 0, fives = twos;
+  while (twos > 0 && n % 2 == 0 && n != 0) n /= 2, --twos;
+  while (fives > 0 && n % 5 == 0 && n != 0) n /= 5, --fives;
+  if (n == 0) twos = fives = 0;
+  unsigned long long d = 1;
+  for (int k = 0; k < twos; ++k) d *= 2;
+  for (int k = 0; k < fives; ++k) d *= 5;
+  mpz_set_si(out.get_num_mpz_t(), static_cast<long>(neg ? -n : n));
+  mpz_set_ui(out.get_den_mpz_t(), static_cast<unsigned long>(d));
+  return true;
+}
+
 std::string parse_impl(std::string_view text, Rational& out) {
   if (text.empty()) return "empty";
+  if (parse_plain_decimal(text, out)) return {};
   {
     std::string low;
     for (char c : text.substr(0, 12)) low += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
