@@ -890,13 +890,59 @@ class Engine {
           if (shared || x.face == y.face) continue;
         }
         ++tested;
-        if (straddles(x, y) && straddles(y, x)) hits.push_back({std::min(ta, tc), std::max(ta, tc)});
+        if (straddles(x, y) && straddles(y, x) && may_meet(x, y)) hits.push_back({std::min(ta, tc), std::max(ta, tc)});
       }
   }
 
   const Point3& world(int g) const {
     int b = static_cast<int>(std::upper_bound(voff_.begin(), voff_.end(), g) - voff_.begin()) - 1;
     return bodies_[b]->vertices()[g - voff_[b]];
+  }
+
+  // A filter before the rational construction: the parts of x on y's plane and of y on x's
+  // plane lie on one line; if their extents along a coordinate axis are certainly disjoint they
+  // do not meet. Plane values are exact integers, so each crossing parameter s/(s - t) (s, t
+  // of opposite signs) is within 4 ulps in doubles, each point within 8 ulps of the largest
+  // coordinate; intervals farther apart than that are disjoint. Otherwise: exact.
+  bool may_meet(const Tri& x, const Tri& y) const {
+    double ax[2], ay[2];
+    int axis = 0;
+    {
+      Vec<P> nx = normal(x), ny = normal(y);
+      double u[3] = {P::dbl(nx[1]) * P::dbl(ny[2]) - P::dbl(nx[2]) * P::dbl(ny[1]),
+                     P::dbl(nx[2]) * P::dbl(ny[0]) - P::dbl(nx[0]) * P::dbl(ny[2]),
+                     P::dbl(nx[0]) * P::dbl(ny[1]) - P::dbl(nx[1]) * P::dbl(ny[0])};
+      for (int k = 1; k < 3; ++k)
+        if (std::fabs(u[k]) > std::fabs(u[axis])) axis = k;
+    }
+    double scale = 0;
+    if (!extent_on_plane(x, y, axis, ax, scale) || !extent_on_plane(y, x, axis, ay, scale)) return true;
+    double err = 64 * std::numeric_limits<double>::epsilon() * scale;
+    return !(ax[1] + err < ay[0] - err || ay[1] + err < ax[0] - err);
+  }
+
+  // Extent along `axis` of the part of t on the plane of o, in doubles; false if undecidable.
+  bool extent_on_plane(const Tri& t, const Tri& o, int axis, double out[2], double& scale) const {
+    Vec<P> n = normal(o);
+    V s[3];
+    for (int k = 0; k < 3; ++k) s[k] = dot<P>(n, sub<P>(X_[t.v[k]], X_[o.v[0]]));
+    out[0] = INFINITY;
+    out[1] = -INFINITY;
+    for (int k = 0; k < 3; ++k) {
+      double a = P::dbl(X_[t.v[k]][axis]);
+      scale = std::max(scale, std::fabs(a));
+      int j = (k + 1) % 3;
+      int sk = P::sign(s[k]), sj = P::sign(s[j]);
+      if (sk == 0) out[0] = std::min(out[0], a), out[1] = std::max(out[1], a);
+      if (sk * sj < 0) {
+        double u = P::dbl(s[k]) / (P::dbl(s[k]) - P::dbl(s[j]));
+        double b = P::dbl(X_[t.v[j]][axis]);
+        double c = a + u * (b - a);
+        out[0] = std::min(out[0], c);
+        out[1] = std::max(out[1], c);
+      }
+    }
+    return std::isfinite(out[0]) && std::isfinite(out[1]) && std::isfinite(scale);
   }
 
   // Triangle y has vertices strictly on both sides of x's plane, or on it (not all on it).

@@ -10,7 +10,7 @@ PACKAGES=(build-essential cmake pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libeigen3-dev libopenmesh-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
-  libgtest-dev libbenchmark-dev
+  libgtest-dev libbenchmark-dev time   # time: peak memory in scripts/bench_render.sh
   clang libclang-rt-14-dev   # the sanitizer build and the libFuzzer targets
   libcgal-demo)   # libcgal-demo ships data.tar.gz, the mesh corpus used by tests and benchmarks
 
