@@ -31,6 +31,19 @@ struct Fast {
   static mpz_class zc(C v) { return mpz_class(static_cast<long>(v)); }
 };
 
+// Fast40: coordinates below 2^40 (decimals with up to 10 places, as in scanned meshes) held in
+// 128-bit integers: cross products below 2^84, plane values below 2^126, still exact.
+struct Fast40 {
+  using C = Int128;
+  using V = Int128;
+  static V mul(C a, C b) { return a * b; }
+  static int sign(const V& v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
+  static double dbl(const V& v) { return static_cast<double>(v); }
+  static int compare(const V& a, const V& b, const V& c, const V& d) { return compare_products(a, b, c, d); }
+  static mpz_class z(const V& v) { return to_mpz(v); }
+  static mpz_class zc(C v) { return to_mpz(v); }
+};
+
 // Big: the same on GMP integers, for coordinates that do not fit.
 struct Big {
   using C = mpz_class;
@@ -194,7 +207,7 @@ class Engine {
   RobertsResult run() {
     RobertsResult res;
     res.stats.method = "faces";
-    res.stats.integer_path = std::is_same_v<P, Fast>;
+    res.stats.integer_path = !std::is_same_v<P, Big>;
     using Clock = std::chrono::steady_clock;
     auto t0 = Clock::now();
     offsets();
@@ -304,11 +317,23 @@ class Engine {
     bool closed = true;
     for (const BodyEdge& e : edges_[b])
       closed = closed && e.uses.size() == 2 && e.uses[0].forward != e.uses[1].forward;
-    V volume6 = 0;
-    if (closed)
-      for (std::size_t i = first_tri; i < tris_.size(); ++i)
-        volume6 += dot<P>(X_[tris_[i].v[0]], cross<P>(X_[tris_[i].v[1]], X_[tris_[i].v[2]]));
-    solid_[b] = closed && P::sign(volume6) != 0;
+    // Six times the volume; Fast40's terms reach 2^123, so its sum is kept in GMP.
+    int volume_sign = 0;
+    if (closed) {
+      if constexpr (std::is_same_v<P, Fast40>) {
+        mpz_class v6 = 0;
+        for (std::size_t i = first_tri; i < tris_.size(); ++i)
+          v6 += P::z(dot<P>(sub<P>(X_[tris_[i].v[0]], X_[tris_[first_tri].v[0]]),
+                            cross<P>(sub<P>(X_[tris_[i].v[1]], X_[tris_[first_tri].v[0]]), sub<P>(X_[tris_[i].v[2]], X_[tris_[first_tri].v[0]]))));
+        volume_sign = sgn(v6);
+      } else {
+        V volume6 = 0;
+        for (std::size_t i = first_tri; i < tris_.size(); ++i)
+          volume6 += dot<P>(X_[tris_[i].v[0]], cross<P>(X_[tris_[i].v[1]], X_[tris_[i].v[2]]));
+        volume_sign = P::sign(volume6);
+      }
+    }
+    solid_[b] = closed && volume_sign != 0;
     if (!solid_[b]) {
       std::string why = "has zero volume";
       for (const BodyEdge& e : edges_[b])
@@ -324,7 +349,7 @@ class Engine {
     if (solid_[b] && cam_.perspective && eye_inside(static_cast<int>(first_tri)))
       throw RobertsError(b, "body " + std::to_string(b) + " contains the eye " + to_string(cam_.eye) +
                                 ": an eye inside a solid sees nothing");
-    if (solid_[b] && P::sign(volume6) < 0) {  // inside out: turn it
+    if (solid_[b] && volume_sign < 0) {  // inside out: turn it
       for (std::size_t i = first_tri; i < tris_.size(); ++i) flip(tris_[i]);
       for (int& s : facing) s = -s;
       for (auto& n : face_normal_[b]) n = neg<P>(n);
@@ -683,7 +708,7 @@ class Engine {
       long x[3] = {na[0], na[1], na[2]}, y[3] = {nc[0], nc[1], nc[2]};
       return crease_.exceeds(x, y);
     } else {
-      mpz_class x[3] = {na[0], na[1], na[2]}, y[3] = {nc[0], nc[1], nc[2]};
+      mpz_class x[3] = {P::zc(na[0]), P::zc(na[1]), P::zc(na[2])}, y[3] = {P::zc(nc[0]), P::zc(nc[1]), P::zc(nc[2])};
       return crease_.exceeds(x, y);
     }
   }
@@ -995,7 +1020,7 @@ class Engine {
       res.stats.comparisons += w.c.comparisons;
       res.stats.comparisons_exact += w.c.exact;
     }
-    if (!std::is_same_v<P, Fast>) res.stats.pairs_rational = res.stats.pairs_tested;
+    if (std::is_same_v<P, Big>) res.stats.pairs_rational = res.stats.pairs_tested;
   }
 
   std::optional<std::pair<Rational, Rational>> depth_of(const Segment& s) const {
@@ -1176,9 +1201,11 @@ class Engine {
 };
 
 // Scale every coordinate (and the eye) by a common denominator; the view direction by its own.
-bool scale_fast(const std::vector<const Polyhedron*>& bodies, const Camera& cam, std::vector<Vec<Fast>>& pts,
-                Vec<Fast>& view, Rational& scale) {
-  constexpr Int128 kLimit = Int128(1) << 29;
+// False when a scaled value reaches `bits` bits (then a wider policy takes the scene).
+template <class P>
+bool scale_fast(const std::vector<const Polyhedron*>& bodies, const Camera& cam, int bits, std::vector<Vec<P>>& pts,
+                Vec<P>& view, Rational& scale) {
+  const Int128 kLimit = Int128(1) << bits;
   std::vector<const Rational*> qs;
   for (const Polyhedron* p : bodies)
     for (const Point3& v : p->vertices())
@@ -1192,11 +1219,11 @@ bool scale_fast(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
   pts.reserve(qs.size() / 3);
   for (const Polyhedron* p : bodies)
     for (const Point3& v : p->vertices()) {
-      Vec<Fast> x;
+      Vec<P> x;
       for (int k = 0; k < 3; ++k) {
         Int128 s;
         if (!scaled_integer(v[k], L, kLimit, s)) return false;
-        x[k] = static_cast<std::int64_t>(s);
+        x[k] = static_cast<typename P::C>(s);
       }
       pts.push_back(x);
     }
@@ -1204,7 +1231,7 @@ bool scale_fast(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
     for (int k = 0; k < 3; ++k) {
       Int128 s;
       if (!scaled_integer(cam.eye[k], L, kLimit, s)) return false;
-      view[k] = static_cast<std::int64_t>(s);
+      view[k] = static_cast<typename P::C>(s);
     }
   } else {
     const Rational* d[3] = {&cam.direction[0], &cam.direction[1], &cam.direction[2]};
@@ -1217,7 +1244,7 @@ bool scale_fast(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
     for (int k = 0; k < 3; ++k) {
       s[k] /= g;
       if (abs128(s[k]) >= kLimit) return false;
-      view[k] = static_cast<std::int64_t>(s[k]);
+      view[k] = static_cast<typename P::C>(s[k]);
     }
   }
   scale = Rational(static_cast<unsigned long>(L));
@@ -1253,8 +1280,15 @@ RobertsResult face_occluders(const std::vector<const Polyhedron*>& bodies, const
     std::vector<Vec<Fast>> pts;
     Vec<Fast> view{};
     Rational scale;
-    if (scale_fast(bodies, camera, pts, view, scale))
+    if (scale_fast<Fast>(bodies, camera, 29, pts, view, scale))
       return Engine<Fast>(bodies, camera, opt, std::move(pts), view, scale).run();
+  }
+  {
+    std::vector<Vec<Fast40>> pts;
+    Vec<Fast40> view{};
+    Rational scale;
+    if (scale_fast<Fast40>(bodies, camera, 40, pts, view, scale))
+      return Engine<Fast40>(bodies, camera, opt, std::move(pts), view, scale).run();
   }
   std::vector<Vec<Big>> pts;
   Vec<Big> view;

@@ -78,6 +78,22 @@ TEST(FaceOccluders, CubeAlong110HidesOnlyTheBackVerticalEdge) {
   }
 }
 
+// The same with coordinates of ten decimal places (scaled integers above 2^29): the 128-bit
+// coordinate path, same exact answer; with a denominator beyond 64 bits: the GMP path.
+TEST(FaceOccluders, WiderNumberPathsGiveTheSameAnswer) {
+  for (const char* hi : {"2.0000000001", "2.00000000000000000001"}) {
+    Polyhedron cube = make_box(P("0", "0", "0"), P(hi, hi, "2"));
+    RobertsResult r = run({&cube}, make_orthographic(Vector3(1, 1, 0)));
+    EXPECT_EQ(r.stats.integer_path, std::string(hi).size() < 14) << hi;
+    for (const Segment& s : r.segments) EXPECT_EQ(pieces(s), s.v0 == 0 && s.v1 == 4 ? "0 h 1" : "0 v 1") << hi;
+    Polyhedron rod = box("-1", "-1", "1/2", "3", "-1/2", "1");
+    RobertsResult q = run({&cube, &rod}, make_orthographic(Vector3(0, -1, 0)));
+    EXPECT_EQ(pieces(edge(q, 1, 0, 1)), "0 v 1");  // in front of the cube
+    RobertsResult w = run({&cube, &rod}, make_orthographic(Vector3(0, 1, 0)));
+    EXPECT_EQ(pieces(edge(w, 1, 4, 5)).substr(0, 6), "0 v 1/");  // behind it from x = 0
+  }
+}
+
 // A ray that leaves a solid exactly through a concave edge whose other face is seen edge-on:
 // the L-prism seen along +y. Behind the concave edge x = 1 the rays pass through the L's lower
 // arm, so the rod's vertical edge exactly behind it is hidden (open prisms alone would miss it).
