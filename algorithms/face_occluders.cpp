@@ -87,12 +87,19 @@ struct Frac {
 };
 
 struct Counters {
-  std::size_t pairs = 0, skipped = 0, comparisons = 0, exact = 0;
+  std::size_t pairs = 0, skipped = 0, comparisons = 0, exact = 0, identical = 0;
 };
 
+// Exact order of two split parameters: identical fractions (neighbouring occluders share a
+// side plane, so this is common) are recognised first, then a double filter, then 256-bit
+// (or GMP) cross products.
 template <class P>
 int compare(const Frac<P>& a, const Frac<P>& b, Counters& c) {
   ++c.comparisons;
+  if (a.n == b.n && a.d == b.d) {
+    ++c.identical;
+    return 0;
+  }
   double diff = a.x - b.x, scale = std::fabs(a.x) + std::fabs(b.x);
   if (std::fabs(diff) > 1e-12 * scale + 1e-300) return diff < 0 ? -1 : 1;
   ++c.exact;
@@ -1019,6 +1026,7 @@ class Engine {
       res.stats.pairs_skipped += w.c.skipped;
       res.stats.comparisons += w.c.comparisons;
       res.stats.comparisons_exact += w.c.exact;
+      res.stats.comparisons_identical += w.c.identical;
     }
     if (std::is_same_v<P, Big>) res.stats.pairs_rational = res.stats.pairs_tested;
   }
@@ -1101,14 +1109,16 @@ class Engine {
         }
         return;
       }
+      // Ends at the segment's own end points (t = 0 or 1: an occluder sharing a vertex with
+      // the edge) are written canonically, so they compare as identical without arithmetic.
       if (s0 > 0) {  // upper bound t < f0 / (f0 - f1)
         V d = f0 - f1;
-        Frac<P> r{f0, d, P::dbl(f0) / P::dbl(d)};
+        Frac<P> r = s1 == 0 ? Frac<P>{V(1), V(1), 1.0} : Frac<P>{f0, d, P::dbl(f0) / P::dbl(d)};
         if (!has_hi || compare(r, hi, wk.c) < 0) hi = r, has_hi = true;
       } else {  // lower bound t > -f0 / (f1 - f0)
         V d = f1 - f0;
         V nn = -f0;
-        Frac<P> r{nn, d, P::dbl(nn) / P::dbl(d)};
+        Frac<P> r = s0 == 0 ? Frac<P>{V(0), V(1), 0.0} : Frac<P>{nn, d, P::dbl(nn) / P::dbl(d)};
         if (!has_lo || compare(r, lo, wk.c) > 0) lo = r, has_lo = true;
       }
     }

@@ -98,6 +98,7 @@ struct RobertsStats {
   std::string method = "roberts";
   std::size_t occluders = 0;             // triangles used as occluders
   std::size_t comparisons = 0;           // comparisons of split parameters
+  std::size_t comparisons_identical = 0; // ... decided as equal by identical fractions
   std::size_t comparisons_exact = 0;     // ... that the double filter could not decide
   bool integer_path = true;              // coordinates fitted the 64/128-bit integer path
   std::size_t intersection_pairs = 0;    // triangle pairs tested exactly for intersection lines

@@ -172,7 +172,8 @@ int run_render(const RenderArgs& a) {
     std::cerr << "timings: faces " << tris << ", load " << sec(t_loaded - t_start) << " s, setup " << result.stats.setup_seconds
               << " s, intersections " << result.stats.intersections_seconds << " s, visibility " << result.stats.visibility_seconds
               << " s, solve total " << sec(t_solved - t_loaded) << " s, output " << sec(t_end - t_solved) << " s, segments "
-              << result.segments.size() << ", exact comparisons " << result.stats.comparisons_exact << "/" << result.stats.comparisons
+              << result.segments.size() << ", comparisons " << result.stats.comparisons << " (identical "
+              << result.stats.comparisons_identical << ", exact fallback " << result.stats.comparisons_exact << ")"
               << "\n";
   }
   return 0;

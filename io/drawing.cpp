@@ -216,6 +216,7 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const RobertsResult&
   if (r.stats.method == "faces") {
     st["occluders"] = r.stats.occluders;
     st["parameter_comparisons"] = r.stats.comparisons;
+    st["parameter_comparisons_identical"] = r.stats.comparisons_identical;
     st["parameter_comparisons_exact"] = r.stats.comparisons_exact;
     st["integer_path"] = r.stats.integer_path;
     st["intersection_pairs_tested"] = r.stats.intersection_pairs;
