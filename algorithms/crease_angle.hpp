@@ -1,7 +1,7 @@
 // Exact crease test for `--edges feature --crease DEG` (issue 4): is the angle between two face
 // normals greater than DEG degrees? cos(DEG) is irrational for most DEG (Niven's theorem), so
 // the comparison n1·n2 < cos(DEG)·|n1|·|n2| is decided exactly: squared into rationals when
-// cos²(DEG) is rational (2·DEG a multiple of 30 or 45 degrees), otherwise against an MPFR
+// cos²(DEG) is rational (DEG a multiple of 30 or 45 degrees), otherwise against an MPFR
 // enclosure of cos²(DEG) whose precision grows until it separates (it always does: a rational
 // never equals an irrational). A double filter decides almost every edge first.
 #pragma once
