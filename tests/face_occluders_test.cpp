@@ -199,6 +199,51 @@ TEST(FaceOccluders, OpenSquareHidesAndIsHidden) {
   EXPECT_EQ(pieces(edge(r, 1, 6, 7)), "0 v 1/4 h 3/4 v 1");
 }
 
+// An open hemisphere (the dome z >= 0 of a UV sphere, open at the equator) hides from the
+// side and from below, and a rod inside the bowl is seen from below only through the dome.
+TEST(FaceOccluders, OpenHemisphereHidesAndIsHidden) {
+  const int N = 32, M = 8;  // N around, M rings from the equator to the pole
+  std::vector<Point3> vs;
+  std::vector<Face> fs;
+  auto q = [](double x) { return rational_from_double(std::round(x * 1e6) / 1e6); };
+  for (int j = 0; j < M; ++j)
+    for (int i = 0; i < N; ++i) {
+      double u = 2 * M_PI * i / N, w = M_PI / 2 * j / M;
+      vs.emplace_back(q(std::cos(w) * std::cos(u)), q(std::cos(w) * std::sin(u)), q(std::sin(w)));
+    }
+  vs.emplace_back(0, 0, 1);
+  const int pole = N * M;
+  for (int j = 0; j < M; ++j)
+    for (int i = 0; i < N; ++i) {
+      int a = j * N + i, b = j * N + (i + 1) % N;
+      if (j + 1 < M) {  // rounded coordinates make quads non-planar (refused): two triangles
+        fs.push_back({a, b, b + N});
+        fs.push_back({a, b + N, a + N});
+      } else {
+        fs.push_back({a, b, pole});
+      }
+    }
+  Polyhedron dome(vs, fs);
+  Polyhedron side_rod = box("-3", "-2", "1/4", "-2", "2", "1/2");  // behind the dome seen from +x
+  RobertsResult r = run({&dome, &side_rod}, make_orthographic(Vector3(1, 0, 0)), EdgeSelection::Feature);
+  const Segment& e = edge(r, 1, 5, 7);  // x = -2, z = 1/2, y from -2 to 2
+  EXPECT_TRUE(visible_at(e, Q("1/20")));     // y = -1.8: beside the dome
+  EXPECT_FALSE(visible_at(e, Q("1/2")));     // y = 0: behind it
+  EXPECT_TRUE(visible_at(e, Q("19/20")));
+  std::size_t rim = 0;
+  for (const Segment& s : r.segments) rim += s.body == 0 && s.line == LineKind::Boundary;
+  EXPECT_EQ(rim, static_cast<std::size_t>(N));  // the equator
+  // From below, a rod above the dome is hidden where its rays cross the dome.
+  Polyhedron above = box("-2", "-1/10", "3", "2", "1/10", "4");
+  RobertsResult b = run({&dome, &above}, make_orthographic(Vector3(0, 0, -1)), EdgeSelection::Feature);
+  const Segment& f = edge(b, 1, 0, 1);  // z = 3, y = -1/10, x from -2 to 2
+  EXPECT_FALSE(visible_at(f, Q("1/2")));
+  EXPECT_TRUE(visible_at(f, Q("1/50")));
+  // From above the same rod is in front of everything.
+  RobertsResult c = run({&dome, &above}, make_orthographic(Vector3(0, 0, 1)), EdgeSelection::Feature);
+  EXPECT_EQ(pieces(edge(c, 1, 4, 5)), "0 v 1");
+}
+
 // An open box (no top) seen from above shows its inside bottom; closed, it would hide it.
 TEST(FaceOccluders, OpenBoxShowsItsInside) {
   Polyhedron closed = box("0", "0", "0", "2", "2", "2");
