@@ -178,6 +178,34 @@ TEST(FaceOccluders, InterpenetratingMeshesGetTheirIntersectionLines) {
   EXPECT_EQ(pieces(edge(r, 1, 6, 7)), "0 h 1/2 v 1");
 }
 
+// A body that crosses itself (one mesh, two interpenetrating boxes) gets its own intersection
+// lines, the same as two bodies would.
+TEST(FaceOccluders, SelfIntersectionLines) {
+  Polyhedron a = box("0", "0", "0", "2", "2", "2"), b = box("1", "1/2", "1/2", "3", "3/2", "3/2");
+  std::vector<Point3> vs = a.vertices();
+  vs.insert(vs.end(), b.vertices().begin(), b.vertices().end());
+  std::vector<Face> fs = a.faces();
+  for (Face f : b.faces()) {
+    for (int& v : f) v += 8;
+    fs.push_back(f);
+  }
+  Polyhedron one(vs, fs);
+  Camera cam = make_orthographic(Vector3(1, Q("1.3"), Q("1.7")));
+  RobertsResult r = run({&one}, cam, EdgeSelection::Feature);
+  RobertsResult two = run({&a, &b}, cam, EdgeSelection::Feature);
+  auto lines = [](const RobertsResult& x) {
+    std::set<std::string> out;
+    for (const Segment& s : x.segments)
+      if (s.kind == Segment::Kind::Intersection)
+        out.insert(to_string(std::min(s.from(), s.to())) + " " + to_string(std::max(s.from(), s.to())) + " " + pieces(s));
+    return out;
+  };
+  EXPECT_EQ(lines(r).size(), 4u);
+  EXPECT_EQ(lines(r), lines(two));
+  for (const Segment& s : r.segments)
+    if (s.kind == Segment::Kind::Intersection) EXPECT_EQ(s.body, s.body2);
+}
+
 // An open surface (one square) hides what is behind it and is hidden; its edges are boundaries.
 TEST(FaceOccluders, OpenSquareHidesAndIsHidden) {
   Polyhedron square({P("1/2", "-1", "3"), P("3/2", "-1", "3"), P("3/2", "3", "3"), P("1/2", "3", "3")}, {{0, 1, 2, 3}});
