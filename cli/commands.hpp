@@ -14,6 +14,9 @@ void add_render_command(CLI::App& app, int& exit_code);
 /// Registers `hlr decompose`.
 void add_decompose_command(CLI::App& app, int& exit_code);
 
+/// Registers `hlr explain`.
+void add_explain_command(CLI::App& app, int& exit_code);
+
 /// Registers `hlr clip`.
 void add_clip_command(CLI::App& app, int& exit_code);
 

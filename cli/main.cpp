@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   hlr::cli::add_render_command(app, exit_code);
   hlr::cli::add_clip_command(app, exit_code);
   hlr::cli::add_decompose_command(app, exit_code);
+  hlr::cli::add_explain_command(app, exit_code);
   try {
     std::vector<std::string> args = hlr::cli::join_negative_values(argc, argv);
     std::vector<std::string> rest(args.rbegin(), args.rend() - 1);  // CLI11 takes them reversed

@@ -23,16 +23,19 @@ struct Ctx {
   void expect_map(const YAML::Node& n, const std::string& what) const {
     if (!n.IsMap()) fail(n, what + " must be a mapping");
   }
-  // Checks keys: all known, none repeated.
   void check_keys(const YAML::Node& n, const std::string& what, std::initializer_list<const char*> known) const {
+    check_keys(n, what, std::vector<std::string>(known.begin(), known.end()));
+  }
+  // Checks keys: all known, none repeated.
+  void check_keys(const YAML::Node& n, const std::string& what, const std::vector<std::string>& known) const {
     expect_map(n, what);
     std::set<std::string> seen;
     for (auto it = n.begin(); it != n.end(); ++it) {
       if (!it->first.IsScalar()) fail(it->first, "keys of " + what + " must be names");
       std::string k = it->first.Scalar();
-      if (std::find_if(known.begin(), known.end(), [&](const char* s) { return k == s; }) == known.end()) {
+      if (std::find(known.begin(), known.end(), k) == known.end()) {
         std::string list;
-        for (const char* s : known) list += std::string(list.empty() ? "" : ", ") + s;
+        for (const std::string& s : known) list += std::string(list.empty() ? "" : ", ") + s;
         fail(it->first, "unknown key '" + k + "' in " + what + " (known: " + list + ")");
       }
       if (!seen.insert(k).second) fail(it->first, "key '" + k + "' appears twice in " + what);
@@ -254,7 +257,10 @@ Scene scene_from_mesh(const std::string& path) {
 
 Scene load_scene(const std::string& path) { return load_scene_text(read_file_bytes(path), path); }
 
-Scene load_scene_text(const std::string& bytes, const std::string& path) {
+Scene load_scene_text(const std::string& bytes, const std::string& path) { return load_scene_text(bytes, path, {}, true); }
+
+Scene load_scene_text(const std::string& bytes, const std::string& path, const std::vector<std::string>& extra_keys,
+                      bool bodies_required) {
   Ctx c{path};
   YAML::Node root;
   try {
@@ -264,10 +270,19 @@ Scene load_scene_text(const std::string& bytes, const std::string& path) {
   }
   if (!root || root.IsNull()) throw InputError(path, 0, "empty scene file");
   if (depth(root) > kMaxNesting) throw InputError(path, 0, "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
-  c.check_keys(root, "the scene", {"bodies", "view", "light"});
+  std::vector<std::string> known = {"bodies", "view", "light"};
+  known.insert(known.end(), extra_keys.begin(), extra_keys.end());
+  // A problem file (docs/problem-format.md) is a scene too: `hlr render` draws its bodies.
+  if (extra_keys.empty() && root.IsMap() && root["problem"])
+    known.insert(known.end(), {"problem", "title", "edges", "clipper", "segments", "eps"});
+  c.check_keys(root, extra_keys.empty() ? "the scene" : "the problem", known);
   Scene s;
   s.file = path;
   const YAML::Node bodies = root["bodies"];
+  if (!bodies && !bodies_required) {
+    if (root["view"]) s.view = parse_view(c, root["view"]);
+    return s;
+  }
   if (!bodies) c.fail(root, "the scene needs a 'bodies' list");
   if (!bodies.IsSequence() || bodies.size() == 0) c.fail(bodies, "'bodies' must be a non-empty list");
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();

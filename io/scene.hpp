@@ -51,6 +51,11 @@ Scene load_scene(const std::string& path);
 /// The same from the file's text; `path` names it in messages and anchors relative mesh paths.
 Scene load_scene_text(const std::string& text, const std::string& path);
 
+/// The same, for files that carry more than a scene (problem files): `extra_keys` are accepted
+/// at the top level (the caller reads them), and `bodies` may be missing unless required.
+Scene load_scene_text(const std::string& text, const std::string& path, const std::vector<std::string>& extra_keys,
+                      bool bodies_required);
+
 /// A scene of one body from a mesh file (name: the file's stem), default view.
 Scene scene_from_mesh(const std::string& path);
 

@@ -1,0 +1,56 @@
+// `hlr explain PROBLEM`: a step-by-step exact solution of a problem file (issue 6), as
+// Markdown, one self-contained HTML page, or JSON with every value; English or Russian.
+#include <filesystem>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "io/atomic_file.hpp"
+#include "io/explain.hpp"
+
+namespace hlr::cli {
+namespace {
+
+struct ExplainArgs {
+  std::string input, output, format, lang = "en";
+};
+
+int run_explain(const ExplainArgs& a) {
+  std::string format = a.format;
+  if (format.empty()) {
+    std::string ext = std::filesystem::path(a.output).extension().string();
+    format = ext == ".json" ? "json" : ext == ".html" || ext == ".htm" ? "html" : "md";
+  }
+  Problem pr = load_problem(a.input);
+  SolutionJson s;
+  try {
+    s = explain(pr);
+  } catch (const RobertsError& e) {
+    std::cerr << "hlr explain: " << a.input << ": " << e.what() << " (a `decompose` problem splits it first)\n";
+    return 1;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "hlr explain: " << a.input << ": " << e.what() << "\n";
+    return 1;
+  }
+  Lang lang = a.lang == "ru" ? Lang::Ru : Lang::En;
+  std::string text = format == "json" ? s.dump(1) + "\n" : format == "html" ? explain_html(s, lang) : explain_markdown(s, lang);
+  if (a.output.empty() || a.output == "-")
+    std::cout << text;
+  else
+    write_file_atomically(a.output, text);
+  return 0;
+}
+
+}  // namespace
+
+void add_explain_command(CLI::App& app, int& exit_code) {
+  auto a = std::make_shared<ExplainArgs>();
+  CLI::App* cmd = app.add_subcommand("explain", "Solve a problem file step by step, exactly (exam mode)");
+  cmd->add_option("problem", a->input, "Problem file (.yaml, .yml, .json; docs/problem-format.md)")->required();
+  cmd->add_option("-o", a->output, "Output file (default: standard output); .json or .html select the format");
+  cmd->add_option("--format", a->format, "md, html or json (default: from the output file's extension, else md)")
+      ->check(CLI::IsMember({"md", "html", "json"}));
+  cmd->add_option("--lang", a->lang, "en or ru (the course's own terms)")->check(CLI::IsMember({"en", "ru"}));
+  cmd->callback([a, &exit_code] { exit_code = run_explain(*a); });
+}
+
+}  // namespace hlr::cli

@@ -1,0 +1,164 @@
+// Problem files (see problem.hpp).
+#include "io/problem.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "io/mesh_reader.hpp"
+#include "io/text_reader.hpp"
+
+namespace hlr {
+namespace {
+
+struct P {
+  std::string file;
+  [[noreturn]] void fail(const YAML::Node& n, const std::string& msg) const {
+    throw InputError(file, n.Mark().is_null() ? 0 : n.Mark().line + 1, msg);
+  }
+  Rational number(const YAML::Node& n, const std::string& what) const {
+    if (!n.IsScalar()) fail(n, what + " must be a number");
+    try {
+      return parse_rational(n.Scalar());
+    } catch (const NumberError& e) {
+      fail(n, what + ": " + e.what());
+    }
+  }
+  std::vector<Rational> numbers(const YAML::Node& n, std::size_t count, const std::string& what) const {
+    if (!n.IsSequence() || n.size() != count) fail(n, what + " must be a list of " + std::to_string(count) + " numbers");
+    std::vector<Rational> out;
+    for (std::size_t i = 0; i < count; ++i) out.push_back(number(n[i], what));
+    return out;
+  }
+  long integer(const YAML::Node& n, const std::string& what) const {
+    Rational q = number(n, what);
+    if (q.get_den() != 1 || !q.get_num().fits_sint_p()) fail(n, what + " must be an integer");
+    return q.get_num().get_si();
+  }
+};
+
+Problem::Type parse_type(const P& c, const YAML::Node& n) {
+  if (!n || !n.IsScalar()) c.fail(n, "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform)");
+  const std::string t = n.Scalar();
+  if (t == "roberts") return Problem::Type::Roberts;
+  if (t == "cyrus-beck") return Problem::Type::CyrusBeck;
+  if (t == "midpoint") return Problem::Type::Midpoint;
+  if (t == "convexity") return Problem::Type::Convexity;
+  if (t == "decompose") return Problem::Type::Decompose;
+  if (t == "transform") return Problem::Type::Transform;
+  c.fail(n, "unknown problem type '" + t + "' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform)");
+}
+
+std::string list_text(const std::vector<Rational>& v) {
+  std::string s;
+  for (const Rational& q : v) s += (s.empty() ? "" : ", ") + to_string(q);
+  return "[" + s + "]";
+}
+
+void parse_clipper(const P& c, const YAML::Node& n, Problem& pr) {
+  if (!n.IsMap() || n.size() != 1) c.fail(n, "clipper must be one of {box: [6 numbers]}, {frustum: [7 numbers]}, {mesh: PATH}");
+  const std::string kind = n.begin()->first.Scalar();
+  const YAML::Node v = n.begin()->second;
+  try {
+    if (kind == "box") {
+      auto x = c.numbers(v, 6, "box [xmin, xmax, ymin, ymax, zmin, zmax]");
+      pr.clipper = box_clipper(x[0], x[1], x[2], x[3], x[4], x[5]);
+      pr.window = Window(BoxWindow{x[0], x[1], x[2], x[3], x[4], x[5]});
+      pr.clipper_text = "box " + list_text(x);
+    } else if (kind == "frustum") {
+      auto x = c.numbers(v, 7, "frustum [xl, xr, yb, yt, znear, zfar, zcp]");
+      pr.clipper = frustum_clipper(x[0], x[1], x[2], x[3], x[4], x[5], x[6]);
+      pr.window = Window(FrustumWindow{x[0], x[1], x[2], x[3], x[4], x[5], x[6]});
+      pr.clipper_text = "frustum " + list_text(x);
+    } else if (kind == "mesh") {
+      if (!v.IsScalar()) c.fail(v, "mesh must be a path");
+      std::filesystem::path mp = v.Scalar();
+      if (mp.is_relative()) mp = std::filesystem::path(pr.file).parent_path() / mp;
+      pr.clipper = make_clipper(load_mesh(mp.string()), v.Scalar());
+      pr.clipper_text = "mesh " + v.Scalar();
+    } else {
+      c.fail(n.begin()->first, "unknown clipper '" + kind + "' (known: box, frustum, mesh)");
+    }
+  } catch (const std::invalid_argument& e) {
+    c.fail(n, std::string("clipper: ") + e.what());
+  } catch (const InputError& e) {
+    c.fail(n, std::string("clipper: ") + e.what());
+  }
+}
+
+}  // namespace
+
+const char* to_string(Problem::Type t) {
+  switch (t) {
+    case Problem::Type::Roberts: return "roberts";
+    case Problem::Type::CyrusBeck: return "cyrus-beck";
+    case Problem::Type::Midpoint: return "midpoint";
+    case Problem::Type::Convexity: return "convexity";
+    case Problem::Type::Decompose: return "decompose";
+    case Problem::Type::Transform: break;
+  }
+  return "transform";
+}
+
+Problem load_problem(const std::string& path) { return load_problem_text(read_file_bytes(path), path); }
+
+Problem load_problem_text(const std::string& text, const std::string& path) {
+  P c{path};
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, e.mark.is_null() ? 0 : e.mark.line + 1, "not valid YAML/JSON: " + e.msg);
+  }
+  if (!root || !root.IsMap()) throw InputError(path, 0, "a problem file must be a mapping with 'problem: TYPE'");
+  Problem pr;
+  pr.file = path;
+  pr.type = parse_type(c, root["problem"]);
+  const bool clipping = pr.type == Problem::Type::CyrusBeck || pr.type == Problem::Type::Midpoint;
+  std::vector<std::string> extra = {"problem", "title"};
+  if (pr.type == Problem::Type::Roberts) extra.push_back("edges");
+  if (clipping) extra.insert(extra.end(), {"clipper", "segments"});
+  if (pr.type == Problem::Type::Midpoint) extra.push_back("eps");
+  pr.scene = load_scene_text(text, path, extra, !clipping);
+  if (root["title"]) {
+    if (!root["title"].IsScalar()) c.fail(root["title"], "title must be text");
+    pr.title = root["title"].Scalar();
+  }
+  const bool one_body = pr.type == Problem::Type::Convexity || pr.type == Problem::Type::Decompose || pr.type == Problem::Type::Transform;
+  if (one_body && pr.scene.bodies.size() != 1) c.fail(root["bodies"], std::string(to_string(pr.type)) + " problems take exactly one body");
+  if (clipping && root["bodies"]) c.fail(root["bodies"], "clipping problems take a clipper and segments, not bodies");
+  if (root["edges"]) {
+    const YAML::Node e = root["edges"];
+    if (!e.IsSequence()) c.fail(e, "edges must be a list of [body, vertex, vertex]");
+    for (const YAML::Node& x : e) {
+      if (!x.IsSequence() || x.size() != 3) c.fail(x, "an edge is [body, vertex, vertex]");
+      std::array<int, 3> t{static_cast<int>(c.integer(x[0], "body")), static_cast<int>(c.integer(x[1], "vertex")),
+                           static_cast<int>(c.integer(x[2], "vertex"))};
+      if (t[0] < 0 || t[0] >= static_cast<int>(pr.scene.bodies.size())) c.fail(x, "no body " + std::to_string(t[0]));
+      const auto& edges = pr.scene.bodies[t[0]].body.edges();
+      std::pair<int, int> key{std::min(t[1], t[2]), std::max(t[1], t[2])};
+      if (!std::binary_search(edges.begin(), edges.end(), key))
+        c.fail(x, "body " + std::to_string(t[0]) + " has no edge " + std::to_string(t[1]) + "-" + std::to_string(t[2]));
+      pr.edges.push_back({t[0], key.first, key.second});
+    }
+  }
+  if (clipping) {
+    if (!root["clipper"]) c.fail(root, "a clipping problem needs a 'clipper'");
+    parse_clipper(c, root["clipper"], pr);
+    if (pr.type == Problem::Type::Midpoint && !pr.window) c.fail(root["clipper"], "midpoint subdivision needs a box or a frustum");
+    const YAML::Node s = root["segments"];
+    if (!s || !s.IsSequence() || s.size() == 0) c.fail(s ? s : root, "a clipping problem needs 'segments': [[x1, y1, z1, x2, y2, z2], ...]");
+    for (const YAML::Node& x : s) {
+      auto v = c.numbers(x, 6, "a segment [x1, y1, z1, x2, y2, z2]");
+      pr.segments.push_back({Point3(v[0], v[1], v[2]), Point3(v[3], v[4], v[5])});
+    }
+  }
+  if (root["eps"]) {
+    pr.eps = c.number(root["eps"], "eps");
+    if (!(pr.eps > 0)) c.fail(root["eps"], "eps must be positive");
+  }
+  return pr;
+}
+
+}  // namespace hlr

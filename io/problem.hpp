@@ -1,0 +1,40 @@
+// Problem files for `hlr explain` (issue 6): a scene file (docs/scene-format.md) with a
+// `problem` type and the data of that type. Types: roberts (bodies, view, optional light and
+// edges to analyse), cyrus-beck (a convex clipper and segments), midpoint (a box or frustum,
+// segments, eps), convexity, decompose, transform (one body). Every number is exact; unknown
+// keys and wrong types are errors with file and line. Format: docs/problem-format.md.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "algorithms/cyrus_beck.hpp"
+#include "algorithms/midpoint_clip.hpp"
+#include "io/scene.hpp"
+
+namespace hlr {
+
+struct Problem {
+  enum class Type { Roberts, CyrusBeck, Midpoint, Convexity, Decompose, Transform };
+  Type type = Type::Roberts;
+  std::string file;
+  std::string title;  // optional `title`
+  Scene scene;
+  // roberts: the edges to analyse, as (body, vertex, vertex); empty: every edge.
+  std::vector<std::array<int, 3>> edges;
+  // cyrus-beck, midpoint
+  std::optional<ConvexClipper> clipper;
+  std::optional<Window> window;  // box or frustum (midpoint needs one)
+  std::string clipper_text;      // e.g. "box [0, 2, 0, 2, 0, 2]"
+  std::vector<std::pair<Point3, Point3>> segments;
+  Rational eps = rational(1, 100);
+};
+
+const char* to_string(Problem::Type t);
+
+/// Loads a problem file (YAML or JSON). Throws InputError with file and line.
+Problem load_problem(const std::string& path);
+Problem load_problem_text(const std::string& text, const std::string& path);
+
+}  // namespace hlr

@@ -1,0 +1,223 @@
+// Exam mode (io/problem.hpp, io/explain.hpp, issue 6): golden Markdown and JSON for every
+// problem in data/problems/ (deterministic output), exact values worked by hand on several
+// problems, the explain result equal to render's on every Roberts problem, and bad problem
+// files. Regenerate the golden files with HLR_UPDATE_GOLDEN=1 after a deliberate change.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "io/drawing.hpp"
+#include "io/explain.hpp"
+
+using namespace hlr;
+namespace fs = std::filesystem;
+
+namespace {
+const std::string kData = HLR_DATA_DIR;
+const std::string kGolden = HLR_GOLDEN_DIR;
+
+std::vector<std::string> problems() {
+  std::vector<std::string> out;
+  for (const auto& e : fs::directory_iterator(kData + "/problems"))
+    if (e.path().extension() == ".yaml") out.push_back(e.path().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+// The rows of the first table with this caption in the section with this title.
+const SolutionJson& table(const SolutionJson& s, const std::string& section, const std::string& caption, int nth = 0) {
+  for (const auto& sec : s["sections"])
+    if (sec["title"] == section)
+      for (const auto& t : sec["tables"])
+        if (t["caption"] == caption && nth-- == 0) return t["rows"];
+  throw std::runtime_error("no table " + caption);
+}
+const SolutionJson& values(const SolutionJson& s, const std::string& section, int nth = 0) {
+  for (const auto& sec : s["sections"])
+    if (sec["title"] == section && nth-- == 0) return sec["values"];
+  throw std::runtime_error("no section " + section);
+}
+}  // namespace
+
+TEST(Explain, AtLeastEightProblemsCoveringEveryType) {
+  std::set<std::string> types;
+  for (const auto& p : problems()) types.insert(to_string(load_problem(p).type));
+  EXPECT_GE(problems().size(), 8u);
+  EXPECT_EQ(types.size(), 6u);
+}
+
+TEST(Explain, GoldenMarkdownAndJson) {
+  const bool update = std::getenv("HLR_UPDATE_GOLDEN") != nullptr;
+  for (const auto& p : problems()) {
+    SolutionJson s = explain(load_problem(p));
+    std::string stem = fs::path(p).stem().string();
+    std::map<std::string, std::string> outputs = {{stem + ".md", explain_markdown(s, Lang::En)},
+                                                  {stem + ".ru.md", explain_markdown(s, Lang::Ru)},
+                                                  {stem + ".json", s.dump(1) + "\n"}};
+    EXPECT_EQ(explain_markdown(explain(load_problem(p)), Lang::En), outputs[stem + ".md"]) << "not deterministic: " << p;
+    for (const auto& [name, text] : outputs) {
+      std::string path = kGolden + "/" + name;
+      if (update) {
+        std::ofstream(path) << text;
+        continue;
+      }
+      ASSERT_TRUE(fs::exists(path)) << path << " (HLR_UPDATE_GOLDEN=1 writes it)";
+      EXPECT_EQ(slurp(path), text) << name << " differs from its golden file";
+    }
+  }
+}
+
+// The notes' cube (seed 003, section 27), worked by hand: the corrected body matrix has the
+// columns [1 0 0 1], [-1 0 0 1], [0 1 0 1], [0 -1 0 1], [0 0 1 1], [0 0 -1 1]; from +z
+// (E = [0 0 -1 0]) faces 0-3 are edge-on, the back face 4 gives -1 (non-facing), the front +1.
+TEST(Explain, NotesCubeBodyMatrixAndFacing) {
+  SolutionJson s = explain(load_problem(kData + "/problems/roberts_cube.yaml"));
+  const auto& planes = table(s, "body_matrix", "planes");
+  std::vector<std::string> want = {"[1 0 0 1]", "[-1 0 0 1]", "[0 1 0 1]", "[0 -1 0 1]", "[0 0 1 1]", "[0 0 -1 1]"};
+  ASSERT_EQ(planes.size(), 6u);
+  for (std::size_t f = 0; f < 6; ++f) {
+    EXPECT_EQ(planes[f][4], want[f]);
+    EXPECT_EQ(planes[f][2], "-1");   // [S]·[V] at the centre before the correction
+    EXPECT_EQ(planes[f][3], "yes");  // so every column was negated
+  }
+  EXPECT_EQ(values(s, "body_matrix")["interior_point"], "(0, 0, 0)");
+  const auto& facing = table(s, "facing", "facing_table");
+  std::vector<std::string> ev = {"0", "0", "0", "0", "-1", "1"}, cls = {"edge-on", "edge-on", "edge-on", "edge-on", "non-facing", "facing"};
+  for (std::size_t f = 0; f < 6; ++f) {
+    EXPECT_EQ(facing[f][1], ev[f]);
+    EXPECT_EQ(facing[f][2], cls[f]);
+  }
+  EXPECT_TRUE(table(s, "facing", "self_hidden").empty());  // one non-facing face: no edge has two
+}
+
+// The pyramid with a light from [1, 2, 3] seen from [1, -2, 2], by hand: the columns of [V]
+// are inward planes, E = -[v 0], so E·[VT] = n·v for the outward normal n (positive: facing);
+// likewise L·[VT] = n·L (negative: self-shadowed).
+TEST(Explain, PyramidLightSelfShadowedFaces) {
+  SolutionJson s = explain(load_problem(kData + "/problems/roberts_pyramid_light.yaml"));
+  const auto& facing = table(s, "facing", "facing_table");
+  const auto& light = table(s, "facing", "light_table");
+  Polyhedron pyr = load_problem(kData + "/problems/roberts_pyramid_light.yaml").scene.bodies[0].body;
+  Vector3 v(1, -2, 2), L(1, 2, 3);
+  for (std::size_t f = 0; f < pyr.num_faces(); ++f) {
+    Vector3 n = pyr.planes()[f].normal();  // outward
+    Rational nv = dot(n, v), nl = dot(n, L);
+    // E·[VT] has the sign of n·v (inward column, E = -v); L·[VT] likewise with -L.
+    EXPECT_EQ(sgn(parse_rational(facing[f][1].get<std::string>())), sgn(nv)) << f;
+    EXPECT_EQ(light[f][2], nl < 0 ? "yes" : "no") << f;                       // self-shadowed
+    EXPECT_EQ(light[f][3], nl < 0 && nv > 0 ? "yes" : "no") << f;             // visible shadow
+  }
+  // Face 1 (0 1 4, the y = 0 side, normal (0, -2, 1)): n·v = 6 > 0 facing, n·L = -1 < 0 shadowed.
+  EXPECT_EQ(facing[1][1], "6");
+  EXPECT_EQ(light[1][1], "-1");
+  EXPECT_EQ(light[1][3], "yes");
+}
+
+// Cyrus-Beck, segment (-1,1,1) -> (3,1,1) against [0,2]^3 by hand: D = (4, 0, 0); the left face
+// (inner normal (1,0,0)) gives W·n = -1, D·n = 4, t = 1/4 (lower); the right face W·n = 3,
+// D·n = -4, t = 3/4 (upper); visible (0,1,1) - (2,1,1).
+TEST(Explain, CyrusBeckTableByHand) {
+  SolutionJson s = explain(load_problem(kData + "/problems/cyrus_beck_box.yaml"));
+  const auto& rows = table(s, "cyrus_beck", "cb_table");
+  bool left = false, right = false;
+  for (const auto& r : rows) {
+    if (r[3] == "4") {
+      EXPECT_EQ(r[2], "-1");
+      EXPECT_EQ(r[4], "1/4");
+      EXPECT_EQ(r[5], "lower");
+      left = true;
+    }
+    if (r[3] == "-4") {
+      EXPECT_EQ(r[2], "3");
+      EXPECT_EQ(r[4], "3/4");
+      EXPECT_EQ(r[5], "upper");
+      right = true;
+    }
+    if (r[3] == "0") EXPECT_EQ(r[5], "parallel-inside");
+  }
+  EXPECT_TRUE(left && right);
+  EXPECT_EQ(values(s, "cyrus_beck")["visible_part"], "(0, 1, 1) - (2, 1, 1)");
+  EXPECT_EQ(s["result"]["segments"][2]["visible"], false);  // (-1,3,1)-(3,3,1) passes above
+}
+
+// Convexity of the L-prism by hand: face 4 (y = 1, x in [1, 2]) has vertex 4 (1, 2, 0) on one
+// side and vertex 0 on the other; the outer faces have every vertex on one side.
+TEST(Explain, ConvexityAndDecompositionByHand) {
+  SolutionJson c = explain(load_problem(kData + "/problems/convexity_l_prism.yaml"));
+  const auto& signs = table(c, "convexity", "signs");
+  EXPECT_EQ(signs[4][1], "[0 1 0 -1]");
+  EXPECT_EQ(signs[4][2 + 0], "-");
+  EXPECT_EQ(signs[4][2 + 4], "+");
+  EXPECT_EQ(signs[4].back(), "no");
+  EXPECT_EQ(signs[0].back(), "yes");
+  EXPECT_EQ(c["result"]["convex"], false);
+  SolutionJson d = explain(load_problem(kData + "/problems/decompose_l_prism.yaml"));
+  EXPECT_EQ(table(d, "decompose", "cuts")[0][1], "[0 1 0 -1]");
+  EXPECT_EQ(d["result"]["pieces"].size(), 2u);
+  EXPECT_EQ(values(d, "decompose")["total_volume"], "3");
+  EXPECT_EQ(values(d, "decompose")["body_volume"], "3");
+}
+
+// The transform problem by hand, row-vector convention: vertex 0 (-1,-1,-1) scaled by 2 about
+// (1,1,1) -> (-3,-3,-3); rotated 90 degrees about z -> (3,-3,-3); moved by (1,2,3) -> (4,-1,0).
+TEST(Explain, TransformByHand) {
+  SolutionJson s = explain(load_problem(kData + "/problems/transform_cube.yaml"));
+  const auto& v = table(s, "transform", "vertices_moved");
+  EXPECT_EQ(v[0][1], "(-1, -1, -1)");
+  EXPECT_EQ(v[0][2], "(4, -1, 0)");
+  EXPECT_EQ(s["result"]["vertices"][7], "(0, 3, 4)");  // (1,1,1) -> (1,1,1) -> (-1,1,1) -> (0,3,4)
+}
+
+// The explanation reads the same results as `hlr render --method roberts --edges all`.
+TEST(Explain, RobertsSegmentsEqualRendersOnEveryProblem) {
+  int compared = 0;
+  for (const auto& p : problems()) {
+    Problem pr = load_problem(p);
+    if (pr.type != Problem::Type::Roberts) continue;
+    SolutionJson s = explain(pr);
+    Scene scene = load_scene(p);  // the problem file read as a scene, as render reads it
+    std::vector<const Polyhedron*> polys;
+    std::vector<DrawingBody> names;
+    for (const auto& b : scene.bodies) {
+      polys.push_back(&b.body);
+      names.push_back({b.name, b.source});
+    }
+    Camera cam = scene.view.type == View::Type::Perspective ? make_perspective(scene.view.eye, *scene.view.target)
+                                                           : make_orthographic(scene.view.direction);
+    RobertsOptions ro;
+    ro.edges = EdgeSelection::All;
+    auto j = nlohmann::ordered_json::parse(to_json(names, roberts(polys, cam, ro), cam));
+    EXPECT_EQ(s["result"]["segments"], j["segments"]) << p;
+    ++compared;
+  }
+  EXPECT_GE(compared, 4);
+}
+
+TEST(Explain, BadProblemFilesNameTheLine) {
+  auto err = [](const std::string& text) {
+    try {
+      load_problem_text(text, "p.yaml");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(err("problem: hidden-surface\n").find("p.yaml:1: unknown problem type 'hidden-surface'"), std::string::npos);
+  EXPECT_NE(err("bodies: []\n").find("needs 'problem: TYPE'"), std::string::npos);
+  EXPECT_NE(err("problem: cyrus-beck\nclipper: {box: [0, 1, 0, 1, 0]}\nsegments: [[0,0,0,1,1,1]]\n").find("p.yaml:2:"), std::string::npos);
+  EXPECT_NE(err("problem: midpoint\nclipper: {box: [0, 2, 0, 2, 0, 2]}\nsegments: [[0,0,0,1,1,1]]\neps: 0\n").find("eps must be positive"),
+            std::string::npos);
+  EXPECT_NE(err("problem: convexity\nbodies:\n  - box: {min: [0,0,0], max: [1,1,1]}\n  - box: {min: [0,0,0], max: [1,1,1]}\n")
+                .find("exactly one body"),
+            std::string::npos);
+  EXPECT_NE(err("problem: roberts\nbodies:\n  - box: {min: [0,0,0], max: [1,1,1]}\nedges: [[0, 0, 7]]\n").find("has no edge 0-7"),
+            std::string::npos);
+  EXPECT_NE(err("problem: roberts\ncolour: red\nbodies:\n  - box: {min: [0,0,0], max: [1,1,1]}\n").find("unknown key 'colour'"),
+            std::string::npos);
+}
