@@ -95,7 +95,10 @@ void check(const Polyhedron& body, const Camera& cam, const Oracle& oracle, Tall
   opt.edges = edges;
   RobertsResult r = face_occluders({&body}, cam, opt);
   // A deterministic subset of the segments keeps the exact oracle affordable.
-  const std::size_t stride = std::max<std::size_t>(1, r.segments.size() / 300);
+#ifndef HLR_ORACLE_SEGMENTS
+#define HLR_ORACLE_SEGMENTS 300
+#endif
+  const std::size_t stride = std::max<std::size_t>(1, r.segments.size() / HLR_ORACLE_SEGMENTS);
   for (std::size_t i = 0; i < r.segments.size(); i += stride) {
     const Segment& s = r.segments[i];
     for (const Piece& p : s.pieces) {
