@@ -42,6 +42,7 @@ struct Search {
   Rational eps2;
   long subdivisions = 0;
   std::optional<Coefficients> k;
+  std::vector<MidpointStep>* trace = nullptr;
 
   Search(const Window& win, Rational e2) : w(win), eps2(std::move(e2)) {
     if (const auto* f = std::get_if<FrustumWindow>(&w)) k.emplace(*f);
@@ -59,6 +60,7 @@ struct Search {
     Point3 m = midpoint(a, b);
     ++subdivisions;
     unsigned cm = code(m);
+    if (trace) trace->push_back({"search", m, cm});
     if (cm == 0) return m;
     if (auto left = find_inside(a, ca, m, cm)) return left;
     return find_inside(m, cm, b, cb);
@@ -66,11 +68,13 @@ struct Search {
 
   // From an inside point toward an outside one: the last inside point within eps of the
   // boundary crossing (a convex clipper is crossed once between them).
-  Point3 bisect(Point3 in, Point3 out) {
+  Point3 bisect(Point3 in, Point3 out, const char* phase) {
     while (dist2(in, out) > eps2) {
       Point3 m = midpoint(in, out);
       ++subdivisions;
-      if (code(m) == 0)
+      unsigned cm = code(m);
+      if (trace) trace->push_back({phase, m, cm});
+      if (cm == 0)
         in = m;
       else
         out = m;
@@ -108,10 +112,12 @@ std::string outcode_bits(unsigned code) {
   return s;
 }
 
-MidpointResult midpoint_clip(const Window& w, const Point3& p1, const Point3& p2, const Rational& eps) {
+MidpointResult midpoint_clip(const Window& w, const Point3& p1, const Point3& p2, const Rational& eps,
+                             std::vector<MidpointStep>* trace) {
   if (!(eps > 0)) throw std::invalid_argument("midpoint clipping needs a tolerance eps > 0");
   MidpointResult r;
   Search s(w, eps * eps);
+  s.trace = trace;
   r.code1 = s.code(p1);
   r.code2 = s.code(p2);
   if (r.code1 == 0 && r.code2 == 0) {
@@ -133,8 +139,8 @@ MidpointResult midpoint_clip(const Window& w, const Point3& p1, const Point3& p2
     inside = s.find_inside(p1, r.code1, p2, r.code2);
   if (inside) {
     r.visible = true;
-    r.from = r.code1 == 0 ? p1 : s.bisect(*inside, p1);
-    r.to = r.code2 == 0 ? p2 : s.bisect(*inside, p2);
+    r.from = r.code1 == 0 ? p1 : s.bisect(*inside, p1, "end 1");
+    r.to = r.code2 == 0 ? p2 : s.bisect(*inside, p2, "end 2");
   }
   r.subdivisions = s.subdivisions;
   return r;

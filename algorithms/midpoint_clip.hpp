@@ -63,7 +63,18 @@ struct MidpointResult {
   /// visible, the exact visible part (if any) is shorter than 2·eps.
 };
 
-/// Clips P1P2 by midpoint subdivision to tolerance eps > 0.
-MidpointResult midpoint_clip(const Window& w, const Point3& p1, const Point3& p2, const Rational& eps);
+/// One midpoint of the subdivision, for the course's tables (hlr explain): the point, its
+/// outcode and which search produced it ("search": looking for an inside point between two
+/// outside ends; "end 1" / "end 2": halving toward that end's boundary crossing).
+struct MidpointStep {
+  std::string phase;
+  Point3 point;
+  unsigned code = 0;
+};
+
+/// Clips P1P2 by midpoint subdivision to tolerance eps > 0. With `trace`, every midpoint is
+/// recorded in order.
+MidpointResult midpoint_clip(const Window& w, const Point3& p1, const Point3& p2, const Rational& eps,
+                             std::vector<MidpointStep>* trace = nullptr);
 
 }  // namespace hlr

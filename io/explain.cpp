@@ -176,6 +176,7 @@ J edge_body_table(const Point3& p1, const Point3& p2, const BodyMatrixData& V, c
   lines.push_back({"a=0", 0, 1, 0});
   J& cand = sec.table(prefix + "candidates", {"lines", "t", "a", "feasible"});
   std::optional<Rational> tmin, tmax;
+  std::vector<Rational> pierce;  // feasible vertices on a = 0: where the edge pierces the body
   for (std::size_t x = 0; x < lines.size(); ++x)
     for (std::size_t y = x + 1; y < lines.size(); ++y) {
       const Line &L1 = lines[x], &L2 = lines[y];
@@ -188,6 +189,7 @@ J edge_body_table(const Point3& p1, const Point3& p2, const BodyMatrixData& V, c
       bool ok = t >= 0 && t <= 1 && a >= 0;
       for (int j = 0; j < n && ok; ++j) ok = p[j] + qq[j] * t + w[j] * a >= 0;
       cand.push_back({L1.name + " ∩ " + L2.name, q(t), q(a), ok ? "yes" : "no"});
+      if (ok && a == 0 && t > 0 && t < 1 && std::find(pierce.begin(), pierce.end(), t) == pierce.end()) pierce.push_back(t);
       if (ok) {
         if (!tmin || t < *tmin) tmin = t;
         if (!tmax || t > *tmax) tmax = t;
@@ -195,6 +197,12 @@ J edge_body_table(const Point3& p1, const Point3& p2, const BodyMatrixData& V, c
     }
   OpenInterval iv = hidden_interval(p1, p2, V, g);
   if (tmin && tmax && *tmin < *tmax) sec.j["svg"] = region_svg(lines, p, qq, w, *tmin, *tmax);
+  if (!pierce.empty()) {
+    std::sort(pierce.begin(), pierce.end());
+    std::string list;
+    for (const Rational& t : pierce) list += (list.empty() ? "" : ", ") + std::string("t = ") + q(t) + " " + pt(p1 + t * (p2 - p1));
+    sec.value("penetration", list);
+  }
   J res;
   res["t_min"] = tmin ? q(*tmin) : "-";
   res["t_max"] = tmax ? q(*tmax) : "-";
@@ -386,7 +394,8 @@ J midpoint_solution(const Problem& pr) {
   J results = J::array();
   for (std::size_t i = 0; i < pr.segments.size(); ++i) {
     const auto& [p1, p2] = pr.segments[i];
-    MidpointResult m = midpoint_clip(*pr.window, p1, p2, pr.eps);
+    std::vector<MidpointStep> trace;
+    MidpointResult m = midpoint_clip(*pr.window, p1, p2, pr.eps, &trace);
     CyrusBeckResult cb = cyrus_beck(*pr.clipper, p1, p2, false);
     Section sec("midpoint", std::to_string(i + 1));
     sec.value("clipper", pr.clipper_text);
@@ -394,6 +403,9 @@ J midpoint_solution(const Problem& pr) {
     J& t = sec.table("outcodes", {"end", "point", "outcode", "notes_outcode"});
     t.push_back({"P1", pt(p1), outcode_bits(outcode(*pr.window, p1)), outcode_bits(notes_outcode(*pr.window, p1))});
     t.push_back({"P2", pt(p2), outcode_bits(outcode(*pr.window, p2)), outcode_bits(notes_outcode(*pr.window, p2))});
+    J& st = sec.table("steps", {"n_step", "phase", "point", "outcode"});
+    for (std::size_t k = 0; k < trace.size(); ++k)
+      st.push_back({std::to_string(k + 1), trace[k].phase, pt(trace[k].point), outcode_bits(trace[k].code)});
     sec.value("trivial", m.trivially_accepted ? "accepted" : m.trivially_rejected ? "rejected" : "no");
     sec.value("subdivisions", std::to_string(m.subdivisions));
     J res;
@@ -485,6 +497,13 @@ J transform_solution(const Problem& pr) {
   out["sections"] = J::array();
   const SceneBody& b = pr.scene.bodies[0];
   Section sec("transform", b.name);
+  for (std::size_t k = 0; k < b.steps.size(); ++k) {
+    J& st = sec.table("step", {"row", "c1", "c2", "c3", "c4"});
+    const Matrix4& m = b.steps[k].second;
+    for (int a = 0; a < 4; ++a) st.push_back({std::to_string(a + 1), q(m(a, 0)), q(m(a, 1)), q(m(a, 2)), q(m(a, 3))});
+    sec.j["tables"].back()["caption"] = "step";
+    sec.j["tables"].back()["step"] = std::to_string(k + 1) + ": " + b.steps[k].first;
+  }
   J& t = sec.table("T", {"row", "c1", "c2", "c3", "c4"});
   for (int a = 0; a < 4; ++a)
     t.push_back({std::to_string(a + 1), q(b.transform(a, 0)), q(b.transform(a, 1)), q(b.transform(a, 2)), q(b.transform(a, 3))});
@@ -598,6 +617,14 @@ const std::map<std::string, std::pair<std::string, std::string>>& words() {
       {"before", {"before", "до"}},
       {"after", {"after", "после"}},
       {"row", {"row", "строка"}},
+      {"step", {"[T] of step", "[T] шага"}},
+      {"steps", {"Midpoints in order", "Средние точки по порядку"}},
+      {"phase", {"phase", "этап"}},
+      {"n_step", {"step", "шаг"}},
+      {"v:search", {"search for an inside point", "поиск внутренней точки"}},
+      {"v:end 1", {"halving toward end 1", "деление к концу 1"}},
+      {"v:end 2", {"halving toward end 2", "деление к концу 2"}},
+      {"penetration", {"penetration points (a = 0)", "точки проникновения (a = 0)"}},
       {"yes", {"yes", "да"}},
       {"no", {"no", "нет"}},
       {"none", {"none", "нет"}},
@@ -659,7 +686,7 @@ std::string explain_markdown(const SolutionJson& s, Lang lang) {
       o += "- " + word(it.key(), lang) + ": " + cell(it.value(), lang) + "\n";
     if (!sec["values"].empty()) o += "\n";
     for (const J& t : sec["tables"]) {
-      o += "**" + word(t["caption"], lang) + "**\n\n";
+      o += "**" + word(t["caption"], lang) + (t.contains("step") ? " " + t["step"].get<std::string>() : "") + "**\n\n";
       if (t["rows"].empty()) {
         o += "(" + word("none", lang) + ")\n\n";
         continue;
@@ -713,7 +740,7 @@ std::string explain_html(const SolutionJson& s, Lang lang) {
     }
     if (sec.contains("svg")) o += "<p>" + esc(word("region", lang)) + "</p>\n" + sec["svg"].get<std::string>() + "\n";
     for (const J& t : sec["tables"]) {
-      o += "<p><b>" + esc(word(t["caption"], lang)) + "</b></p>\n<table><tr>";
+      o += "<p><b>" + esc(word(t["caption"], lang)) + (t.contains("step") ? " " + esc(t["step"]) : "") + "</b></p>\n<table><tr>";
       for (const J& c : t["columns"]) o += "<th>" + esc(word(c, lang)) + "</th>";
       o += "</tr>\n";
       for (const J& r : t["rows"]) {

@@ -251,7 +251,7 @@ Scene scene_from_mesh(const std::string& path) {
   Scene s;
   s.file = path;
   s.bodies.push_back(SceneBody{std::filesystem::path(path).stem().string(), path, load_mesh(path),
-                               identity_transform(), {}});
+                               identity_transform(), {}, {}});
   return s;
 }
 
@@ -318,12 +318,17 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
     }
     Matrix4 m = identity_transform();
     std::vector<std::string> notes;
+    std::vector<std::pair<std::string, Matrix4>> steps;
     if (b["transform"]) {
       if (!b["transform"].IsSequence()) c.fail(b["transform"], "transform must be a list of steps");
-      for (const auto& step : b["transform"]) m = compose(m, parse_transform_step(c, step, notes));
+      for (const auto& step : b["transform"]) {
+        Matrix4 one = parse_transform_step(c, step, notes);
+        steps.push_back({step.IsMap() && step.size() > 0 ? step.begin()->first.Scalar() : std::string("step"), one});
+        m = compose(m, one);
+      }
       poly.emplace(transformed(c, b["transform"], *poly, m));
     }
-    s.bodies.push_back(SceneBody{name, source, std::move(*poly), m, std::move(notes)});
+    s.bodies.push_back(SceneBody{name, source, std::move(*poly), m, std::move(steps), std::move(notes)});
   }
   if (root["view"]) s.view = parse_view(c, root["view"]);
   if (root["light"]) {

@@ -32,6 +32,7 @@ struct SceneBody {
   std::string source;  // mesh path, or the scene file for inline bodies and boxes
   Polyhedron body;     // world coordinates: the body's transforms applied
   Matrix4 transform;   // composition of the body's transforms (row-vector convention)
+  std::vector<std::pair<std::string, Matrix4>> steps;  // each transform step: its key and matrix
   std::vector<std::string> notes;  // e.g. how an inexact rotation angle was realised
 };
 
