@@ -594,16 +594,10 @@ class Engine {
     o.m[0] = neg<P>(n);
     o.c[0] = dot<P>(o.m[0], X_[t.v[0]]);
     for (int k = 0; k < 3; ++k) {
-      int p = t.v[k], q = t.v[(k + 1) % 3], r = t.v[(k + 2) % 3];
+      int r = t.v[(k + 2) % 3];
       Vec<P> m;
       V c;
-      if (cam_.perspective) {
-        m = cross<P>(sub<P>(X_[p], view_), sub<P>(X_[q], view_));
-        c = dot<P>(m, view_);
-      } else {
-        m = cross<P>(view_, sub<P>(X_[q], X_[p]));
-        c = dot<P>(m, X_[p]);
-      }
+      side_plane(t.v[k], t.v[(k + 1) % 3], m, c);
       if (P::sign(dot<P>(m, X_[r]) - c) < 0) {
         m = neg<P>(m);
         c = -c;
@@ -692,18 +686,24 @@ class Engine {
     }
   }
 
+  // The plane through vertices p and q containing the view direction (orthographic) or the eye
+  // (perspective), as m·X - c = 0; its orientation is the caller's to fix.
+  void side_plane(int p, int q, Vec<P>& m, V& c) const {
+    if (cam_.perspective) {
+      m = cross<P>(sub<P>(X_[p], view_), sub<P>(X_[q], view_));
+      c = dot<P>(m, view_);
+    } else {
+      m = cross<P>(view_, sub<P>(X_[q], X_[p]));
+      c = dot<P>(m, X_[p]);
+    }
+  }
+
   // The far vertices x and y of two triangles on edge (u, v) lie strictly on opposite sides of
   // the edge in the projection.
   bool opposite_in_projection(int u, int v, int x, int y) const {
     Vec<P> m;
     V c;
-    if (cam_.perspective) {
-      m = cross<P>(sub<P>(X_[u], view_), sub<P>(X_[v], view_));
-      c = dot<P>(m, view_);
-    } else {
-      m = cross<P>(view_, sub<P>(X_[v], X_[u]));
-      c = dot<P>(m, X_[u]);
-    }
+    side_plane(u, v, m, c);
     return P::sign(dot<P>(m, X_[x]) - c) * P::sign(dot<P>(m, X_[y]) - c) < 0;
   }
 

@@ -320,6 +320,49 @@ std::vector<Piece> pieces_from_hidden(std::vector<std::pair<Rational, Rational>>
   return assemble(std::move(spans), depth);
 }
 
+std::vector<Segment> body_edge_segments(const Polyhedron& p, int body, const std::vector<signed char>& facing,
+                                        const RobertsOptions& opt, RobertsStats& stats) {
+  std::map<std::pair<int, int>, std::pair<int, int>> faces_of;  // edge -> its two faces
+  for (std::size_t f = 0; f < p.faces().size(); ++f) {
+    const Face& face = p.faces()[f];
+    for (std::size_t k = 0; k < face.size(); ++k) {
+      int u = face[k], v = face[(k + 1) % face.size()];
+      auto& slot = faces_of[{std::min(u, v), std::max(u, v)}];
+      if (u < v) slot.first = static_cast<int>(f);
+      else slot.second = static_cast<int>(f);
+    }
+  }
+  CreaseAngle crease(opt.crease_degrees);
+  std::vector<Segment> out;
+  for (const auto& [e, ff] : faces_of) {
+    LineKind kind = LineKind::Edge;
+    if (opt.edges == EdgeSelection::Feature) {
+      if (p.planes()[ff.first] == p.planes()[ff.second]) continue;
+      if ((facing[ff.first] > 0) != (facing[ff.second] > 0)) {
+        kind = LineKind::Silhouette;
+      } else {
+        mpz_class na[3], nb[3];
+        for (int k = 0; k < 3; ++k) na[k] = p.planes()[ff.first][k].get_num(), nb[k] = p.planes()[ff.second][k].get_num();
+        if (!crease.exceeds(na, nb)) continue;
+        kind = LineKind::Crease;
+      }
+    }
+    Segment s;
+    s.line = kind;
+    s.body = body;
+    s.v0 = e.first;
+    s.v1 = e.second;
+    s.face0 = ff.first;
+    s.face1 = ff.second;
+    s.borrow_ends(p.vertices()[e.first], p.vertices()[e.second]);
+    s.self_hidden = facing[ff.first] < 0 && facing[ff.second] < 0;
+    ++stats.edges;
+    if (s.self_hidden) ++stats.self_hidden;
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
 const char* to_string(LineKind k) {
   switch (k) {
     case LineKind::Boundary: return "boundary";
@@ -402,7 +445,6 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
     res.facing.push_back(std::move(fc));
     res.ev.push_back(std::move(ev));
   }
-  CreaseAngle crease(opt.crease_degrees);
   std::vector<FastBody> fast;
   for (const BodyMatrix& bm : res.matrices) fast.push_back(prepare_fast_body(bm.V, g));
   Projector proj(camera);
@@ -441,51 +483,14 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
   };
 
   // Stage 1 and 2: the bodies' edges.
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const Polyhedron& p = *bodies[i];
-    std::map<std::pair<int, int>, std::pair<int, int>> faces_of;  // edge -> its two faces
-    for (std::size_t f = 0; f < p.faces().size(); ++f) {
-      const Face& face = p.faces()[f];
-      for (std::size_t k = 0; k < face.size(); ++k) {
-        int u = face[k], v = face[(k + 1) % face.size()];
-        auto& slot = faces_of[{std::min(u, v), std::max(u, v)}];
-        if (u < v) slot.first = static_cast<int>(f);
-        else slot.second = static_cast<int>(f);
-      }
-    }
-    for (const auto& [e, ff] : faces_of) {
-      LineKind kind = LineKind::Edge;
-      if (opt.edges == EdgeSelection::Feature) {
-        if (p.planes()[ff.first] == p.planes()[ff.second]) continue;
-        if ((res.ev[i][ff.first] > 0) != (res.ev[i][ff.second] > 0)) {
-          kind = LineKind::Silhouette;
-        } else {
-          mpz_class na[3], nb[3];
-          for (int k = 0; k < 3; ++k) na[k] = p.planes()[ff.first][k].get_num(), nb[k] = p.planes()[ff.second][k].get_num();
-          if (!crease.exceeds(na, nb)) continue;
-          kind = LineKind::Crease;
-        }
-      }
-      Segment s;
-      s.line = kind;
-      s.body = static_cast<int>(i);
-      s.v0 = e.first;
-      s.v1 = e.second;
-      s.face0 = ff.first;
-      s.face1 = ff.second;
-      s.borrow_ends(p.vertices()[e.first], p.vertices()[e.second]);
-      ++res.stats.edges;
-      s.self_hidden = res.ev[i][ff.first] < 0 && res.ev[i][ff.second] < 0;
-      if (s.self_hidden) {
-        ++res.stats.self_hidden;
-        std::vector<Span> all = {{Rational(0), Rational(1)}};
-        s.pieces = assemble(std::move(all), depth_of(s));
-      } else {
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    for (Segment& s : body_edge_segments(*bodies[i], static_cast<int>(i), res.facing[i], opt, res.stats)) {
+      if (s.self_hidden)
+        s.pieces = pieces_from_hidden({{Rational(0), Rational(1)}}, depth_of(s));
+      else
         solve(s, static_cast<int>(i), -1);
-      }
       res.segments.push_back(std::move(s));
     }
-  }
 
   // Stage 3: junction lines of every pair of bodies whose bounding boxes meet.
   std::vector<Bounds3> bb;

@@ -136,6 +136,13 @@ class RobertsError : public std::runtime_error {
 std::vector<Piece> pieces_from_hidden(std::vector<std::pair<Rational, Rational>> hidden,
                                       const std::optional<std::pair<Rational, Rational>>& depth);
 
+/// The edges of a closed body to draw, in order of their vertex pairs, classified (Feature:
+/// silhouettes by `facing` (1 facing, 0 edge-on, -1 non-facing per face), creases over the
+/// threshold; edges between coplanar faces left out) and marked self-hidden when both faces are
+/// non-facing (Stage 1). Pieces are left to the caller. Counts go to `stats`.
+std::vector<Segment> body_edge_segments(const Polyhedron& p, int body, const std::vector<signed char>& facing,
+                                        const RobertsOptions& options, RobertsStats& stats);
+
 /// Runs the algorithm. Bodies must be closed, manifold, oriented, planar, convex solids.
 RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera& camera,
                       const RobertsOptions& options = {});

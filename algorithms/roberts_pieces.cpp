@@ -5,7 +5,6 @@
 
 #include "algorithms/convex_decomposition.hpp"
 #include "algorithms/convexity.hpp"
-#include "algorithms/crease_angle.hpp"
 #include "algorithms/int128_interval.hpp"
 #include "algorithms/intersection_lines.hpp"
 #include "algorithms/triangulate.hpp"
@@ -146,52 +145,14 @@ RobertsResult roberts_pieces(const std::vector<const Polyhedron*>& bodies, const
       if (gl.plane.value(s.from()) == 0 && gl.plane.value(s.to()) == 0) add(hidden_interval(s.from(), s.to(), gl.V, g));
     s.pieces = pieces_from_hidden(std::move(hidden), depth_of(s));
   };
-  CreaseAngle crease(opt.crease_degrees);
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const Polyhedron& p = *bodies[i];
-    std::map<std::pair<int, int>, std::pair<int, int>> faces_of;
-    for (std::size_t f = 0; f < p.faces().size(); ++f) {
-      const Face& face = p.faces()[f];
-      for (std::size_t k = 0; k < face.size(); ++k) {
-        int u = face[k], v = face[(k + 1) % face.size()];
-        auto& slot = faces_of[{std::min(u, v), std::max(u, v)}];
-        if (u < v) slot.first = static_cast<int>(f);
-        else slot.second = static_cast<int>(f);
-      }
-    }
-    const auto& fc = res.facing[i];
-    for (const auto& [e, ff] : faces_of) {
-      LineKind kind = LineKind::Edge;
-      if (opt.edges == EdgeSelection::Feature) {
-        if (p.planes()[ff.first] == p.planes()[ff.second]) continue;
-        if ((fc[ff.first] > 0) != (fc[ff.second] > 0)) {
-          kind = LineKind::Silhouette;
-        } else {
-          mpz_class na[3], nb[3];
-          for (int k = 0; k < 3; ++k) na[k] = p.planes()[ff.first][k].get_num(), nb[k] = p.planes()[ff.second][k].get_num();
-          if (!crease.exceeds(na, nb)) continue;
-          kind = LineKind::Crease;
-        }
-      }
-      Segment s;
-      s.line = kind;
-      s.body = static_cast<int>(i);
-      s.v0 = e.first;
-      s.v1 = e.second;
-      s.face0 = ff.first;
-      s.face1 = ff.second;
-      s.borrow_ends(p.vertices()[e.first], p.vertices()[e.second]);
-      ++res.stats.edges;
-      s.self_hidden = fc[ff.first] < 0 && fc[ff.second] < 0;
-      if (s.self_hidden) {
-        ++res.stats.self_hidden;
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    for (Segment& s : body_edge_segments(*bodies[i], static_cast<int>(i), res.facing[i], opt, res.stats)) {
+      if (s.self_hidden)
         s.pieces = pieces_from_hidden({{Rational(0), Rational(1)}}, depth_of(s));
-      } else {
+      else
         solve(s);
-      }
       res.segments.push_back(std::move(s));
     }
-  }
   // Intersection lines of different bodies: their faces' triangles, exactly; pieces of one
   // face pair's line are joined end to end.
   std::map<std::tuple<int, int, int, int>, std::vector<std::pair<Point3, Point3>>> lines;

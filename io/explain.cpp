@@ -82,7 +82,10 @@ void input_section(const Scene& s, J& out) {
     J& fr = sec.table("faces", {"face", "vertices"});
     for (std::size_t f = 0; f < b.body.num_faces(); ++f) {
       std::string l;
-      for (int v : b.body.faces()[f]) l += (l.empty() ? "" : " ") + std::to_string(v);
+      for (int v : b.body.faces()[f]) {
+        if (!l.empty()) l += ' ';
+        l += std::to_string(v);
+      }
       fr.push_back({std::to_string(f), l});
     }
     out["sections"].push_back(sec.j);
@@ -477,7 +480,10 @@ J decompose_solution(const Problem& pr) {
     Rational vol = six_volume(c.body) / 6;
     total += vol;
     std::string vs;
-    for (const Point3& v : c.body.vertices()) vs += (vs.empty() ? "" : " ") + pt(v);
+    for (const Point3& v : c.body.vertices()) {
+      if (!vs.empty()) vs += ' ';
+      vs += pt(v);
+    }
     pieces.push_back({std::to_string(i + 1), vs, std::to_string(c.body.num_faces()), q(vol), std::to_string(n[0]), std::to_string(n[1]), std::to_string(n[2])});
     J pj;
     pj["volume"] = q(vol);
@@ -692,13 +698,21 @@ std::string explain_markdown(const SolutionJson& s, Lang lang) {
         continue;
       }
       o += "|";
-      for (const J& c : t["columns"]) o += " " + word(c, lang) + " |";
+      for (const J& c : t["columns"]) {
+        o += ' ';
+        o += word(c, lang);
+        o += " |";
+      }
       o += "\n|";
       for (std::size_t i = 0; i < t["columns"].size(); ++i) o += "---|";
       o += "\n";
       for (const J& r : t["rows"]) {
         o += "|";
-        for (const J& c : r) o += " " + cell(c, lang) + " |";
+        for (const J& c : r) {
+          o += ' ';
+          o += cell(c, lang);
+          o += " |";
+        }
         o += "\n";
       }
       o += "\n";
