@@ -437,7 +437,7 @@ J convexity_solution(const Problem& pr) {
   const Polyhedron& p = pr.scene.bodies[0].body;
   Section sec("convexity", pr.scene.bodies[0].name);
   std::vector<std::string> cols = {"face", "plane"};
-  for (std::size_t v = 0; v < p.num_vertices(); ++v) cols.push_back("v" + std::to_string(v));
+  for (std::size_t v = 0; v < p.num_vertices(); ++v) cols.push_back(std::string("v").append(std::to_string(v)));
   cols.push_back("one_side");
   J& t = sec.table("signs", cols);
   for (std::size_t f = 0; f < p.num_faces(); ++f) {
