@@ -8,35 +8,19 @@
 
 #include "io/mesh_reader.hpp"
 #include "io/text_reader.hpp"
+#include "io/yaml_context.hpp"
 
 namespace hlr {
 namespace {
 
-struct P {
-  std::string file;
-  [[noreturn]] void fail(const YAML::Node& n, const std::string& msg) const {
-    throw InputError(file, n.Mark().is_null() ? 0 : n.Mark().line + 1, msg);
-  }
-  Rational number(const YAML::Node& n, const std::string& what) const {
-    if (!n.IsScalar()) fail(n, what + " must be a number");
-    try {
-      return parse_rational(n.Scalar());
-    } catch (const NumberError& e) {
-      fail(n, what + ": " + e.what());
-    }
-  }
-  std::vector<Rational> numbers(const YAML::Node& n, std::size_t count, const std::string& what) const {
-    if (!n.IsSequence() || n.size() != count) fail(n, what + " must be a list of " + std::to_string(count) + " numbers");
-    std::vector<Rational> out;
-    for (std::size_t i = 0; i < count; ++i) out.push_back(number(n[i], what));
-    return out;
-  }
-  long integer(const YAML::Node& n, const std::string& what) const {
-    Rational q = number(n, what);
-    if (q.get_den() != 1 || !q.get_num().fits_sint_p()) fail(n, what + " must be an integer");
-    return q.get_num().get_si();
-  }
-};
+using P = YamlContext;
+
+std::vector<Rational> numbers(const P& c, const YAML::Node& n, std::size_t count, const std::string& what) {
+  if (!n.IsSequence() || n.size() != count) c.fail(n, what + " must be a list of " + std::to_string(count) + " numbers");
+  std::vector<Rational> out;
+  for (std::size_t i = 0; i < count; ++i) out.push_back(c.number(n[i], what));
+  return out;
+}
 
 Problem::Type parse_type(const P& c, const YAML::Node& n) {
   if (!n || !n.IsScalar()) c.fail(n, "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform)");
@@ -62,12 +46,12 @@ void parse_clipper(const P& c, const YAML::Node& n, Problem& pr) {
   const YAML::Node v = n.begin()->second;
   try {
     if (kind == "box") {
-      auto x = c.numbers(v, 6, "box [xmin, xmax, ymin, ymax, zmin, zmax]");
+      auto x = numbers(c, v, 6, "box [xmin, xmax, ymin, ymax, zmin, zmax]");
       pr.clipper = box_clipper(x[0], x[1], x[2], x[3], x[4], x[5]);
       pr.window = Window(BoxWindow{x[0], x[1], x[2], x[3], x[4], x[5]});
       pr.clipper_text = "box " + list_text(x);
     } else if (kind == "frustum") {
-      auto x = c.numbers(v, 7, "frustum [xl, xr, yb, yt, znear, zfar, zcp]");
+      auto x = numbers(c, v, 7, "frustum [xl, xr, yb, yt, znear, zfar, zcp]");
       pr.clipper = frustum_clipper(x[0], x[1], x[2], x[3], x[4], x[5], x[6]);
       pr.window = Window(FrustumWindow{x[0], x[1], x[2], x[3], x[4], x[5], x[6]});
       pr.clipper_text = "frustum " + list_text(x);
@@ -150,7 +134,7 @@ Problem load_problem_text(const std::string& text, const std::string& path) {
     const YAML::Node s = root["segments"];
     if (!s || !s.IsSequence() || s.size() == 0) c.fail(s ? s : root, "a clipping problem needs 'segments': [[x1, y1, z1, x2, y2, z2], ...]");
     for (const YAML::Node& x : s) {
-      auto v = c.numbers(x, 6, "a segment [x1, y1, z1, x2, y2, z2]");
+      auto v = numbers(c, x, 6, "a segment [x1, y1, z1, x2, y2, z2]");
       pr.segments.push_back({Point3(v[0], v[1], v[2]), Point3(v[3], v[4], v[5])});
     }
   }
