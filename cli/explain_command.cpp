@@ -33,10 +33,7 @@ int run_explain(const ExplainArgs& a) {
   }
   Lang lang = a.lang == "ru" ? Lang::Ru : Lang::En;
   std::string text = format == "json" ? s.dump(1) + "\n" : format == "html" ? explain_html(s, lang) : explain_markdown(s, lang);
-  if (a.output.empty() || a.output == "-")
-    std::cout << text;
-  else
-    write_file_atomically(a.output, text);
+  write_output(a.output, text);
   return 0;
 }
 

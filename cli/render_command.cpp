@@ -158,10 +158,7 @@ int run_render(const RenderArgs& a) {
   so.width_mm = a.width;
   so.stroke_mm = a.stroke;
   std::string text = format == "json" ? to_json(names, result, camera) : to_svg(names, result, camera, so);
-  if (a.output.empty() || a.output == "-")
-    std::cout << text;
-  else
-    write_file_atomically(a.output, text);
+  write_output(a.output, text);
   if (a.timings) {
     auto t_end = Clock::now();
     auto sec = [](auto d) { return std::chrono::duration<double>(d).count(); };

@@ -1,6 +1,8 @@
 // Atomic file output: temporary file in the target's folder, then rename (see atomic_file.hpp).
 #include "io/atomic_file.hpp"
 
+#include <iostream>
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -91,6 +93,13 @@ void write_file_atomically(const std::string& path, const std::string& content) 
     ::unlink(tmp.c_str());
     throw OutputError(what + ": " + std::strerror(err));
   }
+}
+
+void write_output(const std::string& path, const std::string& content) {
+  if (path.empty() || path == "-")
+    std::cout << content;
+  else
+    write_file_atomically(path, content);
 }
 
 }  // namespace hlr

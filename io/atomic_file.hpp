@@ -16,4 +16,7 @@ class OutputError : public std::runtime_error {
 /// Writes `content` to `path` atomically (same-folder temporary file, then rename).
 void write_file_atomically(const std::string& path, const std::string& content);
 
+/// A command's output: standard output when `path` is empty or "-", else the file, atomically.
+void write_output(const std::string& path, const std::string& content);
+
 }  // namespace hlr

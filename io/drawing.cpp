@@ -158,6 +158,26 @@ std::string to_svg(const std::vector<DrawingBody>& bodies, const RobertsResult& 
   return out;
 }
 
+nlohmann::ordered_json piece_json(const Segment& s, const Piece& p) {
+  Json o;
+  if (s.kind == Segment::Kind::Edge) {
+    o["body"] = s.body;
+    o["edge"] = Json::array({s.v0, s.v1});
+    o["kind"] = to_string(s.line);
+  } else {
+    o["bodies"] = Json::array({s.body, s.body2});
+    o["kind"] = "intersection";
+  }
+  o["visible"] = p.visible;
+  o["from"] = exact_point(s.at(p.t0));
+  o["to"] = exact_point(s.at(p.t1));
+  o["t"] = Json::array({to_string(p.t0), to_string(p.t1)});
+  if (s.self_hidden) o["self_hidden"] = true;
+  if (p.behind_eye) o["behind_eye"] = true;
+  if (p.clipped) o["clipped"] = true;
+  return o;
+}
+
 std::string to_json(const std::vector<DrawingBody>& bodies, const RobertsResult& r, const Camera& camera) {
   Json j;
   Json view;
@@ -185,25 +205,7 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const RobertsResult&
   j["bodies"] = jb;
   Json segs = Json::array();
   for (const Segment& s : r.segments)
-    for (const Piece& p : s.pieces) {
-      Json o;
-      if (s.kind == Segment::Kind::Edge) {
-        o["body"] = s.body;
-        o["edge"] = Json::array({s.v0, s.v1});
-        o["kind"] = to_string(s.line);
-      } else {
-        o["bodies"] = Json::array({s.body, s.body2});
-        o["kind"] = "intersection";
-      }
-      o["visible"] = p.visible;
-      o["from"] = exact_point(s.at(p.t0));
-      o["to"] = exact_point(s.at(p.t1));
-      o["t"] = Json::array({to_string(p.t0), to_string(p.t1)});
-      if (s.self_hidden) o["self_hidden"] = true;
-      if (p.behind_eye) o["behind_eye"] = true;
-      if (p.clipped) o["clipped"] = true;
-      segs.push_back(o);
-    }
+    for (const Piece& p : s.pieces) segs.push_back(piece_json(s, p));
   j["segments"] = segs;
   Json st;
   st["edges"] = r.stats.edges;

@@ -4,6 +4,7 @@
 // lowest terms, world coordinates).
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -25,5 +26,9 @@ std::string to_svg(const std::vector<DrawingBody>& bodies, const RobertsResult& 
                    const SvgOptions& options);
 
 std::string to_json(const std::vector<DrawingBody>& bodies, const RobertsResult& result, const Camera& camera);
+
+/// One piece of a segment as it appears in `segments` of the JSON (docs/output-format.md);
+/// also used by `hlr explain`, so both print the same.
+nlohmann::ordered_json piece_json(const Segment& segment, const Piece& piece);
 
 }  // namespace hlr

@@ -214,26 +214,6 @@ J edge_body_table(const Point3& p1, const Point3& p2, const BodyMatrixData& V, c
   return res;
 }
 
-J segment_json(const Segment& s, const Piece& p) {
-  J o;
-  if (s.kind == Segment::Kind::Edge) {
-    o["body"] = s.body;
-    o["edge"] = J::array({s.v0, s.v1});
-    o["kind"] = to_string(s.line);
-  } else {
-    o["bodies"] = J::array({s.body, s.body2});
-    o["kind"] = "intersection";
-  }
-  o["visible"] = p.visible;
-  Point3 a = s.at(p.t0), b = s.at(p.t1);
-  o["from"] = J::array({q(a.x()), q(a.y()), q(a.z())});
-  o["to"] = J::array({q(b.x()), q(b.y()), q(b.z())});
-  o["t"] = J::array({q(p.t0), q(p.t1)});
-  if (s.self_hidden) o["self_hidden"] = true;
-  if (p.behind_eye) o["behind_eye"] = true;
-  return o;
-}
-
 J roberts_solution(const Problem& pr) {
   J out;
   out["sections"] = J::array();
@@ -336,7 +316,7 @@ J roberts_solution(const Problem& pr) {
   J segs = J::array();
   for (const Segment& s : r.segments)
     for (const Piece& p : s.pieces) {
-      segs.push_back(segment_json(s, p));
+      segs.push_back(piece_json(s, p));
       if (!p.visible) continue;
       std::string what = s.kind == Segment::Kind::Edge ? pr.scene.bodies[s.body].name + " " + std::to_string(s.v0) + "-" + std::to_string(s.v1)
                                                        : pr.scene.bodies[s.body].name + " / " + pr.scene.bodies[s.body2].name;

@@ -139,7 +139,9 @@ TEST(Explain, CyrusBeckTableByHand) {
       EXPECT_EQ(r[5], "upper");
       right = true;
     }
-    if (r[3] == "0") EXPECT_EQ(r[5], "parallel-inside");
+    if (r[3] == "0") {
+      EXPECT_EQ(r[5], "parallel-inside");
+    }
   }
   EXPECT_TRUE(left && right);
   EXPECT_EQ(values(s, "cyrus_beck")["visible_part"], "(0, 1, 1) - (2, 1, 1)");
