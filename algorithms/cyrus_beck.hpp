@@ -11,7 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/roberts.hpp"
+#include "algorithms/camera.hpp"
+#include "algorithms/line_drawing.hpp"
 #include "kernel/body_matrix.hpp"
 #include "kernel/int128.hpp"
 

@@ -19,7 +19,7 @@
 // Only front faces of a closed solid are occluders; every face of an open surface is one.
 //
 // Exact and fast: coordinates are scaled to integers (decimal text has a common
-// denominator); when they fit in 29 bits every value is an exact 128-bit integer and split
+// denominator; bounds in kernel/exact_int.hpp); when they fit in 29 bits every value is an exact 128-bit integer and split
 // parameters are compared by a double filter with an exact 256-bit fallback; otherwise the
 // same code runs on GMP integers. A uniform grid over the projected occluders with depth
 // pruning gives each edge only the occluders that may hide it. Edges run on all cores.
@@ -27,26 +27,18 @@
 
 #include <vector>
 
-#include "algorithms/roberts.hpp"
+#include "algorithms/camera.hpp"
+#include "algorithms/line_drawing.hpp"
+#include "kernel/polyhedron.hpp"
 
 namespace hlr {
-
-struct LineOptions {
-  EdgeSelection edges = EdgeSelection::Feature;  // All: every mesh edge (kind "edge")
-  Rational crease_degrees = 30;                   // Feature: creases over this angle
-  bool intersections = true;                      // intersection lines of bodies (and self)
-  unsigned threads = 0;                           // 0: all cores
-};
-
-/// Thrown for a body the per-face route cannot take (non-planar or self-intersecting face)
-/// or an eye inside a solid. Same as Roberts' error: `body()` names the body.
-using FaceOccluderError = RobertsError;
 
 /// Runs the per-face hidden-line computation. Bodies may be closed solids (closed, manifold,
 /// consistently oriented; inside-out solids are turned) or open/other surfaces. Segments:
 /// each body's drawn edges in order of their vertex pair, then intersection lines. `facing`
-/// holds per face 1, 0 or -1; `ev` and `matrices` stay empty (they are Roberts' own values).
-RobertsResult face_occluders(const std::vector<const Polyhedron*>& bodies, const Camera& camera,
+/// holds per face 1, 0 or -1. Throws BodyError for a body it cannot take (a non-planar or
+/// self-intersecting face) or an eye inside a solid.
+LineDrawing face_occluders(const std::vector<const Polyhedron*>& bodies, const Camera& camera,
                              const LineOptions& options = {});
 
 }  // namespace hlr

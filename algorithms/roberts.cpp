@@ -8,7 +8,10 @@
 
 #include "algorithms/convexity.hpp"
 #include "algorithms/crease_angle.hpp"
+#include "algorithms/facing.hpp"
 #include "algorithms/int128_interval.hpp"
+#include "algorithms/screen_grid.hpp"
+#include "kernel/exact_int.hpp"
 
 namespace hlr {
 namespace {
@@ -25,7 +28,7 @@ std::vector<Rational> values(const Rational& x, const Rational& y, const Rationa
 void check_body(const Polyhedron& p, int i) {
   const MeshReport& r = p.report();
   auto fail = [&](const std::string& why) {
-    throw RobertsError(i, "body " + std::to_string(i) + " " + why);
+    throw BodyError(i, why);
   };
   if (!r.closed()) fail("is not closed (boundary edge " + (r.boundary_edges.empty() ? std::string("?") : to_string(r.boundary_edges[0])) + ")");
   if (!r.manifold()) fail("is not manifold");
@@ -53,12 +56,9 @@ struct Box2 {
 
 struct PreFilter {
   std::vector<Box2> boxes;
-  std::vector<int> always;
-  double gx0 = 0, gy0 = 0, cell = 1, margin = 0;
-  int n = 1;
-  std::vector<std::vector<int>> cells;
-  mutable std::vector<unsigned> stamp;
-  mutable unsigned current = 0;
+  double margin = 0;
+  ScreenGrid grid;
+  mutable StampSet stamps;
 
   // `in_front_exactly`: every point is strictly in front of the eye, decided exactly; otherwise
   // (perspective) the box is marked `always` and nothing is skipped against it.
@@ -78,6 +78,8 @@ struct PreFilter {
     return b;
   }
 
+  ScreenRect rect(const Box2& b) const { return {b.x0 - margin, b.y0 - margin, b.x1 + margin, b.y1 + margin}; }
+
   void build(const std::vector<const Polyhedron*>& bodies, const Projector& proj, const Camera& cam) {
     const bool perspective = cam.perspective;
     double ext = 0;
@@ -93,126 +95,53 @@ struct PreFilter {
       if (!b.always)
         ext = std::max({ext, std::fabs(b.x0), std::fabs(b.x1), std::fabs(b.y0), std::fabs(b.y1), std::fabs(b.d0), std::fabs(b.d1)});
     }
-    // A conservative filter only (it skips work, never decides visibility): double projections
-    // are within ~1e-15 relative of the exact ones, and the margin is far wider.
-    margin = 1e-7 * (ext + 1e-300);
-    double X0 = std::numeric_limits<double>::infinity(), Y0 = X0, X1 = -X0, Y1 = -X0;
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-      if (boxes[i].always) {
-        always.push_back(static_cast<int>(i));
-        continue;
-      }
-      X0 = std::min(X0, boxes[i].x0);
-      Y0 = std::min(Y0, boxes[i].y0);
-      X1 = std::max(X1, boxes[i].x1);
-      Y1 = std::max(Y1, boxes[i].y1);
+    // A conservative filter only (it skips work, never decides visibility): see
+    // bounds::kBodyBoxMargin in exact_int.hpp.
+    margin = bounds::kBodyBoxMargin * (ext + 1e-300);
+    std::vector<ScreenRect> rects;
+    std::vector<char> always;
+    for (const Box2& b : boxes) {
+      rects.push_back(rect(b));
+      always.push_back(b.always);
     }
-    n = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(boxes.size()))), 1, 512);
-    if (!(X1 >= X0)) {
-      X0 = Y0 = 0;
-      X1 = Y1 = 1;
-    }
-    gx0 = X0;
-    gy0 = Y0;
-    cell = std::max({(X1 - X0) / n, (Y1 - Y0) / n, 1e-300});
-    cells.assign(static_cast<std::size_t>(n) * n, {});
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-      if (boxes[i].always) continue;
-      auto [cx0, cy0, cx1, cy1] = range(boxes[i].x0 - margin, boxes[i].y0 - margin, boxes[i].x1 + margin, boxes[i].y1 + margin);
-      for (int cy = cy0; cy <= cy1; ++cy)
-        for (int cx = cx0; cx <= cx1; ++cx) cells[static_cast<std::size_t>(cy) * n + cx].push_back(static_cast<int>(i));
-    }
-    stamp.assign(boxes.size(), 0);
-  }
-
-  std::array<int, 4> range(double x0, double y0, double x1, double y1) const {
-    auto c = [&](double v, double o) { return std::clamp(static_cast<int>(std::floor((v - o) / cell)), 0, n - 1); };
-    return {c(x0, gx0), c(y0, gy0), c(x1, gx0), c(y1, gy0)};
+    grid.build(rects, always, 1.0, 512);
+    stamps.reset(boxes.size());
   }
 
   // Bodies that may hide some point of a segment with the given projected bounds.
   void candidates(const Box2& e, std::vector<int>& out) const {
     out.clear();
-    if (++current == 0) {
-      std::fill(stamp.begin(), stamp.end(), 0);
-      current = 1;
-    }
+    stamps.next();
     if (e.always) {
       for (std::size_t i = 0; i < boxes.size(); ++i) out.push_back(static_cast<int>(i));
       return;
     }
-    for (int i : always) {
-      stamp[i] = current;
+    const ScreenRect q = rect(e);
+    grid.visit(q, [&](int i) {
+      if (!stamps.first(i)) return;
+      const Box2& b = boxes[i];
+      if (!b.always) {
+        if (!ScreenRect{b.x0, b.y0, b.x1, b.y1}.meets(q)) return;
+        if (b.d0 > e.d1 + margin) return;  // entirely farther than every point of the segment
+      }
       out.push_back(i);
-    }
-    auto [cx0, cy0, cx1, cy1] = range(e.x0 - margin, e.y0 - margin, e.x1 + margin, e.y1 + margin);
-    for (int cy = cy0; cy <= cy1; ++cy)
-      for (int cx = cx0; cx <= cx1; ++cx)
-        for (int i : cells[static_cast<std::size_t>(cy) * n + cx]) {
-          if (stamp[i] == current) continue;
-          stamp[i] = current;
-          const Box2& b = boxes[i];
-          if (b.x0 > e.x1 + margin || b.x1 < e.x0 - margin || b.y0 > e.y1 + margin || b.y1 < e.y0 - margin) continue;
-          if (b.d0 > e.d1 + margin) continue;  // entirely farther than every point of the segment
-          out.push_back(i);
-        }
+    });
     std::sort(out.begin(), out.end());
   }
 };
 
 // ---------------------------------------------------------------- pieces
-struct Span {
-  Rational lo, hi;  // open, lo < hi, within [0, 1]
-};
-
-std::vector<Piece> assemble(std::vector<Span> hidden, const std::optional<std::pair<Rational, Rational>>& depth) {
-  std::sort(hidden.begin(), hidden.end(), [](const Span& a, const Span& b) { return a.lo < b.lo; });
-  std::vector<Span> merged;
-  for (auto& s : hidden) {
-    // Touching open intervals leave a single visible point between them: not a line, merged.
-    if (!merged.empty() && s.lo <= merged.back().hi) {
-      if (s.hi > merged.back().hi) merged.back().hi = s.hi;
-    } else {
-      merged.push_back(s);
-    }
-  }
-  std::vector<Rational> cuts = {Rational(0), Rational(1)};
-  for (auto& s : merged) {
-    cuts.push_back(s.lo);
-    cuts.push_back(s.hi);
-  }
-  // Perspective: depth(t) = d0 + t (d1 - d0); the part with depth <= 0 is behind the eye.
-  if (depth && depth->first != depth->second) {
-    Rational t = depth->first / (depth->first - depth->second);
-    if (t > 0 && t < 1) cuts.push_back(t);
-  }
-  std::sort(cuts.begin(), cuts.end());
-  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-  std::vector<Piece> pieces;
-  std::size_t k = 0;
-  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-    Rational mid = (cuts[i] + cuts[i + 1]) / 2;
-    while (k < merged.size() && merged[k].hi <= mid) ++k;
-    bool hidden_here = k < merged.size() && merged[k].lo < mid && mid < merged[k].hi;
-    bool behind = depth && depth->first + mid * (depth->second - depth->first) <= 0;
-    Piece p{cuts[i], cuts[i + 1], !hidden_here && !behind, behind};
-    if (!pieces.empty() && pieces.back().visible == p.visible && pieces.back().behind_eye == p.behind_eye)
-      pieces.back().t1 = p.t1;
-    else
-      pieces.push_back(p);
-  }
-  return pieces;
-}
+using Span = std::pair<Rational, Rational>;  // open, lo < hi, within [0, 1]
 
 // Adds the part of `iv` inside [0, 1] to `out`.
 void clip_to_unit(const OpenInterval& iv, std::vector<Span>& out) {
   if (iv.empty) return;
   Rational lo = iv.lo && *iv.lo > 0 ? *iv.lo : Rational(0);
   Rational hi = iv.hi && *iv.hi < 1 ? *iv.hi : Rational(1);
-  if (lo < hi) out.push_back({lo, hi});
+  if (lo < hi) out.push_back({std::move(lo), std::move(hi)});
 }
 
-// ---------------------------------------------------------------- Stage 3: junction lines
+// ---------------------------------------------------------------- Stage 3: intersection lines
 struct Bounds3 {
   Point3 lo, hi;
 };
@@ -250,7 +179,7 @@ Rational value_at(const BodyMatrixData& V, int j, const Point3& p) {
   return s;
 }
 
-void junctions(int a, int b, const BodyMatrixData& A, const BodyMatrixData& B, std::vector<Segment>& out) {
+void intersection_lines(int a, int b, const BodyMatrixData& A, const BodyMatrixData& B, std::vector<Segment>& out) {
   const std::vector<int> ca = distinct_columns(A), cb = distinct_columns(B);
   for (int f : ca)
     for (int g : cb) {
@@ -308,20 +237,8 @@ bool boxes_meet(const Bounds3& x, const Bounds3& y) {
 
 }  // namespace
 
-std::vector<Piece> pieces_from_hidden(std::vector<std::pair<Rational, Rational>> hidden,
-                                      const std::optional<std::pair<Rational, Rational>>& depth) {
-  // Common cases without any arithmetic: nothing hidden, or one span over the whole edge.
-  if (!depth && hidden.empty()) return {Piece{Rational(0), Rational(1), true}};
-  if (!depth && hidden.size() == 1 && hidden[0].first == 0 && hidden[0].second == 1)
-    return {Piece{Rational(0), Rational(1), false}};
-  std::vector<Span> spans;
-  spans.reserve(hidden.size());
-  for (auto& h : hidden) spans.push_back({std::move(h.first), std::move(h.second)});
-  return assemble(std::move(spans), depth);
-}
-
 std::vector<Segment> body_edge_segments(const Polyhedron& p, int body, const std::vector<signed char>& facing,
-                                        const RobertsOptions& opt, RobertsStats& stats) {
+                                        const LineOptions& opt, DrawingStats& stats) {
   std::map<std::pair<int, int>, std::pair<int, int>> faces_of;  // edge -> its two faces
   for (std::size_t f = 0; f < p.faces().size(); ++f) {
     const Face& face = p.faces()[f];
@@ -363,29 +280,6 @@ std::vector<Segment> body_edge_segments(const Polyhedron& p, int body, const std
   return out;
 }
 
-const char* to_string(LineKind k) {
-  switch (k) {
-    case LineKind::Boundary: return "boundary";
-    case LineKind::Crease: return "crease";
-    case LineKind::Silhouette: return "silhouette";
-    case LineKind::Intersection: return "intersection";
-    case LineKind::Edge: break;
-  }
-  return "edge";
-}
-
-Point3 Segment::at(const Rational& t) const {
-  if (t == 0) return from();
-  if (t == 1) return to();
-  return from() + t * (to() - from());
-}
-
-void Segment::set_ends(Point3 a, Point3 b) {
-  own_ = std::make_shared<const std::array<Point3, 2>>(std::array<Point3, 2>{std::move(a), std::move(b)});
-  a_ = &(*own_)[0];
-  b_ = &(*own_)[1];
-}
-
 OpenInterval hidden_interval(const Point3& p1, const Point3& p2, const BodyMatrixData& V, const RowVector4& g) {
   const int n = static_cast<int>(V.cols());
   Vector3 d = p2 - p1;
@@ -424,8 +318,9 @@ OpenInterval hidden_interval(const Point3& p1, const Point3& p2, const BodyMatri
   return r;
 }
 
-RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const RobertsOptions& opt) {
+RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineOptions& opt) {
   RobertsResult res;
+  res.stats.method = Method::Roberts;
   const RowVector4 g = camera.viewpoint();
   // Stage 0: checks and body matrices; Stage 1: facing classes.
   for (std::size_t i = 0; i < bodies.size(); ++i) {
@@ -438,10 +333,12 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
       ev.push_back(-x);
       if (!(x > 0)) eye_inside = false;
     }
-    if (eye_inside) throw RobertsError(static_cast<int>(i), "body " + std::to_string(i) + " contains the eye " + to_string(camera.eye) +
-                                                  ": an eye inside a solid sees nothing");
+    if (eye_inside)
+      throw BodyError(static_cast<int>(i), "contains the eye " + to_string(camera.eye) + ": an eye inside a solid sees nothing");
     std::vector<signed char> fc;
-    for (const Rational& e : ev) fc.push_back(static_cast<signed char>(sgn(e)));
+    const BodyMatrixData& V = res.matrices.back().V;
+    for (int j = 0; j < V.cols(); ++j)  // the outward plane is minus the inward column
+      fc.push_back(static_cast<signed char>(facing_sign(Plane(-V(0, j), -V(1, j), -V(2, j), -V(3, j)), g)));
     res.facing.push_back(std::move(fc));
     res.ev.push_back(std::move(ev));
   }
@@ -479,7 +376,7 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
         clip_to_unit(hidden_interval(s.from(), s.to(), res.matrices[j].V, g), hidden);
       }
     }
-    s.pieces = assemble(std::move(hidden), depth_of(s));
+    s.pieces = pieces_from_hidden(std::move(hidden), depth_of(s));
   };
 
   // Stage 1 and 2: the bodies' edges.
@@ -492,23 +389,23 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
       res.segments.push_back(std::move(s));
     }
 
-  // Stage 3: junction lines of every pair of bodies whose bounding boxes meet.
+  // Stage 3: intersection lines of every pair of bodies whose bounding boxes meet.
   std::vector<Bounds3> bb;
   for (const Polyhedron* p : bodies) bb.push_back(exact_bounds(*p));
   std::vector<int> order(bodies.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
   std::sort(order.begin(), order.end(), [&](int x, int y) { return bb[x].lo.x() < bb[y].lo.x() || (bb[x].lo.x() == bb[y].lo.x() && x < y); });
-  std::vector<Segment> junction;
+  std::vector<Segment> lines;
   std::vector<std::pair<int, int>> pairs;
   for (std::size_t ii = 0; ii < order.size(); ++ii)
     for (std::size_t jj = ii + 1; jj < order.size() && !(bb[order[ii]].hi.x() < bb[order[jj]].lo.x()); ++jj)
       if (boxes_meet(bb[order[ii]], bb[order[jj]]))
         pairs.push_back({std::min(order[ii], order[jj]), std::max(order[ii], order[jj])});
   std::sort(pairs.begin(), pairs.end());
-  for (auto [a, b] : pairs) junctions(a, b, res.matrices[a].V, res.matrices[b].V, junction);
-  for (Segment& s : junction) {
-    solve(s, -1, -1);  // the two bodies themselves may hide their junction line too
-    ++res.stats.junction_segments;
+  for (auto [a, b] : pairs) intersection_lines(a, b, res.matrices[a].V, res.matrices[b].V, lines);
+  for (Segment& s : lines) {
+    solve(s, -1, -1);  // the two bodies themselves may hide their intersection line too
+    ++res.stats.intersection_segments;
     res.segments.push_back(std::move(s));
   }
   return res;

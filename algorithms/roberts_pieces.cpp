@@ -69,15 +69,14 @@ bool same_plane_opposite(const Plane& a, const Plane& b) { return a == b.opposit
 void check_solid(const Polyhedron& p, int i) {
   const MeshReport& r = p.report();
   if (!r.valid_solid() || !(six_volume(p) > 0))
-    throw RobertsError(i, "body " + std::to_string(i) +
-                              " is not a valid closed solid (closed, manifold, outward-oriented, planar faces, no T-junctions)");
+    throw BodyError(i, "is not a valid closed solid (closed, manifold, outward-oriented, planar faces, no T-junctions)");
 }
 
 }  // namespace
 
-RobertsResult roberts_pieces(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const RobertsOptions& opt) {
-  RobertsResult res;
-  res.stats.method = "roberts-pieces";
+LineDrawing roberts_pieces(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineOptions& opt) {
+  LineDrawing res;
+  res.stats.method = Method::RobertsPieces;
   const RowVector4 g = camera.viewpoint();
   std::vector<Occluder> occ;
   std::vector<Glue> glue;
@@ -95,8 +94,7 @@ RobertsResult roberts_pieces(const std::vector<const Polyhedron*>& bodies, const
         bool inside = true;
         for (const Plane& h : q.planes()) inside = inside && h.value(camera.eye) < 0;
         if (inside)
-          throw RobertsError(static_cast<int>(i), "body " + std::to_string(i) + " contains the eye " + to_string(camera.eye) +
-                                                      ": an eye inside a solid sees nothing");
+          throw BodyError(static_cast<int>(i), "contains the eye " + to_string(camera.eye) + ": an eye inside a solid sees nothing");
       }
       Occluder o{piece_matrix(q), {}};
       o.fast = prepare_fast_body(o.V, g);
@@ -194,7 +192,7 @@ RobertsResult roberts_pieces(const std::vector<const Polyhedron*>& bodies, const
       s.face1 = std::get<3>(key);
       s.set_ends(p0, p1);
       solve(s);
-      ++res.stats.junction_segments;
+      ++res.stats.intersection_segments;
       res.segments.push_back(std::move(s));
     }
   }

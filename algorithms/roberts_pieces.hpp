@@ -16,9 +16,8 @@
 namespace hlr {
 
 /// Like roberts(), for closed solids that need not be convex. Segments: the bodies' edges in
-/// order of their vertex pairs, then intersection lines of different bodies. `facing` is
-/// filled; `ev` and `matrices` stay empty (the pieces have their own).
-RobertsResult roberts_pieces(const std::vector<const Polyhedron*>& bodies, const Camera& camera,
-                             const RobertsOptions& options = {});
+/// order of their vertex pairs, then intersection lines of different bodies; `facing` filled.
+LineDrawing roberts_pieces(const std::vector<const Polyhedron*>& bodies, const Camera& camera,
+                           const LineOptions& options = {});
 
 }  // namespace hlr

@@ -34,7 +34,7 @@ void BM_RobertsRandomBoxes(benchmark::State& st) {
   std::vector<const Polyhedron*> ptrs;
   for (auto& b : boxes) ptrs.push_back(&b);
   Camera cam = make_orthographic(Vector3(1, rational(13, 10), rational(17, 10)));
-  RobertsStats stats;
+  DrawingStats stats;
   std::size_t heap = 0, segments = 0, hidden = 0;
   for (auto _ : st) {
     malloc_trim(0);
@@ -49,7 +49,7 @@ void BM_RobertsRandomBoxes(benchmark::State& st) {
   }
   st.counters["segments"] = static_cast<double>(segments);
   st.counters["hidden_pieces"] = static_cast<double>(hidden);
-  st.counters["junctions"] = static_cast<double>(stats.junction_segments);
+  st.counters["junctions"] = static_cast<double>(stats.intersection_segments);
   st.counters["pairs_tested"] = static_cast<double>(stats.pairs_tested);
   st.counters["pairs_skipped"] = static_cast<double>(stats.pairs_skipped);
   st.counters["pairs_rational"] = static_cast<double>(stats.pairs_rational);

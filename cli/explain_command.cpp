@@ -24,7 +24,7 @@ int run_explain(const ExplainArgs& a) {
   SolutionJson s;
   try {
     s = explain(pr);
-  } catch (const RobertsError& e) {
+  } catch (const BodyError& e) {
     std::cerr << "hlr explain: " << a.input << ": " << e.what() << " (a `decompose` problem splits it first)\n";
     return 1;
   } catch (const std::invalid_argument& e) {

@@ -1,21 +1,17 @@
-// `hlr render [options] INPUT...`: exact hidden-line drawing of any meshes (per-face occluders)
-// or of convex bodies by Roberts' algorithm, written as SVG or exact JSON (atomically: no
-// partial output on failure).
+// `hlr render [options] INPUT...`: parses the options into the library's RenderOptions, calls
+// render() (io/render.hpp) and writes SVG or exact JSON (atomically: no partial output on
+// failure).
 #include <chrono>
 #include <filesystem>
 #include <iostream>
 
-#include "algorithms/face_occluders.hpp"
-#include "algorithms/convexity.hpp"
-#include "algorithms/roberts.hpp"
-#include "algorithms/roberts_pieces.hpp"
-#include "algorithms/cyrus_beck.hpp"
 #include "cli/arguments.hpp"
 #include "cli/clipper_spec.hpp"
 #include "cli/commands.hpp"
 #include "io/atomic_file.hpp"
-#include "io/drawing.hpp"
-#include "io/scene.hpp"
+#include "io/json_writer.hpp"
+#include "io/render.hpp"
+#include "io/svg_writer.hpp"
 
 namespace hlr::cli {
 namespace {
@@ -31,39 +27,29 @@ struct RenderArgs {
 
 Point3 as_point(const Vector3& v) { return Point3(v.x(), v.y(), v.z()); }
 
-Camera choose_camera(const RenderArgs& a, const std::vector<Scene>& scenes, const std::vector<SceneBody*>& bodies) {
-  std::optional<Vector3> up;
-  if (!a.up.empty()) up = parse_vector3("--up", a.up);
-  const View* sv = nullptr;
-  for (const Scene& s : scenes)
-    if (is_scene_file(s.file)) {
-      sv = &s.view;
-      break;
-    }
-  if (!a.eye.empty() || (a.view.empty() && sv && sv->type == View::Type::Perspective)) {
-    Point3 eye = !a.eye.empty() ? as_point(parse_vector3("--eye", a.eye)) : sv->eye;
-    std::optional<Point3> target;
-    if (!a.target.empty()) target = as_point(parse_vector3("--target", a.target));
-    else if (sv && sv->type == View::Type::Perspective && sv->target) target = sv->target;
-    if (!target) {  // the centre of the scene's bounding box
-      Rational lo[3], hi[3];
-      bool first = true;
-      for (const SceneBody* b : bodies)
-        for (const Point3& p : b->body.vertices())
-          for (int k = 0; k < 3; ++k) {
-            if (first || p[k] < lo[k]) lo[k] = p[k];
-            if (first || p[k] > hi[k]) hi[k] = p[k];
-            if (k == 2) first = false;
-          }
-      target = Point3((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
-    }
-    if (!up && sv && sv->up_given) up = sv->up;
-    return make_perspective(eye, *target, up);
+RenderOptions render_options(const RenderArgs& a) {
+  RenderOptions o;
+  o.method = a.method == "roberts" ? RenderMethod::Roberts : RenderMethod::Faces;
+  o.lines.edges = a.edges == "all" ? EdgeSelection::All : EdgeSelection::Feature;
+  o.lines.threads = a.threads;
+  try {
+    o.lines.crease_degrees = parse_rational(a.crease);
+  } catch (const NumberError& e) {
+    throw std::invalid_argument(std::string("--crease: ") + e.what());
   }
-  if (!a.target.empty()) throw std::invalid_argument("--target needs --eye (a perspective view)");
-  if (!up && sv && sv->up_given) up = sv->up;
-  Vector3 dir = !a.view.empty() ? parse_vector3("--view", a.view) : sv ? sv->direction : Vector3(0, 0, 1);
-  return make_orthographic(dir, up);
+  if (o.lines.crease_degrees < 0 || o.lines.crease_degrees > 180)
+    throw std::invalid_argument("--crease must be an angle in degrees from 0 to 180");
+  if (!a.view.empty()) o.view.direction = parse_vector3("--view", a.view);
+  if (!a.eye.empty()) o.view.eye = as_point(parse_vector3("--eye", a.eye));
+  if (!a.target.empty()) o.view.target = as_point(parse_vector3("--target", a.target));
+  if (!a.up.empty()) o.view.up = parse_vector3("--up", a.up);
+  try {
+    o.near = parse_rational(a.near);
+  } catch (const NumberError& e) {
+    throw std::invalid_argument(std::string("--near: ") + e.what());
+  }
+  if (!a.clip.empty()) o.clip = parse_clipper("--clip", a.clip).clipper;
+  return o;
 }
 
 int run_render(const RenderArgs& a) {
@@ -79,98 +65,37 @@ int run_render(const RenderArgs& a) {
   auto t_start = Clock::now();
   std::vector<Scene> scenes;
   for (const auto& in : a.inputs) scenes.push_back(is_scene_file(in) ? load_scene(in) : scene_from_mesh(in));
-  std::vector<SceneBody*> bodies;
-  std::vector<const Polyhedron*> polys;
-  std::vector<DrawingBody> names;
-  for (Scene& s : scenes)
-    for (SceneBody& b : s.bodies) {
-      bodies.push_back(&b);
-      polys.push_back(&b.body);
-      names.push_back({b.name, b.source});
-    }
-  if (a.method == "roberts")
-    for (const Polyhedron* p : polys) p->report();  // Roberts' checks belong to loading
   auto t_loaded = Clock::now();
-  Camera camera = choose_camera(a, scenes, bodies);
-  Rational crease;
+  RenderOptions options = render_options(a);
+  RenderResult r;
   try {
-    crease = parse_rational(a.crease);
-  } catch (const NumberError& e) {
-    throw std::invalid_argument(std::string("--crease: ") + e.what());
-  }
-  if (crease < 0 || crease > 180) throw std::invalid_argument("--crease must be an angle in degrees from 0 to 180");
-  RobertsResult result;
-  try {
-    if (a.method == "roberts") {
-      RobertsOptions ro;
-      ro.edges = a.edges == "all" ? EdgeSelection::All : EdgeSelection::Feature;
-      ro.crease_degrees = crease;
-      bool all_convex = true;
-      for (const Polyhedron* p : polys) all_convex = all_convex && p->report().valid_solid() && convexity(*p).convex();
-      result = all_convex ? roberts(polys, camera, ro) : roberts_pieces(polys, camera, ro);
-    } else {
-      LineOptions lo;
-      lo.edges = a.edges == "all" ? EdgeSelection::All : EdgeSelection::Feature;
-      lo.crease_degrees = crease;
-      lo.threads = a.threads;
-      result = face_occluders(polys, camera, lo);
-    }
-  } catch (const RobertsError& e) {
-    const SceneBody* b = bodies[e.body()];
-    std::string msg = e.what();
-    std::string prefix = "body " + std::to_string(e.body());
-    if (msg.rfind(prefix, 0) == 0) msg = "body '" + b->name + "'" + msg.substr(prefix.size());
-    std::cerr << "hlr render: " << b->source << ": " << msg << "\n";
+    r = render(std::move(scenes), options);
+  } catch (const RenderBodyError& e) {
+    std::cerr << "hlr render: " << e.what() << "\n";
     return 1;
   }
-  // Degenerate but drawable views get a note, never a wrong picture.
-  for (const auto& [i, note] : result.notes) {
-    std::string msg = note, prefix = "body " + std::to_string(i);
-    if (msg.rfind(prefix, 0) == 0) msg = "body '" + bodies[i]->name + "'" + msg.substr(prefix.size());
-    std::cerr << "hlr render: note: " << bodies[i]->source << ": " << msg << "\n";
-  }
-  if (camera.perspective)
-    for (std::size_t i = 0; i < result.facing.size(); ++i) {
-      std::size_t count = 0;
-      for (std::size_t f = 0; f < result.facing[i].size(); ++f)
-        if (result.facing[i][f] == 0 && ++count <= 3)
-          std::cerr << "hlr render: note: the eye lies in the plane of face " << f << " of body '" << bodies[i]->name
-                    << "': that face is seen edge-on\n";
-      if (count > 3) std::cerr << "hlr render: note: ... and " << count - 3 << " more faces of body '" << bodies[i]->name << "'\n";
-    }
-  // Clipping: the near plane (perspective) and the clipping volume, exactly, in world space.
-  Rational near;
-  try {
-    near = parse_rational(a.near);
-  } catch (const NumberError& e) {
-    throw std::invalid_argument(std::string("--near: ") + e.what());
-  }
-  if (!(near > 0)) throw std::invalid_argument("--near must be positive (a fraction of the distance from the eye to the target)");
-  std::optional<ClipperSpec> clip;
-  if (!a.clip.empty()) clip = parse_clipper("--clip", a.clip);
-  for (Segment& s : result.segments) {
-    if (camera.perspective) clip_near(s, camera, near);
-    if (clip) clip_pieces(s, clip->clipper);
-  }
+  for (const std::string& note : r.notes) std::cerr << "hlr render: note: " << note << "\n";
   auto t_solved = Clock::now();
   SvgOptions so;
   so.hidden_dashed = a.hidden == "dashed";
   so.width_mm = a.width;
   so.stroke_mm = a.stroke;
-  std::string text = format == "json" ? to_json(names, result, camera) : to_svg(names, result, camera, so);
+  std::string text = format == "json" ? to_json(r.names, r.drawing, r.camera) : to_svg(r.names, r.drawing, r.camera, so);
   write_output(a.output, text);
   if (a.timings) {
     auto t_end = Clock::now();
     auto sec = [](auto d) { return std::chrono::duration<double>(d).count(); };
     std::size_t tris = 0;
-    for (const Polyhedron* p : polys) tris += p->num_faces();
+    for (const SceneBody* b : r.bodies) tris += b->body.num_faces();
+    const DrawingStats& st = r.drawing.stats;
+    FaceRouteStats fs = st.faces.value_or(FaceRouteStats{});
     std::cerr << std::fixed;
     std::cerr.precision(3);
-    std::cerr << "timings: faces " << tris << ", load " << sec(t_loaded - t_start) << " s, setup " << result.stats.setup_seconds
-              << " s, intersections " << result.stats.intersections_seconds << " s, visibility " << result.stats.visibility_seconds
+    std::cerr << "timings: faces " << tris << ", load " << sec(t_loaded - t_start) << " s, setup " << st.setup_seconds
+              << " s, intersections " << st.intersections_seconds << " s, visibility " << st.visibility_seconds
               << " s, solve total " << sec(t_solved - t_loaded) << " s, output " << sec(t_end - t_solved) << " s, segments "
-              << result.segments.size() << ", comparisons " << result.stats.comparisons << " (identical "
-              << result.stats.comparisons_identical << ", exact fallback " << result.stats.comparisons_exact << ")"
+              << r.drawing.segments.size() << ", comparisons " << fs.comparisons << " (identical "
+              << fs.comparisons_identical << ", exact fallback " << fs.comparisons_exact << ")"
               << "\n";
   }
   return 0;

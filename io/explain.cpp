@@ -10,7 +10,8 @@
 #include "algorithms/convex_decomposition.hpp"
 #include "algorithms/convexity.hpp"
 #include "algorithms/roberts.hpp"
-#include "io/drawing.hpp"
+#include "io/json_writer.hpp"
+#include "io/view_choice.hpp"
 #include "kernel/predicates.hpp"
 
 namespace hlr {
@@ -44,31 +45,6 @@ struct Section {
     return j["tables"].back()["rows"];
   }
 };
-
-Camera camera_of(const Scene& s) {
-  const View& v = s.view;
-  std::optional<Vector3> up;
-  if (v.up_given) up = v.up;
-  if (v.type == View::Type::Perspective) {
-    Point3 target;
-    if (v.target) {
-      target = *v.target;
-    } else {
-      Rational lo[3], hi[3];
-      bool first = true;
-      for (const SceneBody& b : s.bodies)
-        for (const Point3& p : b.body.vertices())
-          for (int k = 0; k < 3; ++k) {
-            if (first || p[k] < lo[k]) lo[k] = p[k];
-            if (first || p[k] > hi[k]) hi[k] = p[k];
-            if (k == 2) first = false;
-          }
-      target = Point3((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
-    }
-    return make_perspective(v.eye, target, up);
-  }
-  return make_orthographic(v.direction, up);
-}
 
 void input_section(const Scene& s, J& out) {
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
@@ -224,8 +200,8 @@ J roberts_solution(const Problem& pr) {
     polys.push_back(&b.body);
     names.push_back({b.name, b.source});
   }
-  Camera cam = camera_of(pr.scene);
-  RobertsOptions ro;
+  Camera cam = choose_camera({}, &pr.scene.view, polys);
+  LineOptions ro;
   ro.edges = EdgeSelection::All;
   RobertsResult r = roberts(polys, cam, ro);
   const RowVector4 g = cam.viewpoint();
@@ -267,7 +243,7 @@ J roberts_solution(const Problem& pr) {
                                    : "[" + q(-cam.direction.x()) + " " + q(-cam.direction.y()) + " " + q(-cam.direction.z()) + " 0]");
     J& fr = fac.table("facing_table", {"face", "EV", "class"});
     for (std::size_t f = 0; f < r.ev[i].size(); ++f)
-      fr.push_back({std::to_string(f), q(r.ev[i][f]), r.ev[i][f] < 0 ? "non-facing" : r.ev[i][f] == 0 ? "edge-on" : "facing"});
+      fr.push_back({std::to_string(f), q(r.ev[i][f]), r.facing[i][f] < 0 ? "non-facing" : r.facing[i][f] == 0 ? "edge-on" : "facing"});
     J& sh = fac.table("self_hidden", {"edge", "face_pair"});
     for (const Segment& s : r.segments)
       if (s.body == static_cast<int>(i) && s.self_hidden)

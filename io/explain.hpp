@@ -16,7 +16,7 @@ namespace hlr {
 
 using SolutionJson = nlohmann::ordered_json;
 
-/// Solves the problem. Throws RobertsError (a body Roberts' algorithm cannot take) or
+/// Solves the problem. Throws BodyError (a body Roberts' algorithm cannot take) or
 /// std::invalid_argument (a body that is not a valid solid for decomposition).
 SolutionJson explain(const Problem& problem);
 

@@ -10,6 +10,8 @@ PACKAGES=(build-essential cmake pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libeigen3-dev libopenmesh-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+  libtbb-dev                              # oneTBB: the parallel loop
+  python3-dev python3-pybind11 python3-pytest   # the Python module and its tests
   libgtest-dev libbenchmark-dev time   # time: peak memory in scripts/bench_render.sh
   clang libclang-rt-14-dev   # the sanitizer build and the libFuzzer targets
   libcgal-demo)   # libcgal-demo ships data.tar.gz, the mesh corpus used by tests and benchmarks

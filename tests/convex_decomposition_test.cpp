@@ -92,11 +92,11 @@ TEST(ConvexDecomposition, PiecesRouteDrawsWhatThePerFaceRouteDraws) {
     Polyhedron body = load_mesh(path);
     for (const Camera& cam : cams)
       for (EdgeSelection e : {EdgeSelection::All, EdgeSelection::Feature}) {
-        RobertsOptions ro;
+        LineOptions ro;
         ro.edges = e;
         LineOptions lo;
         lo.edges = e;
-        RobertsResult a = roberts_pieces({&body}, cam, ro), b = face_occluders({&body}, cam, lo);
+        LineDrawing a = roberts_pieces({&body}, cam, ro), b = face_occluders({&body}, cam, lo);
         ASSERT_EQ(a.segments.size(), b.segments.size()) << path;
         for (std::size_t i = 0; i < a.segments.size(); ++i) {
           const Segment &x = a.segments[i], &y = b.segments[i];
@@ -121,14 +121,14 @@ TEST(ConvexDecomposition, RayAlongTheCutPlaneIsInsideTheSolid) {
   Polyhedron rod = make_box(P("-3", "1", "1/4"), P("-2", "3/2", "3/4"));
   for (const Camera& cam : {make_orthographic(Vector3(1, 0, 0)), make_orthographic(Vector3(5, 0, 0)),
                             make_perspective(P("6", "1", "1/2"), P("0", "1", "1/2"))}) {
-    RobertsResult a = roberts_pieces({&l, &rod}, cam, {});
-    RobertsResult b = face_occluders({&l, &rod}, cam, {});
-    for (const RobertsResult* r : {&a, &b}) {
+    LineDrawing a = roberts_pieces({&l, &rod}, cam, {});
+    LineDrawing b = face_occluders({&l, &rod}, cam, {});
+    for (const LineDrawing* r : {&a, &b}) {
       const Segment* e = nullptr;
       for (const Segment& s : r->segments)
         if (s.body == 1 && s.v0 == 1 && s.v1 == 5) e = &s;  // x = -2, y = 1, z from 1/4 to 3/4
       ASSERT_NE(e, nullptr);
-      EXPECT_EQ(pieces(*e), "0 h 1") << r->stats.method;
+      EXPECT_EQ(pieces(*e), "0 h 1") << to_string(r->stats.method);
     }
   }
 }

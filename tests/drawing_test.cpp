@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "io/atomic_file.hpp"
+#include "algorithms/roberts.hpp"
 #include "io/drawing.hpp"
 #include "io/scene.hpp"
 
@@ -19,7 +20,7 @@ const std::string kData = HLR_DATA_DIR;
 struct Rendered {
   Scene scene;
   std::vector<DrawingBody> names;
-  RobertsResult result;
+  LineDrawing result;
   Camera camera;
 };
 

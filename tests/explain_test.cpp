@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "algorithms/roberts.hpp"
 #include "io/drawing.hpp"
 #include "io/explain.hpp"
 
@@ -192,7 +193,7 @@ TEST(Explain, RobertsSegmentsEqualRendersOnEveryProblem) {
     }
     Camera cam = scene.view.type == View::Type::Perspective ? make_perspective(scene.view.eye, *scene.view.target)
                                                            : make_orthographic(scene.view.direction);
-    RobertsOptions ro;
+    LineOptions ro;
     ro.edges = EdgeSelection::All;
     auto j = nlohmann::ordered_json::parse(to_json(names, roberts(polys, cam, ro), cam));
     EXPECT_EQ(s["result"]["segments"], j["segments"]) << p;

@@ -22,12 +22,12 @@ Polyhedron box(const char* x0, const char* y0, const char* z0, const char* x1, c
   return make_box(P(x0, y0, z0), P(x1, y1, z1));
 }
 
-RobertsResult run(const std::vector<const Polyhedron*>& bodies, const Camera& c, EdgeSelection e = EdgeSelection::All,
+LineDrawing run(const std::vector<const Polyhedron*>& bodies, const Camera& c, EdgeSelection e = EdgeSelection::All,
                   const char* crease = "30") {
   LineOptions o;
   o.edges = e;
   o.crease_degrees = Q(crease);
-  RobertsResult r = face_occluders(bodies, c, o);
+  LineDrawing r = face_occluders(bodies, c, o);
   for (const Segment& s : r.segments) {  // pieces partition [0, 1]
     EXPECT_EQ(s.pieces.front().t0, 0);
     EXPECT_EQ(s.pieces.back().t1, 1);
@@ -36,13 +36,13 @@ RobertsResult run(const std::vector<const Polyhedron*>& bodies, const Camera& c,
   return r;
 }
 
-const Segment* find_edge(const RobertsResult& r, int body, int a, int b) {
+const Segment* find_edge(const LineDrawing& r, int body, int a, int b) {
   for (const Segment& s : r.segments)
     if (s.kind == Segment::Kind::Edge && s.body == body && s.v0 == std::min(a, b) && s.v1 == std::max(a, b)) return &s;
   return nullptr;
 }
 
-const Segment& edge(const RobertsResult& r, int body, int a, int b) {
+const Segment& edge(const LineDrawing& r, int body, int a, int b) {
   const Segment* s = find_edge(r, body, a, b);
   if (!s) throw std::runtime_error("no such edge");
   return *s;
@@ -69,7 +69,7 @@ std::string pieces(const Segment& s) {
 TEST(FaceOccluders, CubeAlong110HidesOnlyTheBackVerticalEdge) {
   Polyhedron cube = box("0", "0", "0", "2", "2", "2");
   for (EdgeSelection e : {EdgeSelection::All, EdgeSelection::Feature}) {
-    RobertsResult r = run({&cube}, make_orthographic(Vector3(1, 1, 0)), e);
+    LineDrawing r = run({&cube}, make_orthographic(Vector3(1, 1, 0)), e);
     ASSERT_EQ(r.segments.size(), 12u);
     for (const Segment& s : r.segments) {
       bool back = s.v0 == 0 && s.v1 == 4;  // (0,0,0)-(0,0,2)
@@ -83,13 +83,13 @@ TEST(FaceOccluders, CubeAlong110HidesOnlyTheBackVerticalEdge) {
 TEST(FaceOccluders, WiderNumberPathsGiveTheSameAnswer) {
   for (const char* hi : {"2.0000000001", "2.00000000000000000001"}) {
     Polyhedron cube = make_box(P("0", "0", "0"), P(hi, hi, "2"));
-    RobertsResult r = run({&cube}, make_orthographic(Vector3(1, 1, 0)));
-    EXPECT_EQ(r.stats.integer_path, std::string(hi).size() < 14) << hi;
+    LineDrawing r = run({&cube}, make_orthographic(Vector3(1, 1, 0)));
+    EXPECT_EQ(r.stats.faces->integer_path, std::string(hi).size() < 14) << hi;
     for (const Segment& s : r.segments) EXPECT_EQ(pieces(s), s.v0 == 0 && s.v1 == 4 ? "0 h 1" : "0 v 1") << hi;
     Polyhedron rod = box("-1", "-1", "1/2", "3", "-1/2", "1");
-    RobertsResult q = run({&cube, &rod}, make_orthographic(Vector3(0, -1, 0)));
+    LineDrawing q = run({&cube, &rod}, make_orthographic(Vector3(0, -1, 0)));
     EXPECT_EQ(pieces(edge(q, 1, 0, 1)), "0 v 1");  // in front of the cube
-    RobertsResult w = run({&cube, &rod}, make_orthographic(Vector3(0, 1, 0)));
+    LineDrawing w = run({&cube, &rod}, make_orthographic(Vector3(0, 1, 0)));
     EXPECT_EQ(pieces(edge(w, 1, 4, 5)).substr(0, 6), "0 v 1/");  // behind it from x = 0
   }
 }
@@ -100,7 +100,7 @@ TEST(FaceOccluders, WiderNumberPathsGiveTheSameAnswer) {
 TEST(FaceOccluders, ConcaveEdgeHidesWhatIsExactlyBehindIt) {
   Polyhedron l = load_mesh(kData + "/l_prism.off");
   Polyhedron rod = box("1", "-2", "1/4", "3", "-1", "3/4");
-  RobertsResult r = run({&l, &rod}, make_orthographic(Vector3(0, 1, 0)));
+  LineDrawing r = run({&l, &rod}, make_orthographic(Vector3(0, 1, 0)));
   // Rod vertices: bit 0 x, bit 1 y, bit 2 z. Edge 2-6: x = 1, y = -1 (the front left edge).
   EXPECT_EQ(pieces(edge(r, 1, 2, 6)), "0 h 1");
   // Its top front edge 6-7 (x from 1 to 3 at y = -1, z = 3/4): hidden behind the L up to x = 2.
@@ -113,13 +113,13 @@ TEST(FaceOccluders, ConcaveEdgeHidesWhatIsExactlyBehindIt) {
 TEST(FaceOccluders, CubeWithCubicHoleShowsWhatIsBelowTheHole) {
   Polyhedron frame = load_mesh(kData + "/frame.off");
   Polyhedron rod = box("-1", "7/5", "-2", "4", "8/5", "-1");
-  RobertsResult r = run({&frame, &rod}, make_orthographic(Vector3(0, 0, 1)));
+  LineDrawing r = run({&frame, &rod}, make_orthographic(Vector3(0, 0, 1)));
   EXPECT_EQ(pieces(edge(r, 1, 4, 5)), "0 v 1/5 h 2/5 v 3/5 h 4/5 v 1");  // x = -1 .. 4 at y = 7/5
   // The inner vertical edges of the hole are seen end-on along the hole's walls: visible.
   EXPECT_EQ(pieces(edge(r, 0, 4, 12)), "0 v 1");
   // Seen from below the rod is in front: it hides the frame's bottom edge x = 0 (y from 0 to 3)
   // where it crosses under it, y in (7/5, 8/5).
-  RobertsResult b = run({&frame, &rod}, make_orthographic(Vector3(0, 0, -1)));
+  LineDrawing b = run({&frame, &rod}, make_orthographic(Vector3(0, 0, -1)));
   EXPECT_EQ(pieces(edge(b, 0, 0, 3)), "0 v 7/15 h 8/15 v 1");
 }
 
@@ -143,8 +143,8 @@ TEST(FaceOccluders, TorusSeenThroughItsHole) {
     }
   Polyhedron torus(vs, fs);
   Polyhedron rod = box("-2", "-1/20", "-1", "2", "1/20", "-9/10");
-  RobertsResult r = run({&torus, &rod}, make_orthographic(Vector3(0, 0, 1)));
-  EXPECT_FALSE(r.stats.integer_path);
+  LineDrawing r = run({&torus, &rod}, make_orthographic(Vector3(0, 0, 1)));
+  EXPECT_FALSE(r.stats.faces->integer_path);
   const Segment& top = edge(r, 1, 4, 5);  // x from -2 to 2 at y = -1/20, z = -9/10
   auto t_of = [](double x) { return rational_from_double((x + 2) / 4); };
   EXPECT_TRUE(visible_at(top, t_of(0)));      // through the hole
@@ -159,7 +159,7 @@ TEST(FaceOccluders, TorusSeenThroughItsHole) {
 // face diagonals: box B pokes out of box A's face x = 2 in the square y, z in [1/2, 3/2].
 TEST(FaceOccluders, InterpenetratingMeshesGetTheirIntersectionLines) {
   Polyhedron a = box("0", "0", "0", "2", "2", "2"), b = box("1", "1/2", "1/2", "3", "3/2", "3/2");
-  RobertsResult r = run({&a, &b}, make_orthographic(Vector3(1, Q("1.3"), Q("1.7"))), EdgeSelection::Feature);
+  LineDrawing r = run({&a, &b}, make_orthographic(Vector3(1, Q("1.3"), Q("1.7"))), EdgeSelection::Feature);
   std::map<std::pair<std::string, std::string>, std::string> got;
   for (const Segment& s : r.segments)
     if (s.kind == Segment::Kind::Intersection) {
@@ -191,9 +191,9 @@ TEST(FaceOccluders, SelfIntersectionLines) {
   }
   Polyhedron one(vs, fs);
   Camera cam = make_orthographic(Vector3(1, Q("1.3"), Q("1.7")));
-  RobertsResult r = run({&one}, cam, EdgeSelection::Feature);
-  RobertsResult two = run({&a, &b}, cam, EdgeSelection::Feature);
-  auto lines = [](const RobertsResult& x) {
+  LineDrawing r = run({&one}, cam, EdgeSelection::Feature);
+  LineDrawing two = run({&a, &b}, cam, EdgeSelection::Feature);
+  auto lines = [](const LineDrawing& x) {
     std::set<std::string> out;
     for (const Segment& s : x.segments)
       if (s.kind == Segment::Kind::Intersection)
@@ -211,7 +211,7 @@ TEST(FaceOccluders, OpenSquareHidesAndIsHidden) {
   Polyhedron square({P("1/2", "-1", "3"), P("3/2", "-1", "3"), P("3/2", "3", "3"), P("1/2", "3", "3")}, {{0, 1, 2, 3}});
   Polyhedron cube = box("0", "0", "0", "2", "2", "2");
   for (const Vector3& v : {Vector3(0, 0, 1), Vector3(0, 0, -1)}) {
-    RobertsResult r = run({&square, &cube}, make_orthographic(v), EdgeSelection::Feature);
+    LineDrawing r = run({&square, &cube}, make_orthographic(v), EdgeSelection::Feature);
     for (const Segment& s : r.segments)
       if (s.body == 0) EXPECT_EQ(s.line, LineKind::Boundary);
     if (v.z() > 0) {
@@ -223,7 +223,7 @@ TEST(FaceOccluders, OpenSquareHidesAndIsHidden) {
   }
   // Seen from its back side the square still hides (open surfaces hide from both sides).
   Polyhedron flipped = square.reversed();
-  RobertsResult r = run({&flipped, &cube}, make_orthographic(Vector3(0, 0, 1)));
+  LineDrawing r = run({&flipped, &cube}, make_orthographic(Vector3(0, 0, 1)));
   EXPECT_EQ(pieces(edge(r, 1, 6, 7)), "0 v 1/4 h 3/4 v 1");
 }
 
@@ -253,7 +253,7 @@ TEST(FaceOccluders, OpenHemisphereHidesAndIsHidden) {
     }
   Polyhedron dome(vs, fs);
   Polyhedron side_rod = box("-3", "-2", "1/4", "-2", "2", "1/2");  // behind the dome seen from +x
-  RobertsResult r = run({&dome, &side_rod}, make_orthographic(Vector3(1, 0, 0)), EdgeSelection::Feature);
+  LineDrawing r = run({&dome, &side_rod}, make_orthographic(Vector3(1, 0, 0)), EdgeSelection::Feature);
   const Segment& e = edge(r, 1, 5, 7);  // x = -2, z = 1/2, y from -2 to 2
   EXPECT_TRUE(visible_at(e, Q("1/20")));     // y = -1.8: beside the dome
   EXPECT_FALSE(visible_at(e, Q("1/2")));     // y = 0: behind it
@@ -263,12 +263,12 @@ TEST(FaceOccluders, OpenHemisphereHidesAndIsHidden) {
   EXPECT_EQ(rim, static_cast<std::size_t>(N));  // the equator
   // From below, a rod above the dome is hidden where its rays cross the dome.
   Polyhedron above = box("-2", "-1/10", "3", "2", "1/10", "4");
-  RobertsResult b = run({&dome, &above}, make_orthographic(Vector3(0, 0, -1)), EdgeSelection::Feature);
+  LineDrawing b = run({&dome, &above}, make_orthographic(Vector3(0, 0, -1)), EdgeSelection::Feature);
   const Segment& f = edge(b, 1, 0, 1);  // z = 3, y = -1/10, x from -2 to 2
   EXPECT_FALSE(visible_at(f, Q("1/2")));
   EXPECT_TRUE(visible_at(f, Q("1/50")));
   // From above the same rod is in front of everything.
-  RobertsResult c = run({&dome, &above}, make_orthographic(Vector3(0, 0, 1)), EdgeSelection::Feature);
+  LineDrawing c = run({&dome, &above}, make_orthographic(Vector3(0, 0, 1)), EdgeSelection::Feature);
   EXPECT_EQ(pieces(edge(c, 1, 4, 5)), "0 v 1");
 }
 
@@ -279,11 +279,11 @@ TEST(FaceOccluders, OpenBoxShowsItsInside) {
   faces.erase(faces.begin() + 5);  // the top (z max) face
   Polyhedron open(closed.vertices(), faces);
   Camera cam = make_orthographic(Vector3(Q("0.2"), Q("0.3"), 1));
-  RobertsResult r = run({&open}, cam, EdgeSelection::Feature);
+  LineDrawing r = run({&open}, cam, EdgeSelection::Feature);
   // Bottom edge y = 0, x 0..2: seen through the opening up to x = 1.6, then behind the wall x = 2.
   EXPECT_EQ(pieces(edge(r, 0, 0, 1)), "0 v 4/5 h 1");
   EXPECT_EQ(edge(r, 0, 4, 5).line, LineKind::Boundary);
-  RobertsResult c = run({&closed}, cam, EdgeSelection::Feature);
+  LineDrawing c = run({&closed}, cam, EdgeSelection::Feature);
   EXPECT_EQ(pieces(edge(c, 0, 0, 1)), "0 h 1");
 }
 
@@ -297,22 +297,22 @@ TEST(FaceOccluders, CreaseThresholdIsExact) {
   std::vector<Face> f = {{0, 4, 3, 2, 1}, {5, 6, 7, 8, 9}, {0, 1, 6, 5}, {1, 2, 7, 6}, {2, 3, 8, 7}, {3, 4, 9, 8}, {4, 0, 5, 9}};
   Polyhedron roof(v, orient_faces(v, f));
   Camera cam = make_orthographic(Vector3(Q("0.2"), Q("-1"), Q("3")));  // top, slant and x = 4 all facing
-  auto has = [&](const RobertsResult& r, int a, int b) { return find_edge(r, 0, a, b) != nullptr; };
-  RobertsResult r45 = run({&roof}, cam, EdgeSelection::Feature, "45");
+  auto has = [&](const LineDrawing& r, int a, int b) { return find_edge(r, 0, a, b) != nullptr; };
+  LineDrawing r45 = run({&roof}, cam, EdgeSelection::Feature, "45");
   EXPECT_FALSE(has(r45, 3, 8));  // top-slant: exactly 45, not over
   EXPECT_FALSE(has(r45, 2, 7));  // slant-side: exactly 45
   EXPECT_TRUE(has(r45, 1, 6));   // side-bottom: 90
-  RobertsResult r44 = run({&roof}, cam, EdgeSelection::Feature, "44.999999");
+  LineDrawing r44 = run({&roof}, cam, EdgeSelection::Feature, "44.999999");
   EXPECT_TRUE(has(r44, 3, 8));
   EXPECT_EQ(edge(r44, 0, 3, 8).line, LineKind::Crease);
-  RobertsResult r0 = run({&roof}, cam, EdgeSelection::Feature, "0");
+  LineDrawing r0 = run({&roof}, cam, EdgeSelection::Feature, "0");
   EXPECT_TRUE(has(r0, 3, 8));
 }
 
 // Silhouette edges are decided exactly from the facing of the two faces.
 TEST(FaceOccluders, SilhouetteKinds) {
   Polyhedron cube = box("0", "0", "0", "2", "2", "2");
-  RobertsResult r = run({&cube}, make_orthographic(Vector3(1, 2, 3)), EdgeSelection::Feature, "100");
+  LineDrawing r = run({&cube}, make_orthographic(Vector3(1, 2, 3)), EdgeSelection::Feature, "100");
   std::size_t silhouettes = 0;
   for (const Segment& s : r.segments) {
     EXPECT_EQ(s.line, LineKind::Silhouette);  // creases over 100 degrees: none; only silhouettes drawn

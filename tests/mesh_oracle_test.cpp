@@ -93,7 +93,7 @@ void check(const Polyhedron& body, const Camera& cam, const Oracle& oracle, Tall
            EdgeSelection edges) {
   LineOptions opt;
   opt.edges = edges;
-  RobertsResult r = face_occluders({&body}, cam, opt);
+  LineDrawing r = face_occluders({&body}, cam, opt);
   // A deterministic subset of the segments keeps the exact oracle affordable.
 #ifndef HLR_ORACLE_SEGMENTS
 #define HLR_ORACLE_SEGMENTS 300

@@ -107,7 +107,7 @@ struct Tally {
   long samples = 0, disagreements = 0, scenes = 0, junctions = 0, hidden_samples = 0, isolated_points = 0, route_mismatches = 0;
 };
 
-void sample_check(const RobertsResult& r, const std::vector<std::vector<OraclePlane>>& planes, const Camera& cam, Tally& tally,
+void sample_check(const LineDrawing& r, const std::vector<std::vector<OraclePlane>>& planes, const Camera& cam, Tally& tally,
                   const char* route) {
   for (const Segment& s : r.segments) {
     for (const Piece& p : s.pieces) {
@@ -153,12 +153,12 @@ void check_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, EdgeS
     ptrs.push_back(&b);
     planes.push_back(oracle_planes(b));
   }
-  RobertsOptions opt;
+  LineOptions opt;
   opt.edges = edges;
   RobertsResult r;
   try {
     r = roberts(ptrs, cam, opt);
-  } catch (const RobertsError&) {
+  } catch (const BodyError&) {
     return;  // a degenerate hull or an eye inside: not a scene for this test
   }
   ++tally.scenes;
@@ -167,7 +167,7 @@ void check_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, EdgeS
   sample_check(r, planes, cam, tally, "roberts");
   LineOptions lo;
   lo.edges = edges;
-  RobertsResult f = face_occluders(ptrs, cam, lo);
+  LineDrawing f = face_occluders(ptrs, cam, lo);
   sample_check(f, planes, cam, tally, "faces");
   std::map<std::tuple<int, int, int>, const Segment*> by_edge;
   for (const Segment& s : f.segments)

@@ -49,7 +49,7 @@ const Segment& box_edge(const RobertsResult& r, int body, int a, int b) { return
 bool fully(const Segment& s, bool visible) { return s.pieces.size() == 1 && s.pieces[0].visible == visible; }
 
 RobertsResult run(const std::vector<const Polyhedron*>& bodies, const Camera& c, EdgeSelection e = EdgeSelection::Feature) {
-  RobertsOptions o;
+  LineOptions o;
   o.edges = e;
   RobertsResult r = roberts(bodies, c, o);
   check_invariants(r);
@@ -194,7 +194,7 @@ TEST(Roberts, PerspectiveNeverDrawsBehindTheEye) {
 
 TEST(Roberts, EyeInsideABodyIsAnError) {
   Polyhedron cube = load_mesh(kData + "/cube.off");
-  EXPECT_THROW(run({&cube}, make_perspective(P("0", "0", "1/2"), P("0", "0", "-1"))), RobertsError);
+  EXPECT_THROW(run({&cube}, make_perspective(P("0", "0", "1/2"), P("0", "0", "-1"))), BodyError);
 }
 
 TEST(Roberts, NonConvexBodyRefusedNamingAFace) {
@@ -202,7 +202,7 @@ TEST(Roberts, NonConvexBodyRefusedNamingAFace) {
   try {
     run({&l}, make_orthographic(V("0", "0", "1")));
     FAIL();
-  } catch (const RobertsError& e) {
+  } catch (const BodyError& e) {
     EXPECT_NE(std::string(e.what()).find("not convex: face 4"), std::string::npos) << e.what();
   }
 }
@@ -216,14 +216,14 @@ TEST(RobertsDegenerate, EdgeLyingInAnotherBodysFacePlaneTouchingFaceToFace) {
   Polyhedron a = box("-1", "1/2", "-1", "0", "1", "3");
   RobertsResult r = run({&b, &a}, make_orthographic(V("0", "0", "1")));
   EXPECT_TRUE(fully(box_edge(r, 1, 1 | 2, 1 | 2 | 4), true));
-  EXPECT_EQ(r.stats.junction_segments, 0u);
+  EXPECT_EQ(r.stats.intersection_segments, 0u);
 }
 
 TEST(RobertsDegenerate, TwoBoxesTouchingFaceToFaceGiveNoJunctionAndHideNothingOfEachOther) {
   Polyhedron a = box("0", "0", "0", "1", "1", "1");
   Polyhedron b = box("1", "0", "0", "2", "1", "1");
   RobertsResult r = run({&a, &b}, make_orthographic(V("1", "1.3", "1.7")));
-  EXPECT_EQ(r.stats.junction_segments, 0u);
+  EXPECT_EQ(r.stats.intersection_segments, 0u);
   // Seen from +x+y+z, a's edge x = 1, y = 1 (top right) lies in b's left face: visible.
   EXPECT_TRUE(fully(box_edge(r, 0, 1 | 2, 1 | 2 | 4), true));
   // b's left bottom-front edges are in contact with a; a's right face is hidden behind b? No:
@@ -299,7 +299,7 @@ TEST(Roberts, PrefilterSkipsFarBodiesAndChangesNothing) {
   std::vector<const Polyhedron*> ptrs;
   for (auto& b : boxes) ptrs.push_back(&b);
   Camera c = make_orthographic(V("1", "1.3", "1.7"));
-  RobertsOptions with, without;
+  LineOptions with, without;
   without.prefilter = false;
   RobertsResult a = roberts(ptrs, c, with), b = roberts(ptrs, c, without);
   EXPECT_GT(a.stats.pairs_skipped, a.stats.pairs_tested);

@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (faces <= 64 && p.segments.size() <= 16) {
       try {
         (void)hlr::explain_markdown(hlr::explain(p), hlr::Lang::Ru);
-      } catch (const hlr::RobertsError&) {
+      } catch (const hlr::BodyError&) {
       } catch (const std::invalid_argument&) {
       }
     }

@@ -1,0 +1,90 @@
+// The 2D stage (see drawing_2d.hpp).
+#include "algorithms/drawing_2d.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace hlr {
+namespace {
+
+// Drawing coordinates of a piece; false when nothing of it is in front of the eye. For
+// perspective, ends closer than `near` to the eye plane are pulled to it (drawing only: the
+// visibility of the piece is already decided exactly).
+bool piece_line(const Segment& s, const Piece& p, const Projector& proj, bool perspective, double near,
+                std::array<double, 4>& out) {
+  // Drawing only: the ends in doubles from the certified bounds and t rounded.
+  auto mid = [](const Point3& q, int k) { return q.approx(k).lo + (q.approx(k).hi - q.approx(k).lo) / 2; };
+  std::array<double, 3> F, T, A, B;
+  for (int k = 0; k < 3; ++k) F[k] = mid(s.from(), k), T[k] = mid(s.to(), k);
+  auto at = [&](const Rational& t, std::array<double, 3>& o) {
+    if (t == 0) o = F;
+    else if (t == 1) o = T;
+    else {
+      double u = to_double(t);
+      for (int k = 0; k < 3; ++k) o[k] = F[k] + u * (T[k] - F[k]);
+    }
+  };
+  at(p.t0, A);
+  at(p.t1, B);
+  auto pa = proj.project(A[0], A[1], A[2]), pb = proj.project(B[0], B[1], B[2]);
+  if (perspective) {
+    if (pa[2] < near && pb[2] < near) return false;
+    if (pa[2] < near || pb[2] < near) {
+      double u = (near - pa[2]) / (pb[2] - pa[2]);
+      std::array<double, 3> C;
+      for (int k = 0; k < 3; ++k) C[k] = A[k] + u * (B[k] - A[k]);
+      auto pc = proj.project(C[0], C[1], C[2]);
+      (pa[2] < near ? pa : pb) = pc;
+    }
+  }
+  out = {pa[0], pa[1], pb[0], pb[1]};
+  return true;
+}
+
+}  // namespace
+
+Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Project2DOptions& opt) {
+  Projector proj(camera);
+  double near = 0;
+  if (camera.perspective) {
+    double far = 0;
+    for (const Segment& s : r.segments)
+      for (const Point3* p : {&s.from(), &s.to()}) far = std::max(far, proj.project(*p)[2]);
+    near = 1e-4 * std::max(far, 1e-300);
+  }
+  Drawing2D d;
+  for (std::size_t si = 0; si < r.segments.size(); ++si) {
+    const Segment& s = r.segments[si];
+    for (std::size_t pi = 0; pi < s.pieces.size(); ++pi) {
+      const Piece& p = s.pieces[pi];
+      if (p.behind_eye || p.clipped || (!p.visible && !opt.hidden)) continue;
+      std::array<double, 4> l;
+      if (!piece_line(s, p, proj, camera.perspective, near, l)) continue;
+      Polyline2D pl;
+      pl.points = {{l[0], l[1]}, {l[2], l[3]}};
+      pl.kind = s.line;
+      pl.visible = p.visible;
+      pl.intersection = s.kind == Segment::Kind::Intersection;
+      pl.body = s.body;
+      pl.body2 = s.body2;
+      pl.source = {PieceRef{static_cast<int>(si), static_cast<int>(pi)}};
+      d.lines.push_back(std::move(pl));
+    }
+  }
+  return d;
+}
+
+bool bounds(const Drawing2D& d, double& x0, double& y0, double& x1, double& y1) {
+  x0 = y0 = std::numeric_limits<double>::infinity();
+  x1 = y1 = -x0;
+  for (const Polyline2D& l : d.lines)
+    for (const auto& p : l.points) {
+      x0 = std::min(x0, p[0]);
+      x1 = std::max(x1, p[0]);
+      y0 = std::min(y0, p[1]);
+      y1 = std::max(y1, p[1]);
+    }
+  return x1 >= x0;
+}
+
+}  // namespace hlr

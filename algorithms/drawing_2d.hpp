@@ -1,0 +1,47 @@
+// The 2D stage (course notes section 20: projection onto the picture plane): the exact line
+// drawing projected into drawing coordinates, as its own value. Each polyline keeps its class
+// (line kind, visible or hidden, body) and a link back to the exact 3D pieces it comes from,
+// so later stages (chaining into strokes, removing duplicates, pen order, page layout) work
+// here and writers (SVG now, PDF/DXF later) only format. Coordinates are doubles: drawing
+// only; every visibility decision was taken exactly before.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "algorithms/camera.hpp"
+#include "algorithms/line_drawing.hpp"
+
+namespace hlr {
+
+/// Which exact piece a polyline edge comes from: segments[segment].pieces[piece].
+struct PieceRef {
+  int segment = -1, piece = -1;
+};
+
+struct Polyline2D {
+  std::vector<std::array<double, 2>> points;  // x to the right, y up, scene units
+  LineKind kind = LineKind::Edge;
+  bool visible = true;
+  bool intersection = false;                  // an intersection line of bodies `body` and `body2`
+  int body = -1, body2 = -1;
+  std::vector<PieceRef> source;               // one per edge of the polyline (points - 1)
+};
+
+struct Drawing2D {
+  std::vector<Polyline2D> lines;  // in order of segment, then piece
+};
+
+struct Project2DOptions {
+  bool hidden = true;  // include hidden pieces
+};
+
+/// Projects every drawn piece (not behind the eye, not clipped; hidden ones if asked) to a
+/// two-point polyline. Perspective: piece ends nearer than 1e-4 of the farthest segment end's
+/// depth are pulled to that depth (drawing only).
+Drawing2D project_drawing(const LineDrawing& drawing, const Camera& camera, const Project2DOptions& options = {});
+
+/// Bounds [x0, x1] x [y0, y1] of the polylines; false when there are none.
+bool bounds(const Drawing2D& d, double& x0, double& y0, double& x1, double& y1);
+
+}  // namespace hlr

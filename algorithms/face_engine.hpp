@@ -1,0 +1,128 @@
+// The per-face engine behind face_occluders() (course notes "Visibility semantics", sections
+// 26-28 for the inequalities): one class template over the number policy P (exact_int.hpp),
+// its members defined by concern in files of their own and instantiated there for Fast,
+// Fast40 and Big:
+//   face_engine_bodies.cpp         triangles, facing, closed solids, eye inside, orientation
+//   face_engine_occluders.cpp      sight prisms of the front triangles, closed sides, grid
+//   face_engine_edges.cpp          which edges are drawn (boundary, silhouette, crease)
+//   face_engine_intersections.cpp  intersection lines (broad phase, filter, exact segment)
+//   face_engine_visibility.cpp     the hidden intervals of every segment, on all cores
+// Internal to the library: callers use face_occluders.hpp.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "algorithms/body_topology.hpp"
+#include "algorithms/camera.hpp"
+#include "algorithms/crease_angle.hpp"
+#include "algorithms/face_occluders.hpp"
+#include "algorithms/screen_grid.hpp"
+#include "kernel/exact_int.hpp"
+#include "kernel/polyhedron.hpp"
+
+namespace hlr::face_route {
+
+/// One triangle of a face, global vertex ids in the face's orientation.
+struct Tri {
+  int body, face;
+  std::array<int, 3> v;
+  std::array<bool, 3> edge;  // side k is a polygon edge (else a diagonal)
+};
+
+/// A front triangle's sight prism: constraint k is m[k]·X - c[k] > 0 (>= 0 when closed[k]);
+/// 0 is "behind the plane", 1..3 the side planes through the view direction or the eye.
+template <class P>
+struct Occluder {
+  Vec<P> m[4];
+  typename P::V c[4];
+  bool closed[4] = {false, false, false, false};
+  int body, face;
+  std::array<int, 3> v;  // global vertex ids, oriented toward the viewer (side k+1: v[k] -> v[k+1])
+};
+
+/// An occluder's screen box (float for memory, rounded outward) and its nearest depth.
+struct Box {
+  float x0, y0, x1, y1;
+  double dmin;
+};
+
+template <class P>
+class Engine {
+ public:
+  using C = typename P::C;
+  using V = typename P::V;
+
+  Engine(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const LineOptions& opt, std::vector<Vec<P>> pts,
+         Vec<P> view, Rational scale);
+  LineDrawing run();
+
+ private:
+  struct Work;
+
+  // face_engine_bodies.cpp
+  void offsets();
+  Vec<P> normal(const Tri& t) const;
+  void prepare_body(int b, LineDrawing& res);
+  int triangulate_body(int b);
+  int volume_sign(std::size_t first_tri) const;
+  bool eye_inside(int first) const;
+  static void flip(Tri& t);
+  // face_engine_occluders.cpp
+  bool neighbour(const Tri& t, int k, int& face, int& third) const;
+  void vertex_rules();
+  void build_occluders();
+  void make_occluder(const Tri& t0, Occluder<P>& o, Box& bx, char& always) const;
+  bool closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs) const;
+  void side_plane(int p, int q, Vec<P>& m, V& c) const;
+  // face_engine_edges.cpp
+  void collect_edges(int b, LineDrawing& res);
+  bool opposite_in_projection(int u, int v, int x, int y) const;
+  bool crease(int b, const EdgeUse& a, const EdgeUse& c) const;
+  // face_engine_intersections.cpp
+  void add_intersections(LineDrawing& res);
+  bool pair_may_cross(std::uint32_t ta, std::uint32_t tc) const;
+  bool may_meet(const Tri& x, const Tri& y) const;
+  bool extent_on_plane(const Tri& t, const Tri& o, int axis, double out[2], double& scale) const;
+  bool straddles(const Tri& x, const Tri& y) const;
+  const Point3& world(int g) const;
+  // face_engine_visibility.cpp
+  void visibility(LineDrawing& res);
+  std::optional<std::pair<Rational, Rational>> depth_of(const Segment& s) const;
+  void candidates(const std::array<double, 3>& a, const std::array<double, 3>& b, bool front, Work& wk) const;
+  void solve(Segment& s, const std::array<int, 2>& gv, Work& wk) const;
+  void test_integer(const Occluder<P>& o, const Vec<P>& X0, const Vec<P>& X1, Work& wk) const;
+  void merge(Work& wk, std::vector<std::pair<Rational, Rational>>& out) const;
+  void test_rational(const Occluder<P>& o, const std::array<Rational, 3>& A, const std::array<Rational, 3>& B,
+                     std::vector<std::pair<Rational, Rational>>& out, Work& wk) const;
+
+  const std::vector<const Polyhedron*>& bodies_;
+  const Camera& cam_;
+  const LineOptions& opt_;
+  std::vector<Vec<P>> X_;
+  Vec<P> view_;  // orthographic direction, or the eye (scaled like the points)
+  Rational scale_;
+  Projector proj_;
+  CreaseAngle crease_;
+
+  std::vector<int> voff_;
+  std::vector<bool> solid_;
+  std::vector<int> flipped_;
+  std::vector<std::vector<int>> facing_;
+  std::vector<BodyTopology> topo_;
+  std::vector<std::vector<char>> degenerate_;
+  std::vector<std::vector<Vec<P>>> face_normal_;
+  std::vector<Tri> tris_;
+  std::vector<Occluder<P>> occ_;
+  std::vector<Box> boxes_;
+  ScreenGrid grid_;
+  double margin_ = 0;
+  std::vector<std::array<double, 3>> vproj_;
+  std::vector<char> vfront_;
+  std::vector<char> vertex_closed_;
+  std::vector<std::array<int, 2>> gv_;  // global vertex ids of each segment's ends (-1: rational ends)
+};
+
+}  // namespace hlr::face_route

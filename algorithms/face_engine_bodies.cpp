@@ -1,0 +1,199 @@
+// The per-face engine, bodies (see face_engine.hpp): triangles of every face, facing of
+// every face (facing.hpp), which bodies are closed solids (body_topology.hpp), inside-out
+// solids turned, an eye inside a solid refused.
+#include <chrono>
+
+#include "algorithms/face_engine.hpp"
+#include "algorithms/face_triangles.hpp"
+#include "algorithms/facing.hpp"
+
+namespace hlr::face_route {
+
+template <class P>
+Engine<P>::Engine(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const LineOptions& opt,
+                  std::vector<Vec<P>> pts, Vec<P> view, Rational scale)
+    : bodies_(bodies), cam_(cam), opt_(opt), X_(std::move(pts)), view_(std::move(view)), scale_(std::move(scale)),
+      proj_(cam), crease_(opt.crease_degrees) {}
+
+template <class P>
+LineDrawing Engine<P>::run() {
+  LineDrawing res;
+  res.stats.method = Method::Faces;
+  res.stats.faces.emplace();
+  res.stats.faces->integer_path = !std::is_same_v<P, Big>;
+  using Clock = std::chrono::steady_clock;
+  auto t0 = Clock::now();
+  offsets();
+  for (std::size_t b = 0; b < bodies_.size(); ++b) prepare_body(static_cast<int>(b), res);
+  build_occluders();
+  res.stats.faces->occluders = occ_.size();
+  std::size_t total = 0;
+  for (const BodyTopology& t : topo_) total += t.edges.size();
+  res.segments.reserve(total + 64);
+  gv_.reserve(total + 64);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) collect_edges(static_cast<int>(b), res);
+  // Edge structure is no longer needed: free it before the memory-heavy stages.
+  std::vector<BodyTopology>().swap(topo_);
+  std::vector<std::vector<Vec<P>>>().swap(face_normal_);
+  auto t1 = Clock::now();
+  if (opt_.intersections) add_intersections(res);
+  auto t2 = Clock::now();
+  visibility(res);
+  auto t3 = Clock::now();
+  res.stats.setup_seconds = std::chrono::duration<double>(t1 - t0).count();
+  res.stats.intersections_seconds = std::chrono::duration<double>(t2 - t1).count();
+  res.stats.visibility_seconds = std::chrono::duration<double>(t3 - t2).count();
+  return res;
+}
+
+template <class P>
+void Engine<P>::offsets() {
+  int o = 0;
+  for (const Polyhedron* p : bodies_) {
+    voff_.push_back(o);
+    o += static_cast<int>(p->num_vertices());
+  }
+  solid_.assign(bodies_.size(), false);
+  degenerate_.resize(bodies_.size());
+  face_normal_.resize(bodies_.size());
+  facing_.resize(bodies_.size());
+  topo_.resize(bodies_.size());
+}
+
+template <class P>
+Vec<P> Engine<P>::normal(const Tri& t) const {
+  return cross<P>(sub<P>(X_[t.v[1]], X_[t.v[0]]), sub<P>(X_[t.v[2]], X_[t.v[0]]));
+}
+
+// Triangles of every face of body b into tris_, face normals, facing and the opposite vertex
+// of every polygon side (topo_[b].slot_third); returns the index of the body's first triangle.
+template <class P>
+int Engine<P>::triangulate_body(int b) {
+  const Polyhedron& p = *bodies_[b];
+  const int vo = voff_[b];
+  const auto& faces = p.faces();
+  BodyTopology& topo = topo_[b];
+  const std::vector<int>& fo = topo.face_offset;
+  std::vector<int>& facing = facing_[b];
+  facing.assign(faces.size(), 0);
+  degenerate_[b].assign(faces.size(), 0);
+  face_normal_[b].resize(faces.size());
+  const int first_tri = static_cast<int>(tris_.size());
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const Face& face = faces[f];
+    FaceTriangles ft = face_triangles(p, static_cast<int>(f));
+    if (ft.status == FaceTriangles::Status::Degenerate) {
+      degenerate_[b][f] = 1;  // zero area: neither occludes nor faces
+      continue;
+    }
+    if (ft.status != FaceTriangles::Status::Ok) throw BodyError(b, "has " + ft.problem(static_cast<int>(f)));
+    if (face.size() == 3) {
+      Tri probe{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}};
+      Vec<P> n = normal(probe);
+      if (P::sign(n[0]) == 0 && P::sign(n[1]) == 0 && P::sign(n[2]) == 0) {
+        degenerate_[b][f] = 1;
+        continue;
+      }
+    }
+    for (const FaceTriangle& t : ft.triangles) {
+      Tri tri{b, static_cast<int>(f), {vo + face[t.v[0]], vo + face[t.v[1]], vo + face[t.v[2]]}, t.edge};
+      for (int k = 0; k < 3; ++k)
+        if (t.edge[k]) topo.slot_third[fo[f] + t.v[k]] = tri.v[(k + 2) % 3];  // side k's opposite vertex
+      tris_.push_back(tri);
+    }
+    face_normal_[b][f] = normal(tris_.back());
+    facing[f] = facing_sign<P>(face_normal_[b][f], X_[tris_.back().v[0]], view_, cam_.perspective);
+  }
+  return first_tri;
+}
+
+// Sign of six times the volume of the body's triangles from `first_tri` on; Fast40's terms
+// reach 2^123, so its sum is kept in GMP.
+template <class P>
+int Engine<P>::volume_sign(std::size_t first_tri) const {
+  if constexpr (std::is_same_v<P, Fast40>) {
+    mpz_class v6 = 0;
+    const Vec<P>& o = X_[tris_[first_tri].v[0]];
+    for (std::size_t i = first_tri; i < tris_.size(); ++i)
+      v6 += P::z(dot<P>(sub<P>(X_[tris_[i].v[0]], o), cross<P>(sub<P>(X_[tris_[i].v[1]], o), sub<P>(X_[tris_[i].v[2]], o))));
+    return sgn(v6);
+  } else {
+    V volume6 = 0;
+    for (std::size_t i = first_tri; i < tris_.size(); ++i)
+      volume6 += dot<P>(X_[tris_[i].v[0]], cross<P>(X_[tris_[i].v[1]], X_[tris_[i].v[2]]));
+    return P::sign(volume6);
+  }
+}
+
+template <class P>
+void Engine<P>::prepare_body(int b, LineDrawing& res) {
+  topo_[b] = body_topology(bodies_[b]->faces(), bodies_[b]->num_vertices());
+  const int first_tri = triangulate_body(b);
+  // A closed solid: every edge in exactly two faces, traversed in opposite directions.
+  bool closed = true;
+  for (const BodyEdge& e : topo_[b].edges) closed = closed && e.closed_pair();
+  int vsign = closed && first_tri < static_cast<int>(tris_.size()) ? volume_sign(first_tri) : 0;
+  solid_[b] = closed && vsign != 0;
+  if (!solid_[b]) {
+    std::string why = "has zero volume";
+    for (const BodyEdge& e : topo_[b].edges)
+      if (!e.closed_pair()) {
+        why = e.uses.size() == 1   ? "is open (edge " + std::to_string(e.u) + "-" + std::to_string(e.v) + " is in one face)"
+              : e.uses.size() != 2 ? "is not manifold (edge " + std::to_string(e.u) + "-" + std::to_string(e.v) + " is in " +
+                                         std::to_string(e.uses.size()) + " faces)"
+                                   : "is not consistently oriented (edge " + std::to_string(e.u) + "-" + std::to_string(e.v) + ")";
+        break;
+      }
+    res.notes.push_back({b, why + ": drawn as a surface (hidden where a sight ray crosses it)"});
+  }
+  if (solid_[b] && cam_.perspective && eye_inside(first_tri))
+    throw BodyError(b, "contains the eye " + to_string(cam_.eye) + ": an eye inside a solid sees nothing");
+  if (solid_[b] && vsign < 0) {  // inside out: turn it
+    for (std::size_t i = first_tri; i < tris_.size(); ++i) flip(tris_[i]);
+    for (int& s : facing_[b]) s = -s;
+    for (auto& n : face_normal_[b]) n = neg<P>(n);
+    flipped_.push_back(b);
+  }
+  res.facing.emplace_back(facing_[b].begin(), facing_[b].end());
+}
+
+// Parity of the crossings of a ray from the eye with the body's triangles (from `first`
+// on), exactly; a ray through an edge or a vertex is replaced by the next direction.
+template <class P>
+bool Engine<P>::eye_inside(int first) const {
+  static const int dirs[][3] = {{7, 3, 5}, {2, 11, 3}, {-13, 1, 7}, {5, -9, 2}, {1, 4, -11}, {-3, -5, 8}, {17, 6, -1}, {-2, 3, -19}};
+  for (const auto& dd : dirs) {
+    Vec<P> d{C(dd[0]), C(dd[1]), C(dd[2])};
+    bool degenerate = false;
+    int crossings = 0;
+    for (std::size_t i = first; i < tris_.size() && tris_[i].body == tris_[first].body && !degenerate; ++i) {
+      const Tri& t = tris_[i];
+      Vec<P> a = sub<P>(X_[t.v[0]], view_), b = sub<P>(X_[t.v[1]], view_), c = sub<P>(X_[t.v[2]], view_);
+      int o1 = P::sign(dot<P>(a, cross<P>(b, d))), o2 = P::sign(dot<P>(b, cross<P>(c, d))), o3 = P::sign(dot<P>(c, cross<P>(a, d)));
+      if (!((o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0))) continue;  // the line misses it
+      if (o1 == 0 || o2 == 0 || o3 == 0) {
+        degenerate = true;  // through an edge or a vertex (or in its plane)
+        break;
+      }
+      Vec<P> n = normal(t);
+      int sa = P::sign(dot<P>(n, a)), sd = P::sign(dot<P>(n, d));
+      if (sa == 0) return false;  // the eye lies on the surface: not inside
+      if (sa == sd) ++crossings;  // the crossing is ahead of the eye
+    }
+    if (!degenerate) return crossings % 2 == 1;
+  }
+  return false;
+}
+
+template <class P>
+void Engine<P>::flip(Tri& t) {
+  std::swap(t.v[1], t.v[2]);
+  // Sides were (0,1), (1,2), (2,0); now (0,2)=old 2, (2,1)=old 1, (1,0)=old 0.
+  t.edge = {t.edge[2], t.edge[1], t.edge[0]};
+}
+
+template class Engine<Fast>;
+template class Engine<Fast40>;
+template class Engine<Big>;
+
+}  // namespace hlr::face_route

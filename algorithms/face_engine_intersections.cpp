@@ -1,0 +1,193 @@
+// The per-face engine, intersection lines (see face_engine.hpp; course notes section 28):
+// triangle pairs from the broad phase (intersection_broad_phase.hpp), exact integer plane-side
+// tests and a certified double filter, then the exact segment (intersection_lines.hpp).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+
+#include "algorithms/face_engine.hpp"
+#include "algorithms/intersection_broad_phase.hpp"
+#include "algorithms/intersection_lines.hpp"
+
+namespace hlr::face_route {
+namespace {
+
+using Line = std::tuple<int, int, int, int, Point3, Point3>;  // bodies, faces, ends
+
+// Pieces of one face pair's line cut by face diagonals: joined where they meet end to end.
+void join_collinear(std::vector<Line>& v) {
+  std::sort(v.begin(), v.end(), [](const auto& p, const auto& q) {
+    auto kp = std::make_tuple(std::get<0>(p), std::get<1>(p), std::get<2>(p), std::get<3>(p));
+    auto kq = std::make_tuple(std::get<0>(q), std::get<1>(q), std::get<2>(q), std::get<3>(q));
+    if (kp != kq) return kp < kq;
+    return std::get<4>(p) < std::get<4>(q);
+  });
+  std::vector<Line> out;
+  for (auto& s : v) {
+    if (!out.empty()) {
+      auto& o = out.back();
+      bool same = std::get<0>(o) == std::get<0>(s) && std::get<1>(o) == std::get<1>(s) && std::get<2>(o) == std::get<2>(s) &&
+                  std::get<3>(o) == std::get<3>(s);
+      if (same && std::get<5>(o) == std::get<4>(s) &&
+          cross(std::get<5>(o) - std::get<4>(o), std::get<5>(s) - std::get<4>(s)).is_zero()) {
+        std::get<5>(o) = std::get<5>(s);
+        continue;
+      }
+    }
+    out.push_back(std::move(s));
+  }
+  v = std::move(out);
+}
+
+}  // namespace
+
+// Broad phase: triangles' bounding boxes hashed into cubic cells; exact integer plane-side
+// tests reject almost every pair; the segment itself is built in rationals.
+template <class P>
+void Engine<P>::add_intersections(LineDrawing& res) {
+  const std::size_t n = tris_.size();
+  if (n < 2) return;
+  std::vector<Box3> bb(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Box3 b{INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    for (int v : tris_[i].v) {
+      const Point3& q = bodies_[tris_[i].body]->vertices()[v - voff_[tris_[i].body]];
+      for (int k = 0; k < 3; ++k) {
+        b[k] = std::min(b[k], q.approx(k).lo);
+        b[k + 3] = std::max(b[k + 3], q.approx(k).hi);
+      }
+    }
+    bb[i] = b;
+  }
+  BoxPairs pairs = overlapping_box_pairs(bb, ParallelLoop(opt_.threads), [&](std::uint32_t ta, std::uint32_t tc) {
+    const Tri &x = tris_[ta], &y = tris_[tc];
+    if (x.body == y.body) {
+      bool shared = false;
+      for (int u : x.v)
+        for (int w : y.v) shared = shared || u == w;
+      if (shared || x.face == y.face) return PairVerdict::Skip;
+    }
+    return straddles(x, y) && straddles(y, x) && may_meet(x, y) ? PairVerdict::Keep : PairVerdict::Reject;
+  });
+  res.stats.faces->intersection_pairs = pairs.tested;
+  const auto& hits = pairs.kept;
+  std::vector<Line> segs;
+  for (auto [ta, tc] : hits) {
+    const Tri &x = tris_[ta], &y = tris_[tc];
+    TriangleRef rx{{&world(x.v[0]), &world(x.v[1]), &world(x.v[2])}, x.edge};
+    TriangleRef ry{{&world(y.v[0]), &world(y.v[1]), &world(y.v[2])}, y.edge};
+    auto seg = triangle_intersection(rx, ry);
+    if (!seg) continue;
+    bool swap = y.body < x.body;
+    const Tri& f = swap ? y : x;
+    const Tri& g = swap ? x : y;
+    Point3 a = seg->first, b = seg->second;
+    if (b < a) std::swap(a, b);
+    segs.emplace_back(f.body, g.body, f.face, g.face, a, b);
+  }
+  // The same segment from two triangles of one face (along a diagonal): once.
+  std::sort(segs.begin(), segs.end(), [](const auto& p, const auto& q) {
+    if (std::get<0>(p) != std::get<0>(q)) return std::get<0>(p) < std::get<0>(q);
+    if (std::get<1>(p) != std::get<1>(q)) return std::get<1>(p) < std::get<1>(q);
+    if (!(std::get<4>(p) == std::get<4>(q))) return std::get<4>(p) < std::get<4>(q);
+    if (!(std::get<5>(p) == std::get<5>(q))) return std::get<5>(p) < std::get<5>(q);
+    if (std::get<2>(p) != std::get<2>(q)) return std::get<2>(p) < std::get<2>(q);
+    return std::get<3>(p) < std::get<3>(q);
+  });
+  std::vector<Line> uniq;
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    if (i > 0 && std::get<0>(segs[i - 1]) == std::get<0>(segs[i]) && std::get<1>(segs[i - 1]) == std::get<1>(segs[i]) &&
+        std::get<4>(segs[i - 1]) == std::get<4>(segs[i]) && std::get<5>(segs[i - 1]) == std::get<5>(segs[i]))
+      continue;
+    uniq.push_back(segs[i]);
+  }
+  join_collinear(uniq);
+  for (auto& [b0, b1, f0, f1, a, b] : uniq) {
+    Segment s;
+    s.kind = Segment::Kind::Intersection;
+    s.line = LineKind::Intersection;
+    s.body = b0;
+    s.body2 = b1;
+    s.face0 = f0;
+    s.face1 = f1;
+    s.set_ends(a, b);
+    ++res.stats.intersection_segments;
+    res.segments.push_back(std::move(s));
+    gv_.push_back({-1, -1});
+  }
+}
+
+// A filter before the rational construction: the parts of x on y's plane and of y on x's
+// plane lie on one line; if their extents along a coordinate axis are certainly disjoint they
+// do not meet. Plane values are exact integers, so each crossing parameter s/(s - t) (s, t
+// of opposite signs) is within 4 ulps in doubles, each point within 8 ulps of the largest
+// coordinate; intervals farther apart than that are disjoint. Otherwise: exact.
+template <class P>
+bool Engine<P>::may_meet(const Tri& x, const Tri& y) const {
+  double ax[2], ay[2];
+  int axis = 0;
+  {
+    Vec<P> nx = normal(x), ny = normal(y);
+    double u[3] = {P::dbl(nx[1]) * P::dbl(ny[2]) - P::dbl(nx[2]) * P::dbl(ny[1]),
+                   P::dbl(nx[2]) * P::dbl(ny[0]) - P::dbl(nx[0]) * P::dbl(ny[2]),
+                   P::dbl(nx[0]) * P::dbl(ny[1]) - P::dbl(nx[1]) * P::dbl(ny[0])};
+    for (int k = 1; k < 3; ++k)
+      if (std::fabs(u[k]) > std::fabs(u[axis])) axis = k;
+  }
+  double scale = 0;
+  if (!extent_on_plane(x, y, axis, ax, scale) || !extent_on_plane(y, x, axis, ay, scale)) return true;
+  double err = bounds::kExtentUlps * std::numeric_limits<double>::epsilon() * scale;
+  return !(ax[1] + err < ay[0] - err || ay[1] + err < ax[0] - err);
+}
+
+// Extent along `axis` of the part of t on the plane of o, in doubles; false if undecidable.
+template <class P>
+bool Engine<P>::extent_on_plane(const Tri& t, const Tri& o, int axis, double out[2], double& scale) const {
+  Vec<P> n = normal(o);
+  V s[3];
+  for (int k = 0; k < 3; ++k) s[k] = dot<P>(n, sub<P>(X_[t.v[k]], X_[o.v[0]]));
+  out[0] = INFINITY;
+  out[1] = -INFINITY;
+  for (int k = 0; k < 3; ++k) {
+    double a = P::dbl(X_[t.v[k]][axis]);
+    scale = std::max(scale, std::fabs(a));
+    int j = (k + 1) % 3;
+    int sk = P::sign(s[k]), sj = P::sign(s[j]);
+    if (sk == 0) out[0] = std::min(out[0], a), out[1] = std::max(out[1], a);
+    if (sk * sj < 0) {
+      double u = P::dbl(s[k]) / (P::dbl(s[k]) - P::dbl(s[j]));
+      double b = P::dbl(X_[t.v[j]][axis]);
+      double c = a + u * (b - a);
+      out[0] = std::min(out[0], c);
+      out[1] = std::max(out[1], c);
+    }
+  }
+  return std::isfinite(out[0]) && std::isfinite(out[1]) && std::isfinite(scale);
+}
+
+// Triangle y has vertices strictly on both sides of x's plane, or on it (not all on it).
+template <class P>
+bool Engine<P>::straddles(const Tri& x, const Tri& y) const {
+  Vec<P> n = normal(x);
+  int pos = 0, neg_ = 0;
+  for (int v : y.v) {
+    int s = P::sign(dot<P>(n, sub<P>(X_[v], X_[x.v[0]])));
+    pos += s > 0;
+    neg_ += s < 0;
+  }
+  if (pos == 3 || neg_ == 3) return false;
+  return pos + neg_ > 0;  // all three on the plane: coplanar, no line
+}
+
+template <class P>
+const Point3& Engine<P>::world(int g) const {
+  int b = static_cast<int>(std::upper_bound(voff_.begin(), voff_.end(), g) - voff_.begin()) - 1;
+  return bodies_[b]->vertices()[g - voff_[b]];
+}
+
+template class Engine<Fast>;
+template class Engine<Fast40>;
+template class Engine<Big>;
+
+}  // namespace hlr::face_route

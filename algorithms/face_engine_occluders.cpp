@@ -1,0 +1,193 @@
+// The per-face engine, occluders (see face_engine.hpp): every front triangle with the sight
+// rays behind it bounds a convex sight prism (its plane and three side planes through the view
+// direction or the eye); a prism side is closed where the ray just behind that polygon edge is
+// inside the solid (or crosses the open surface). Boxes of the projected prisms go into the
+// screen grid (screen_grid.hpp), a filter only.
+#include <cmath>
+#include <limits>
+
+#include "algorithms/face_engine.hpp"
+#include "algorithms/parallel.hpp"
+
+namespace hlr::face_route {
+
+// ---- occluders
+// The neighbour of triangle side (p -> q) across a polygon edge: its face and the opposite
+// vertex of its triangle on that edge; false for boundary, non-manifold or degenerate.
+template <class P>
+bool Engine<P>::neighbour(const Tri& t, int k, int& face, int& third) const {
+  const int b = t.body;
+  const Face& poly = bodies_[b]->faces()[t.face];
+  // Find the polygon position of side k: the position of t.v[k] in the face.
+  const int vo = voff_[b];
+  int pos = -1;
+  for (std::size_t i = 0; i < poly.size(); ++i)
+    if (vo + poly[i] == t.v[k] && vo + poly[(i + 1) % poly.size()] == t.v[(k + 1) % 3]) pos = static_cast<int>(i);
+  if (pos < 0)  // a flipped (inside-out) solid traverses its sides backwards
+    for (std::size_t i = 0; i < poly.size(); ++i)
+      if (vo + poly[i] == t.v[(k + 1) % 3] && vo + poly[(i + 1) % poly.size()] == t.v[k]) pos = static_cast<int>(i);
+  if (pos < 0) return false;
+  const int slot = topo_[b].face_offset[t.face] + pos;
+  const int e = topo_[b].slot_edge[slot];
+  if (e < 0) return false;
+  const BodyEdge& be = topo_[b].edges[e];
+  if (be.uses.size() != 2) return false;
+  const EdgeUse& other = be.uses[0].slot == slot ? be.uses[1] : be.uses[0];
+  if (degenerate_[b][other.face]) return false;
+  face = other.face;
+  third = topo_[b].slot_third[other.slot];
+  return third >= 0;
+}
+
+// A vertex hides the sight line just behind it when every face around it faces the viewer
+// (solid: all front, so the surface is locally a graph over the image with material behind;
+// open surface: all one way and not on the boundary, so the ray crosses it). Faces that are
+// edge-on or turn away around a vertex: not closed (a ray along the boundary).
+template <class P>
+void Engine<P>::vertex_rules() {
+  // 0 unset, 1 all facing, 2 all non-facing, 3 mixed or edge-on or boundary.
+  std::vector<char> state(X_.size(), 0);
+  auto mark = [&](int g, char st) {
+    char& x = state[g];
+    x = (x == 0 || x == st) ? st : 3;
+  };
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const auto& faces = bodies_[b]->faces();
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      int fs = facing_[b][f];
+      char st = degenerate_[b][f] || fs == 0 ? 3 : (fs > 0 ? 1 : (solid_[b] ? 3 : 2));
+      for (int v : faces[f]) mark(voff_[b] + v, st);
+    }
+    for (const BodyEdge& e : topo_[b].edges)
+      if (e.uses.size() != 2) mark(voff_[b] + e.u, 3), mark(voff_[b] + e.v, 3);
+  }
+  vertex_closed_.resize(X_.size());
+  for (std::size_t g = 0; g < X_.size(); ++g) vertex_closed_[g] = state[g] == 1 || state[g] == 2;
+}
+
+template <class P>
+void Engine<P>::build_occluders() {
+  vertex_rules();
+  occ_.reserve(tris_.size() / 2 + 1);
+  std::vector<Box> boxes;
+  std::vector<char> always;
+  // Drawing projections of every vertex, once.
+  vproj_.resize(X_.size());
+  vfront_.assign(X_.size(), 1);
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    for (std::size_t i = 0; i < bodies_[b]->num_vertices(); ++i) {
+      const Point3& q = bodies_[b]->vertices()[i];
+      vproj_[voff_[b] + i] = proj_.project(q);
+      if (cam_.perspective) vfront_[voff_[b] + i] = cam_.in_front(q) == Sign::Positive;
+    }
+  std::vector<int> sel;
+  for (std::size_t i = 0; i < tris_.size(); ++i) {
+    const Tri& t0 = tris_[i];
+    int fs = facing_[t0.body][t0.face];
+    if (fs == 0) continue;                       // edge-on: sight rays graze it
+    if (solid_[t0.body] && fs < 0) continue;     // a closed solid is hidden by its front faces
+    sel.push_back(static_cast<int>(i));
+  }
+  occ_.resize(sel.size());
+  boxes.resize(sel.size());
+  always.resize(sel.size());
+  ParallelLoop(opt_.threads).for_each(sel.size(), 1024, [&](std::size_t i) { make_occluder(tris_[sel[i]], occ_[i], boxes[i], always[i]); });
+  // Widen every box by a margin far above the error of the double projections (a filter
+  // only: it skips work, never decides; bounds::kBoxMargin).
+  double ext = 1e-300;
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    if (!always[i])
+      ext = std::max({ext, std::fabs(static_cast<double>(boxes[i].x0)), std::fabs(static_cast<double>(boxes[i].x1)),
+                      std::fabs(static_cast<double>(boxes[i].y0)), std::fabs(static_cast<double>(boxes[i].y1)),
+                      std::fabs(boxes[i].dmin)});
+  margin_ = bounds::kBoxMargin * ext;
+  for (Box& bx : boxes) {
+    bx.x0 -= static_cast<float>(margin_);
+    bx.y0 -= static_cast<float>(margin_);
+    bx.x1 += static_cast<float>(margin_);
+    bx.y1 += static_cast<float>(margin_);
+    bx.dmin -= margin_;
+  }
+  boxes_ = std::move(boxes);
+  std::vector<ScreenRect> rects(boxes_.size());
+  for (std::size_t i = 0; i < boxes_.size(); ++i) rects[i] = {boxes_[i].x0, boxes_[i].y0, boxes_[i].x1, boxes_[i].y1};
+  grid_.build(rects, always, 2.0, 2048);
+}
+
+template <class P>
+void Engine<P>::make_occluder(const Tri& t0, Occluder<P>& o, Box& bx, char& always) const {
+  const int b = t0.body;
+  const int fs = facing_[b][t0.face];
+  Tri t = t0;
+  if (fs < 0) flip(t);  // open surface seen from its back: orient toward the viewer
+  o.body = b;
+  o.face = t.face;
+  o.v = t.v;
+  Vec<P> n = normal(t);
+  // Constraint 0: strictly behind the plane: -n·(X - a) > 0.
+  o.m[0] = neg<P>(n);
+  o.c[0] = dot<P>(o.m[0], X_[t.v[0]]);
+  for (int k = 0; k < 3; ++k) {
+    int r = t.v[(k + 2) % 3];
+    Vec<P> m;
+    V c;
+    side_plane(t.v[k], t.v[(k + 1) % 3], m, c);
+    if (P::sign(dot<P>(m, X_[r]) - c) < 0) {
+      m = neg<P>(m);
+      c = -c;
+    }
+    o.m[k + 1] = m;
+    o.c[k + 1] = c;
+    o.closed[k + 1] = !t.edge[k] || closed_side(t, k, m, c, fs);
+  }
+  bx = Box{std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
+           -std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+           std::numeric_limits<double>::infinity()};
+  bool all_front = true;
+  for (int v : t.v) {
+    const auto& pr = vproj_[v];
+    bx.x0 = std::min(bx.x0, std::nextafter(static_cast<float>(pr[0]), -INFINITY));
+    bx.y0 = std::min(bx.y0, std::nextafter(static_cast<float>(pr[1]), -INFINITY));
+    bx.x1 = std::max(bx.x1, std::nextafter(static_cast<float>(pr[0]), INFINITY));
+    bx.y1 = std::max(bx.y1, std::nextafter(static_cast<float>(pr[1]), INFINITY));
+    bx.dmin = std::min(bx.dmin, pr[2]);
+    all_front = all_front && vfront_[v];
+  }
+  always = !all_front;
+}
+
+// Is the sight ray just behind the polygon edge under side k inside the body (closed side)?
+template <class P>
+bool Engine<P>::closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs) const {
+  int g = -1, third = -1;
+  if (!neighbour(t, k, g, third)) return false;
+  const int b = t.body;
+  if (solid_[b]) {
+    // Wedge: where the neighbour's far vertex lies against this (front) face's plane.
+    Vec<P> n = normal(t);
+    int w = P::sign(dot<P>(n, sub<P>(X_[third], X_[t.v[0]])));
+    if (w > 0) return true;              // reflex edge: the wedge holds the ray
+    return facing_[b][g] > 0;            // convex or flat: both faces toward the viewer
+  }
+  // Open surface: the neighbour continues on the other side of the edge in the projection.
+  return P::sign(dot<P>(m, X_[third]) - c) < 0;
+}
+
+// The plane through vertices p and q containing the view direction (orthographic) or the eye
+// (perspective), as m·X - c = 0; its orientation is the caller's to fix.
+template <class P>
+void Engine<P>::side_plane(int p, int q, Vec<P>& m, V& c) const {
+  if (cam_.perspective) {
+    m = cross<P>(sub<P>(X_[p], view_), sub<P>(X_[q], view_));
+    c = dot<P>(m, view_);
+  } else {
+    m = cross<P>(view_, sub<P>(X_[q], X_[p]));
+    c = dot<P>(m, X_[p]);
+  }
+}
+
+template class Engine<Fast>;
+template class Engine<Fast40>;
+template class Engine<Big>;
+
+}  // namespace hlr::face_route

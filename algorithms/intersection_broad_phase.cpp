@@ -1,0 +1,111 @@
+// Broad phase (see intersection_broad_phase.hpp): cell size twice the mean box size, dense cell
+// ids sorted by a stable radix sort, a coarse single cell when a box spans too many cells.
+#include "algorithms/intersection_broad_phase.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hlr {
+namespace {
+
+struct Entry {
+  std::uint64_t cell;
+  std::uint32_t item;
+};
+
+// Stable LSD radix sort by cell (entries arrive in item order, so ties stay sorted by item):
+// 11-bit digits over the bits the keys use.
+void radix_sort(std::vector<Entry>& v) {
+  std::uint64_t all = 0;
+  for (const Entry& e : v) all |= e.cell;
+  std::vector<Entry> tmp(v.size());
+  for (int shift = 0; shift < 64 && (all >> shift) != 0; shift += 11) {
+    std::array<std::size_t, 2049> count{};
+    for (const Entry& e : v) ++count[((e.cell >> shift) & 2047) + 1];
+    for (int i = 1; i < 2049; ++i) count[i] += count[i - 1];
+    for (const Entry& e : v) tmp[count[(e.cell >> shift) & 2047]++] = e;
+    v.swap(tmp);
+  }
+}
+
+struct Cells {
+  double lo[3], cell;
+  std::int64_t dims[3];
+  std::int64_t key(int k, double x) const { return static_cast<std::int64_t>(std::floor((x - lo[k]) / cell)); }
+  std::uint64_t id(std::int64_t x, std::int64_t y, std::int64_t z) const {
+    return static_cast<std::uint64_t>((x * dims[1] + y) * dims[2] + z);
+  }
+};
+
+}  // namespace
+
+BoxPairs overlapping_box_pairs(const std::vector<Box3>& bb, const ParallelLoop& loop,
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
+  BoxPairs out;
+  const std::size_t n = bb.size();
+  if (n < 2) return out;
+  double mean = 0;
+  Cells g;
+  double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (int k = 0; k < 3; ++k) g.lo[k] = INFINITY;
+  for (const Box3& b : bb) {
+    mean += std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]});
+    for (int k = 0; k < 3; ++k) g.lo[k] = std::min(g.lo[k], b[k]), hi[k] = std::max(hi[k], b[k + 3]);
+  }
+  g.cell = std::max(2 * mean / static_cast<double>(n), 1e-300);
+  for (int k = 0; k < 3; ++k) g.dims[k] = g.key(k, hi[k]) + 1;
+  std::vector<Entry> entries;
+  entries.reserve(n * 2);
+  bool coarse = !std::isfinite(g.cell) || !std::isfinite(mean);
+  for (std::size_t i = 0; i < n && !coarse; ++i) {
+    std::int64_t c0[3], c1[3];
+    for (int k = 0; k < 3; ++k) c0[k] = g.key(k, bb[i][k]), c1[k] = g.key(k, bb[i][k + 3]);
+    if ((c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1) > 64 || g.dims[0] >= (1 << 20) ||
+        g.dims[1] >= (1 << 20) || g.dims[2] >= (1 << 20)) {
+      coarse = true;  // a huge box among small ones: fall back to one coarse cell list
+      break;
+    }
+    for (std::int64_t x = c0[0]; x <= c1[0]; ++x)
+      for (std::int64_t y = c0[1]; y <= c1[1]; ++y)
+        for (std::int64_t z = c0[2]; z <= c1[2]; ++z) entries.push_back({g.id(x, y, z), static_cast<std::uint32_t>(i)});
+  }
+  if (coarse) {
+    entries.clear();
+    for (std::size_t i = 0; i < n; ++i) entries.push_back({0, static_cast<std::uint32_t>(i)});
+  }
+  radix_sort(entries);
+  std::vector<std::size_t> cell_start;
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    if (i == 0 || entries[i].cell != entries[i - 1].cell) cell_start.push_back(i);
+  cell_start.push_back(entries.size());
+  const std::size_t ncells = cell_start.size() - 1;
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop.workers());
+  std::vector<std::size_t> counted(loop.workers(), 0);
+  auto cell_pairs = [&](std::size_t i, std::size_t j, unsigned w) {
+    for (std::size_t a = i; a < j; ++a)
+      for (std::size_t c = a + 1; c < j; ++c) {
+        std::uint32_t ta = entries[a].item, tc = entries[c].item;
+        const Box3 &A = bb[ta], &B = bb[tc];
+        if (A[0] > B[3] || B[0] > A[3] || A[1] > B[4] || B[1] > A[4] || A[2] > B[5] || B[2] > A[5]) continue;
+        if (!coarse) {  // the pair only in the cell of the overlap's low corner
+          std::uint64_t own = g.id(g.key(0, std::max(A[0], B[0])), g.key(1, std::max(A[1], B[1])), g.key(2, std::max(A[2], B[2])));
+          if (own != entries[i].cell) continue;
+        }
+        PairVerdict v = judge(ta, tc);
+        if (v == PairVerdict::Skip) continue;
+        ++counted[w];
+        if (v == PairVerdict::Keep) found[w].push_back({std::min(ta, tc), std::max(ta, tc)});
+      }
+  };
+  loop.run(ncells, 256, [&](unsigned w, std::size_t b, std::size_t e) {
+    for (std::size_t c = b; c < e; ++c) cell_pairs(cell_start[c], cell_start[c + 1], w);
+  });
+  for (std::size_t w = 0; w < found.size(); ++w) {
+    out.kept.insert(out.kept.end(), found[w].begin(), found[w].end());
+    out.tested += counted[w];
+  }
+  std::sort(out.kept.begin(), out.kept.end());
+  return out;
+}
+
+}  // namespace hlr

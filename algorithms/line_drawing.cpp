@@ -1,0 +1,84 @@
+// The line drawing (see line_drawing.hpp): segment ends, pieces from hidden spans, names.
+#include "algorithms/line_drawing.hpp"
+
+#include <algorithm>
+
+namespace hlr {
+
+const char* to_string(LineKind k) {
+  switch (k) {
+    case LineKind::Boundary: return "boundary";
+    case LineKind::Crease: return "crease";
+    case LineKind::Silhouette: return "silhouette";
+    case LineKind::Intersection: return "intersection";
+    case LineKind::Edge: break;
+  }
+  return "edge";
+}
+
+const char* to_string(Method m) {
+  switch (m) {
+    case Method::Faces: return "faces";
+    case Method::RobertsPieces: return "roberts-pieces";
+    case Method::Roberts: break;
+  }
+  return "roberts";
+}
+
+Point3 Segment::at(const Rational& t) const {
+  if (t == 0) return from();
+  if (t == 1) return to();
+  return from() + t * (to() - from());
+}
+
+void Segment::set_ends(Point3 a, Point3 b) {
+  own_ = std::make_shared<const std::array<Point3, 2>>(std::array<Point3, 2>{std::move(a), std::move(b)});
+  a_ = &(*own_)[0];
+  b_ = &(*own_)[1];
+}
+
+std::vector<Piece> pieces_from_hidden(std::vector<std::pair<Rational, Rational>> hidden,
+                                      const std::optional<std::pair<Rational, Rational>>& depth) {
+  // Common cases without any arithmetic: nothing hidden, or one span over the whole edge.
+  if (!depth && hidden.empty()) return {Piece{Rational(0), Rational(1), true}};
+  if (!depth && hidden.size() == 1 && hidden[0].first == 0 && hidden[0].second == 1)
+    return {Piece{Rational(0), Rational(1), false}};
+  std::sort(hidden.begin(), hidden.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::pair<Rational, Rational>> merged;
+  for (auto& s : hidden) {
+    // Touching open intervals leave a single visible point between them: not a line, merged.
+    if (!merged.empty() && s.first <= merged.back().second) {
+      if (s.second > merged.back().second) merged.back().second = s.second;
+    } else {
+      merged.push_back(std::move(s));
+    }
+  }
+  std::vector<Rational> cuts = {Rational(0), Rational(1)};
+  for (auto& s : merged) {
+    cuts.push_back(s.first);
+    cuts.push_back(s.second);
+  }
+  // Perspective: depth(t) = d0 + t (d1 - d0); the part with depth <= 0 is behind the eye.
+  if (depth && depth->first != depth->second) {
+    Rational t = depth->first / (depth->first - depth->second);
+    if (t > 0 && t < 1) cuts.push_back(t);
+  }
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  std::vector<Piece> pieces;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    Rational mid = (cuts[i] + cuts[i + 1]) / 2;
+    while (k < merged.size() && merged[k].second <= mid) ++k;
+    bool hidden_here = k < merged.size() && merged[k].first < mid && mid < merged[k].second;
+    bool behind = depth && depth->first + mid * (depth->second - depth->first) <= 0;
+    Piece p{cuts[i], cuts[i + 1], !hidden_here && !behind, behind};
+    if (!pieces.empty() && pieces.back().visible == p.visible && pieces.back().behind_eye == p.behind_eye)
+      pieces.back().t1 = p.t1;
+    else
+      pieces.push_back(p);
+  }
+  return pieces;
+}
+
+}  // namespace hlr

@@ -1,0 +1,142 @@
+// The exact line drawing every hidden-line route returns (course notes, seed 003 sections
+// 26-28 for the words: facing and non-facing faces, self-hidden edges, intersection lines).
+// A drawing is a list of segments (a body's edges and the intersection lines where bodies
+// cross), each cut into pieces [t0, t1] of its parameter, every piece visible or hidden,
+// decided exactly. Renderers fill it; the 2D stage (drawing_2d.hpp) and the writers read it.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kernel/geometry.hpp"
+
+namespace hlr {
+
+/// A maximal piece [t0, t1] of a segment, t0 < t1.
+struct Piece {
+  Rational t0, t1;
+  bool visible = true;
+  bool behind_eye = false;  // perspective: behind the eye, never drawn
+  bool clipped = false;     // outside the clipping volume or nearer than the near plane
+  bool same_kind(const Piece& o) const {
+    return visible == o.visible && behind_eye == o.behind_eye && clipped == o.clipped;
+  }
+};
+
+/// What a drawn line is: a boundary edge of an open surface, a crease (dihedral angle over the
+/// threshold), a silhouette (one face toward the viewer, the other not), an intersection line
+/// where two surfaces cross, or any mesh edge (`--edges all`).
+enum class LineKind { Edge, Boundary, Crease, Silhouette, Intersection };
+const char* to_string(LineKind k);
+
+/// Which edges a renderer draws.
+enum class EdgeSelection { All, Feature };
+
+/// What every hidden-line route takes (the render pipeline's options add the rest).
+struct LineOptions {
+  EdgeSelection edges = EdgeSelection::Feature;  // Feature: boundaries, silhouettes, creases
+  Rational crease_degrees = 30;                   // Feature: creases over this angle
+  bool intersections = true;                      // per-face route: intersection lines (and self)
+  bool prefilter = true;                          // Roberts: spatial pre-filter of (edge, body) pairs
+  unsigned threads = 0;                           // 0: all cores
+};
+
+struct Segment {
+  enum class Kind { Edge, Intersection };
+  Kind kind = Kind::Edge;
+  LineKind line = LineKind::Edge;
+  int body = -1;                 // Edge: the body; Intersection: the first body
+  int body2 = -1;                // Intersection: the second body
+  int v0 = -1, v1 = -1;          // Edge: input vertex indices, from v0 toward v1
+  int face0 = -1, face1 = -1;    // Edge: its two faces; Intersection: the facets' faces
+  bool self_hidden = false;      // both faces non-facing (notes' Stage 1)
+  std::vector<Piece> pieces;     // in order of t, covering [0, 1]
+  Point3 at(const Rational& t) const;
+
+  /// The ends, world coordinates (set before use).
+  const Point3& from() const { return *a_; }
+  const Point3& to() const { return *b_; }
+  /// Ends owned by the segment (shared between copies).
+  void set_ends(Point3 a, Point3 b);
+  /// Ends borrowed from storage that outlives the segment (a body's vertices): a segment of a
+  /// million-edge mesh then costs no exact numbers of its own.
+  void borrow_ends(const Point3& a, const Point3& b) {
+    own_.reset();
+    a_ = &a;
+    b_ = &b;
+  }
+
+ private:
+  std::shared_ptr<const std::array<Point3, 2>> own_;
+  const Point3* a_ = nullptr;
+  const Point3* b_ = nullptr;
+};
+
+/// The hidden-line methods: per-face occluders (any mesh), Roberts' algorithm on convex bodies,
+/// Roberts' algorithm through convex pieces (non-convex solids).
+enum class Method { Faces, Roberts, RobertsPieces };
+/// "faces", "roberts", "roberts-pieces" (the JSON's stats.method).
+const char* to_string(Method m);
+
+/// Counters of the per-face route (JSON stats, docs/output-format.md).
+struct FaceRouteStats {
+  std::size_t occluders = 0;             // triangles used as occluders
+  std::size_t comparisons = 0;           // comparisons of split parameters
+  std::size_t comparisons_identical = 0; // ... decided as equal by identical fractions
+  std::size_t comparisons_exact = 0;     // ... that the double filter could not decide
+  bool integer_path = true;              // coordinates fitted the 64/128-bit integer path
+  std::size_t intersection_pairs = 0;    // triangle pairs tested exactly for intersection lines
+};
+
+struct DrawingStats {
+  Method method = Method::Roberts;
+  std::size_t edges = 0, self_hidden = 0, intersection_segments = 0;
+  std::size_t pairs_tested = 0, pairs_skipped = 0;
+  std::size_t pairs_rational = 0;       // tested on the rational path (an integer path did not fit)
+  std::optional<FaceRouteStats> faces;  // the per-face route only
+  double setup_seconds = 0, intersections_seconds = 0, visibility_seconds = 0;  // wall clock
+};
+
+/// A remark about one body for the user (e.g. drawn as an open surface): `text` follows the
+/// body's name, "body 'box' " + text.
+struct BodyNote {
+  int body = -1;
+  std::string text;
+};
+
+struct LineDrawing {
+  /// Per body and face: 1 facing, 0 edge-on, -1 non-facing (facing.hpp).
+  std::vector<std::vector<signed char>> facing;
+  std::vector<Segment> segments;
+  DrawingStats stats;
+  std::vector<BodyNote> notes;
+};
+
+/// A body a renderer cannot take (not a valid solid, not convex, a non-planar face) or a bad
+/// view (the eye inside it). The body and the reason are values: `reason()` follows the body's
+/// name ("body 'box' " + reason); what() says "body N " + reason.
+class BodyError : public std::runtime_error {
+ public:
+  BodyError(int body, const std::string& reason)
+      : std::runtime_error("body " + std::to_string(body) + " " + reason), body_(body), reason_(reason) {}
+  int body() const { return body_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  int body_;
+  std::string reason_;
+};
+
+/// The pieces of [0, 1] given the hidden open spans (lo < hi, inside [0, 1], any order,
+/// overlapping allowed) and, for perspective, the depths (P - E)·(target - E) at t = 0 and 1
+/// (the part at depth <= 0 is behind the eye). Touching spans are merged (a single visible
+/// point is not a line).
+std::vector<Piece> pieces_from_hidden(std::vector<std::pair<Rational, Rational>> hidden,
+                                      const std::optional<std::pair<Rational, Rational>>& depth);
+
+}  // namespace hlr

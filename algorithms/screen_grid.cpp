@@ -1,0 +1,62 @@
+// The screen grid (see screen_grid.hpp): counting sort of items into cells, two passes.
+#include "algorithms/screen_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hlr {
+
+void ScreenGrid::build(const std::vector<ScreenRect>& rects, const std::vector<char>& always, double items_per_cell,
+                       int max_cells) {
+  double X0 = std::numeric_limits<double>::infinity(), Y0 = X0, X1 = -X0, Y1 = -X0;
+  std::size_t count = 0;
+  always_.clear();
+  for (std::size_t i = 0; i < rects.size(); ++i) {
+    if (always[i]) {
+      always_.push_back(static_cast<int>(i));
+      continue;
+    }
+    ++count;
+    X0 = std::min(X0, rects[i].x0);
+    Y0 = std::min(Y0, rects[i].y0);
+    X1 = std::max(X1, rects[i].x1);
+    Y1 = std::max(Y1, rects[i].y1);
+  }
+  if (!(X1 >= X0) || !std::isfinite(X1 - X0) || !std::isfinite(Y1 - Y0)) X0 = Y0 = 0, X1 = Y1 = 1;
+  n_ = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(count) / items_per_cell)), 1, max_cells);
+  x0_ = X0;
+  y0_ = Y0;
+  cell_ = std::max({(X1 - X0) / n_, (Y1 - Y0) / n_, 1e-300});
+  start_.assign(static_cast<std::size_t>(n_) * n_ + 1, 0);
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<std::uint32_t> fill;
+    if (pass == 1) {
+      for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
+      items_.resize(start_.back());
+      fill.assign(start_.begin(), start_.end() - 1);
+    }
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+      if (always[i]) continue;
+      auto [cx0, cy0, cx1, cy1] = range(rects[i]);
+      for (int cy = cy0; cy <= cy1; ++cy)
+        for (int cx = cx0; cx <= cx1; ++cx) {
+          std::size_t cellid = static_cast<std::size_t>(cy) * n_ + cx;
+          if (pass == 0) ++start_[cellid + 1];
+          else items_[fill[cellid]++] = static_cast<std::uint32_t>(i);
+        }
+    }
+  }
+}
+
+std::array<int, 4> ScreenGrid::range(const ScreenRect& r) const {
+  // NaN (a degenerate projection) clamps to the whole grid: never skips an item.
+  auto c = [&](double v, double o, bool low) {
+    double k = std::floor((v - o) / cell_);
+    if (std::isnan(k)) return low ? 0 : n_ - 1;
+    return static_cast<int>(std::clamp(k, 0.0, static_cast<double>(n_ - 1)));
+  };
+  return {c(r.x0, x0_, true), c(r.y0, y0_, true), c(r.x1, x0_, false), c(r.y1, y0_, false)};
+}
+
+}  // namespace hlr

@@ -1,0 +1,89 @@
+// JSON writer (see json_writer.hpp): formats the exact drawing, nothing else.
+#include "io/json_writer.hpp"
+
+namespace hlr {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json exact_point(const Point3& p) { return Json::array({to_string(p.x()), to_string(p.y()), to_string(p.z())}); }
+Json exact_vector(const Vector3& v) { return Json::array({to_string(v.x()), to_string(v.y()), to_string(v.z())}); }
+
+}  // namespace
+
+nlohmann::ordered_json piece_json(const Segment& s, const Piece& p) {
+  Json o;
+  if (s.kind == Segment::Kind::Edge) {
+    o["body"] = s.body;
+    o["edge"] = Json::array({s.v0, s.v1});
+    o["kind"] = to_string(s.line);
+  } else {
+    o["bodies"] = Json::array({s.body, s.body2});
+    o["kind"] = "intersection";
+  }
+  o["visible"] = p.visible;
+  o["from"] = exact_point(s.at(p.t0));
+  o["to"] = exact_point(s.at(p.t1));
+  o["t"] = Json::array({to_string(p.t0), to_string(p.t1)});
+  if (s.self_hidden) o["self_hidden"] = true;
+  if (p.behind_eye) o["behind_eye"] = true;
+  if (p.clipped) o["clipped"] = true;
+  return o;
+}
+
+std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r, const Camera& camera) {
+  Json j;
+  Json view;
+  if (camera.perspective) {
+    view["type"] = "perspective";
+    view["eye"] = exact_point(camera.eye);
+    view["target"] = exact_point(camera.target);
+  } else {
+    view["type"] = "orthographic";
+    view["direction"] = exact_vector(camera.direction);
+  }
+  view["up"] = exact_vector(camera.up);
+  j["view"] = view;
+  Json jb = Json::array();
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    Json b;
+    b["name"] = bodies[i].name;
+    b["source"] = bodies[i].source;
+    Json nf = Json::array();
+    if (i < r.facing.size())
+      for (signed char e : r.facing[i]) nf.push_back(e < 0 ? "non-facing" : e == 0 ? "edge-on" : "facing");
+    b["faces"] = nf;
+    jb.push_back(b);
+  }
+  j["bodies"] = jb;
+  Json segs = Json::array();
+  for (const Segment& s : r.segments)
+    for (const Piece& p : s.pieces) segs.push_back(piece_json(s, p));
+  j["segments"] = segs;
+  Json st;
+  st["edges"] = r.stats.edges;
+  st["self_hidden_edges"] = r.stats.self_hidden;
+  st["intersection_segments"] = r.stats.intersection_segments;
+  st["pairs_tested"] = r.stats.pairs_tested;
+  st["pairs_skipped_by_prefilter"] = r.stats.pairs_skipped;
+  st["pairs_on_rational_path"] = r.stats.pairs_rational;
+  st["method"] = to_string(r.stats.method);
+  if (const auto& f = r.stats.faces) {
+    st["occluders"] = f->occluders;
+    st["parameter_comparisons"] = f->comparisons;
+    st["parameter_comparisons_identical"] = f->comparisons_identical;
+    st["parameter_comparisons_exact"] = f->comparisons_exact;
+    st["integer_path"] = f->integer_path;
+    st["intersection_pairs_tested"] = f->intersection_pairs;
+  }
+  j["stats"] = st;
+  // One body and one segment per line: readable, diffable and deterministic.
+  std::string out = "{\n \"view\": " + j["view"].dump() + ",\n \"bodies\": [";
+  for (std::size_t i = 0; i < j["bodies"].size(); ++i) out += std::string(i ? "," : "") + "\n  " + j["bodies"][i].dump();
+  out += "\n ],\n \"segments\": [";
+  for (std::size_t i = 0; i < j["segments"].size(); ++i) out += std::string(i ? "," : "") + "\n  " + j["segments"][i].dump();
+  out += "\n ],\n \"stats\": " + j["stats"].dump() + "\n}\n";
+  return out;
+}
+
+}  // namespace hlr

@@ -1,0 +1,67 @@
+// The render pipeline of the library (course notes sections 20-28): load -> camera -> hidden
+// lines -> clipping -> the exact line drawing, ready for the 2D stage (drawing_2d.hpp) and the
+// writers (svg_writer.hpp, json_writer.hpp). `hlr render` parses its arguments into
+// RenderOptions and calls this; so can any program (examples/consumer) and the Python module.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "algorithms/cyrus_beck.hpp"
+#include "algorithms/line_drawing.hpp"
+#include "io/scene.hpp"
+#include "io/svg_writer.hpp"
+#include "io/view_choice.hpp"
+
+namespace hlr {
+
+/// Which hidden-line route renders. Roberts: the course's algorithm on convex bodies, and
+/// through convex pieces for non-convex solids (Method::RobertsPieces in the stats).
+enum class RenderMethod { Faces, Roberts };
+
+struct RenderOptions {
+  RenderMethod method = RenderMethod::Faces;
+  LineOptions lines;
+  ViewRequest view;
+  /// Perspective near plane, as a fraction of the eye-target distance (positive).
+  Rational near = Rational(1, 1000);
+  /// Clip the drawing to a convex volume (Cyrus-Beck, exact).
+  std::optional<ConvexClipper> clip;
+};
+
+struct RenderResult {
+  std::shared_ptr<const std::vector<Scene>> scenes;  // owns the bodies the segments point into
+  std::vector<const SceneBody*> bodies;               // all bodies, in drawing order
+  std::vector<DrawingBody> names;                     // their names and sources
+  Camera camera;
+  LineDrawing drawing;
+  /// Remarks for the user ("file: body 'name' is open ...: drawn as a surface", eye in a face plane).
+  std::vector<std::string> notes;
+};
+
+/// A body a route cannot take, named: what() is "SOURCE: body 'NAME' REASON".
+class RenderBodyError : public std::runtime_error {
+ public:
+  RenderBodyError(int body, std::string name, std::string source, std::string reason);
+  int body() const { return body_; }
+  const std::string& name() const { return name_; }
+  const std::string& source() const { return source_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  int body_;
+  std::string name_, source_, reason_;
+};
+
+/// Renders loaded scenes (the first scene file's view unless options.view overrides it).
+/// Throws RenderBodyError, std::invalid_argument (bad view or options).
+RenderResult render(std::vector<Scene> scenes, const RenderOptions& options = {});
+
+/// Loads mesh files (.off .obj .stl .ply) and scene files (.yaml .yml .json), then renders.
+/// Also throws InputError (file and line) for bad input.
+RenderResult render_files(const std::vector<std::string>& inputs, const RenderOptions& options = {});
+
+}  // namespace hlr

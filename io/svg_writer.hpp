@@ -1,0 +1,30 @@
+// SVG writer: the 2D stage's polylines (drawing_2d.hpp) as SVG, visible lines solid, hidden
+// lines optionally dashed, groups per visibility, line kind and body, viewBox fitted with a
+// margin, size in millimetres, fixed number formatting (deterministic, diffable).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "algorithms/drawing_2d.hpp"
+
+namespace hlr {
+
+/// A body's name and source file, as the writers label it.
+struct DrawingBody {
+  std::string name, source;
+};
+
+struct SvgOptions {
+  bool hidden_dashed = false;
+  double width_mm = 150;
+  double stroke_mm = 0.35;
+};
+
+std::string to_svg(const std::vector<DrawingBody>& bodies, const Drawing2D& drawing, const SvgOptions& options);
+
+/// Projects (project_drawing, hidden pieces only when dashed) and formats.
+std::string to_svg(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
+                   const SvgOptions& options);
+
+}  // namespace hlr

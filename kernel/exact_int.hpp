@@ -1,0 +1,153 @@
+// Exactness in one address: the fixed-width integer number paths, their bounds with the
+// derivation of each, and the error bounds of the double filters in front of them (course
+// notes, "Visibility semantics": every decision exact; doubles only where a proven bound says
+// the filter cannot be wrong). A path whose bound is exceeded is never taken: callers check
+// the bound on the input and fall back to the next wider path, the last one GMP.
+//
+// Integer coordinates: a scene's rational coordinates times the common denominator L of all
+// of them (decimal text has one). With |x| < 2^B for every scaled coordinate:
+//   differences            < 2^(B+1)
+//   cross products         < 2·2^(B+1)·2^(B+1) = 2^(2B+3)   (face normals, side planes)
+//   plane values n·X - c   < 3·2^(2B+3)·2^(B+1) + |c|  <  2^(3B+7)
+// so B = 29 keeps cross products in 64 bits (2^61) and plane values in 128 bits (2^94), and
+// B = 40 keeps both in 128 bits (2^83 and 2^127). Split parameters are fractions of two plane
+// values; two of them are ordered by comparing products of 128-bit values in 256 bits.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "kernel/int128.hpp"
+
+namespace hlr {
+
+namespace bounds {
+/// Scaled coordinates below 2^29: cross products in int64 (< 2^61), plane values in Int128.
+inline constexpr int kFastCoordinateBits = 29;
+/// Scaled coordinates below 2^40 (decimals with up to 10 places, as scanned meshes write
+/// them): cross products < 2^83 and plane values < 2^127 in Int128. The same bound serves the
+/// other 128-bit paths: face planes of polygons with up to 1024 vertices (Newell sums of
+/// 1024 products < 2^83, then d = -n·v < 3·2^93), Cyrus-Beck's table-free clip (W·L, D·L
+/// < 2^83) and Roberts' 128-bit interval (p, q, w < 2^62 checked on the way).
+inline constexpr int kWideCoordinateBits = 40;
+inline constexpr Int128 kWideCoordinateLimit = static_cast<Int128>(1) << kWideCoordinateBits;
+/// Common denominators are kept below 2^62 so that L fits std::uint64_t with a bit to spare.
+inline constexpr int kDenominatorBits = 62;
+
+/// The split-parameter filter: a fraction n/d of two exact integers is approximated by
+/// fl(fl(n)/fl(d)); each rounding is within 2^-53 relative, so the approximation is within
+/// 3·2^-53 < 3.4e-16 relative of n/d. Two approximations x, y decide the order of their
+/// fractions when |x - y| > kSplitFilter·(|x| + |y|): the exact difference then has the same
+/// sign, since the two errors together are below 3.4e-16·(|x| + |y|)·(1 + 1e-15).
+inline constexpr double kSplitFilter = 1e-12;
+/// The smallest gap the filter decides on (both values near zero: the relative bound above
+/// covers them, this only avoids comparing two zeros by the filter).
+inline constexpr double kSplitFilterFloor = 1e-300;
+
+/// Screen-space boxes of projected geometry (grid and depth pruning): the double projection of
+/// a point is within a few ulps of the exact one, i.e. below 1e-15 of the scene's extent; boxes
+/// are widened by kBoxMargin of the extent, orders of magnitude more. The boxes only skip
+/// work; no visibility decision is taken on them.
+inline constexpr double kBoxMargin = 1e-6;
+/// Roberts' body boxes, the same argument with a wider margin.
+inline constexpr double kBodyBoxMargin = 1e-7;
+
+/// Intersection-line filter: a crossing parameter s/(s - t) of exact integer plane values is
+/// within 4 ulps in doubles and each interpolated coordinate within 8 ulps of the largest
+/// coordinate; extents farther apart than kExtentUlps ulps of that are disjoint for sure.
+inline constexpr double kExtentUlps = 64;
+}  // namespace bounds
+
+/// Number policy for scaled coordinates below 2^29: int64 coordinates and cross products,
+/// Int128 plane values, 256-bit comparison of products.
+struct Fast {
+  using C = std::int64_t;
+  using V = Int128;
+  static constexpr int kBits = bounds::kFastCoordinateBits;
+  static V mul(C a, C b) { return static_cast<V>(a) * b; }
+  static int sign(const V& v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
+  static double dbl(const V& v) { return static_cast<double>(v); }
+  static int compare(const V& a, const V& b, const V& c, const V& d) { return compare_products(a, b, c, d); }
+  static mpz_class z(const V& v) { return to_mpz(v); }
+  static mpz_class zc(C v) { return mpz_class(static_cast<long>(v)); }
+};
+
+/// Number policy for scaled coordinates below 2^40: everything in Int128.
+struct Fast40 {
+  using C = Int128;
+  using V = Int128;
+  static constexpr int kBits = bounds::kWideCoordinateBits;
+  static V mul(C a, C b) { return a * b; }
+  static int sign(const V& v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
+  static double dbl(const V& v) { return static_cast<double>(v); }
+  static int compare(const V& a, const V& b, const V& c, const V& d) { return compare_products(a, b, c, d); }
+  static mpz_class z(const V& v) { return to_mpz(v); }
+  static mpz_class zc(C v) { return to_mpz(v); }
+};
+
+/// Number policy without bounds: GMP integers.
+struct Big {
+  using C = mpz_class;
+  using V = mpz_class;
+  static V mul(const C& a, const C& b) { return a * b; }
+  static int sign(const V& v) { return sgn(v); }
+  static double dbl(const V& v) { return v.get_d(); }
+  static int compare(const V& a, const V& b, const V& c, const V& d) {
+    mpz_class l = a * b, r = c * d;
+    return cmp(l, r) < 0 ? -1 : (cmp(l, r) > 0 ? 1 : 0);
+  }
+  static const mpz_class& z(const V& v) { return v; }
+  static const mpz_class& zc(const C& v) { return v; }
+};
+
+/// An integer point or vector under policy P.
+template <class P>
+using Vec = std::array<typename P::C, 3>;
+
+template <class P>
+Vec<P> sub(const Vec<P>& a, const Vec<P>& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+template <class P>
+Vec<P> cross(const Vec<P>& a, const Vec<P>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+template <class P>
+typename P::V dot(const Vec<P>& a, const Vec<P>& b) {
+  return P::mul(a[0], b[0]) + P::mul(a[1], b[1]) + P::mul(a[2], b[2]);
+}
+template <class P>
+Vec<P> neg(const Vec<P>& a) {
+  return {-a[0], -a[1], -a[2]};
+}
+
+/// A split parameter num/den (den > 0) with its double approximation for the filter.
+template <class P>
+struct Frac {
+  typename P::V n, d;
+  double x;
+};
+
+/// How comparisons of split parameters were decided (JSON stats).
+struct ComparisonCounters {
+  std::size_t comparisons = 0, exact = 0, identical = 0;
+};
+
+/// Exact order of two split parameters (-1, 0, 1): identical fractions first (neighbouring
+/// occluders share side planes, so this is common), then the filter of bounds::kSplitFilter,
+/// then exact products.
+template <class P>
+int compare(const Frac<P>& a, const Frac<P>& b, ComparisonCounters& c) {
+  ++c.comparisons;
+  if (a.n == b.n && a.d == b.d) {
+    ++c.identical;
+    return 0;
+  }
+  double diff = a.x - b.x, scale = std::fabs(a.x) + std::fabs(b.x);
+  if (std::fabs(diff) > bounds::kSplitFilter * scale + bounds::kSplitFilterFloor) return diff < 0 ? -1 : 1;
+  ++c.exact;
+  return P::compare(a.n, b.d, b.n, a.d);
+}
+
+}  // namespace hlr
