@@ -4,7 +4,6 @@
 // positive value for every column. A body transformed by [T] has [VT] = [T]^-1·[V].
 #pragma once
 
-#include <Eigen/Core>
 #include <stdexcept>
 #include <vector>
 
@@ -12,8 +11,6 @@
 #include "kernel/transform.hpp"
 
 namespace hlr {
-
-using BodyMatrixData = Eigen::Matrix<Rational, 4, Eigen::Dynamic>;
 
 /// Raised when the interior point lies on a face plane (the body is flat or not convex, so
 /// no sign correction can make every column positive). `face()` names the plane.

@@ -1,6 +1,8 @@
 // Polyhedron: exact vertices and planes beside an OpenMesh mesh (see polyhedron.hpp).
 #include "kernel/polyhedron.hpp"
 
+#include "kernel/openmesh_mesh.hpp"
+
 #include <OpenMesh/Core/System/omstream.hh>
 #include <algorithm>
 #include <deque>

@@ -4,7 +4,6 @@
 // mesh_checks.hpp (closed, manifold, oriented, planar, ...) say when that is known.
 #pragma once
 
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <memory>
 #include <string>
 #include <utility>
@@ -13,12 +12,16 @@
 #include "kernel/geometry.hpp"
 #include "kernel/mesh_checks.hpp"
 
+namespace OpenMesh {
+template <class Traits>
+class PolyMesh_ArrayKernelT;
+}
+
 namespace hlr {
 
-struct MeshTraits : public OpenMesh::DefaultTraits {
-  typedef OpenMesh::Vec3d Point;
-  typedef OpenMesh::Vec3d Normal;
-};
+/// The OpenMesh mesh type; its traits (double points) and OpenMesh itself come with
+/// kernel/openmesh_mesh.hpp, so that a file that needs a Face does not pull in OpenMesh.
+struct MeshTraits;
 using Mesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
 
 using Face = std::vector<int>;
@@ -58,6 +61,7 @@ class Polyhedron {
 
   /// The OpenMesh mesh: vertex i is handle i, face f is handle f when no face was refused.
   /// Built on first use (the per-face route never needs it); not thread-safe on that call.
+  /// Include kernel/openmesh_mesh.hpp to use it.
   const Mesh& mesh() const;
   /// Faces that OpenMesh's add_face refused (non-manifold or inconsistently oriented), in
   /// order. Never dropped silently: report() names them too.

@@ -93,8 +93,8 @@ std::optional<Matrix4> inverse(const Matrix4& m) {
     while (piv < 4 && a(piv, col) == 0) ++piv;
     if (piv == 4) return std::nullopt;
     if (piv != col) {
-      a.row(piv).swap(a.row(col));
-      inv.row(piv).swap(inv.row(col));
+      a.swap_rows(piv, col);
+      inv.swap_rows(piv, col);
     }
     Rational p = a(col, col);
     for (int j = 0; j < 4; ++j) {

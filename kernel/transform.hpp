@@ -4,38 +4,15 @@
 // (-1/C in the last column), composition and exact inverse.
 #pragma once
 
-#include <Eigen/Core>
 #include <optional>
 #include <string>
 
 #include "kernel/geometry.hpp"
+#include "kernel/matrix.hpp"
 #include "kernel/rotation.hpp"
-
-namespace Eigen {
-template <>
-struct NumTraits<mpq_class> : GenericNumTraits<mpq_class> {
-  typedef mpq_class Real;
-  typedef mpq_class NonInteger;
-  typedef mpq_class Nested;
-  static inline Real epsilon() { return 0; }
-  static inline Real dummy_precision() { return 0; }
-  static inline int digits10() { return 0; }
-  enum {
-    IsInteger = 0,
-    IsSigned = 1,
-    IsComplex = 0,
-    RequireInitialization = 1,
-    ReadCost = 6,
-    AddCost = 150,
-    MulCost = 100
-  };
-};
-}  // namespace Eigen
 
 namespace hlr {
 
-using Matrix4 = Eigen::Matrix<Rational, 4, 4>;
-using RowVector4 = Eigen::Matrix<Rational, 1, 4>;
 
 enum class Axis { X = 0, Y = 1, Z = 2 };
 

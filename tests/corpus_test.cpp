@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "io/mesh_reader.hpp"
+#include "kernel/openmesh_mesh.hpp"
 
 using namespace hlr;
 

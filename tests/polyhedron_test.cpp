@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "io/mesh_reader.hpp"
+#include "kernel/openmesh_mesh.hpp"
 #include "kernel/polyhedron.hpp"
 
 using namespace hlr;
