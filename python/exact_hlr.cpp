@@ -1,0 +1,154 @@
+// Python bindings (issue 11): `import exact_hlr`. The render pipeline of the library
+// (io/render.hpp) with the exact drawing returned as Python objects whose coordinates and
+// parameters are fractions.Fraction; explain (exam mode) and Cyrus-Beck clipping too.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "algorithms/cyrus_beck.hpp"
+#include "cli/clipper_spec.hpp"
+#include "io/explain.hpp"
+#include "io/json_writer.hpp"
+#include "io/problem.hpp"
+#include "io/render.hpp"
+#include "io/svg_writer.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+py::object fraction(const hlr::Rational& q) {
+  static py::object F = py::module_::import("fractions").attr("Fraction");
+  return F(hlr::to_string(q));
+}
+
+py::tuple point(const hlr::Point3& p) { return py::make_tuple(fraction(p.x()), fraction(p.y()), fraction(p.z())); }
+
+// An exact number from Python: int, Fraction, or text ("1/3", "0.1", "1e-400").
+hlr::Rational number(const py::handle& h) { return hlr::parse_rational(py::str(h).cast<std::string>()); }
+
+std::optional<hlr::Vector3> vector3(const std::optional<py::sequence>& s) {
+  if (!s) return std::nullopt;
+  if (py::len(*s) != 3) throw std::invalid_argument("a vector needs 3 numbers");
+  return hlr::Vector3(number((*s)[0]), number((*s)[1]), number((*s)[2]));
+}
+
+std::optional<hlr::Point3> point3(const std::optional<py::sequence>& s) {
+  auto v = vector3(s);
+  if (!v) return std::nullopt;
+  return hlr::Point3(v->x(), v->y(), v->z());
+}
+
+// The drawing as Python values; keeps the render result (and so the scenes) alive.
+struct Drawing {
+  std::shared_ptr<hlr::RenderResult> r;
+
+  py::list segments() const {
+    py::list out;
+    for (const hlr::Segment& s : r->drawing.segments)
+      for (const hlr::Piece& p : s.pieces) {
+        py::dict d;
+        d["kind"] = s.kind == hlr::Segment::Kind::Intersection ? "intersection" : hlr::to_string(s.line);
+        if (s.kind == hlr::Segment::Kind::Edge) {
+          d["body"] = s.body;
+          d["edge"] = py::make_tuple(s.v0, s.v1);
+        } else {
+          d["bodies"] = py::make_tuple(s.body, s.body2);
+        }
+        d["visible"] = p.visible;
+        d["from"] = point(s.at(p.t0));
+        d["to"] = point(s.at(p.t1));
+        d["t"] = py::make_tuple(fraction(p.t0), fraction(p.t1));
+        d["self_hidden"] = s.self_hidden;
+        d["behind_eye"] = p.behind_eye;
+        d["clipped"] = p.clipped;
+        out.append(d);
+      }
+    return out;
+  }
+  std::string svg(bool hidden_dashed, double width_mm, double stroke_mm) const {
+    hlr::SvgOptions o;
+    o.hidden_dashed = hidden_dashed;
+    o.width_mm = width_mm;
+    o.stroke_mm = stroke_mm;
+    return hlr::to_svg(r->names, r->drawing, r->camera, o);
+  }
+  std::string json() const { return hlr::to_json(r->names, r->drawing, r->camera); }
+  std::vector<std::string> bodies() const {
+    std::vector<std::string> n;
+    for (const auto& b : r->names) n.push_back(b.name);
+    return n;
+  }
+};
+
+Drawing render(const py::object& input, std::optional<py::sequence> view, std::optional<py::sequence> eye,
+               std::optional<py::sequence> target, std::optional<py::sequence> up, const std::string& method,
+               const std::string& edges, const py::object& crease, unsigned threads) {
+  std::vector<std::string> inputs;
+  if (py::isinstance<py::str>(input)) inputs.push_back(input.cast<std::string>());
+  else inputs = input.cast<std::vector<std::string>>();
+  hlr::RenderOptions o;
+  if (method != "faces" && method != "roberts") throw std::invalid_argument("method must be 'faces' or 'roberts'");
+  if (edges != "feature" && edges != "all") throw std::invalid_argument("edges must be 'feature' or 'all'");
+  o.method = method == "roberts" ? hlr::RenderMethod::Roberts : hlr::RenderMethod::Faces;
+  o.lines.edges = edges == "all" ? hlr::EdgeSelection::All : hlr::EdgeSelection::Feature;
+  o.lines.crease_degrees = number(crease);
+  o.lines.threads = threads;
+  o.view.direction = vector3(view);
+  o.view.eye = point3(eye);
+  o.view.target = point3(target);
+  o.view.up = vector3(up);
+  py::gil_scoped_release release;
+  return Drawing{std::make_shared<hlr::RenderResult>(hlr::render_files(inputs, o))};
+}
+
+std::string explain(const std::string& problem, const std::string& lang, const std::string& format) {
+  hlr::SolutionJson s = hlr::explain(hlr::load_problem(problem));
+  hlr::Lang l = lang == "ru" ? hlr::Lang::Ru : hlr::Lang::En;
+  if (format == "json") return s.dump(1) + "\n";
+  if (format == "html") return hlr::explain_html(s, l);
+  if (format == "md") return hlr::explain_markdown(s, l);
+  throw std::invalid_argument("format must be 'md', 'html' or 'json'");
+}
+
+py::dict clip(const std::string& clipper, const py::sequence& segment) {
+  if (py::len(segment) != 6) throw std::invalid_argument("a segment needs 6 numbers: x1, y1, z1, x2, y2, z2");
+  hlr::Point3 p1(number(segment[0]), number(segment[1]), number(segment[2]));
+  hlr::Point3 p2(number(segment[3]), number(segment[4]), number(segment[5]));
+  hlr::cli::ClipperSpec spec = hlr::cli::parse_clipper("clipper", clipper);
+  hlr::CyrusBeckResult r = hlr::cyrus_beck(spec.clipper, p1, p2);
+  py::dict d;
+  d["status"] = r.status == hlr::CyrusBeckResult::Status::Visible ? "visible"
+                : r.status == hlr::CyrusBeckResult::Status::Point ? "point"
+                                                                   : "outside";
+  if (r.status != hlr::CyrusBeckResult::Status::Outside) {
+    d["t"] = py::make_tuple(fraction(r.t_lower), fraction(r.t_upper));
+    d["from"] = point(p1 + r.t_lower * (p2 - p1));
+    d["to"] = point(p1 + r.t_upper * (p2 - p1));
+  }
+  return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(exact_hlr, m) {
+  m.doc() = "exact-hlr: hidden lines of polyhedra, computed exactly (coordinates as fractions.Fraction)";
+  py::register_exception<hlr::RenderBodyError>(m, "BodyError", PyExc_ValueError);
+  py::register_exception<hlr::InputError>(m, "InputError", PyExc_ValueError);
+  py::register_exception<hlr::NumberError>(m, "NumberError", PyExc_ValueError);
+  py::class_<Drawing>(m, "Drawing", "An exact hidden-line drawing")
+      .def_property_readonly("segments", &Drawing::segments,
+                             "Pieces of the drawn lines: kind, body/edge or bodies, visible, from/to (Fractions), t")
+      .def_property_readonly("bodies", &Drawing::bodies, "Body names, in drawing order")
+      .def_property_readonly("notes", [](const Drawing& d) { return d.r->notes; })
+      .def_property_readonly("method", [](const Drawing& d) { return std::string(hlr::to_string(d.r->drawing.stats.method)); })
+      .def("svg", &Drawing::svg, py::arg("hidden_dashed") = false, py::arg("width_mm") = 150.0, py::arg("stroke_mm") = 0.35)
+      .def("json", &Drawing::json, "The exact JSON of `hlr render` (docs/output-format.md)");
+  m.def("render", &render, py::arg("inputs"), py::kw_only(), py::arg("view") = py::none(), py::arg("eye") = py::none(),
+        py::arg("target") = py::none(), py::arg("up") = py::none(), py::arg("method") = "faces", py::arg("edges") = "feature",
+        py::arg("crease") = py::int_(30), py::arg("threads") = 0u,
+        "Renders mesh files and scene files: exact hidden lines (view: orthographic direction; eye: perspective)");
+  m.def("explain", &explain, py::arg("problem"), py::kw_only(), py::arg("lang") = "en", py::arg("format") = "md",
+        "Solves a problem file step by step (exam mode): Markdown, HTML or JSON text");
+  m.def("clip", &clip, py::arg("clipper"), py::arg("segment"),
+        "Cyrus-Beck clip of a segment (6 numbers) to box:..., frustum:... or a convex mesh file, exactly");
+}

@@ -1,0 +1,74 @@
+"""Tests of the Python module exact_hlr (issue 11): exact values, not just "it runs"."""
+import json
+import os
+from fractions import Fraction
+
+import pytest
+
+import exact_hlr
+
+DATA = os.environ.get("HLR_DATA_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "data"))
+
+
+def path(name):
+    return os.path.join(DATA, name)
+
+
+def test_cube_exact_pieces():
+    # The cube [-1, 1]^3 seen along (1, 2, 3) with every edge: the faces x = 1, y = 1, z = 1
+    # face the viewer, so the three edges at the vertex (-1, -1, -1) are self-hidden (both of
+    # their faces turn away) and the other nine are visible whole.
+    d = exact_hlr.render([path("cube.off")], view=(1, 2, 3), edges="all")
+    segs = d.segments
+    assert len(segs) == 12
+    assert d.method == "faces"
+    for s in segs:
+        assert all(isinstance(c, Fraction) for c in s["from"] + s["to"] + s["t"])
+        assert s["t"] == (0, 1)
+        at_back_corner = (-1, -1, -1) in (s["from"], s["to"])
+        assert s["visible"] == (not at_back_corner)
+        assert s["self_hidden"] == at_back_corner
+    assert sum(1 for s in segs if s["visible"]) == 9
+
+
+def test_demo_scene_matches_the_cli_json():
+    d = exact_hlr.render(path("demo.yaml"))
+    j = json.loads(d.json())
+    assert j["stats"]["method"] == "faces"
+    assert len(j["segments"]) == len(d.segments)
+    first = j["segments"][0]
+    assert [Fraction(x) for x in first["from"]] == list(d.segments[0]["from"])
+    assert any(s["kind"] == "intersection" for s in d.segments)
+    assert d.svg(hidden_dashed=True).startswith("<?xml")
+
+
+def test_perspective_and_rational_input():
+    d = exact_hlr.render([path("two_boxes.yaml")], eye=("10", -12, Fraction(9)), method="roberts")
+    assert d.method == "roberts"
+    assert any(not s["visible"] for s in d.segments)
+
+
+def test_clip_box_exact():
+    r = exact_hlr.clip("box:0,2,0,2,0,2", (-1, 1, 1, 3, 1, 1))
+    assert r["status"] == "visible"
+    assert r["t"] == (Fraction(1, 4), Fraction(3, 4))
+    assert r["from"] == (0, 1, 1) and r["to"] == (2, 1, 1)
+    assert exact_hlr.clip("box:0,2,0,2,0,2", (3, 3, 3, 4, 4, 4))["status"] == "outside"
+
+
+def test_explain_roberts_problem():
+    problems = os.path.join(DATA, "problems")
+    name = sorted(f for f in os.listdir(problems) if f.startswith("roberts"))[0]
+    md = exact_hlr.explain(os.path.join(problems, name))
+    assert "E" in md and "|" in md
+    sol = json.loads(exact_hlr.explain(os.path.join(problems, name), format="json"))
+    assert "sections" in sol
+
+
+def test_errors_are_exceptions():
+    with pytest.raises(ValueError, match="contains the eye"):
+        exact_hlr.render([path("cube.off")], eye=(0, 0, Fraction(1, 2)), target=(0, 0, -1))
+    with pytest.raises(ValueError, match="cannot open"):
+        exact_hlr.render([path("none.off")])
+    with pytest.raises(ValueError):
+        exact_hlr.render([path("cube.off")], method="painter")
