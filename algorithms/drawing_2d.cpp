@@ -74,7 +74,7 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
   return d;
 }
 
-bool bounds(const Drawing2D& d, double& x0, double& y0, double& x1, double& y1) {
+bool drawing_bounds(const Drawing2D& d, double& x0, double& y0, double& x1, double& y1) {
   x0 = y0 = std::numeric_limits<double>::infinity();
   x1 = y1 = -x0;
   for (const Polyline2D& l : d.lines)

@@ -42,6 +42,6 @@ struct Project2DOptions {
 Drawing2D project_drawing(const LineDrawing& drawing, const Camera& camera, const Project2DOptions& options = {});
 
 /// Bounds [x0, x1] x [y0, y1] of the polylines; false when there are none.
-bool bounds(const Drawing2D& d, double& x0, double& y0, double& x1, double& y1);
+bool drawing_bounds(const Drawing2D& d, double& x0, double& y0, double& x1, double& y1);
 
 }  // namespace hlr

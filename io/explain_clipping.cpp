@@ -1,0 +1,93 @@
+// Exam mode, clipping (see explain_parts.hpp; course notes sections 21-22).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "algorithms/cyrus_beck.hpp"
+#include "algorithms/midpoint_clip.hpp"
+#include "io/explain_parts.hpp"
+
+namespace hlr::explain_parts {
+
+J cyrus_beck_solution(const Problem& pr) {
+  J out;
+  out["sections"] = J::array();
+  J results = J::array();
+  for (std::size_t i = 0; i < pr.segments.size(); ++i) {
+    const auto& [p1, p2] = pr.segments[i];
+    CyrusBeckResult r = cyrus_beck(*pr.clipper, p1, p2, true);
+    Section sec("cyrus_beck", std::to_string(i + 1));
+    sec.value("clipper", pr.clipper_text);
+    sec.value("P1", pt(p1));
+    sec.value("P2", pt(p2));
+    sec.value("D", vec(p2 - p1));
+    J& t = sec.table("cb_table", {"face", "n", "Wn", "Dn", "t", "limit"});
+    for (const CyrusBeckRow& row : r.table) {
+      const char* kind = row.kind == CyrusBeckRow::Kind::Lower ? "lower" : row.kind == CyrusBeckRow::Kind::Upper ? "upper"
+                         : row.kind == CyrusBeckRow::Kind::ParallelInside ? "parallel-inside" : "parallel-outside";
+      t.push_back({std::to_string(row.face), vec(row.n), q(row.wn), q(row.dn), row.t ? q(*row.t) : "-", kind});
+    }
+    sec.value("t_lower", q(r.t_lower));
+    sec.value("t_upper", q(r.t_upper));
+    J res;
+    res["segment"] = i + 1;
+    if (r.visible()) {
+      Point3 a = p1 + r.t_lower * (p2 - p1), b = p1 + r.t_upper * (p2 - p1);
+      sec.value("visible_part", pt(a) + " - " + pt(b));
+      res["visible"] = true;
+      res["from"] = pt(a);
+      res["to"] = pt(b);
+      res["t"] = J::array({q(r.t_lower), q(r.t_upper)});
+    } else {
+      sec.value("visible_part", r.status == CyrusBeckResult::Status::Point ? "point" : "none");
+      res["visible"] = false;
+    }
+    results.push_back(res);
+    out["sections"].push_back(sec.j);
+  }
+  out["result"]["segments"] = results;
+  return out;
+}
+
+J midpoint_solution(const Problem& pr) {
+  J out;
+  out["sections"] = J::array();
+  J results = J::array();
+  for (std::size_t i = 0; i < pr.segments.size(); ++i) {
+    const auto& [p1, p2] = pr.segments[i];
+    std::vector<MidpointStep> trace;
+    MidpointResult m = midpoint_clip(*pr.window, p1, p2, pr.eps, &trace);
+    CyrusBeckResult cb = cyrus_beck(*pr.clipper, p1, p2, false);
+    Section sec("midpoint", std::to_string(i + 1));
+    sec.value("clipper", pr.clipper_text);
+    sec.value("eps", q(pr.eps));
+    J& t = sec.table("outcodes", {"end", "point", "outcode", "notes_outcode"});
+    t.push_back({"P1", pt(p1), outcode_bits(outcode(*pr.window, p1)), outcode_bits(notes_outcode(*pr.window, p1))});
+    t.push_back({"P2", pt(p2), outcode_bits(outcode(*pr.window, p2)), outcode_bits(notes_outcode(*pr.window, p2))});
+    J& st = sec.table("steps", {"n_step", "phase", "point", "outcode"});
+    for (std::size_t k = 0; k < trace.size(); ++k)
+      st.push_back({std::to_string(k + 1), trace[k].phase, pt(trace[k].point), outcode_bits(trace[k].code)});
+    sec.value("trivial", m.trivially_accepted ? "accepted" : m.trivially_rejected ? "rejected" : "no");
+    sec.value("subdivisions", std::to_string(m.subdivisions));
+    J res;
+    res["segment"] = i + 1;
+    res["visible"] = m.visible;
+    if (m.visible) {
+      sec.value("visible_part", pt(m.from) + " - " + pt(m.to));
+      res["from"] = pt(m.from);
+      res["to"] = pt(m.to);
+    } else {
+      sec.value("visible_part", "none");
+    }
+    if (cb.visible())
+      sec.value("exact_part", pt(p1 + cb.t_lower * (p2 - p1)) + " - " + pt(p1 + cb.t_upper * (p2 - p1)));
+    results.push_back(res);
+    out["sections"].push_back(sec.j);
+  }
+  out["result"]["segments"] = results;
+  return out;
+}
+
+
+}  // namespace hlr::explain_parts

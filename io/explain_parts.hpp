@@ -1,0 +1,83 @@
+// Exam mode, the parts (internal to io/explain*.cpp; see explain.hpp): the solution's building
+// blocks (sections of values and tables), one builder per problem type, the word tables of
+// both languages and the renderers.
+//   explain_roberts.cpp   Roberts (sections 26-28, 40): body matrices, facing, light, edges
+//   explain_clipping.cpp  Cyrus-Beck (21) and midpoint subdivision (22)
+//   explain_bodies.cpp    convexity and decomposition (23), transforms (20)
+//   explain_words.cpp     English and Russian words of the course
+//   explain_render.cpp    Markdown and HTML
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "io/explain.hpp"
+#include "io/scene.hpp"
+
+namespace hlr::explain_parts {
+
+using J = SolutionJson;
+
+inline std::string q(const Rational& x) { return to_string(x); }
+inline std::string pt(const Point3& p) { return "(" + q(p.x()) + ", " + q(p.y()) + ", " + q(p.z()) + ")"; }
+inline std::string vec(const Vector3& p) { return "(" + q(p.x()) + ", " + q(p.y()) + ", " + q(p.z()) + ")"; }
+inline std::string row4(const Rational& a, const Rational& b, const Rational& c, const Rational& d) {
+  return "[" + q(a) + " " + q(b) + " " + q(c) + " " + q(d) + "]";
+}
+
+// A section: a title id, optional notes (id -> value), tables (caption id, column ids, rows).
+struct Section {
+  J j;
+  explicit Section(const std::string& title, const std::string& subject = "") {
+    j["title"] = title;
+    if (!subject.empty()) j["subject"] = subject;
+    j["values"] = J::object();
+    j["tables"] = J::array();
+  }
+  void value(const std::string& id, const std::string& v) { j["values"][id] = v; }
+  J& table(const std::string& caption, std::vector<std::string> columns) {
+    J t;
+    t["caption"] = caption;
+    t["columns"] = columns;
+    t["rows"] = J::array();
+    j["tables"].push_back(t);
+    return j["tables"].back()["rows"];
+  }
+};
+
+inline void input_section(const Scene& s, J& out) {
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const SceneBody& b = s.bodies[i];
+    Section sec("input", b.name);
+    J& vr = sec.table("vertices", {"vertex", "x", "y", "z"});
+    for (std::size_t v = 0; v < b.body.num_vertices(); ++v) {
+      const Point3& p = b.body.vertices()[v];
+      vr.push_back({std::to_string(v), q(p.x()), q(p.y()), q(p.z())});
+    }
+    J& fr = sec.table("faces", {"face", "vertices"});
+    for (std::size_t f = 0; f < b.body.num_faces(); ++f) {
+      std::string l;
+      for (int v : b.body.faces()[f]) {
+        if (!l.empty()) l += ' ';
+        l += std::to_string(v);
+      }
+      fr.push_back({std::to_string(f), l});
+    }
+    out["sections"].push_back(sec.j);
+  }
+}
+
+
+J roberts_solution(const Problem& pr);
+J cyrus_beck_solution(const Problem& pr);
+J midpoint_solution(const Problem& pr);
+J convexity_solution(const Problem& pr);
+J decompose_solution(const Problem& pr);
+J transform_solution(const Problem& pr);
+
+/// The word for `id` in `lang` (the id itself when there is none).
+std::string word(const std::string& id, Lang lang);
+/// Cell text: classes and yes/no are words too (ids "v:...").
+std::string cell(const J& c, Lang lang);
+
+}  // namespace hlr::explain_parts

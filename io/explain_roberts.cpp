@@ -1,0 +1,265 @@
+// Exam mode, Roberts (see explain_parts.hpp; course notes sections 26-28 and 40).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "algorithms/facing.hpp"
+#include "algorithms/roberts.hpp"
+#include "io/json_writer.hpp"
+#include "io/view_choice.hpp"
+#include "kernel/predicates.hpp"
+#include "io/explain_parts.hpp"
+
+namespace hlr::explain_parts {
+
+namespace {
+
+// The course's candidate-vertex table for one edge against one body: the boundary lines
+// h_j = 0, t = 0, t = 1, a = 0 intersected pairwise, each point checked against all of them.
+struct Line {
+  std::string name;
+  Rational a, b, c;  // a·t + b·w = c  (w = the ray parameter "a" of the notes)
+};
+
+// The feasible region in the (t, a) plane as an SVG picture (drawing only, doubles): the
+// region cut at a height A above its highest vertex, axes, t_min and t_max marked.
+std::string region_svg(std::vector<Line> lines, const std::vector<Rational>& p, const std::vector<Rational>& qq,
+                       const std::vector<Rational>& w, const Rational& tmin, const Rational& tmax) {
+  const int n = static_cast<int>(p.size());
+  Rational top = 0;
+  std::vector<std::pair<Rational, Rational>> pts;
+  auto solve = [&](bool with_cap, const Rational& A) {
+    pts.clear();
+    if (with_cap) lines.push_back({"a=A", 0, 1, A});
+    for (std::size_t x = 0; x < lines.size(); ++x)
+      for (std::size_t y = x + 1; y < lines.size(); ++y) {
+        Rational det = lines[x].a * lines[y].b - lines[y].a * lines[x].b;
+        if (det == 0) continue;
+        Rational t = (lines[x].c * lines[y].b - lines[y].c * lines[x].b) / det;
+        Rational a = (lines[x].a * lines[y].c - lines[y].a * lines[x].c) / det;
+        bool ok = t >= 0 && t <= 1 && a >= 0 && (!with_cap || a <= A);
+        for (int j = 0; j < n && ok; ++j) ok = p[j] + qq[j] * t + w[j] * a >= 0;
+        if (ok) pts.push_back({t, a});
+      }
+    if (with_cap) lines.pop_back();
+  };
+  solve(false, 0);
+  for (const auto& [t, a] : pts) top = std::max(top, a);
+  Rational A = top * 3 / 2 + 1;
+  solve(true, A);
+  std::vector<std::pair<double, double>> d;
+  for (const auto& [t, a] : pts) d.push_back({to_double(t), to_double(a)});
+  double cx = 0, cy = 0;
+  for (auto& [x, y] : d) cx += x / d.size(), cy += y / d.size();
+  std::sort(d.begin(), d.end(), [&](auto& u, auto& v) { return std::atan2(u.second - cy, u.first - cx) < std::atan2(v.second - cy, v.first - cx); });
+  const double W = 320, H = 200, m = 30, ah = to_double(A);
+  auto X = [&](double t) { return m + t * (W - 2 * m); };
+  auto Y = [&](double a) { return H - m - a / ah * (H - 2 * m); };
+  char buf[128];
+  std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"320\" height=\"200\" viewBox=\"0 0 320 200\">";
+  svg += "<polygon fill=\"#ddd\" stroke=\"#000\" points=\"";
+  for (auto& [x, y] : d) {
+    std::snprintf(buf, sizeof buf, "%.1f,%.1f ", X(x), Y(y));
+    svg += buf;
+  }
+  svg += "\"/>";
+  std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#000\"/>", X(0), Y(0), X(1), Y(0));
+  svg += buf;
+  std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#000\"/>", X(0), Y(0), X(0), Y(ah));
+  svg += buf;
+  for (auto [t, label] : {std::make_pair(to_double(tmin), "t_min"), std::make_pair(to_double(tmax), "t_max")}) {
+    std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#c00\" stroke-dasharray=\"4 3\"/>",
+                  X(t), Y(0), X(t), Y(ah));
+    svg += buf;
+    std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10\" fill=\"#c00\">%s</text>", X(t) + 2, m - 8, label);
+    svg += buf;
+  }
+  std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">t</text><text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">a</text>",
+                X(1) + 4, Y(0) + 4, X(0) - 12, Y(ah) + 4);
+  svg += buf;
+  std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"9\">0</text><text x=\"%.1f\" y=\"%.1f\" font-size=\"9\">1</text>",
+                X(0) - 3, Y(0) + 12, X(1) - 3, Y(0) + 12);
+  svg += buf;
+  return svg + "</svg>";
+}
+
+J edge_body_table(const Point3& p1, const Point3& p2, const BodyMatrixData& V, const RowVector4& g, Section& sec,
+                  const std::string& prefix) {
+  const int n = static_cast<int>(V.cols());
+  Vector3 d = p2 - p1;
+  RowVector4 P, D;
+  P << p1.x(), p1.y(), p1.z(), 1;
+  D << d.x(), d.y(), d.z(), 0;
+  std::vector<Rational> p = row_times_matrix(P, V), qq = row_times_matrix(D, V), w = row_times_matrix(g, V);
+  J& ineq = sec.table(prefix + "inequalities", {"face", "p", "q", "w", "h"});
+  for (int j = 0; j < n; ++j)
+    ineq.push_back({std::to_string(j), q(p[j]), q(qq[j]), q(w[j]), q(p[j]) + " + " + q(qq[j]) + "·t + " + q(w[j]) + "·a > 0"});
+  std::vector<Line> lines;
+  for (int j = 0; j < n; ++j) lines.push_back({"h" + std::to_string(j), qq[j], w[j], -p[j]});
+  lines.push_back({"t=0", 1, 0, 0});
+  lines.push_back({"t=1", 1, 0, 1});
+  lines.push_back({"a=0", 0, 1, 0});
+  J& cand = sec.table(prefix + "candidates", {"lines", "t", "a", "feasible"});
+  std::optional<Rational> tmin, tmax;
+  std::vector<Rational> pierce;  // feasible vertices on a = 0: where the edge pierces the body
+  for (std::size_t x = 0; x < lines.size(); ++x)
+    for (std::size_t y = x + 1; y < lines.size(); ++y) {
+      const Line &L1 = lines[x], &L2 = lines[y];
+      Rational det = L1.a * L2.b - L2.a * L1.b;
+      if (det == 0) {
+        cand.push_back({L1.name + " ∩ " + L2.name, "-", "-", "parallel"});
+        continue;
+      }
+      Rational t = (L1.c * L2.b - L2.c * L1.b) / det, a = (L1.a * L2.c - L2.a * L1.c) / det;
+      bool ok = t >= 0 && t <= 1 && a >= 0;
+      for (int j = 0; j < n && ok; ++j) ok = p[j] + qq[j] * t + w[j] * a >= 0;
+      cand.push_back({L1.name + " ∩ " + L2.name, q(t), q(a), ok ? "yes" : "no"});
+      if (ok && a == 0 && t > 0 && t < 1 && std::find(pierce.begin(), pierce.end(), t) == pierce.end()) pierce.push_back(t);
+      if (ok) {
+        if (!tmin || t < *tmin) tmin = t;
+        if (!tmax || t > *tmax) tmax = t;
+      }
+    }
+  OpenInterval iv = hidden_interval(p1, p2, V, g);
+  if (tmin && tmax && *tmin < *tmax) sec.j["svg"] = region_svg(lines, p, qq, w, *tmin, *tmax);
+  if (!pierce.empty()) {
+    std::sort(pierce.begin(), pierce.end());
+    std::string list;
+    for (const Rational& t : pierce) list += (list.empty() ? "" : ", ") + std::string("t = ") + q(t) + " " + pt(p1 + t * (p2 - p1));
+    sec.value("penetration", list);
+  }
+  J res;
+  res["t_min"] = tmin ? q(*tmin) : "-";
+  res["t_max"] = tmax ? q(*tmax) : "-";
+  Rational lo = iv.lo && *iv.lo > 0 ? *iv.lo : Rational(0), hi = iv.hi && *iv.hi < 1 ? *iv.hi : Rational(1);
+  res["hidden"] = !iv.empty && lo < hi ? "(" + q(lo) + ", " + q(hi) + ")" : "none";
+  return res;
+}
+
+}  // namespace
+
+J roberts_solution(const Problem& pr) {
+  J out;
+  out["sections"] = J::array();
+  input_section(pr.scene, out);
+  std::vector<const Polyhedron*> polys;
+  std::vector<DrawingBody> names;
+  for (const SceneBody& b : pr.scene.bodies) {
+    polys.push_back(&b.body);
+    names.push_back({b.name, b.source});
+  }
+  Camera cam = choose_camera({}, &pr.scene.view, polys);
+  LineOptions ro;
+  ro.edges = EdgeSelection::All;
+  RobertsResult r = roberts(polys, cam, ro);
+  const RowVector4 g = cam.viewpoint();
+  for (std::size_t i = 0; i < polys.size(); ++i) {
+    const Polyhedron& p = *polys[i];
+    const BodyMatrix& bm = r.matrices[i];
+    Section sec("body_matrix", pr.scene.bodies[i].name);
+    sec.value("interior_point", pt(bm.interior));
+    J& rows = sec.table("planes", {"face", "plane", "S_V", "negated", "V"});
+    for (std::size_t f = 0; f < p.num_faces(); ++f) {
+      const Plane& h = p.planes()[f];
+      int c = static_cast<int>(f);
+      rows.push_back({std::to_string(f), row4(h.a(), h.b(), h.c(), h.d()), q(bm.s_v[f]), bm.negated[f] ? "yes" : "no",
+                      row4(bm.V(0, c), bm.V(1, c), bm.V(2, c), bm.V(3, c))});
+    }
+    const Matrix4& T = pr.scene.bodies[i].transform;
+    if (T != identity_transform()) {
+      auto Ti = inverse(T);
+      auto mat = [&](const Matrix4& m, const std::string& caption) {
+        J& t = sec.table(caption, {"row", "c1", "c2", "c3", "c4"});
+        for (int a = 0; a < 4; ++a) t.push_back({std::to_string(a + 1), q(m(a, 0)), q(m(a, 1)), q(m(a, 2)), q(m(a, 3))});
+      };
+      mat(T, "T");
+      if (Ti) {
+        mat(*Ti, "T_inverse");
+        std::vector<Point3> orig;
+        for (const Point3& v : p.vertices()) orig.push_back(apply(*Ti, v));
+        Polyhedron original(orig, p.faces());
+        BodyMatrix b0 = body_matrix(original);
+        BodyMatrixData VT = transformed_body_matrix(b0.V, T);
+        J& vt = sec.table("VT", {"face", "V", "VT"});
+        for (int c = 0; c < VT.cols(); ++c)
+          vt.push_back({std::to_string(c), row4(b0.V(0, c), b0.V(1, c), b0.V(2, c), b0.V(3, c)), row4(VT(0, c), VT(1, c), VT(2, c), VT(3, c))});
+      }
+    }
+    out["sections"].push_back(sec.j);
+    Section fac("facing", pr.scene.bodies[i].name);
+    fac.value("E", cam.perspective ? "[" + q(-cam.eye.x()) + " " + q(-cam.eye.y()) + " " + q(-cam.eye.z()) + " -1]"
+                                   : "[" + q(-cam.direction.x()) + " " + q(-cam.direction.y()) + " " + q(-cam.direction.z()) + " 0]");
+    J& fr = fac.table("facing_table", {"face", "EV", "class"});
+    for (std::size_t f = 0; f < r.ev[i].size(); ++f)
+      fr.push_back({std::to_string(f), q(r.ev[i][f]), r.facing[i][f] < 0 ? "non-facing" : r.facing[i][f] == 0 ? "edge-on" : "facing"});
+    J& sh = fac.table("self_hidden", {"edge", "face_pair"});
+    for (const Segment& s : r.segments)
+      if (s.body == static_cast<int>(i) && s.self_hidden)
+        sh.push_back({std::to_string(s.v0) + "-" + std::to_string(s.v1), std::to_string(s.face0) + ", " + std::to_string(s.face1)});
+    if (pr.scene.light) {
+      const Vector3& L = *pr.scene.light;
+      RowVector4 LE;
+      LE << -L.x(), -L.y(), -L.z(), 0;
+      std::vector<Rational> lv = row_times_matrix(LE, bm.V);
+      fac.value("L", "[" + q(-L.x()) + " " + q(-L.y()) + " " + q(-L.z()) + " 0]");
+      J& lt = fac.table("light_table", {"face", "LV", "self_shadowed", "visible_shadow"});
+      RowVector4 toward_light;  // facing from the light: the same test as from the viewer
+      toward_light << L.x(), L.y(), L.z(), 0;
+      for (std::size_t f = 0; f < lv.size(); ++f) {
+        const int j = static_cast<int>(f);
+        bool shadowed = facing_sign(Plane(-bm.V(0, j), -bm.V(1, j), -bm.V(2, j), -bm.V(3, j)), toward_light) < 0;
+        lt.push_back({std::to_string(f), q(lv[f]), shadowed ? "yes" : "no", shadowed && r.facing[i][f] > 0 ? "yes" : "no"});
+      }
+    }
+    out["sections"].push_back(fac.j);
+  }
+  // Every edge (or the ones asked for) against every other body.
+  for (const Segment& s : r.segments) {
+    if (s.kind != Segment::Kind::Edge || s.self_hidden) continue;
+    if (!pr.edges.empty()) {
+      bool asked = false;
+      for (const auto& e : pr.edges) asked = asked || (e[0] == s.body && e[1] == s.v0 && e[2] == s.v1);
+      if (!asked) continue;
+    }
+    for (std::size_t k = 0; k < polys.size(); ++k) {
+      if (static_cast<int>(k) == s.body) continue;
+      Section sec("edge_vs_body", pr.scene.bodies[s.body].name + " " + std::to_string(s.v0) + "-" + std::to_string(s.v1) + " / " +
+                                      pr.scene.bodies[k].name);
+      sec.value("P1", pt(s.from()));
+      sec.value("P2", pt(s.to()));
+      J res = edge_body_table(s.from(), s.to(), r.matrices[k].V, g, sec, "");
+      sec.value("t_min", res["t_min"].get<std::string>());
+      sec.value("t_max", res["t_max"].get<std::string>());
+      sec.value("hidden_interval", res["hidden"].get<std::string>());
+      out["sections"].push_back(sec.j);
+    }
+  }
+  Section jl("junction_lines");
+  J& jr = jl.table("junctions", {"bodies", "from", "to"});
+  for (const Segment& s : r.segments)
+    if (s.kind == Segment::Kind::Intersection)
+      jr.push_back({pr.scene.bodies[s.body].name + " / " + pr.scene.bodies[s.body2].name, pt(s.from()), pt(s.to())});
+  out["sections"].push_back(jl.j);
+  Section res("visible_segments");
+  J& vr = res.table("visible", {"line", "from", "to"});
+  J segs = J::array();
+  for (const Segment& s : r.segments)
+    for (const Piece& p : s.pieces) {
+      segs.push_back(piece_json(s, p));
+      if (!p.visible) continue;
+      std::string what = s.kind == Segment::Kind::Edge ? pr.scene.bodies[s.body].name + " " + std::to_string(s.v0) + "-" + std::to_string(s.v1)
+                                                       : pr.scene.bodies[s.body].name + " / " + pr.scene.bodies[s.body2].name;
+      vr.push_back({what, pt(s.at(p.t0)), pt(s.at(p.t1))});
+    }
+  out["sections"].push_back(res.j);
+  SvgOptions so;
+  so.hidden_dashed = true;
+  so.width_mm = 120;
+  out["result"]["segments"] = segs;
+  out["drawing_svg"] = to_svg(names, r, cam, so);
+  return out;
+}
+
+
+}  // namespace hlr::explain_parts
