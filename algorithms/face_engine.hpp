@@ -69,6 +69,7 @@ class Engine {
   int triangulate_body(int b);
   int volume_sign(std::size_t first_tri) const;
   bool eye_inside(int first) const;
+  bool eye_on_surface(int first) const;
   static void flip(Tri& t);
   // face_engine_occluders.cpp
   bool neighbour(const Tri& t, int k, int& face, int& third) const;
@@ -109,6 +110,7 @@ class Engine {
 
   std::vector<int> voff_;
   std::vector<bool> solid_;
+  std::vector<char> eye_on_;  // perspective: the eye lies on this solid's surface
   std::vector<int> flipped_;
   std::vector<std::vector<int>> facing_;
   std::vector<BodyTopology> topo_;

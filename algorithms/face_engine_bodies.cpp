@@ -3,6 +3,7 @@
 // solids turned, an eye inside a solid refused.
 #include <chrono>
 
+#include "algorithms/convexity.hpp"
 #include "algorithms/face_engine.hpp"
 #include "algorithms/face_triangles.hpp"
 #include "algorithms/facing.hpp"
@@ -54,6 +55,7 @@ void Engine<P>::offsets() {
     o += static_cast<int>(p->num_vertices());
   }
   solid_.assign(bodies_.size(), false);
+  eye_on_.assign(bodies_.size(), 0);
   degenerate_.resize(bodies_.size());
   face_normal_.resize(bodies_.size());
   facing_.resize(bodies_.size());
@@ -148,6 +150,12 @@ void Engine<P>::prepare_body(int b, LineDrawing& res) {
   }
   if (solid_[b] && cam_.perspective && eye_inside(first_tri))
     throw BodyError(b, "contains the eye " + to_string(cam_.eye) + ": an eye inside a solid sees nothing");
+  // The eye on the surface: a sight segment may end inside the solid without leaving it through
+  // a front face, so the back faces hide too (their forward cones from the eye, see occluders).
+  if (solid_[b] && cam_.perspective) eye_on_[b] = eye_on_surface(first_tri);
+  if (eye_on_[b] && !convexity(*bodies_[b]).convex())
+    throw BodyError(b, "holds the eye " + to_string(cam_.eye) +
+                           " on its surface and is not convex: move the eye off the surface (by any amount)");
   if (solid_[b] && vsign < 0) {  // inside out: turn it
     for (std::size_t i = first_tri; i < tris_.size(); ++i) flip(tris_[i]);
     for (int& s : facing_[b]) s = -s;
@@ -181,6 +189,24 @@ bool Engine<P>::eye_inside(int first) const {
       if (sa == sd) ++crossings;  // the crossing is ahead of the eye
     }
     if (!degenerate) return crossings % 2 == 1;
+  }
+  return false;
+}
+
+// Does the eye lie in a (closed) triangle of the body from `first` on? Only faces seen edge-on
+// can hold it.
+template <class P>
+bool Engine<P>::eye_on_surface(int first) const {
+  for (std::size_t i = first; i < tris_.size() && tris_[i].body == tris_[first].body; ++i) {
+    const Tri& t = tris_[i];
+    if (facing_[t.body][t.face] != 0) continue;
+    Vec<P> n = normal(t);
+    bool inside = true;
+    for (int k = 0; k < 3 && inside; ++k) {
+      const Vec<P>& a = X_[t.v[k]];
+      inside = P::sign(dot<P>(n, cross<P>(sub<P>(X_[t.v[(k + 1) % 3]], a), sub<P>(view_, a)))) >= 0;
+    }
+    if (inside) return true;
   }
   return false;
 }

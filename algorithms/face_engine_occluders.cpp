@@ -55,7 +55,7 @@ void Engine<P>::vertex_rules() {
     const auto& faces = bodies_[b]->faces();
     for (std::size_t f = 0; f < faces.size(); ++f) {
       int fs = facing_[b][f];
-      char st = degenerate_[b][f] || fs == 0 ? 3 : (fs > 0 ? 1 : (solid_[b] ? 3 : 2));
+      char st = degenerate_[b][f] || fs == 0 ? 3 : (fs > 0 ? 1 : (solid_[b] && !eye_on_[b] ? 3 : 2));
       for (int v : faces[f]) mark(voff_[b] + v, st);
     }
     for (const BodyEdge& e : topo_[b].edges)
@@ -85,7 +85,7 @@ void Engine<P>::build_occluders() {
     const Tri& t0 = tris_[i];
     int fs = facing_[t0.body][t0.face];
     if (fs == 0) continue;                       // edge-on: sight rays graze it
-    if (solid_[t0.body] && fs < 0) continue;     // a closed solid is hidden by its front faces
+    if (solid_[t0.body] && fs < 0 && !eye_on_[t0.body]) continue;  // a closed solid is hidden by its front faces
     sel.push_back(static_cast<int>(i));
   }
   occ_.resize(sel.size());
@@ -124,9 +124,12 @@ void Engine<P>::make_occluder(const Tri& t0, Occluder<P>& o, Box& bx, char& alwa
   o.face = t.face;
   o.v = t.v;
   Vec<P> n = normal(t);
-  // Constraint 0: strictly behind the plane: -n·(X - a) > 0.
+  // Constraint 0: strictly behind the plane: -n·(X - a) > 0. A back face of a convex solid
+  // whose surface holds the eye hides its whole forward cone from the eye instead (in front
+  // of the face too: those points are inside the solid), so the plane moves to the eye:
+  // -n·(X - E) > 0. Exact for convex solids (docs/design.md); others are refused.
   o.m[0] = neg<P>(n);
-  o.c[0] = dot<P>(o.m[0], X_[t.v[0]]);
+  o.c[0] = fs < 0 && solid_[b] ? dot<P>(o.m[0], view_) : dot<P>(o.m[0], X_[t.v[0]]);
   for (int k = 0; k < 3; ++k) {
     int r = t.v[(k + 2) % 3];
     Vec<P> m;
@@ -154,6 +157,12 @@ void Engine<P>::make_occluder(const Tri& t0, Occluder<P>& o, Box& bx, char& alwa
     all_front = all_front && vfront_[v];
   }
   always = !all_front;
+  // Not strictly in front of the eye: its projection means nothing, so its box must not skip
+  // anything (the whole plane, every depth).
+  if (always) bx = Box{-INFINITY, -INFINITY, INFINITY, INFINITY, -INFINITY};
+  // A forward cone from the eye (back face of a solid holding the eye) reaches in front of its
+  // face: no depth pruning (its projection is still the face's).
+  if (fs < 0 && solid_[b]) bx.dmin = -INFINITY;
 }
 
 // Is the sight ray just behind the polygon edge under side k inside the body (closed side)?
@@ -163,11 +172,18 @@ bool Engine<P>::closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, in
   if (!neighbour(t, k, g, third)) return false;
   const int b = t.body;
   if (solid_[b]) {
-    // Wedge: where the neighbour's far vertex lies against this (front) face's plane.
+    // Wedge: where the neighbour's far vertex lies against this face's plane. A front face hides
+    // the ray just behind the edge when the wedge holds it; a back face (an occluder only when
+    // the eye is on the surface; `t` is turned, its normal points inward) when the wedge holds
+    // the ray just beyond the edge, toward the eye: the mirror rule.
     Vec<P> n = normal(t);
     int w = P::sign(dot<P>(n, sub<P>(X_[third], X_[t.v[0]])));
-    if (w > 0) return true;              // reflex edge: the wedge holds the ray
-    return facing_[b][g] > 0;            // convex or flat: both faces toward the viewer
+    if (fs > 0) {
+      if (w > 0) return true;            // reflex edge: the wedge holds the ray
+      return facing_[b][g] > 0;          // convex or flat: both faces toward the viewer
+    }
+    if (w < 0) return true;              // reflex edge
+    return facing_[b][g] < 0;            // convex or flat: both faces away from the viewer
   }
   // Open surface: the neighbour continues on the other side of the edge in the projection.
   return P::sign(dot<P>(m, X_[third]) - c) < 0;

@@ -1,0 +1,206 @@
+// The torture suite (issues 12 and 20): seeded random scenes in the hard places, every piece of
+// every route checked by exact ray casting (ray_oracle.hpp), and the routes compared with each
+// other. The test command runs a few hundred scenes; scripts/torture.sh runs thousands
+// (HLR_TORTURE_SCENES, HLR_TORTURE_SEED).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <map>
+#include <random>
+#include <tuple>
+
+#include "algorithms/face_occluders.hpp"
+#include "algorithms/roberts.hpp"
+#include "ray_oracle.hpp"
+
+using namespace hlr;
+using namespace hlr::test;
+
+namespace {
+
+long env_long(const char* name, long fallback) {
+  const char* v = std::getenv(name);
+  return v && *v ? std::atol(v) : fallback;
+}
+
+struct Generator {
+  std::mt19937 rng;
+  explicit Generator(unsigned seed) : rng(seed) {}
+  int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
+  Rational q(int lo, int hi, int den) {
+    Rational r(uniform(lo * den, hi * den), den);
+    r.canonicalize();
+    return r;
+  }
+
+  // A box in [0, 12]^3, sometimes a thin slab.
+  Polyhedron box() {
+    Rational lo[3], hi[3];
+    int thin = uniform(0, 3) == 0 ? uniform(0, 2) : -1;
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = q(0, 10, 4);
+      Rational size = k == thin ? Rational(1, uniform(4, 16)) : q(1, 4, 2);
+      size.canonicalize();
+      hi[k] = lo[k] + size;
+    }
+    return make_box(Point3(lo[0], lo[1], lo[2]), Point3(hi[0], hi[1], hi[2]));
+  }
+  // A tetrahedron in [0, 12]^3 with non-zero volume, faces outward.
+  Polyhedron tetra() {
+    for (;;) {
+      std::vector<Point3> v;
+      for (int i = 0; i < 4; ++i) v.push_back(Point3(q(0, 12, 3), q(0, 12, 3), q(0, 12, 3)));
+      std::vector<Face> f = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+      if (six_signed_volume(v, f) == 0) continue;
+      return Polyhedron(v, orient_faces(v, f));
+    }
+  }
+};
+
+// Strictly outside every body (some inward plane negative at the point), or on a surface
+// (`allow_surface`: no plane negative for one body, but one zero).
+bool eye_ok(const std::vector<std::vector<OraclePlane>>& bodies, const Point3& e, bool allow_surface) {
+  for (const auto& b : bodies) {
+    bool outside = false, on = false;
+    for (const OraclePlane& h : b) {
+      Rational v = h.at(e.x(), e.y(), e.z());
+      outside = outside || v < 0;
+      on = on || v == 0;
+    }
+    if (!outside && !(allow_surface && on)) return false;
+  }
+  return true;
+}
+
+struct Result {
+  Tally faces, roberts;
+  long scenes = 0, route_mismatches = 0;
+};
+
+// The pieces of every edge of both routes must be the same.
+void compare_routes(const LineDrawing& a, const LineDrawing& b, Result& res, const std::string& what) {
+  std::map<std::tuple<int, int, int>, const Segment*> by_edge;
+  for (const Segment& s : b.segments)
+    if (s.kind == Segment::Kind::Edge) by_edge[{s.body, s.v0, s.v1}] = &s;
+  for (const Segment& s : a.segments) {
+    if (s.kind != Segment::Kind::Edge) continue;
+    auto it = by_edge.find({s.body, s.v0, s.v1});
+    if (it == by_edge.end()) continue;
+    const Segment& g = *it->second;
+    bool same = g.pieces.size() == s.pieces.size();
+    for (std::size_t i = 0; same && i < s.pieces.size(); ++i)
+      same = g.pieces[i].t0 == s.pieces[i].t0 && g.pieces[i].t1 == s.pieces[i].t1 && g.pieces[i].visible == s.pieces[i].visible;
+    if (!same) {
+      ++res.route_mismatches;
+      ADD_FAILURE() << what << ": edge " << s.from() << " - " << s.to() << " of body " << s.body << ": the routes differ";
+    }
+  }
+}
+
+void run_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, Result& res, const std::string& what) {
+  std::vector<const Polyhedron*> ptrs;
+  std::vector<std::vector<OraclePlane>> planes;
+  for (const auto& b : bodies) {
+    ptrs.push_back(&b);
+    planes.push_back(oracle_planes(b));
+  }
+  LineOptions opt;
+  opt.edges = EdgeSelection::All;
+  opt.intersections = false;  // the oracle samples edges; intersection lines have their own tests
+  LineDrawing f = face_occluders(ptrs, cam, opt);
+  RobertsResult r = roberts(ptrs, cam, opt);
+  ++res.scenes;
+  long before = res.faces.disagreements;
+  sample_check(f, planes, cam, res.faces, ("faces, " + what).c_str());
+  sample_check(r, planes, cam, res.roberts, ("roberts, " + what).c_str());
+  if (res.faces.disagreements != before) {
+    ADD_FAILURE() << "scene: " << what;
+    if (std::getenv("HLR_TORTURE_DUMP"))  // the scene as a YAML scene file
+      for (std::size_t b = 0; b < bodies.size(); ++b) {
+        std::cout << "  - name: b" << b << "\n    vertices: [";
+        for (std::size_t v = 0; v < bodies[b].num_vertices(); ++v) std::cout << (v ? ", " : "") << "[" << to_string(bodies[b].vertices()[v].x()) << ", " << to_string(bodies[b].vertices()[v].y()) << ", " << to_string(bodies[b].vertices()[v].z()) << "]";
+        std::cout << "]\n    faces: [";
+        for (std::size_t f = 0; f < bodies[b].num_faces(); ++f) {
+          std::cout << (f ? ", " : "") << "[";
+          for (std::size_t k = 0; k < bodies[b].faces()[f].size(); ++k) std::cout << (k ? ", " : "") << bodies[b].faces()[f][k];
+          std::cout << "]";
+        }
+        std::cout << "]\n";
+      }
+  }
+  compare_routes(r, f, res, what);
+}
+
+std::string describe(unsigned seed, const Camera& c) {
+  return "seed " + std::to_string(seed) + (c.perspective ? ", eye " + to_string(c.eye) + ", target " + to_string(c.target)
+                                                         : ", view " + to_string(c.direction));
+}
+
+}  // namespace
+
+// Perspective with the eye among the bodies (walk-through views), and orthographic views along
+// axes and edges: five boxes (some thin slabs) and a tetrahedron.
+TEST(Torture, EyeAmongTheBodies) {
+  const long n = env_long("HLR_TORTURE_SCENES", 200);
+  const unsigned seed0 = static_cast<unsigned>(env_long("HLR_TORTURE_SEED", 12));
+  Result res;
+  for (long i = 0; i < n; ++i) {
+    unsigned seed = seed0 * 100003u + static_cast<unsigned>(i);
+    Generator g(seed);
+    std::vector<Polyhedron> bodies;
+    for (int k = 0; k < 5; ++k) bodies.push_back(g.box());
+    bodies.push_back(g.tetra());
+    std::vector<std::vector<OraclePlane>> planes;
+    for (const auto& b : bodies) planes.push_back(oracle_planes(b));
+    Camera cam;
+    int kind = i % 5;
+    if (kind == 4) {  // the eye on the surface of a box: on a face, an edge or a vertex
+      Point3 eye;
+      for (;;) {  // until the point is inside no other body
+        const Polyhedron& b = bodies[g.uniform(0, 4)];
+        const Point3 &lo = b.vertices()[0], &hi = b.vertices()[7];
+        Rational c[3];
+        int on = g.uniform(1, 3);  // how many coordinates lie on the box's bounds
+        for (int k = 0; k < 3; ++k) {
+          Rational u(g.uniform(1, 7), 8);
+          u.canonicalize();
+          c[k] = k < on ? (g.uniform(0, 1) ? lo[k] : hi[k]) : lo[k] + u * (hi[k] - lo[k]);
+        }
+        eye = Point3(c[0], c[1], c[2]);
+        if (eye_ok(planes, eye, true)) break;
+      }
+      Point3 target;
+      do target = Point3(g.q(0, 12, 2), g.q(0, 12, 2), g.q(0, 12, 2));
+      while (target == eye);
+      cam = make_perspective(eye, target);
+    } else if (kind == 3) {  // orthographic along an axis, a face diagonal or a generic direction
+      static const int dirs[][3] = {{0, 0, 1}, {1, 0, 0}, {0, -1, 0}, {1, 1, 0}, {1, 0, -1}, {1, 2, 3}, {-2, 1, 1}};
+      const int* d = dirs[g.uniform(0, 6)];
+      cam = make_orthographic(Vector3(d[0], d[1], d[2]));
+    } else {
+      Point3 eye;
+      for (int tries = 0;; ++tries) {
+        eye = Point3(g.q(-2, 14, 4), g.q(-2, 14, 4), g.q(-2, 14, 4));
+        if (kind == 2) {  // on the plane of a face of some box
+          int b = g.uniform(0, 4), k = g.uniform(0, 2);
+          Rational c[3] = {eye.x(), eye.y(), eye.z()};
+          c[k] = bodies[b].vertices()[g.uniform(0, 1) ? 0 : 7][k];
+          eye = Point3(c[0], c[1], c[2]);
+        }
+        if (eye_ok(planes, eye, false)) break;
+      }
+      Point3 target;
+      do target = Point3(g.q(0, 12, 2), g.q(0, 12, 2), g.q(0, 12, 2));
+      while (target == eye);
+      cam = make_perspective(eye, target);
+    }
+    run_scene(bodies, cam, res, describe(seed, cam));
+  }
+  std::cout << "[torture] " << res.scenes << " scenes; faces: " << res.faces.samples << " samples, " << res.faces.hidden_samples
+            << " hidden, " << res.faces.disagreements << " wrong; roberts: " << res.roberts.disagreements << " wrong; "
+            << res.route_mismatches << " edges where the routes differ\n";
+  EXPECT_EQ(res.faces.disagreements, 0);
+  EXPECT_EQ(res.roberts.disagreements, 0);
+  EXPECT_EQ(res.route_mismatches, 0);
+  EXPECT_GT(res.faces.hidden_samples, res.faces.samples / 10);
+}
