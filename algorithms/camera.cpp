@@ -1,6 +1,7 @@
 // Exact viewpoint and double drawing projection (see camera.hpp).
 #include "algorithms/camera.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -19,6 +20,30 @@ V3 unit(V3 a) {
   return {a[0] / l, a[1] / l, a[2] / l};
 }
 double dot3(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// floor(log2 |q|) within one, from the sizes of numerator and denominator (q != 0).
+long log2_about(const Rational& q) {
+  return static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) - static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
+}
+
+// A direction as doubles, first scaled exactly by a power of two so that its largest
+// component is near 1: a vector of 1e-400 or 1e300 is a direction like any other. For
+// ordinary magnitudes the doubles are the same up to that power of two, and unit() removes it.
+V3 d3_direction(const Vector3& v) {
+  long e = 0;
+  bool any = false;
+  for (int k = 0; k < 3; ++k)
+    if (v[k] != 0) {
+      long x = log2_about(v[k]);
+      e = any ? std::max(e, x) : x;
+      any = true;
+    }
+  if (!any || (e > -500 && e < 500)) return d3(v);
+  Rational s = 1;
+  if (e > 0) mpq_div_2exp(s.get_mpq_t(), s.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
+  else mpq_mul_2exp(s.get_mpq_t(), s.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
+  return d3(s * v);
+}
 
 // Default up: +y, or +z when the axis is parallel to y (exact test).
 Vector3 choose_up(const Vector3& axis, std::optional<Vector3> up) {
@@ -68,13 +93,58 @@ Camera make_perspective(const Point3& eye, const Point3& target, std::optional<V
   return c;
 }
 
-Projector::Projector(const Camera& c) : perspective_(c.perspective) {
-  V3 toward_viewer = c.perspective ? unit(d3(c.eye - c.target)) : unit(d3(c.direction));
+std::array<double, 3> DrawingFrame::to_frame(const Point3& p) const {
+  if (identity) {
+    // The certified bounds carried by the point are at most one double apart: their midpoint
+    // is within one unit in the last place, plenty for drawing and for the widened filters.
+    auto mid = [&](int k) { return p.approx(k).lo + (p.approx(k).hi - p.approx(k).lo) / 2; };
+    return {mid(0), mid(1), mid(2)};
+  }
+  return {to_double((p.x() - centre.x()) * scale), to_double((p.y() - centre.y()) * scale),
+          to_double((p.z() - centre.z()) * scale)};
+}
+
+DrawingFrame drawing_frame(std::size_t n, const std::function<const Point3&(std::size_t)>& point) {
+  DrawingFrame f;
+  if (n == 0) return f;
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, big = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point3& p = point(i);
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], p.approx(k).lo);
+      hi[k] = std::max(hi[k], p.approx(k).hi);
+      big = std::max({big, std::fabs(p.approx(k).lo), std::fabs(p.approx(k).hi)});
+    }
+  }
+  double ext = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  if (std::isfinite(big) && big < 0x1p100 && ext > 0x1p-100 && ext >= big * 0x1p-30) return f;
+  // The exact bounding box.
+  Rational L[3], H[3];
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point3& p = point(i);
+    for (int k = 0; k < 3; ++k) {
+      if (i == 0 || p[k] < L[k]) L[k] = p[k];
+      if (i == 0 || p[k] > H[k]) H[k] = p[k];
+    }
+  }
+  Rational side = 0;
+  for (int k = 0; k < 3; ++k) side = std::max(side, Rational(H[k] - L[k]));
+  if (side == 0) return f;  // a single point: nothing to scale
+  f.identity = false;
+  f.centre = Point3((L[0] + H[0]) / 2, (L[1] + H[1]) / 2, (L[2] + H[2]) / 2);
+  f.scale = 1 / side;
+  return f;
+}
+
+Projector::Projector(const Camera& c, DrawingFrame frame) : perspective_(c.perspective), frame_(std::move(frame)) {
+  V3 toward_viewer = c.perspective ? unit(d3_direction(c.eye - c.target)) : unit(d3_direction(c.direction));
   forward_ = {-toward_viewer[0], -toward_viewer[1], -toward_viewer[2]};
-  V3 up = d3(c.up);
+  V3 up = d3_direction(c.up);
   right_ = unit(cross3(up, toward_viewer));
   up_ = cross3(toward_viewer, right_);
-  eye_ = perspective_ ? V3{to_double(c.eye.x()), to_double(c.eye.y()), to_double(c.eye.z())} : V3{0, 0, 0};
+  eye_ = perspective_ ? (frame_.identity ? V3{to_double(c.eye.x()), to_double(c.eye.y()), to_double(c.eye.z())}
+                                         : frame_.to_frame(c.eye))
+                      : V3{0, 0, 0};
 }
 
 std::array<double, 3> Projector::project(double x, double y, double z) const {
@@ -89,10 +159,8 @@ std::array<double, 3> Projector::project(double x, double y, double z) const {
 }
 
 std::array<double, 3> Projector::project(const Point3& p) const {
-  // The certified bounds carried by the point are at most one double apart: their midpoint is
-  // within one unit in the last place, plenty for drawing and for the widened pre-filter.
-  auto mid = [&](int k) { return p.approx(k).lo + (p.approx(k).hi - p.approx(k).lo) / 2; };
-  return project(mid(0), mid(1), mid(2));
+  auto q = frame_.to_frame(p);
+  return project(q[0], q[1], q[2]);
 }
 
 }  // namespace hlr

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
 
 #include "kernel/predicates.hpp"
@@ -28,17 +29,38 @@ struct Camera {
   Rational depth(const Point3& p) const;
 };
 
+/// Where drawing doubles are taken: the identity for ordinary scenes, else the exact similarity
+/// p -> (p - centre)·scale that brings the scene to unit size (coordinates like 1e300 or
+/// 1e-400, or a tiny scene far from the origin, which doubles cannot hold). A picture does not
+/// change under a similarity, so the drawing is the same; visibility never uses doubles.
+struct DrawingFrame {
+  bool identity = true;
+  Point3 centre;
+  Rational scale = 1;
+  /// Doubles of the point in this frame (identity: the midpoint of its certified bounds).
+  std::array<double, 3> to_frame(const Point3& p) const;
+};
+
+/// The frame for `n` points (point(i), i < n): identity unless their doubles would lose them
+/// (largest coordinate above 2^100, extent below 2^-100 or below 2^-30 of the largest
+/// coordinate; the screen boxes of the filters are floats); then the exact bounding box's centre and 1 / its largest side.
+DrawingFrame drawing_frame(std::size_t n, const std::function<const Point3&(std::size_t)>& point);
+
 /// Drawing coordinates: screen x to the right, y up, and a depth that grows away from the
-/// viewer (orthographic: -P·v̂; perspective: distance along the viewing axis).
+/// viewer (orthographic: -P·v̂; perspective: distance along the viewing axis). Directions are
+/// scaled exactly by a power of two before they become doubles, so any exact input works.
 struct Projector {
-  explicit Projector(const Camera& c);
+  explicit Projector(const Camera& c, DrawingFrame frame = {});
   /// Screen (x, y) and depth of a point, in doubles. For perspective points at depth <= 0
   /// the screen coordinates are meaningless (the caller clips those first).
   std::array<double, 3> project(const Point3& p) const;
+  /// The same for a point given in frame coordinates (DrawingFrame::to_frame).
   std::array<double, 3> project(double x, double y, double z) const;
+  const DrawingFrame& frame() const { return frame_; }
 
  private:
   bool perspective_;
+  DrawingFrame frame_;
   std::array<double, 3> right_, up_, forward_, eye_;
 };
 

@@ -12,10 +12,8 @@ namespace {
 // visibility of the piece is already decided exactly).
 bool piece_line(const Segment& s, const Piece& p, const Projector& proj, bool perspective, double near,
                 std::array<double, 4>& out) {
-  // Drawing only: the ends in doubles from the certified bounds and t rounded.
-  auto mid = [](const Point3& q, int k) { return q.approx(k).lo + (q.approx(k).hi - q.approx(k).lo) / 2; };
-  std::array<double, 3> F, T, A, B;
-  for (int k = 0; k < 3; ++k) F[k] = mid(s.from(), k), T[k] = mid(s.to(), k);
+  // Drawing only: the ends in doubles (in the projector's frame) and t rounded.
+  std::array<double, 3> F = proj.frame().to_frame(s.from()), T = proj.frame().to_frame(s.to()), A, B;
   auto at = [&](const Rational& t, std::array<double, 3>& o) {
     if (t == 0) o = F;
     else if (t == 1) o = T;
@@ -44,7 +42,10 @@ bool piece_line(const Segment& s, const Piece& p, const Projector& proj, bool pe
 }  // namespace
 
 Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Project2DOptions& opt) {
-  Projector proj(camera);
+  const auto& segs = r.segments;
+  Projector proj(camera, drawing_frame(2 * segs.size(), [&](std::size_t i) -> const Point3& {
+                   return i % 2 ? segs[i / 2].to() : segs[i / 2].from();
+                 }));
   double near = 0;
   if (camera.perspective) {
     double far = 0;

@@ -9,12 +9,23 @@
 #include "algorithms/facing.hpp"
 
 namespace hlr::face_route {
+namespace {
+
+// All vertices of all bodies, for the drawing frame of the filters' projections.
+DrawingFrame frame_of(const std::vector<const Polyhedron*>& bodies) {
+  std::vector<const Point3*> pts;
+  for (const Polyhedron* p : bodies)
+    for (const Point3& v : p->vertices()) pts.push_back(&v);
+  return drawing_frame(pts.size(), [&](std::size_t i) -> const Point3& { return *pts[i]; });
+}
+
+}  // namespace
 
 template <class P>
 Engine<P>::Engine(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const LineOptions& opt,
                   std::vector<Vec<P>> pts, Vec<P> view, Rational scale)
     : bodies_(bodies), cam_(cam), opt_(opt), X_(std::move(pts)), view_(std::move(view)), scale_(std::move(scale)),
-      proj_(cam), crease_(opt.crease_degrees) {}
+      proj_(cam, frame_of(bodies)), crease_(opt.crease_degrees) {}
 
 template <class P>
 LineDrawing Engine<P>::run() {

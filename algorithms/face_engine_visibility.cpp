@@ -123,12 +123,12 @@ void Engine<P>::test_integer(const Occluder<P>& o, const Vec<P>& X0, const Vec<P
     // the edge) are written canonically, so they compare as identical without arithmetic.
     if (s0 > 0) {  // upper bound t < f0 / (f0 - f1)
       V d = f0 - f1;
-      Frac<P> r = s1 == 0 ? Frac<P>{V(1), V(1), 1.0} : Frac<P>{f0, d, P::dbl(f0) / P::dbl(d)};
+      Frac<P> r = s1 == 0 ? Frac<P>{V(1), V(1), 1.0} : Frac<P>{f0, d, P::ratio(f0, d)};
       if (!has_hi || compare(r, hi, wk.c) < 0) hi = r, has_hi = true;
     } else {  // lower bound t > -f0 / (f1 - f0)
       V d = f1 - f0;
       V nn = -f0;
-      Frac<P> r = s0 == 0 ? Frac<P>{V(0), V(1), 0.0} : Frac<P>{nn, d, P::dbl(nn) / P::dbl(d)};
+      Frac<P> r = s0 == 0 ? Frac<P>{V(0), V(1), 0.0} : Frac<P>{nn, d, P::ratio(nn, d)};
       if (!has_lo || compare(r, lo, wk.c) > 0) lo = r, has_lo = true;
     }
   }

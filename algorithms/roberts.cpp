@@ -344,7 +344,10 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
   }
   std::vector<FastBody> fast;
   for (const BodyMatrix& bm : res.matrices) fast.push_back(prepare_fast_body(bm.V, g));
-  Projector proj(camera);
+  std::vector<const Point3*> all;
+  for (const Polyhedron* p : bodies)
+    for (const Point3& v : p->vertices()) all.push_back(&v);
+  Projector proj(camera, drawing_frame(all.size(), [&](std::size_t i) -> const Point3& { return *all[i]; }));
   PreFilter pre;
   pre.build(bodies, proj, camera);
 

@@ -14,6 +14,7 @@
 // values; two of them are ordered by comparing products of 128-bit values in 256 bits.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -36,13 +37,15 @@ inline constexpr Int128 kWideCoordinateLimit = static_cast<Int128>(1) << kWideCo
 inline constexpr int kDenominatorBits = 62;
 
 /// The split-parameter filter: a fraction n/d of two exact integers is approximated by
-/// fl(fl(n)/fl(d)); each rounding is within 2^-53 relative, so the approximation is within
-/// 3·2^-53 < 3.4e-16 relative of n/d. Two approximations x, y decide the order of their
+/// fl(fl(n)/fl(d)) (or, for GMP integers, from their mantissas and exponents: Big::ratio);
+/// each rounding is within 2^-53 relative, so the approximation is within 4·2^-53 < 4.5e-16
+/// relative of n/d. Two approximations x, y decide the order of their
 /// fractions when |x - y| > kSplitFilter·(|x| + |y|): the exact difference then has the same
-/// sign, since the two errors together are below 3.4e-16·(|x| + |y|)·(1 + 1e-15).
+/// sign, since the two errors together are below 4.5e-16·(|x| + |y|)·(1 + 1e-15).
 inline constexpr double kSplitFilter = 1e-12;
-/// The smallest gap the filter decides on (both values near zero: the relative bound above
-/// covers them, this only avoids comparing two zeros by the filter).
+/// The smallest gap the filter decides on: below it (values that underflowed to subnormals or
+/// zero, whose absolute error is below 2^-1022) the exact comparison decides. Infinite values
+/// (a ratio beyond the double range) are never decided by the filter either.
 inline constexpr double kSplitFilterFloor = 1e-300;
 
 /// Screen-space boxes of projected geometry (grid and depth pruning): the double projection of
@@ -68,6 +71,8 @@ struct Fast {
   static V mul(C a, C b) { return static_cast<V>(a) * b; }
   static int sign(const V& v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
   static double dbl(const V& v) { return static_cast<double>(v); }
+  /// n/d for the split-parameter filter: both below 2^127, finite doubles, 3 roundings.
+  static double ratio(const V& n, const V& d) { return dbl(n) / dbl(d); }
   static int compare(const V& a, const V& b, const V& c, const V& d) { return compare_products(a, b, c, d); }
   static mpz_class z(const V& v) { return to_mpz(v); }
   static mpz_class zc(C v) { return mpz_class(static_cast<long>(v)); }
@@ -81,6 +86,7 @@ struct Fast40 {
   static V mul(C a, C b) { return a * b; }
   static int sign(const V& v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
   static double dbl(const V& v) { return static_cast<double>(v); }
+  static double ratio(const V& n, const V& d) { return dbl(n) / dbl(d); }
   static int compare(const V& a, const V& b, const V& c, const V& d) { return compare_products(a, b, c, d); }
   static mpz_class z(const V& v) { return to_mpz(v); }
   static mpz_class zc(C v) { return to_mpz(v); }
@@ -93,6 +99,17 @@ struct Big {
   static V mul(const C& a, const C& b) { return a * b; }
   static int sign(const V& v) { return sgn(v); }
   static double dbl(const V& v) { return v.get_d(); }
+  /// n/d for the filter without overflow: GMP integers reach far beyond the doubles (a
+  /// coordinate with a 150-digit denominator gives plane values of 450 digits), so the two
+  /// are taken as mantissa·2^exponent and divided, then scaled back (mpz_get_d_2exp truncates:
+  /// each mantissa within 2^-52 relative; with the division and ldexp the ratio stays within
+  /// 4·2^-53 < 4.5e-16 relative, inside the filter's bound). Ratios beyond the double range
+  /// become 0 or inf, which the filter's floor and its NaN test leave to the exact comparison.
+  static double ratio(const V& n, const V& d) {
+    long en = 0, ed = 0;
+    double mn = mpz_get_d_2exp(&en, n.get_mpz_t()), md = mpz_get_d_2exp(&ed, d.get_mpz_t());
+    return std::ldexp(mn / md, static_cast<int>(std::clamp<long>(en - ed, -2000, 2000)));
+  }
   static int compare(const V& a, const V& b, const V& c, const V& d) {
     mpz_class l = a * b, r = c * d;
     return cmp(l, r) < 0 ? -1 : (cmp(l, r) > 0 ? 1 : 0);
@@ -145,7 +162,8 @@ int compare(const Frac<P>& a, const Frac<P>& b, ComparisonCounters& c) {
     return 0;
   }
   double diff = a.x - b.x, scale = std::fabs(a.x) + std::fabs(b.x);
-  if (std::fabs(diff) > bounds::kSplitFilter * scale + bounds::kSplitFilterFloor) return diff < 0 ? -1 : 1;
+  if (std::isfinite(scale) && std::fabs(diff) > bounds::kSplitFilter * scale + bounds::kSplitFilterFloor)
+    return diff < 0 ? -1 : 1;
   ++c.exact;
   return P::compare(a.n, b.d, b.n, a.d);
 }
