@@ -54,6 +54,11 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
     near = 1e-4 * std::max(far, 1e-300);
   }
   Drawing2D d;
+  std::size_t pieces = 0;
+  for (const Segment& s : r.segments) pieces += s.pieces.size();
+  d.lines.reserve(pieces);
+  d.points.reserve(2 * pieces);
+  d.sources.reserve(pieces);
   for (std::size_t si = 0; si < r.segments.size(); ++si) {
     const Segment& s = r.segments[si];
     for (std::size_t pi = 0; pi < s.pieces.size(); ++pi) {
@@ -62,14 +67,18 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
       std::array<double, 4> l;
       if (!piece_line(s, p, proj, camera.perspective, near, l)) continue;
       Polyline2D pl;
-      pl.points = {{l[0], l[1]}, {l[2], l[3]}};
+      pl.first = static_cast<std::uint32_t>(d.points.size());
+      pl.count = 2;
+      pl.first_edge = static_cast<std::uint32_t>(d.sources.size());
       pl.kind = s.line;
       pl.visible = p.visible;
       pl.intersection = s.kind == Segment::Kind::Intersection;
       pl.body = s.body;
       pl.body2 = s.body2;
-      pl.source = {PieceRef{static_cast<int>(si), static_cast<int>(pi)}};
-      d.lines.push_back(std::move(pl));
+      d.points.push_back({l[0], l[1]});
+      d.points.push_back({l[2], l[3]});
+      d.sources.push_back(PieceRef{static_cast<int>(si), static_cast<int>(pi)});
+      d.lines.push_back(pl);
     }
   }
   return d;
@@ -78,13 +87,12 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
 bool drawing_bounds(const Drawing2D& d, double& x0, double& y0, double& x1, double& y1) {
   x0 = y0 = std::numeric_limits<double>::infinity();
   x1 = y1 = -x0;
-  for (const Polyline2D& l : d.lines)
-    for (const auto& p : l.points) {
-      x0 = std::min(x0, p[0]);
-      x1 = std::max(x1, p[0]);
-      y0 = std::min(y0, p[1]);
-      y1 = std::max(y1, p[1]);
-    }
+  for (const auto& p : d.points) {
+    x0 = std::min(x0, p[0]);
+    x1 = std::max(x1, p[0]);
+    y0 = std::min(y0, p[1]);
+    y1 = std::max(y1, p[1]);
+  }
   return x1 >= x0;
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "algorithms/camera.hpp"
@@ -19,17 +20,22 @@ struct PieceRef {
   int segment = -1, piece = -1;
 };
 
+/// A polyline: points [first, first + count) of Drawing2D::points, its edges coming from the
+/// pieces [first_edge, first_edge + count - 1) of Drawing2D::sources. Flat storage: a million
+/// pieces cost no allocation each.
 struct Polyline2D {
-  std::vector<std::array<double, 2>> points;  // x to the right, y up, scene units
+  std::uint32_t first = 0, count = 0, first_edge = 0;
   LineKind kind = LineKind::Edge;
   bool visible = true;
-  bool intersection = false;                  // an intersection line of bodies `body` and `body2`
+  bool intersection = false;  // an intersection line of bodies `body` and `body2`
   int body = -1, body2 = -1;
-  std::vector<PieceRef> source;               // one per edge of the polyline (points - 1)
 };
 
 struct Drawing2D {
-  std::vector<Polyline2D> lines;  // in order of segment, then piece
+  std::vector<Polyline2D> lines;               // in order of segment, then piece
+  std::vector<std::array<double, 2>> points;   // x to the right, y up, scene units (frame)
+  std::vector<PieceRef> sources;               // per polyline edge
+  const std::array<double, 2>& point(const Polyline2D& l, std::uint32_t k) const { return points[l.first + k]; }
 };
 
 struct Project2DOptions {

@@ -94,21 +94,24 @@ int Engine<P>::triangulate_body(int b) {
   const int first_tri = static_cast<int>(tris_.size());
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const Face& face = faces[f];
-    FaceTriangles ft = face_triangles(p, static_cast<int>(f));
-    if (ft.status == FaceTriangles::Status::Degenerate) {
-      degenerate_[b][f] = 1;  // zero area: neither occludes nor faces
-      continue;
-    }
-    if (ft.status != FaceTriangles::Status::Ok) throw BodyError(b, "has " + ft.problem(static_cast<int>(f)));
+    static const std::vector<FaceTriangle> kTriangle = {{{0, 1, 2}, {true, true, true}}};
+    FaceTriangles ft;  // triangles need no triangulation (nor an allocation each)
     if (face.size() == 3) {
       Tri probe{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}};
       Vec<P> n = normal(probe);
       if (P::sign(n[0]) == 0 && P::sign(n[1]) == 0 && P::sign(n[2]) == 0) {
+        degenerate_[b][f] = 1;  // zero area: neither occludes nor faces
+        continue;
+      }
+    } else {
+      ft = face_triangles(p, static_cast<int>(f));
+      if (ft.status == FaceTriangles::Status::Degenerate) {
         degenerate_[b][f] = 1;
         continue;
       }
+      if (ft.status != FaceTriangles::Status::Ok) throw BodyError(b, "has " + ft.problem(static_cast<int>(f)));
     }
-    for (const FaceTriangle& t : ft.triangles) {
+    for (const FaceTriangle& t : face.size() == 3 ? kTriangle : ft.triangles) {
       Tri tri{b, static_cast<int>(f), {vo + face[t.v[0]], vo + face[t.v[1]], vo + face[t.v[2]]}, t.edge};
       for (int k = 0; k < 3; ++k)
         if (t.edge[k]) topo.slot_third[fo[f] + t.v[k]] = tri.v[(k + 2) % 3];  // side k's opposite vertex

@@ -47,7 +47,8 @@ std::string to_svg(const std::vector<DrawingBody>& bodies, const Drawing2D& d, c
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
   for (const Polyline2D& l : d.lines) {
     if (!l.visible && !opt.hidden_dashed) continue;
-    for (const auto& p : l.points) {
+    for (std::uint32_t k = 0; k < l.count; ++k) {
+      const auto& p = d.point(l, k);
       x0 = std::min(x0, p[0]);
       x1 = std::max(x1, p[0]);
       y0 = std::min(y0, p[1]);
@@ -99,9 +100,10 @@ std::string to_svg(const std::vector<DrawingBody>& bodies, const Drawing2D& d, c
       std::string name = b >= 0 && b < static_cast<int>(bodies.size()) ? " data-name=\"" + escape(bodies[b].name) + "\"" : "";
       out += "    <g id=\"" + gid + "\"" + name + ">\n";
       for (const Polyline2D* l : lines)
-        for (std::size_t k = 0; k + 1 < l->points.size(); ++k)
-          out += "      <line x1=\"" + X(l->points[k][0]) + "\" y1=\"" + Y(l->points[k][1]) + "\" x2=\"" + X(l->points[k + 1][0]) +
-                 "\" y2=\"" + Y(l->points[k + 1][1]) + "\"/>\n";
+        for (std::uint32_t k = 0; k + 1 < l->count; ++k) {
+          const auto &a = d.point(*l, k), &b = d.point(*l, k + 1);
+          out += "      <line x1=\"" + X(a[0]) + "\" y1=\"" + Y(a[1]) + "\" x2=\"" + X(b[0]) + "\" y2=\"" + Y(b[1]) + "\"/>\n";
+        }
       out += "    </g>\n";
     }
     if (open_kind >= 0) out += "  </g>\n";
