@@ -1,5 +1,6 @@
 // Exact 3D Cyrus-Beck clipping, course notes section 22 (see cyrus_beck.hpp).
 #include "algorithms/cyrus_beck.hpp"
+#include "kernel/exact_int.hpp"
 
 #include <optional>
 #include <stdexcept>
@@ -17,7 +18,7 @@ ConvexClipper make_clipper(Polyhedron body, std::string name) {
   if (!cv.convex()) throw std::invalid_argument("the clipper '" + name + "' is " + describe(cv) + "; Cyrus-Beck needs a convex clipper");
   BodyMatrix bm = body_matrix(body);
   std::vector<std::array<Int128, 4>> ints;
-  const Int128 limit = static_cast<Int128>(1) << 40;
+  const Int128 limit = bounds::kWideCoordinateLimit;
   for (int j = 0; j < bm.V.cols(); ++j) {
     std::array<Int128, 4> h;
     for (int k = 0; k < 4; ++k) {
@@ -62,7 +63,7 @@ namespace {
 // its ends, W·n·L and D·n·L integers below 2^83, limits compared by 256-bit products.
 std::optional<CyrusBeckResult> cyrus_beck_int128(const ConvexClipper& c, const Point3& p1, const Point3& p2) {
   if (c.int_planes.empty()) return std::nullopt;
-  const Int128 limit = static_cast<Int128>(1) << 40;
+  const Int128 limit = bounds::kWideCoordinateLimit;
   const Rational* qs[6] = {&p1.x(), &p1.y(), &p1.z(), &p2.x(), &p2.y(), &p2.z()};
   std::uint64_t L;
   if (!common_denominator(qs, 6, static_cast<std::uint64_t>(limit), L)) return std::nullopt;

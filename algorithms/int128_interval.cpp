@@ -1,5 +1,6 @@
 // Exact 128-bit integer path for Roberts' hidden interval (see int128_interval.hpp).
 #include "algorithms/int128_interval.hpp"
+#include "kernel/exact_int.hpp"
 
 #include <cstdint>
 
@@ -8,7 +9,7 @@ namespace {
 
 using i128 = Int128;
 
-constexpr i128 kInputLimit = static_cast<i128>(1) << 40;  // plane coefficients, scaled coordinates
+constexpr i128 kInputLimit = bounds::kWideCoordinateLimit;  // plane coefficients, scaled coordinates
 constexpr i128 kValueLimit = static_cast<i128>(1) << 62;  // p, q, w
 
 // Rational -> integer if it is one and small.
@@ -19,12 +20,12 @@ bool small_integer(const Rational& q, i128& out) {
 }
 
 // A fraction n/d with d > 0.
-struct Frac {
+struct Ratio128 {
   i128 n, d;
 };
-int cmp(const Frac& x, const Frac& y) { return compare_products(x.n, y.d, y.n, x.d); }
+int cmp(const Ratio128& x, const Ratio128& y) { return compare_products(x.n, y.d, y.n, x.d); }
 
-Rational to_rational(const Frac& f) {
+Rational to_rational(const Ratio128& f) {
   Rational q(to_mpz(f.n), to_mpz(f.d));
   q.canonicalize();
   return q;
@@ -74,11 +75,11 @@ std::optional<OpenInterval> fast_hidden_interval(const Point3& p1, const Point3&
     q[j] = h[0] * B[0] + h[1] * B[1] + h[2] * B[2];
     if (abs128(p[j]) >= kValueLimit || abs128(q[j]) >= kValueLimit) return std::nullopt;
   }
-  std::optional<Frac> lo, hi;
+  std::optional<Ratio128> lo, hi;
   OpenInterval r;
   auto add = [&](i128 alpha, i128 beta) -> bool {
     if (beta == 0) return alpha > 0;
-    Frac t = beta > 0 ? Frac{-alpha, beta} : Frac{alpha, -beta};
+    Ratio128 t = beta > 0 ? Ratio128{-alpha, beta} : Ratio128{alpha, -beta};
     if (beta > 0) {
       if (!lo || cmp(t, *lo) > 0) lo = t;
     } else {

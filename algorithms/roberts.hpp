@@ -3,7 +3,7 @@
 // (E·[V] < 0, zero: edge-on) and self-hidden edges (both faces non-facing). Stage 2: every
 // other edge against every other body: the hidden parameter interval from the inequalities
 // h_j = p_j + q_j·t + w_j·a > 0, a > 0, solved exactly by eliminating a (Fourier-Motzkin), so
-// the interval ends are exact rationals. Stage 3: junction lines where two bodies' surfaces
+// the interval ends are exact rationals. Stage 3: intersection lines where two bodies' surfaces
 // cross, tested against all bodies like edges.
 //
 // Semantics (course notes, "Visibility semantics"): a point is hidden when its open sight ray

@@ -1,5 +1,6 @@
 // Exact constructions on points, vectors and planes (see geometry.hpp).
 #include "kernel/geometry.hpp"
+#include "kernel/exact_int.hpp"
 
 #include <cmath>
 
@@ -109,7 +110,7 @@ namespace {
 
 // The fast path of primitive_plane_of_polygon; nullopt when a bound would be exceeded.
 std::optional<Plane> primitive_plane_int128(const Point3* const* v, std::size_t n) {
-  constexpr Int128 kLimit = static_cast<Int128>(1) << 40;
+  constexpr Int128 kLimit = bounds::kWideCoordinateLimit;
   if (n > 1024) return std::nullopt;
   std::vector<const Rational*> qs;
   qs.reserve(3 * n);

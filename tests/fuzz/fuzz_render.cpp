@@ -1,0 +1,84 @@
+// libFuzzer target for the render pipeline (issue 12): bytes become a small scene of boxes
+// (coordinates in eighths, some thin, touching or interpenetrating) and a view (orthographic
+// along small integer directions, or perspective from an eye anywhere outside the bodies,
+// possibly on a face plane or on a surface); both hidden-line routes run and must agree on
+// every piece of every edge. A disagreement aborts (a finding). Exact throughout.
+#include <cstdint>
+#include <cstdlib>
+#include <map>
+#include <tuple>
+
+#include "algorithms/face_occluders.hpp"
+#include "algorithms/roberts.hpp"
+
+using namespace hlr;
+
+namespace {
+
+struct Bytes {
+  const std::uint8_t* p;
+  std::size_t n, i = 0;
+  int next() { return i < n ? p[i++] : 0; }
+  Rational eighths(int lo, int span) {  // lo + (0..span) in eighths
+    Rational r(lo * 8 + next() % (span * 8 + 1), 8);
+    r.canonicalize();
+    return r;
+  }
+};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size < 8) return 0;
+  Bytes b{data, size};
+  const int nbodies = 1 + b.next() % 4;
+  std::vector<Polyhedron> bodies;
+  for (int k = 0; k < nbodies; ++k) {
+    Rational lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = b.eighths(0, 6);
+      hi[a] = lo[a] + b.eighths(0, 3) + Rational(1, 8);
+    }
+    bodies.push_back(make_box(Point3(lo[0], lo[1], lo[2]), Point3(hi[0], hi[1], hi[2])));
+  }
+  Camera cam;
+  try {
+    if (b.next() % 2) {
+      int d[3];
+      for (int& x : d) x = b.next() % 5 - 2;
+      if (!d[0] && !d[1] && !d[2]) d[2] = 1;
+      cam = make_orthographic(Vector3(d[0], d[1], d[2]));
+    } else {
+      Point3 eye(b.eighths(-2, 12), b.eighths(-2, 12), b.eighths(-2, 12));
+      Point3 target(b.eighths(0, 8), b.eighths(0, 8), b.eighths(0, 8));
+      cam = make_perspective(eye, target);
+    }
+  } catch (const std::invalid_argument&) {
+    return 0;
+  }
+  std::vector<const Polyhedron*> ptrs;
+  for (const Polyhedron& p : bodies) ptrs.push_back(&p);
+  LineOptions o;
+  o.edges = EdgeSelection::All;
+  o.intersections = false;
+  LineDrawing f;
+  RobertsResult r;
+  try {
+    r = roberts(ptrs, cam, o);
+  } catch (const BodyError&) {
+    return 0;  // the eye inside a box
+  }
+  f = face_occluders(ptrs, cam, o);  // must take whatever Roberts takes
+  std::map<std::tuple<int, int, int>, const Segment*> by_edge;
+  for (const Segment& s : f.segments) by_edge[{s.body, s.v0, s.v1}] = &s;
+  for (const Segment& s : r.segments) {
+    auto it = by_edge.find({s.body, s.v0, s.v1});
+    if (it == by_edge.end()) std::abort();
+    const Segment& g = *it->second;
+    if (g.pieces.size() != s.pieces.size()) std::abort();
+    for (std::size_t i = 0; i < s.pieces.size(); ++i)
+      if (!(g.pieces[i].t0 == s.pieces[i].t0) || !(g.pieces[i].t1 == s.pieces[i].t1) || g.pieces[i].visible != s.pieces[i].visible)
+        std::abort();
+  }
+  return 0;
+}
