@@ -10,21 +10,27 @@ HLR="$(realpath "$1")" D="$(realpath "$2")" M="$(realpath "$3")" G="$(realpath "
 UPDATE="${5:-}"
 OUT="$(mktemp -d)"
 trap 'rm -rf "$OUT"' EXIT
+# The JSON names each body's source file: run on copies under fixed relative paths, so that the
+# output does not depend on where the checkout or the build lives.
+mkdir -p "$OUT/in/data" "$OUT/in/meshes"
+cp "$D"/*.yaml "$D"/*.off "$D"/*.obj "$OUT/in/data/"
+cp "$M/fandisk.off" "$M/couplingdown.off" "$M/cross.off" "$OUT/in/meshes/"
+cd "$OUT/in"
 run() {  # name, args...
   local name="$1"
   shift
   "$HLR" render "$@" -o "$OUT/$name" 2> "$OUT/$name.stderr"
 }
-run demo.svg "$D/demo.yaml" --hidden dashed
-run demo.json "$D/demo.yaml"
-run demo_roberts.json "$D/demo.yaml" --method roberts --view 1,1.3,1.7
-run demo_perspective.svg "$D/demo.yaml" --eye 9,-7,6 --hidden dashed
-run fandisk.svg "$M/fandisk.off" --view 1,1.3,1.7 --hidden dashed
-run fandisk.json "$M/fandisk.off" --view 1,1.3,1.7 --crease 40
-run couplingdown_all.json "$M/couplingdown.off" --view 0,0,1 --edges all
-run couplingdown_perspective.svg "$M/couplingdown.off" --eye 3,4,5 --hidden dashed
-run cross_roberts.json "$M/cross.off" --method roberts --view 1,2,3
-run cross_faces.json "$M/cross.off" --view 1,2,3
+run demo.svg data/demo.yaml --hidden dashed
+run demo.json data/demo.yaml
+run demo_roberts.json data/demo.yaml --method roberts --view 1,1.3,1.7
+run demo_perspective.svg data/demo.yaml --eye 9,-7,6 --hidden dashed
+run fandisk.svg meshes/fandisk.off --view 1,1.3,1.7 --hidden dashed
+run fandisk.json meshes/fandisk.off --view 1,1.3,1.7 --crease 40
+run couplingdown_all.json meshes/couplingdown.off --view 0,0,1 --edges all
+run couplingdown_perspective.svg meshes/couplingdown.off --eye 3,4,5 --hidden dashed
+run cross_roberts.json meshes/cross.off --method roberts --view 1,2,3
+run cross_faces.json meshes/cross.off --view 1,2,3
 cd "$OUT"
 if [ "$UPDATE" = --update ]; then
   mkdir -p "$G"
