@@ -4,6 +4,7 @@
 // possibly on a face plane or on a surface); both hidden-line routes run and must agree on
 // every piece of every edge. A disagreement aborts (a finding). Exact throughout.
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <tuple>
@@ -69,16 +70,35 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;  // the eye inside a box
   }
   f = face_occluders(ptrs, cam, o);  // must take whatever Roberts takes
+  // A finding: say what it is (the scene, the view, the edge, both routes' pieces), then abort.
+  auto finding = [&](const Segment& s, const Segment* g) {
+    std::fprintf(stderr, "fuzz_render: the routes differ\n");
+    for (const Polyhedron& p : bodies)
+      std::fprintf(stderr, "  box %s - %s\n", to_string(p.vertices()[0]).c_str(), to_string(p.vertices()[7]).c_str());
+    if (cam.perspective)
+      std::fprintf(stderr, "  eye %s target %s\n", to_string(cam.eye).c_str(), to_string(cam.target).c_str());
+    else
+      std::fprintf(stderr, "  view %s\n", to_string(cam.direction).c_str());
+    std::fprintf(stderr, "  edge %s - %s of body %d\n", to_string(s.from()).c_str(), to_string(s.to()).c_str(), s.body);
+    for (const Piece& p : s.pieces)
+      std::fprintf(stderr, "  roberts %s..%s %s\n", to_string(p.t0).c_str(), to_string(p.t1).c_str(), p.visible ? "visible" : "hidden");
+    if (g)
+      for (const Piece& p : g->pieces)
+        std::fprintf(stderr, "  faces   %s..%s %s\n", to_string(p.t0).c_str(), to_string(p.t1).c_str(), p.visible ? "visible" : "hidden");
+    std::abort();
+  };
   std::map<std::tuple<int, int, int>, const Segment*> by_edge;
-  for (const Segment& s : f.segments) by_edge[{s.body, s.v0, s.v1}] = &s;
+  for (const Segment& s : f.segments)
+    if (s.kind == Segment::Kind::Edge) by_edge[{s.body, s.v0, s.v1}] = &s;
   for (const Segment& s : r.segments) {
+    if (s.kind != Segment::Kind::Edge) continue;  // Roberts always adds intersection lines
     auto it = by_edge.find({s.body, s.v0, s.v1});
-    if (it == by_edge.end()) std::abort();
+    if (it == by_edge.end()) finding(s, nullptr);
     const Segment& g = *it->second;
-    if (g.pieces.size() != s.pieces.size()) std::abort();
+    if (g.pieces.size() != s.pieces.size()) finding(s, &g);
     for (std::size_t i = 0; i < s.pieces.size(); ++i)
       if (!(g.pieces[i].t0 == s.pieces[i].t0) || !(g.pieces[i].t1 == s.pieces[i].t1) || g.pieces[i].visible != s.pieces[i].visible)
-        std::abort();
+        finding(s, &g);
   }
   return 0;
 }
