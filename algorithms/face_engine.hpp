@@ -95,6 +95,7 @@ class Engine {
   void candidates(const std::array<double, 3>& a, const std::array<double, 3>& b, bool front, Work& wk) const;
   void solve(Segment& s, const std::array<int, 2>& gv, Work& wk) const;
   void test_integer(const Occluder<P>& o, const Vec<P>& X0, const Vec<P>& X1, Work& wk) const;
+  bool end_on_hides(const Occluder<P>& o, int on_side) const;
   void merge(Work& wk, std::vector<std::pair<Rational, Rational>>& out) const;
   void test_rational(const Occluder<P>& o, const std::array<Rational, 3>& A, const std::array<Rational, 3>& B,
                      std::vector<std::pair<Rational, Rational>>& out, Work& wk) const;

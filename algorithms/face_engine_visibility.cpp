@@ -19,6 +19,17 @@ struct Engine<P>::Work {
   std::vector<std::pair<Frac<P>, Frac<P>>> spans;
 };
 
+// A segment lying in two side planes of an occluder runs along the sight line through their
+// common vertex (an edge seen end-on): hidden only where the ray just behind that vertex is
+// inside (vertex_rules). `on_side`: bit k set when the segment lies in closed side plane k.
+template <class P>
+bool Engine<P>::end_on_hides(const Occluder<P>& o, int on_side) const {
+  if (on_side == 6) return vertex_closed_[o.v[1]];
+  if (on_side == 12) return vertex_closed_[o.v[2]];
+  if (on_side == 10) return vertex_closed_[o.v[0]];
+  return true;
+}
+
 template <class P>
 void Engine<P>::visibility(LineDrawing& res) {
   const std::size_t n = res.segments.size();
@@ -134,9 +145,7 @@ void Engine<P>::test_integer(const Occluder<P>& o, const Vec<P>& X0, const Vec<P
   }
   // In two side planes: the segment runs along the sight line through their common vertex
   // (an edge seen end-on); hidden only where the ray just behind that vertex is inside.
-  if (on_side == 6 && !vertex_closed_[o.v[1]]) return;
-  if (on_side == 12 && !vertex_closed_[o.v[2]]) return;
-  if (on_side == 10 && !vertex_closed_[o.v[0]]) return;
+  if (!end_on_hides(o, on_side)) return;
   if (has_lo && has_hi && compare(lo, hi, wk.c) >= 0) return;
   wk.spans.push_back({lo, hi});
 }
@@ -189,9 +198,7 @@ void Engine<P>::test_rational(const Occluder<P>& o, const std::array<Rational, 3
     if (s0 > 0) hi = std::min(hi, t);
     else lo = std::max(lo, t);
   }
-  if (on_side == 6 && !vertex_closed_[o.v[1]]) return;
-  if (on_side == 12 && !vertex_closed_[o.v[2]]) return;
-  if (on_side == 10 && !vertex_closed_[o.v[0]]) return;
+  if (!end_on_hides(o, on_side)) return;
   if (lo < hi) out.push_back({lo, hi});
 }
 

@@ -111,4 +111,16 @@ inline void sample_check(const LineDrawing& r, const std::vector<std::vector<Ora
   }
 }
 
+/// The bodies as pointers for the renderers and as oracle planes, side by side.
+struct OracleScene {
+  std::vector<const Polyhedron*> ptrs;
+  std::vector<std::vector<OraclePlane>> planes;
+  explicit OracleScene(const std::vector<Polyhedron>& bodies) {
+    for (const auto& b : bodies) {
+      ptrs.push_back(&b);
+      planes.push_back(oracle_planes(b));
+    }
+  }
+};
+
 }  // namespace hlr::test

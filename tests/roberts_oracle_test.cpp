@@ -53,12 +53,9 @@ Polyhedron random_hull(std::mt19937& rng, int cx, int cy, int cz) {
 // Roberts' route and the per-face route (issue 4) on the same convex scene: the oracle checks
 // both, and every edge must come out in exactly the same pieces.
 void check_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, EdgeSelection edges, Tally& tally) {
-  std::vector<const Polyhedron*> ptrs;
-  std::vector<std::vector<OraclePlane>> planes;
-  for (const auto& b : bodies) {
-    ptrs.push_back(&b);
-    planes.push_back(oracle_planes(b));
-  }
+  OracleScene scene(bodies);
+  const auto& ptrs = scene.ptrs;
+  const auto& planes = scene.planes;
   LineOptions opt;
   opt.edges = edges;
   RobertsResult r;

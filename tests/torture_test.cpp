@@ -101,12 +101,9 @@ void compare_routes(const LineDrawing& a, const LineDrawing& b, Result& res, con
 }
 
 void run_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, Result& res, const std::string& what) {
-  std::vector<const Polyhedron*> ptrs;
-  std::vector<std::vector<OraclePlane>> planes;
-  for (const auto& b : bodies) {
-    ptrs.push_back(&b);
-    planes.push_back(oracle_planes(b));
-  }
+  OracleScene scene(bodies);
+  const auto& ptrs = scene.ptrs;
+  const auto& planes = scene.planes;
   LineOptions opt;
   opt.edges = EdgeSelection::All;
   opt.intersections = false;  // the oracle samples edges; intersection lines have their own tests
