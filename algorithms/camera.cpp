@@ -70,6 +70,15 @@ RowVector4 Camera::viewpoint() const {
 
 Rational Camera::depth(const Point3& p) const { return dot(p - eye, target - eye); }
 
+std::array<int, 2> Camera::eye_plane_signs(const Point3& a, const Point3& b) const {
+  const Rational da = depth(a), db = depth(b);
+  // (da - db)·(crossing point - E), a positive multiple of the crossing point seen from the eye.
+  const Vector3 w = (da - db) * (a - eye) + da * (b - a);
+  const Vector3 toward_viewer = eye - target;
+  const Vector3 right = cross(up, toward_viewer), screen_up = cross(toward_viewer, right);
+  return {sgn(dot(w, right)), sgn(dot(w, screen_up))};
+}
+
 Sign Camera::in_front(const Point3& p) const {
   if (!perspective) return Sign::Positive;
   return sign_of_dot(p - eye, target - eye);

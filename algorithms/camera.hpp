@@ -27,6 +27,13 @@ struct Camera {
   Sign in_front(const Point3& p) const;
   /// (P - E)·(target - E), exactly (perspective only).
   Rational depth(const Point3& p) const;
+  /// Perspective, `a` strictly in front of the eye and `b` not: the exact signs of the screen x
+  /// and y (Projector's axes) of the point where segment ab meets the plane through the eye,
+  /// taken from the eye. Where such a sign is positive the projection of the part of ab in
+  /// front of the eye is unbounded toward +x (or +y); where no crossing point of a convex
+  /// polygon has a positive sign, its projection is bounded on that side by its front vertices
+  /// (docs/design.md, "Occluders that reach behind the eye").
+  std::array<int, 2> eye_plane_signs(const Point3& a, const Point3& b) const;
 };
 
 /// Where drawing doubles are taken: the identity for ordinary scenes, else the exact similarity

@@ -203,18 +203,27 @@ void clip_pieces(Segment& s, const ConvexClipper& c) {
     keep_only(s, std::nullopt);  // outside, or a single point: drawn as nothing
 }
 
-void clip_near(Segment& s, const Camera& cam, const Rational& k) {
-  if (!cam.perspective) return;
-  Vector3 f = cam.target - cam.eye;
-  Rational threshold = k * dot(f, f);
-  Rational d0 = cam.depth(s.from()) - threshold, d1 = cam.depth(s.to()) - threshold;  // kept where >= 0
-  if (d0 >= 0 && d1 >= 0) return;
-  if (d0 < 0 && d1 < 0) return keep_only(s, std::nullopt);
+Plane near_plane(const Camera& cam, const Rational& k) {
+  // (P - E)·f - k·f·f >= 0 with f = target - eye.
+  const Vector3 f = cam.target - cam.eye;
+  return Plane(f.x(), f.y(), f.z(), -dot(f, cam.eye - Point3()) - k * dot(f, f));
+}
+
+void clip_near(Segment& s, const Plane& near) {
+  const Sign s0 = side_of_plane(near, s.from()), s1 = side_of_plane(near, s.to());
+  if (s0 != Sign::Negative && s1 != Sign::Negative) return;
+  if (s0 == Sign::Negative && s1 == Sign::Negative) return keep_only(s, std::nullopt);
+  const Rational d0 = near.value(s.from()), d1 = near.value(s.to());
   Rational t = d0 / (d0 - d1);
   if (d0 < 0)
     keep_only(s, std::make_pair(t, Rational(1)));
   else
     keep_only(s, std::make_pair(Rational(0), t));
+}
+
+void clip_near(Segment& s, const Camera& cam, const Rational& k) {
+  if (!cam.perspective) return;
+  clip_near(s, near_plane(cam, k));
 }
 
 }  // namespace hlr

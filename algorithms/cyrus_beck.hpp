@@ -70,4 +70,10 @@ void clip_pieces(Segment& segment, const ConvexClipper& clipper);
 /// i.e. (P - eye)·(target - eye) >= near_fraction·|target - eye|^2 is kept (exact).
 void clip_near(Segment& segment, const Camera& camera, const Rational& near_fraction);
 
+/// The near plane of clip_near as a plane, positive on the kept side (perspective cameras).
+Plane near_plane(const Camera& camera, const Rational& near_fraction);
+/// clip_near with the plane computed once (near_plane); the sides of the two ends are decided
+/// by the filtered exact predicate, the crossing parameter exactly.
+void clip_near(Segment& segment, const Plane& near);
+
 }  // namespace hlr

@@ -49,6 +49,18 @@ struct Box {
   double dmin;
 };
 
+/// Perspective: the screen box of the part strictly in front of the eye of the convex hull of
+/// `n` points (`pts`, their projections `proj`, `front`: strictly in front, exact): the front
+/// points' projections, unbounded on each side where a crossing point of the eye plane has a
+/// positive (or negative) screen sign (Camera::eye_plane_signs). dmin is -inf. `empty` when no
+/// point is in front.
+struct FrontBox {
+  Box box;
+  bool empty;
+};
+FrontBox front_box(const Camera& cam, const Point3* const* pts, const std::array<double, 3>* const* proj,
+                   const bool* front, int n);
+
 template <class P>
 class Engine {
  public:
@@ -75,7 +87,7 @@ class Engine {
   bool neighbour(const Tri& t, int k, int& face, int& third) const;
   void vertex_rules();
   void build_occluders();
-  void make_occluder(const Tri& t0, Occluder<P>& o, Box& bx, char& always) const;
+  void make_occluder(const Tri& t0, Occluder<P>& o, Box& bx) const;
   bool closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs) const;
   void side_plane(int p, int q, Vec<P>& m, V& c) const;
   // face_engine_edges.cpp
@@ -92,7 +104,7 @@ class Engine {
   // face_engine_visibility.cpp
   void visibility(LineDrawing& res);
   std::optional<std::pair<Rational, Rational>> depth_of(const Segment& s) const;
-  void candidates(const std::array<double, 3>& a, const std::array<double, 3>& b, bool front, Work& wk) const;
+  void candidates(const Box& seg, Work& wk) const;
   void solve(Segment& s, const std::array<int, 2>& gv, Work& wk) const;
   void test_integer(const Occluder<P>& o, const Vec<P>& X0, const Vec<P>& X1, Work& wk) const;
   bool end_on_hides(const Occluder<P>& o, int on_side) const;

@@ -11,6 +11,29 @@
 
 namespace hlr::face_route {
 
+FrontBox front_box(const Camera& cam, const Point3* const* pts, const std::array<double, 3>* const* proj,
+                   const bool* front, int n) {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  FrontBox out{Box{inf, inf, -inf, -inf, -std::numeric_limits<double>::infinity()}, true};
+  for (int i = 0; i < n; ++i) {
+    if (!front[i]) continue;
+    out.empty = false;
+    const auto& pr = *proj[i];
+    out.box.x0 = std::min(out.box.x0, std::nextafter(static_cast<float>(pr[0]), -inf));
+    out.box.y0 = std::min(out.box.y0, std::nextafter(static_cast<float>(pr[1]), -inf));
+    out.box.x1 = std::max(out.box.x1, std::nextafter(static_cast<float>(pr[0]), inf));
+    out.box.y1 = std::max(out.box.y1, std::nextafter(static_cast<float>(pr[1]), inf));
+  }
+  if (out.empty) return out;
+  // Every edge from a front point to one that is not: where it meets the eye plane.
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      if (!front[i] || front[j]) continue;
+      open_toward(out.box, cam.eye_plane_signs(*pts[i], *pts[j]));
+    }
+  return out;
+}
+
 // ---- occluders
 // The neighbour of triangle side (p -> q) across a polygon edge: its face and the opposite
 // vertex of its triangle on that edge; false for boundary, non-manifold or degenerate.
@@ -70,7 +93,6 @@ void Engine<P>::build_occluders() {
   vertex_rules();
   occ_.reserve(tris_.size() / 2 + 1);
   std::vector<Box> boxes;
-  std::vector<char> always;
   // Drawing projections of every vertex, once.
   vproj_.resize(X_.size());
   vfront_.assign(X_.size(), 1);
@@ -86,20 +108,21 @@ void Engine<P>::build_occluders() {
     int fs = facing_[t0.body][t0.face];
     if (fs == 0) continue;                       // edge-on: sight rays graze it
     if (solid_[t0.body] && fs < 0 && !eye_on_[t0.body]) continue;  // a closed solid is hidden by its front faces
+    // No point strictly in front of the eye: its sight cone lies behind the eye, where nothing
+    // is drawn (docs/design.md, "Occluders that reach behind the eye").
+    if (cam_.perspective && !vfront_[t0.v[0]] && !vfront_[t0.v[1]] && !vfront_[t0.v[2]]) continue;
     sel.push_back(static_cast<int>(i));
   }
   occ_.resize(sel.size());
   boxes.resize(sel.size());
-  always.resize(sel.size());
-  ParallelLoop(opt_.threads).for_each(sel.size(), 1024, [&](std::size_t i) { make_occluder(tris_[sel[i]], occ_[i], boxes[i], always[i]); });
+  ParallelLoop(opt_.threads).for_each(sel.size(), 1024, [&](std::size_t i) { make_occluder(tris_[sel[i]], occ_[i], boxes[i]); });
   // Widen every box by a margin far above the error of the double projections (a filter
   // only: it skips work, never decides; bounds::kBoxMargin).
   double ext = 1e-300;
-  for (std::size_t i = 0; i < boxes.size(); ++i)
-    if (!always[i])
-      ext = std::max({ext, std::fabs(static_cast<double>(boxes[i].x0)), std::fabs(static_cast<double>(boxes[i].x1)),
-                      std::fabs(static_cast<double>(boxes[i].y0)), std::fabs(static_cast<double>(boxes[i].y1)),
-                      std::fabs(boxes[i].dmin)});
+  for (const Box& bx : boxes)
+    for (double v : {static_cast<double>(bx.x0), static_cast<double>(bx.x1), static_cast<double>(bx.y0),
+                     static_cast<double>(bx.y1), bx.dmin})
+      if (std::isfinite(v)) ext = std::max(ext, std::fabs(v));
   margin_ = bounds::kBoxMargin * ext;
   for (Box& bx : boxes) {
     bx.x0 -= static_cast<float>(margin_);
@@ -111,11 +134,12 @@ void Engine<P>::build_occluders() {
   boxes_ = std::move(boxes);
   std::vector<ScreenRect> rects(boxes_.size());
   for (std::size_t i = 0; i < boxes_.size(); ++i) rects[i] = {boxes_[i].x0, boxes_[i].y0, boxes_[i].x1, boxes_[i].y1};
-  grid_.build(rects, always, 2.0, 2048);
+  // Unbounded sides (occluders reaching the eye plane) clamp to the grid's edge cells.
+  grid_.build(rects, std::vector<char>(rects.size(), 0), 2.0, 2048);
 }
 
 template <class P>
-void Engine<P>::make_occluder(const Tri& t0, Occluder<P>& o, Box& bx, char& always) const {
+void Engine<P>::make_occluder(const Tri& t0, Occluder<P>& o, Box& bx) const {
   const int b = t0.body;
   const int fs = facing_[b][t0.face];
   Tri t = t0;
@@ -143,23 +167,17 @@ void Engine<P>::make_occluder(const Tri& t0, Occluder<P>& o, Box& bx, char& alwa
     o.c[k + 1] = c;
     o.closed[k + 1] = !t.edge[k] || closed_side(t, k, m, c, fs);
   }
-  bx = Box{std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
-           -std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
-           std::numeric_limits<double>::infinity()};
-  bool all_front = true;
-  for (int v : t.v) {
-    const auto& pr = vproj_[v];
-    bx.x0 = std::min(bx.x0, std::nextafter(static_cast<float>(pr[0]), -INFINITY));
-    bx.y0 = std::min(bx.y0, std::nextafter(static_cast<float>(pr[1]), -INFINITY));
-    bx.x1 = std::max(bx.x1, std::nextafter(static_cast<float>(pr[0]), INFINITY));
-    bx.y1 = std::max(bx.y1, std::nextafter(static_cast<float>(pr[1]), INFINITY));
-    bx.dmin = std::min(bx.dmin, pr[2]);
-    all_front = all_front && vfront_[v];
+  const Point3* pts[3];
+  const std::array<double, 3>* proj[3];
+  bool front[3];
+  for (int k = 0; k < 3; ++k) {
+    pts[k] = &world(t.v[k]);
+    proj[k] = &vproj_[t.v[k]];
+    front[k] = vfront_[t.v[k]];
   }
-  always = !all_front;
-  // Not strictly in front of the eye: its projection means nothing, so its box must not skip
-  // anything (the whole plane, every depth).
-  if (always) bx = Box{-INFINITY, -INFINITY, INFINITY, INFINITY, -INFINITY};
+  bx = front_box(cam_, pts, proj, front, 3).box;
+  if (front[0] && front[1] && front[2])
+    bx.dmin = std::min({(*proj[0])[2], (*proj[1])[2], (*proj[2])[2]});
   // A forward cone from the eye (back face of a solid holding the eye) reaches in front of its
   // face: no depth pruning (its projection is still the face's).
   if (fs < 0 && solid_[b]) bx.dmin = -INFINITY;

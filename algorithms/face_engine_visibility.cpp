@@ -4,6 +4,7 @@
 // cores (parallel.hpp); each writes only its own pieces, so the result does not depend on the
 // thread count.
 #include <algorithm>
+#include <cmath>
 
 #include "algorithms/face_engine.hpp"
 #include "algorithms/parallel.hpp"
@@ -58,20 +59,22 @@ std::optional<std::pair<Rational, Rational>> Engine<P>::depth_of(const Segment& 
   return std::make_pair(cam_.depth(s.from()), cam_.depth(s.to()));
 }
 
+// The occluders whose boxes meet the segment's box `seg` (with the margin; an occluder
+// entirely deeper than the segment's farthest point skipped). The margin covers the error of
+// the occluders' and the segment's projections (bounds::kBoxMargin of the larger extent).
 template <class P>
-void Engine<P>::candidates(const std::array<double, 3>& a, const std::array<double, 3>& b, bool front, Work& wk) const {
+void Engine<P>::candidates(const Box& seg, Work& wk) const {
   wk.cand.clear();
   wk.stamps.next();
-  if (!front) {
-    for (std::size_t i = 0; i < occ_.size(); ++i) wk.cand.push_back(static_cast<int>(i));
-    return;
-  }
-  double x0 = std::min(a[0], b[0]), x1 = std::max(a[0], b[0]), y0 = std::min(a[1], b[1]), y1 = std::max(a[1], b[1]);
-  double dmax = std::max(a[2], b[2]) + margin_;
-  grid_.visit(ScreenRect{x0 - margin_, y0 - margin_, x1 + margin_, y1 + margin_}, [&](int i) {
+  double m = margin_;
+  for (double v : {static_cast<double>(seg.x0), static_cast<double>(seg.x1), static_cast<double>(seg.y0),
+                   static_cast<double>(seg.y1), seg.dmin})
+    if (std::isfinite(v)) m = std::max(m, bounds::kBoxMargin * std::fabs(v));
+  const double x0 = seg.x0 - m, x1 = seg.x1 + m, y0 = seg.y0 - m, y1 = seg.y1 + m, dmax = seg.dmin + m;
+  grid_.visit(ScreenRect{x0, y0, x1, y1}, [&](int i) {
     if (!wk.stamps.first(i)) return;
     const Box& bx = boxes_[i];
-    if (bx.x0 > x1 + margin_ || bx.x1 < x0 - margin_ || bx.y0 > y1 + margin_ || bx.y1 < y0 - margin_ || bx.dmin > dmax) return;
+    if (bx.x0 > x1 || bx.x1 < x0 || bx.y0 > y1 || bx.y1 < y0 || bx.dmin > dmax) return;
     wk.cand.push_back(i);
   });
 }
@@ -79,21 +82,45 @@ void Engine<P>::candidates(const std::array<double, 3>& a, const std::array<doub
 template <class P>
 void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk) const {
   if (s.self_hidden) {
-    s.pieces = pieces_from_hidden({{Rational(0), Rational(1)}}, depth_of(s));
+    const bool front = gv[0] >= 0 && vfront_[gv[0]] && vfront_[gv[1]];
+    s.pieces = pieces_from_hidden({{Rational(0), Rational(1)}}, front ? std::nullopt : depth_of(s));
     return;
   }
-  std::array<double, 3> pa, pb;
-  bool front = true;
-  if (gv[0] >= 0) {
-    pa = vproj_[gv[0]];
-    pb = vproj_[gv[1]];
-    front = vfront_[gv[0]] && vfront_[gv[1]];
-  } else {
-    pa = proj_.project(s.from());
-    pb = proj_.project(s.to());
-    front = !cam_.perspective || (cam_.in_front(s.from()) == Sign::Positive && cam_.in_front(s.to()) == Sign::Positive);
+  // The segment's screen box; Box::dmin holds its farthest depth here. In perspective only its
+  // part strictly in front of the eye matters (the rest is behind the eye, never drawn).
+  std::array<double, 3> pr[2];
+  bool front[2];
+  Point3 ends[2];
+  const Point3* pts[2] = {nullptr, nullptr};
+  for (int k = 0; k < 2; ++k) {
+    if (gv[0] >= 0) {
+      pr[k] = vproj_[gv[k]];
+      front[k] = vfront_[gv[k]];
+      if (!vfront_[gv[0]] || !vfront_[gv[1]]) pts[k] = &world(gv[k]);
+    } else {
+      ends[k] = k == 0 ? s.from() : s.to();
+      pr[k] = proj_.project(ends[k]);
+      front[k] = !cam_.perspective || cam_.in_front(ends[k]) == Sign::Positive;
+      pts[k] = &ends[k];
+    }
   }
-  candidates(pa, pb, front, wk);
+  Box sb;
+  if (front[0] && front[1]) {
+    sb = Box{static_cast<float>(std::min(pr[0][0], pr[1][0])), static_cast<float>(std::min(pr[0][1], pr[1][1])),
+             static_cast<float>(std::max(pr[0][0], pr[1][0])), static_cast<float>(std::max(pr[0][1], pr[1][1])),
+             std::max(pr[0][2], pr[1][2])};
+    sb.x0 = std::nextafter(sb.x0, -INFINITY), sb.y0 = std::nextafter(sb.y0, -INFINITY);
+    sb.x1 = std::nextafter(sb.x1, INFINITY), sb.y1 = std::nextafter(sb.y1, INFINITY);
+  } else {
+    if (!front[0] && !front[1]) {  // wholly behind the eye
+      s.pieces = pieces_from_hidden({}, depth_of(s));
+      return;
+    }
+    const std::array<double, 3>* pp[2] = {&pr[0], &pr[1]};
+    sb = front_box(cam_, pts, pp, front, 2).box;
+    sb.dmin = front[0] ? pr[0][2] : pr[1][2];
+  }
+  candidates(sb, wk);
   wk.skipped += occ_.size() - wk.cand.size();
   std::vector<std::pair<Rational, Rational>> hidden;
   if (gv[0] >= 0) {
@@ -108,7 +135,8 @@ void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk) const 
     }
     for (int i : wk.cand) test_rational(occ_[i], A, B, hidden, wk);
   }
-  s.pieces = pieces_from_hidden(std::move(hidden), depth_of(s));
+  // Both ends strictly in front of the eye: no part is behind it, the depths are not needed.
+  s.pieces = pieces_from_hidden(std::move(hidden), front[0] && front[1] ? std::nullopt : depth_of(s));
 }
 
 // Hidden interval of the segment X0 -> X1 by one occluder, integer values.

@@ -51,7 +51,7 @@ void check_body(const Polyhedron& p, int i) {
 // ---------------------------------------------------------------- pre-filter (doubles, conservative)
 struct Box2 {
   double x0, y0, x1, y1, d0, d1;  // screen bounds and depth range
-  bool always = false;            // cannot be bounded (perspective, at or behind the eye)
+  bool behind = false;            // perspective: no point strictly in front of the eye
 };
 
 struct PreFilter {
@@ -60,20 +60,33 @@ struct PreFilter {
   ScreenGrid grid;
   mutable StampSet stamps;
 
-  // `in_front_exactly`: every point is strictly in front of the eye, decided exactly; otherwise
-  // (perspective) the box is marked `always` and nothing is skipped against it.
-  Box2 bound(const std::vector<std::array<double, 3>>& pts, bool perspective, bool in_front_exactly = true) const {
-    Box2 b{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-           -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
-           std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
-    for (const auto& p : pts) {
-      if (perspective && !in_front_exactly) b.always = true;
-      b.x0 = std::min(b.x0, p[0]);
-      b.y0 = std::min(b.y0, p[1]);
-      b.x1 = std::max(b.x1, p[0]);
-      b.y1 = std::max(b.y1, p[1]);
-      b.d0 = std::min(b.d0, p[2]);
-      b.d1 = std::max(b.d1, p[2]);
+  // The box of the points `pts` (projections `pr`) strictly in front of the eye (`front`,
+  // decided exactly), opened toward where the edges `edges` (index pairs; for a segment its two
+  // ends, for a body its polygon edges) from a front point to one that is not cross the eye
+  // plane: it holds the projection of their convex hull's part in front of the eye.
+  static Box2 bound(const Camera& cam, const std::vector<const Point3*>& pts, const std::vector<std::array<double, 3>>& pr,
+                    const std::vector<char>& front, const std::vector<std::pair<int, int>>& edges) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    Box2 b{inf, inf, -inf, -inf, inf, -inf};
+    bool all = true, any = false;
+    for (std::size_t i = 0; i < pr.size(); ++i) {
+      all = all && front[i];
+      if (!front[i]) continue;
+      any = true;
+      b.x0 = std::min(b.x0, pr[i][0]);
+      b.y0 = std::min(b.y0, pr[i][1]);
+      b.x1 = std::max(b.x1, pr[i][0]);
+      b.y1 = std::max(b.y1, pr[i][1]);
+      b.d0 = std::min(b.d0, pr[i][2]);
+      b.d1 = std::max(b.d1, pr[i][2]);
+    }
+    if (all) return b;
+    b.behind = !any;
+    b.d0 = -inf;
+    for (auto [u, v] : edges) {
+      if (front[u] == front[v]) continue;
+      if (!front[u]) std::swap(u, v);
+      open_toward(b, cam.eye_plane_signs(*pts[u], *pts[v]));
     }
     return b;
   }
@@ -81,49 +94,50 @@ struct PreFilter {
   ScreenRect rect(const Box2& b) const { return {b.x0 - margin, b.y0 - margin, b.x1 + margin, b.y1 + margin}; }
 
   void build(const std::vector<const Polyhedron*>& bodies, const Projector& proj, const Camera& cam) {
-    const bool perspective = cam.perspective;
     double ext = 0;
     for (const Polyhedron* p : bodies) {
-      std::vector<std::array<double, 3>> pts;
-      bool front = true;
+      std::vector<const Point3*> pts;
+      std::vector<std::array<double, 3>> pr;
+      std::vector<char> front;
       for (const Point3& v : p->vertices()) {
-        pts.push_back(proj.project(v));
-        front = front && (!perspective || cam.in_front(v) == Sign::Positive);
+        pts.push_back(&v);
+        pr.push_back(proj.project(v));
+        front.push_back(!cam.perspective || cam.in_front(v) == Sign::Positive);
       }
-      boxes.push_back(bound(pts, perspective, front));
+      std::vector<std::pair<int, int>> edges;
+      for (const Face& f : p->faces())
+        for (std::size_t k = 0; k < f.size(); ++k) edges.push_back({f[k], f[(k + 1) % f.size()]});
+      boxes.push_back(bound(cam, pts, pr, front, edges));
       const Box2& b = boxes.back();
-      if (!b.always)
-        ext = std::max({ext, std::fabs(b.x0), std::fabs(b.x1), std::fabs(b.y0), std::fabs(b.y1), std::fabs(b.d0), std::fabs(b.d1)});
+      for (double v : {b.x0, b.x1, b.y0, b.y1, b.d0, b.d1})
+        if (std::isfinite(v)) ext = std::max(ext, std::fabs(v));
     }
     // A conservative filter only (it skips work, never decides visibility): see
     // bounds::kBodyBoxMargin in exact_int.hpp.
     margin = bounds::kBodyBoxMargin * (ext + 1e-300);
     std::vector<ScreenRect> rects;
-    std::vector<char> always;
-    for (const Box2& b : boxes) {
-      rects.push_back(rect(b));
-      always.push_back(b.always);
-    }
-    grid.build(rects, always, 1.0, 512);
+    for (const Box2& b : boxes) rects.push_back(b.behind ? ScreenRect{0, 0, 0, 0} : rect(b));
+    grid.build(rects, std::vector<char>(rects.size(), 0), 1.0, 512);
     stamps.reset(boxes.size());
   }
 
-  // Bodies that may hide some point of a segment with the given projected bounds.
+  // Bodies that may hide some point of a segment with the given projected bounds: a body
+  // behind the eye hides nothing in front of it, a segment behind the eye is never drawn.
   void candidates(const Box2& e, std::vector<int>& out) const {
     out.clear();
     stamps.next();
-    if (e.always) {
-      for (std::size_t i = 0; i < boxes.size(); ++i) out.push_back(static_cast<int>(i));
-      return;
-    }
-    const ScreenRect q = rect(e);
+    if (e.behind) return;
+    ScreenRect q = rect(e);
+    double m = margin;
+    for (double v : {e.x0, e.x1, e.y0, e.y1})
+      if (std::isfinite(v)) m = std::max(m, bounds::kBodyBoxMargin * std::fabs(v));
+    q = {e.x0 - m, e.y0 - m, e.x1 + m, e.y1 + m};
     grid.visit(q, [&](int i) {
       if (!stamps.first(i)) return;
       const Box2& b = boxes[i];
-      if (!b.always) {
-        if (!ScreenRect{b.x0, b.y0, b.x1, b.y1}.meets(q)) return;
-        if (b.d0 > e.d1 + margin) return;  // entirely farther than every point of the segment
-      }
+      if (b.behind) return;
+      if (!ScreenRect{b.x0, b.y0, b.x1, b.y1}.meets(q)) return;
+      if (b.d0 > e.d1 + m) return;  // entirely farther than every point of the segment
       out.push_back(i);
     });
     std::sort(out.begin(), out.end());
@@ -358,10 +372,11 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
   std::vector<int> cand;
   auto solve = [&](Segment& s, int skip_a, int skip_b) {
     std::vector<Span> hidden;
-    auto a = proj.project(s.from()), b = proj.project(s.to());
-    bool front = !camera.perspective ||
-                 (camera.in_front(s.from()) == Sign::Positive && camera.in_front(s.to()) == Sign::Positive);
-    Box2 eb = pre.bound({a, b}, camera.perspective, front);
+    std::vector<char> front = {1, 1};
+    if (camera.perspective)
+      front = {camera.in_front(s.from()) == Sign::Positive, camera.in_front(s.to()) == Sign::Positive};
+    Box2 eb = PreFilter::bound(camera, {&s.from(), &s.to()}, {proj.project(s.from()), proj.project(s.to())}, front,
+                               {{0, 1}});
     if (opt.prefilter) {
       pre.candidates(eb, cand);
     } else {
@@ -379,7 +394,7 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
         clip_to_unit(hidden_interval(s.from(), s.to(), res.matrices[j].V, g), hidden);
       }
     }
-    s.pieces = pieces_from_hidden(std::move(hidden), depth_of(s));
+    s.pieces = pieces_from_hidden(std::move(hidden), front[0] && front[1] ? std::nullopt : depth_of(s));
   };
 
   // Stage 1 and 2: the bodies' edges.

@@ -9,7 +9,11 @@ namespace hlr {
 
 void ScreenGrid::build(const std::vector<ScreenRect>& rects, const std::vector<char>& always, double items_per_cell,
                        int max_cells) {
-  double X0 = std::numeric_limits<double>::infinity(), Y0 = X0, X1 = -X0, Y1 = -X0;
+  // The grid spans the middle 98% of the boxes' finite sides: in perspective a few boxes near
+  // the eye project huge and would otherwise squeeze everything else into a few cells. Boxes
+  // (and queries) beyond clamp to the edge cells; clamping keeps every overlap, so the grid
+  // never loses a candidate. Unbounded sides (occluders reaching the eye plane) clamp too.
+  std::vector<double> xs, ys;
   std::size_t count = 0;
   always_.clear();
   for (std::size_t i = 0; i < rects.size(); ++i) {
@@ -18,12 +22,26 @@ void ScreenGrid::build(const std::vector<ScreenRect>& rects, const std::vector<c
       continue;
     }
     ++count;
-    X0 = std::min(X0, rects[i].x0);
-    Y0 = std::min(Y0, rects[i].y0);
-    X1 = std::max(X1, rects[i].x1);
-    Y1 = std::max(Y1, rects[i].y1);
+    for (double v : {rects[i].x0, rects[i].x1})
+      if (std::isfinite(v)) xs.push_back(v);
+    for (double v : {rects[i].y0, rects[i].y1})
+      if (std::isfinite(v)) ys.push_back(v);
   }
-  if (!(X1 >= X0) || !std::isfinite(X1 - X0) || !std::isfinite(Y1 - Y0)) X0 = Y0 = 0, X1 = Y1 = 1;
+  auto span = [](std::vector<double>& v, double& lo, double& hi) {
+    if (v.empty()) {
+      lo = 0, hi = 1;
+      return;
+    }
+    const std::size_t k = v.size() / 100;
+    std::nth_element(v.begin(), v.begin() + k, v.end());
+    lo = v[k];
+    std::nth_element(v.begin(), v.end() - 1 - k, v.end());
+    hi = v[v.size() - 1 - k];
+  };
+  double X0, X1, Y0, Y1;
+  span(xs, X0, X1);
+  span(ys, Y0, Y1);
+  if (!(X1 >= X0) || !(Y1 >= Y0) || !std::isfinite(X1 - X0) || !std::isfinite(Y1 - Y0)) X0 = Y0 = 0, X1 = Y1 = 1;
   n_ = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(count) / items_per_cell)), 1, max_cells);
   x0_ = X0;
   y0_ = Y0;

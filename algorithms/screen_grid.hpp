@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace hlr {
@@ -17,6 +18,22 @@ struct ScreenRect {
   double x0, y0, x1, y1;
   bool meets(const ScreenRect& o) const { return !(x0 > o.x1 || x1 < o.x0 || y0 > o.y1 || y1 < o.y0); }
 };
+
+/// Perspective: opens `r` to infinity on the sides toward which the projection of a convex set
+/// runs off where it meets the plane through the eye; `signs` are the screen signs of one of
+/// its crossing points (Camera::eye_plane_signs). Doing this for the crossing points of every
+/// edge from a point strictly in front of the eye to one that is not, starting from the box of
+/// the front points' projections, bounds the projection of the set's part in front of the eye
+/// (docs/design.md, "Occluders that reach behind the eye").
+template <class R>
+void open_toward(R& r, const std::array<int, 2>& signs) {
+  using T = decltype(r.x0);
+  constexpr T inf = std::numeric_limits<T>::infinity();
+  if (signs[0] > 0) r.x1 = inf;
+  if (signs[0] < 0) r.x0 = -inf;
+  if (signs[1] > 0) r.y1 = inf;
+  if (signs[1] < 0) r.y0 = -inf;
+}
 
 class ScreenGrid {
  public:

@@ -2,6 +2,9 @@
 // value of each coordinate is the decimal the file shows):
 //   gen_mesh sphere F   geodesic icosphere, 20·F² triangles (F = 22: 9,680; 71: 100,820; 224: 1,003,520)
 //   gen_mesh torus N M  torus with N x M quads split into 2·N·M triangles
+//   gen_mesh prism N    prism on a regular N-gon (radius 1000: the rounded caps stay convex)
+//   gen_mesh star N     prism on a non-convex star polygon of 2·N vertices (radii 1000, 600)
+//   gen_mesh cubes N    N unit cubes on a jittered grid with gaps (one mesh, N components)
 // Writes to standard output.
 #include <array>
 #include <cmath>
@@ -16,10 +19,68 @@ namespace {
 
 using P = std::array<double, 3>;
 
-void write(const std::vector<P>& v, const std::vector<std::array<int, 3>>& f) {
+void write(const std::vector<P>& v, const std::vector<std::vector<int>>& f) {
   std::printf("OFF\n%zu %zu 0\n", v.size(), f.size());
   for (const P& p : v) std::printf("%.7f %.7f %.7f\n", p[0], p[1], p[2]);
-  for (const auto& t : f) std::printf("3 %d %d %d\n", t[0], t[1], t[2]);
+  for (const auto& face : f) {
+    std::printf("%zu", face.size());
+    for (int i : face) std::printf(" %d", i);
+    std::printf("\n");
+  }
+}
+
+void write(const std::vector<P>& v, const std::vector<std::array<int, 3>>& f) {
+  std::vector<std::vector<int>> g;
+  g.reserve(f.size());
+  for (const auto& t : f) g.push_back({t[0], t[1], t[2]});
+  write(v, g);
+}
+
+// A prism over the polygon `ring` (counter-clockwise in the xy plane), height 100.
+void prism_over(const std::vector<std::array<double, 2>>& ring) {
+  const int n = static_cast<int>(ring.size());
+  std::vector<P> v;
+  for (double z : {0.0, 100.0})
+    for (const auto& q : ring) v.push_back({q[0], q[1], z});
+  std::vector<std::vector<int>> f(2);
+  for (int i = n - 1; i >= 0; --i) f[0].push_back(i);  // bottom, seen from below
+  for (int i = 0; i < n; ++i) f[1].push_back(n + i);
+  for (int i = 0; i < n; ++i) {
+    int j = (i + 1) % n;
+    f.push_back({i, j, n + j, n + i});
+  }
+  write(v, f);
+}
+
+void prism(int N, bool star) {
+  std::vector<std::array<double, 2>> ring;
+  const int m = star ? 2 * N : N;
+  for (int i = 0; i < m; ++i) {
+    double a = 2 * M_PI * i / m, r = star && i % 2 ? 600 : 1000;
+    ring.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  prism_over(ring);
+}
+
+void cubes(int N) {
+  int side = 1;
+  while (side * side * side < N) ++side;
+  std::vector<P> v;
+  std::vector<std::vector<int>> f;
+  unsigned seed = 12345;
+  auto jitter = [&] {
+    seed = seed * 1103515245u + 12345u;
+    return ((seed >> 16) % 1000) / 1000.0;  // [0, 1)
+  };
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (int c = 0; c < N; ++c) {
+    int i = c % side, j = (c / side) % side, k = c / (side * side);
+    P o{3.0 * i + jitter(), 3.0 * j + jitter(), 3.0 * k + jitter()};
+    int base = static_cast<int>(v.size());
+    for (int b = 0; b < 8; ++b) v.push_back({o[0] + (b & 1), o[1] + (b >> 1 & 1), o[2] + (b >> 2 & 1)});
+    for (const auto& q : quads) f.push_back({base + q[0], base + q[1], base + q[2], base + q[3]});
+  }
+  write(v, f);
 }
 
 P unit(P p) {
@@ -99,6 +160,14 @@ int main(int argc, char** argv) {
     torus(std::atoi(argv[2]), std::atoi(argv[3]));
     return 0;
   }
-  std::fprintf(stderr, "usage: gen_mesh sphere F | gen_mesh torus N M\n");
+  if ((what == "prism" || what == "star" || what == "cubes") && argc == 3) {
+    int n = std::atoi(argv[2]);
+    if (what == "cubes")
+      cubes(n);
+    else
+      prism(n, what == "star");
+    return 0;
+  }
+  std::fprintf(stderr, "usage: gen_mesh sphere F | torus N M | prism N | star N | cubes N\n");
   return 2;
 }

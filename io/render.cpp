@@ -3,6 +3,7 @@
 
 #include "algorithms/convexity.hpp"
 #include "algorithms/face_occluders.hpp"
+#include "algorithms/parallel.hpp"
 #include "algorithms/roberts.hpp"
 #include "algorithms/roberts_pieces.hpp"
 
@@ -68,10 +69,14 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     r.notes.push_back(r.names[n.body].source + ": body '" + r.names[n.body].name + "' " + n.text);
   eye_plane_notes(r, r.notes);
   // Clipping: the near plane (perspective) and the clipping volume, exactly, in world space.
-  for (Segment& s : r.drawing.segments) {
-    if (r.camera.perspective) clip_near(s, r.camera, o.near);
-    if (o.clip) clip_pieces(s, *o.clip);
-  }
+  std::optional<Plane> near;
+  if (r.camera.perspective) near = near_plane(r.camera, o.near);
+  if (near || o.clip)
+    ParallelLoop(o.lines.threads).for_each(r.drawing.segments.size(), 1024, [&](std::size_t i) {
+      Segment& s = r.drawing.segments[i];
+      if (near) clip_near(s, *near);
+      if (o.clip) clip_pieces(s, *o.clip);
+    });
   return r;
 }
 
