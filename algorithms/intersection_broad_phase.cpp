@@ -56,20 +56,25 @@ BoxPairs overlapping_box_pairs(const std::vector<Box3>& bb, const ParallelLoop& 
   for (int k = 0; k < 3; ++k) g.dims[k] = g.key(k, hi[k]) + 1;
   std::vector<Entry> entries;
   entries.reserve(n * 2);
-  bool coarse = !std::isfinite(g.cell) || !std::isfinite(mean);
+  // A box that spans more than 64 cells (a huge triangle among small ones) stays out of the
+  // cells and is tested against every box instead: a few such boxes cost a few linear passes.
+  std::vector<std::uint32_t> big;
+  bool coarse = !std::isfinite(g.cell) || !std::isfinite(mean) || g.dims[0] >= (1 << 20) || g.dims[1] >= (1 << 20) ||
+                g.dims[2] >= (1 << 20);
   for (std::size_t i = 0; i < n && !coarse; ++i) {
     std::int64_t c0[3], c1[3];
     for (int k = 0; k < 3; ++k) c0[k] = g.key(k, bb[i][k]), c1[k] = g.key(k, bb[i][k + 3]);
-    if ((c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1) > 64 || g.dims[0] >= (1 << 20) ||
-        g.dims[1] >= (1 << 20) || g.dims[2] >= (1 << 20)) {
-      coarse = true;  // a huge box among small ones: fall back to one coarse cell list
-      break;
+    if ((c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1) > 64) {
+      big.push_back(static_cast<std::uint32_t>(i));
+      continue;
     }
     for (std::int64_t x = c0[0]; x <= c1[0]; ++x)
       for (std::int64_t y = c0[1]; y <= c1[1]; ++y)
         for (std::int64_t z = c0[2]; z <= c1[2]; ++z) entries.push_back({g.id(x, y, z), static_cast<std::uint32_t>(i)});
   }
-  if (coarse) {
+  if (coarse || big.size() * 8 > n) {  // unusable cells, or too many huge boxes: one coarse list
+    coarse = true;
+    big.clear();
     entries.clear();
     for (std::size_t i = 0; i < n; ++i) entries.push_back({0, static_cast<std::uint32_t>(i)});
   }
@@ -81,24 +86,41 @@ BoxPairs overlapping_box_pairs(const std::vector<Box3>& bb, const ParallelLoop& 
   const std::size_t ncells = cell_start.size() - 1;
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop.workers());
   std::vector<std::size_t> counted(loop.workers(), 0);
+  auto overlap = [&](std::uint32_t ta, std::uint32_t tc) {
+    const Box3 &A = bb[ta], &B = bb[tc];
+    return !(A[0] > B[3] || B[0] > A[3] || A[1] > B[4] || B[1] > A[4] || A[2] > B[5] || B[2] > A[5]);
+  };
+  auto take = [&](std::uint32_t ta, std::uint32_t tc, unsigned w) {
+    PairVerdict v = judge(ta, tc);
+    if (v == PairVerdict::Skip) return;
+    ++counted[w];
+    if (v == PairVerdict::Keep) found[w].push_back({std::min(ta, tc), std::max(ta, tc)});
+  };
   auto cell_pairs = [&](std::size_t i, std::size_t j, unsigned w) {
     for (std::size_t a = i; a < j; ++a)
       for (std::size_t c = a + 1; c < j; ++c) {
         std::uint32_t ta = entries[a].item, tc = entries[c].item;
-        const Box3 &A = bb[ta], &B = bb[tc];
-        if (A[0] > B[3] || B[0] > A[3] || A[1] > B[4] || B[1] > A[4] || A[2] > B[5] || B[2] > A[5]) continue;
+        if (!overlap(ta, tc)) continue;
         if (!coarse) {  // the pair only in the cell of the overlap's low corner
+          const Box3 &A = bb[ta], &B = bb[tc];
           std::uint64_t own = g.id(g.key(0, std::max(A[0], B[0])), g.key(1, std::max(A[1], B[1])), g.key(2, std::max(A[2], B[2])));
           if (own != entries[i].cell) continue;
         }
-        PairVerdict v = judge(ta, tc);
-        if (v == PairVerdict::Skip) continue;
-        ++counted[w];
-        if (v == PairVerdict::Keep) found[w].push_back({std::min(ta, tc), std::max(ta, tc)});
+        take(ta, tc, w);
       }
   };
   loop.run(ncells, 256, [&](unsigned w, std::size_t b, std::size_t e) {
     for (std::size_t c = b; c < e; ++c) cell_pairs(cell_start[c], cell_start[c + 1], w);
+  });
+  // Huge boxes against every other box (a pair of two huge boxes once, from the lower index).
+  std::vector<char> is_big(big.empty() ? 0 : n, 0);
+  for (std::uint32_t i : big) is_big[i] = 1;
+  loop.run(big.size(), 1, [&](unsigned w, std::size_t b, std::size_t e) {
+    for (std::size_t k = b; k < e; ++k) {
+      const std::uint32_t i = big[k];
+      for (std::uint32_t j = 0; j < n; ++j)
+        if (j != i && !(is_big[j] && j < i) && overlap(i, j)) take(std::min(i, j), std::max(i, j), w);
+    }
   });
   for (std::size_t w = 0; w < found.size(); ++w) {
     out.kept.insert(out.kept.end(), found[w].begin(), found[w].end());

@@ -1,5 +1,5 @@
-// Exact triangulation of a planar polygon face (simple, possibly non-convex) by ear clipping in
-// the coordinate plane where the face's projection is largest. Used to turn any face into the
+// Exact triangulation of a planar polygon face (simple, possibly non-convex) in the coordinate
+// plane where the face's projection is largest (kernel/simple_polygon.hpp, O(n log n)). Used to turn any face into the
 // triangular occluders of issue 4 (course notes section 23 treats faces as planar polygons).
 // Orientations are exact; the triangles keep the face's vertex order (same normal direction).
 #pragma once
@@ -17,8 +17,8 @@ struct FaceTriangle {
 };
 
 /// Triangulates the face `poly` (indices into `points`) whose exact plane normal is `normal`
-/// (non-zero). Convex faces are fanned from their first vertex. Returns an empty list when no
-/// ear can be found (a self-intersecting polygon).
+/// (non-zero). Convex faces are fanned from their first vertex. Returns an empty list when the
+/// polygon is not simple (its edges cross or touch).
 std::vector<FaceTriangle> triangulate_face(const std::vector<Point3>& points, const std::vector<int>& poly,
                                            const Vector3& normal);
 

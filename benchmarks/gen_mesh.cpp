@@ -5,6 +5,7 @@
 //   gen_mesh prism N    prism on a regular N-gon (radius 1000: the rounded caps stay convex)
 //   gen_mesh star N     prism on a non-convex star polygon of 2·N vertices (radii 1000, 600)
 //   gen_mesh cubes N    N unit cubes on a jittered grid with gaps (one mesh, N components)
+//   gen_mesh cube-scene N  the same cubes as a YAML scene of N box bodies (Roberts' input)
 // Writes to standard output.
 #include <array>
 #include <cmath>
@@ -62,7 +63,7 @@ void prism(int N, bool star) {
   prism_over(ring);
 }
 
-void cubes(int N) {
+void cubes(int N, bool scene) {
   int side = 1;
   while (side * side * side < N) ++side;
   std::vector<P> v;
@@ -76,11 +77,17 @@ void cubes(int N) {
   for (int c = 0; c < N; ++c) {
     int i = c % side, j = (c / side) % side, k = c / (side * side);
     P o{3.0 * i + jitter(), 3.0 * j + jitter(), 3.0 * k + jitter()};
+    if (scene) {
+      if (c == 0) std::printf("bodies:\n");
+      std::printf("  - box: {min: [%.3f, %.3f, %.3f], max: [%.3f, %.3f, %.3f]}\n", o[0], o[1], o[2], o[0] + 1, o[1] + 1,
+                  o[2] + 1);
+      continue;
+    }
     int base = static_cast<int>(v.size());
     for (int b = 0; b < 8; ++b) v.push_back({o[0] + (b & 1), o[1] + (b >> 1 & 1), o[2] + (b >> 2 & 1)});
     for (const auto& q : quads) f.push_back({base + q[0], base + q[1], base + q[2], base + q[3]});
   }
-  write(v, f);
+  if (!scene) write(v, f);
 }
 
 P unit(P p) {
@@ -160,14 +167,14 @@ int main(int argc, char** argv) {
     torus(std::atoi(argv[2]), std::atoi(argv[3]));
     return 0;
   }
-  if ((what == "prism" || what == "star" || what == "cubes") && argc == 3) {
+  if ((what == "prism" || what == "star" || what == "cubes" || what == "cube-scene") && argc == 3) {
     int n = std::atoi(argv[2]);
-    if (what == "cubes")
-      cubes(n);
+    if (what == "cubes" || what == "cube-scene")
+      cubes(n, what == "cube-scene");
     else
       prism(n, what == "star");
     return 0;
   }
-  std::fprintf(stderr, "usage: gen_mesh sphere F | torus N M | prism N | star N | cubes N\n");
+  std::fprintf(stderr, "usage: gen_mesh sphere F | torus N M | prism N | star N | cubes N | cube-scene N\n");
   return 2;
 }

@@ -77,8 +77,8 @@ std::string info_report(const SceneBody& b, int index, const InfoOptions& opt) {
     o << "  T-junctions: " << list(r.t_junctions, m, [](const MeshReport::TJunction& t) {
       return "vertex " + std::to_string(t.vertex) + " inside edge " + to_string(t.edge);
     }) << "\n";
-  if (!r.self_intersecting_faces.empty())
-    o << "  self-intersecting faces: " << ints_text(r.self_intersecting_faces, m) << "\n";
+  o << check_line("simple faces", r.self_intersecting_faces.empty(),
+                  "self-intersecting: " + list(r.self_intersecting_faces, m, [](int f) { return "face " + std::to_string(f); }));
   if (!r.isolated_vertices.empty()) o << "  unused vertices: " << ints_text(r.isolated_vertices, m) << "\n";
   if (!r.refused_faces.empty())
     o << "  faces OpenMesh refused: " << ints_text(r.refused_faces, m) << "\n";

@@ -21,6 +21,8 @@ Rational from_ft(const Epeck::FT& x) { return from_exact(CGAL::exact(x)); }
 
 }  // namespace
 
+Epeck::FT to_epeck_ft(const Rational& q) { return to_ft(q); }
+
 Epeck::Point_3 to_epeck(const Point3& p) {
   return Epeck::Point_3(to_ft(p.x()), to_ft(p.y()), to_ft(p.z()));
 }

@@ -12,6 +12,7 @@ namespace hlr {
 using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 
 Epeck::Point_3 to_epeck(const Point3& p);
+Epeck::FT to_epeck_ft(const Rational& q);
 Point3 from_epeck(const Epeck::Point_3& p);
 
 }  // namespace hlr

@@ -1,5 +1,6 @@
 // Combinatorial and exact geometric checks of a face list (see mesh_checks.hpp).
 #include "kernel/mesh_checks.hpp"
+#include "kernel/simple_polygon.hpp"
 
 #include <algorithm>
 #include <map>
@@ -159,48 +160,17 @@ void check_t_junctions(const std::vector<Point3>& vs, MeshReport& r) {
   }
 }
 
-// Sign of the 2D orientation of (a, b, c) in the coordinate plane that drops axis `drop`.
-int orient2(const Point3& a, const Point3& b, const Point3& c, int drop) {
-  int u = (drop + 1) % 3, w = (drop + 2) % 3;
-  Rational d = (b[u] - a[u]) * (c[w] - a[w]) - (b[w] - a[w]) * (c[u] - a[u]);
-  return sgn(d);
-}
-
-bool on_segment2(const Point3& a, const Point3& b, const Point3& p, int drop) {
-  int u = (drop + 1) % 3, w = (drop + 2) % 3;
-  return std::min(a[u], b[u]) <= p[u] && p[u] <= std::max(a[u], b[u]) && std::min(a[w], b[w]) <= p[w] &&
-         p[w] <= std::max(a[w], b[w]);
-}
-
-// Do the closed segments ab and cd meet (in the projection)? Exact.
-bool segments_meet2(const Point3& a, const Point3& b, const Point3& c, const Point3& d, int drop) {
-  int o1 = orient2(a, b, c, drop), o2 = orient2(a, b, d, drop), o3 = orient2(c, d, a, drop), o4 = orient2(c, d, b, drop);
-  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return (o1 == 0 && on_segment2(a, b, c, drop)) || (o2 == 0 && on_segment2(a, b, d, drop)) ||
-         (o3 == 0 && on_segment2(c, d, a, drop)) || (o4 == 0 && on_segment2(c, d, b, drop));
-}
-
-// Planar, non-degenerate faces of 4+ vertices whose non-adjacent edges meet.
+// Planar, non-degenerate faces of 4+ vertices that are not simple polygons (simple_polygon.hpp:
+// a convex face is recognised in linear time, any other by a sweep, O(n log n)).
 void check_self_intersections(const std::vector<Point3>& vs, const std::vector<std::vector<int>>& faces,
                               const std::vector<Plane>& planes, MeshReport& r) {
   std::vector<char> skip(faces.size(), 0);
   for (const auto& d : r.degenerate_faces) skip[d.face] = 1;
   for (const auto& n : r.non_planar_faces) skip[n.face] = 1;
   for (std::size_t f = 0; f < faces.size(); ++f) {
-    const auto& face = faces[f];
-    const std::size_t k = face.size();
-    if (skip[f] || k < 4 || k > kMaxSelfIntersectionCheck) continue;
-    // Drop the axis of the normal's largest component: the projection keeps the polygon's shape.
-    int drop = 0;
-    for (int a = 1; a < 3; ++a)
-      if (abs(planes[f][a]) > abs(planes[f][drop])) drop = a;
-    bool crossing = false;
-    for (std::size_t i = 0; i < k && !crossing; ++i)
-      for (std::size_t j = i + 2; j < k && !crossing; ++j) {
-        if (i == 0 && j == k - 1) continue;  // adjacent through the closing edge
-        crossing = segments_meet2(vs[face[i]], vs[face[(i + 1) % k]], vs[face[j]], vs[face[(j + 1) % k]], drop);
-      }
-    if (crossing) r.self_intersecting_faces.push_back(static_cast<int>(f));
+    if (skip[f] || faces[f].size() < 4) continue;
+    if (!polygon_is_simple(vs, faces[f], polygon_view(planes[f].normal())))
+      r.self_intersecting_faces.push_back(static_cast<int>(f));
   }
 }
 

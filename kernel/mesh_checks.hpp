@@ -39,7 +39,7 @@ struct MeshReport {
     Edge edge;   // ...this boundary edge, without being one of its faces' vertices
   };
   std::vector<TJunction> t_junctions;
-  std::vector<int> self_intersecting_faces;  // planar faces whose own edges cross
+  std::vector<int> self_intersecting_faces;  // planar faces that are not simple polygons (edges cross or touch)
 
   bool manifold() const { return non_manifold_edges.empty() && non_manifold_vertices.empty(); }
   bool closed() const { return boundary_edges.empty() && non_manifold_edges.empty(); }
@@ -50,9 +50,6 @@ struct MeshReport {
            duplicate_vertices.empty() && t_junctions.empty() && self_intersecting_faces.empty();
   }
 };
-
-/// Faces with more vertices than this are not tested for self-intersection (quadratic).
-inline constexpr std::size_t kMaxSelfIntersectionCheck = 256;
 
 /// Computes every check. `planes` are the faces' exact planes (Polyhedron::planes()).
 MeshReport check_mesh(const std::vector<Point3>& vertices,
