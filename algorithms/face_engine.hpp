@@ -79,7 +79,9 @@ class Engine {
   Vec<P> normal(const Tri& t) const;
   void prepare_body(int b, LineDrawing& res);
   int triangulate_body(int b);
-  int volume_sign(std::size_t first_tri) const;
+  int volume_sign(const std::vector<int>& ids) const;
+  int parity(const Vec<P>& x, const std::vector<int>& ids) const;
+  bool orient_components(int b, int first, LineDrawing& res);
   bool eye_inside(int first) const;
   bool eye_on_surface(int first) const;
   static void flip(Tri& t);

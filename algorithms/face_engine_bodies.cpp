@@ -123,20 +123,19 @@ int Engine<P>::triangulate_body(int b) {
   return first_tri;
 }
 
-// Sign of six times the volume of the body's triangles from `first_tri` on; Fast40's terms
-// reach 2^123, so its sum is kept in GMP.
+// Sign of six times the volume of the triangles `ids`; Fast40's terms reach 2^123, so its sum
+// is kept in GMP.
 template <class P>
-int Engine<P>::volume_sign(std::size_t first_tri) const {
+int Engine<P>::volume_sign(const std::vector<int>& ids) const {
   if constexpr (std::is_same_v<P, Fast40>) {
     mpz_class v6 = 0;
-    const Vec<P>& o = X_[tris_[first_tri].v[0]];
-    for (std::size_t i = first_tri; i < tris_.size(); ++i)
+    const Vec<P>& o = X_[tris_[ids[0]].v[0]];
+    for (int i : ids)
       v6 += P::z(dot<P>(sub<P>(X_[tris_[i].v[0]], o), cross<P>(sub<P>(X_[tris_[i].v[1]], o), sub<P>(X_[tris_[i].v[2]], o))));
     return sgn(v6);
   } else {
     V volume6 = 0;
-    for (std::size_t i = first_tri; i < tris_.size(); ++i)
-      volume6 += dot<P>(X_[tris_[i].v[0]], cross<P>(X_[tris_[i].v[1]], X_[tris_[i].v[2]]));
+    for (int i : ids) volume6 += dot<P>(X_[tris_[i].v[0]], cross<P>(X_[tris_[i].v[1]], X_[tris_[i].v[2]]));
     return P::sign(volume6);
   }
 }
@@ -148,7 +147,12 @@ void Engine<P>::prepare_body(int b, LineDrawing& res) {
   // A closed solid: every edge in exactly two faces, traversed in opposite directions.
   bool closed = true;
   for (const BodyEdge& e : topo_[b].edges) closed = closed && e.closed_pair();
-  int vsign = closed && first_tri < static_cast<int>(tris_.size()) ? volume_sign(first_tri) : 0;
+  std::vector<int> ids;
+  for (std::size_t i = first_tri; i < tris_.size(); ++i) ids.push_back(static_cast<int>(i));
+  // Orientation per component first (an inside-out one is turned, with a note); then the sign
+  // of the whole.
+  const bool components_ok = closed && !ids.empty() && orient_components(b, first_tri, res);
+  int vsign = components_ok ? volume_sign(ids) : 0;
   solid_[b] = closed && vsign != 0;
   if (!solid_[b]) {
     std::string why = "has zero volume";
@@ -179,18 +183,19 @@ void Engine<P>::prepare_body(int b, LineDrawing& res) {
   res.facing.emplace_back(facing_[b].begin(), facing_[b].end());
 }
 
-// Parity of the crossings of a ray from the eye with the body's triangles (from `first`
-// on), exactly; a ray through an edge or a vertex is replaced by the next direction.
+// Parity of the crossings of a ray from `x` with the triangles `ids`, exactly: 1 inside, 0
+// outside, -1 when x lies on one of them; a ray through an edge or a vertex is replaced by the
+// next direction (-1 when every direction is degenerate).
 template <class P>
-bool Engine<P>::eye_inside(int first) const {
+int Engine<P>::parity(const Vec<P>& x, const std::vector<int>& ids) const {
   static const int dirs[][3] = {{7, 3, 5}, {2, 11, 3}, {-13, 1, 7}, {5, -9, 2}, {1, 4, -11}, {-3, -5, 8}, {17, 6, -1}, {-2, 3, -19}};
   for (const auto& dd : dirs) {
     Vec<P> d{C(dd[0]), C(dd[1]), C(dd[2])};
     bool degenerate = false;
     int crossings = 0;
-    for (std::size_t i = first; i < tris_.size() && tris_[i].body == tris_[first].body && !degenerate; ++i) {
+    for (int i : ids) {
       const Tri& t = tris_[i];
-      Vec<P> a = sub<P>(X_[t.v[0]], view_), b = sub<P>(X_[t.v[1]], view_), c = sub<P>(X_[t.v[2]], view_);
+      Vec<P> a = sub<P>(X_[t.v[0]], x), b = sub<P>(X_[t.v[1]], x), c = sub<P>(X_[t.v[2]], x);
       int o1 = P::sign(dot<P>(a, cross<P>(b, d))), o2 = P::sign(dot<P>(b, cross<P>(c, d))), o3 = P::sign(dot<P>(c, cross<P>(a, d)));
       if (!((o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0))) continue;  // the line misses it
       if (o1 == 0 || o2 == 0 || o3 == 0) {
@@ -199,12 +204,69 @@ bool Engine<P>::eye_inside(int first) const {
       }
       Vec<P> n = normal(t);
       int sa = P::sign(dot<P>(n, a)), sd = P::sign(dot<P>(n, d));
-      if (sa == 0) return false;  // the eye lies on the surface: not inside
-      if (sa == sd) ++crossings;  // the crossing is ahead of the eye
+      if (sa == 0) return -1;     // x lies on the surface
+      if (sa == sd) ++crossings;  // the crossing is ahead of x
     }
-    if (!degenerate) return crossings % 2 == 1;
+    if (!degenerate) return crossings % 2;
   }
-  return false;
+  return -1;
+}
+
+template <class P>
+bool Engine<P>::eye_inside(int first) const {
+  std::vector<int> ids;
+  for (std::size_t i = first; i < tris_.size() && tris_[i].body == tris_[first].body; ++i) ids.push_back(static_cast<int>(i));
+  return parity(view_, ids) == 1;
+}
+
+// Closed components of body b (faces joined across edges) whose volume is negative and that do
+// not lie inside another component (a cavity's shell is negative and inside): inside out.
+// They are turned (triangles, facing, normals) with a note. Returns false when some component
+// has zero volume.
+template <class P>
+bool Engine<P>::orient_components(int b, int first, LineDrawing& res) {
+  const std::size_t nf = bodies_[b]->faces().size();
+  std::vector<int> parent(nf);
+  for (std::size_t f = 0; f < nf; ++f) parent[f] = static_cast<int>(f);
+  auto find = [&](int f) {
+    while (parent[f] != f) f = parent[f] = parent[parent[f]];
+    return f;
+  };
+  for (const BodyEdge& e : topo_[b].edges)
+    for (std::size_t k = 1; k < e.uses.size(); ++k) parent[find(e.uses[k].face)] = find(e.uses[0].face);
+  std::vector<std::vector<int>> comp_tris(nf);
+  for (std::size_t i = first; i < tris_.size(); ++i) comp_tris[find(tris_[i].face)].push_back(static_cast<int>(i));
+  std::vector<int> roots;
+  for (std::size_t f = 0; f < nf; ++f)
+    if (find(static_cast<int>(f)) == static_cast<int>(f) && !comp_tris[f].empty()) roots.push_back(static_cast<int>(f));
+  if (roots.size() < 2) return true;
+  std::vector<int> sign(nf, 0);
+  for (int r : roots) {
+    sign[r] = volume_sign(comp_tris[r]);
+    if (sign[r] == 0) return false;
+  }
+  for (int r : roots) {
+    if (sign[r] > 0) continue;
+    std::vector<int> others;
+    for (int q : roots)
+      if (q != r) others.insert(others.end(), comp_tris[q].begin(), comp_tris[q].end());
+    // A cavity lies wholly inside the others: some vertex outside them all means inside out.
+    bool outside = false;
+    for (std::size_t i = 0; i < comp_tris[r].size() && !outside; ++i)
+      for (int k = 0; k < 3 && !outside; ++k) outside = parity(X_[tris_[comp_tris[r][i]].v[k]], others) == 0;
+    if (!outside) continue;  // a cavity's shell (or undecided: left as it is)
+    for (int i : comp_tris[r]) flip(tris_[i]);
+    int lowest = static_cast<int>(nf);
+    for (std::size_t f = 0; f < nf; ++f)
+      if (find(static_cast<int>(f)) == r) {
+        facing_[b][f] = -facing_[b][f];
+        face_normal_[b][f] = neg<P>(face_normal_[b][f]);
+        lowest = std::min(lowest, static_cast<int>(f));
+      }
+    res.notes.push_back({b, "has an inside-out component (the one with face " + std::to_string(lowest) +
+                                ": negative volume, not inside another component): drawn turned outward"});
+  }
+  return true;
 }
 
 // Does the eye lie in a (closed) triangle of the body from `first` on? Only faces seen edge-on

@@ -26,7 +26,16 @@ FaceTriangles face_triangles(const Polyhedron& p, int f) {
   for (int v : face) pts.push_back(&p.vertices()[v]);
   Plane h = plane_of_polygon(pts.data(), pts.size());
   if (h.is_degenerate()) {
-    out.status = FaceTriangles::Status::Degenerate;
+    // Zero net area: truly degenerate only when every vertex is on one line (a symmetric
+    // bow-tie has zero area too, and is refused like any self-intersecting face).
+    switch (zero_area_kind(pts.data(), pts.size())) {
+      case ZeroAreaKind::Collinear: out.status = FaceTriangles::Status::Degenerate; break;
+      case ZeroAreaKind::Crossing: out.status = FaceTriangles::Status::SelfIntersecting; break;
+      case ZeroAreaKind::NonPlanar:
+        out.status = FaceTriangles::Status::NonPlanar;
+        out.off_plane_vertex = face[0];
+        break;
+    }
     return out;
   }
   for (std::size_t k = 0; k < face.size(); ++k)

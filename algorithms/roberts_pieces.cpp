@@ -70,6 +70,20 @@ void check_solid(const Polyhedron& p, int i) {
   const MeshReport& r = p.report();
   if (!r.valid_solid() || !(six_volume(p) > 0))
     throw BodyError(i, "is not a valid closed solid (closed, manifold, outward-oriented, planar faces, no T-junctions)");
+  if (!r.negative_components.empty())
+    throw BodyError(i, "has a component with negative volume (the one with face " + std::to_string(r.negative_components[0]) +
+                           ": inside out, or a cavity): Roberts' algorithm takes solids without; use --method faces");
+}
+
+// The convex pieces must fill the body exactly; they do not when the mesh's components overlap
+// (one mesh that is two interpenetrating solids: the decomposition keeps one of them).
+void check_volume(const Polyhedron& p, const std::vector<Polyhedron>& pieces, int i) {
+  Rational sum = 0;
+  for (const Polyhedron& q : pieces) sum += six_volume(q);
+  if (sum != six_volume(p))
+    throw BodyError(i, "decomposes into convex pieces of volume " + to_string(sum / 6) + " != its volume " +
+                           to_string(six_volume(p) / 6) +
+                           " (its components overlap: give each solid as its own body, or use --method faces)");
 }
 
 }  // namespace
@@ -88,6 +102,7 @@ LineDrawing roberts_pieces(const std::vector<const Polyhedron*>& bodies, const C
       pieces[i].push_back(p);
     } else {
       for (ConvexPiece& c : convex_decomposition(p).pieces) pieces[i].push_back(std::move(c.body));
+      check_volume(p, pieces[i], static_cast<int>(i));
     }
     for (const Polyhedron& q : pieces[i]) {
       if (camera.perspective) {

@@ -79,6 +79,10 @@ std::string info_report(const SceneBody& b, int index, const InfoOptions& opt) {
     }) << "\n";
   o << check_line("simple faces", r.self_intersecting_faces.empty(),
                   "self-intersecting: " + list(r.self_intersecting_faces, m, [](int f) { return "face " + std::to_string(f); }));
+  if (!r.negative_components.empty())
+    o << "  negative-volume components: " << list(r.negative_components, m, [](int f) {
+      return "the one with face " + std::to_string(f);
+    }) << " (inside out, or a cavity's shell; render turns one that lies outside the others)\n";
   if (!r.isolated_vertices.empty()) o << "  unused vertices: " << ints_text(r.isolated_vertices, m) << "\n";
   if (!r.refused_faces.empty())
     o << "  faces OpenMesh refused: " << ints_text(r.refused_faces, m) << "\n";

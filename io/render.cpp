@@ -3,6 +3,7 @@
 
 #include "algorithms/convexity.hpp"
 #include "algorithms/face_occluders.hpp"
+#include "algorithms/mesh_repair.hpp"
 #include "algorithms/parallel.hpp"
 #include "algorithms/roberts.hpp"
 #include "algorithms/roberts_pieces.hpp"
@@ -48,9 +49,14 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   r.scenes = owned;
   std::vector<const Polyhedron*> polys;
   const View* scene_view = nullptr;
-  for (const Scene& s : *owned) {
+  std::vector<std::string> repairs;
+  for (Scene& s : *owned) {
     if (!scene_view && is_scene_file(s.file)) scene_view = &s.view;
-    for (const SceneBody& b : s.bodies) {
+    for (SceneBody& b : s.bodies) {
+      if (auto fixed = remove_zero_area_triangles(b.body)) {
+        b.body = std::move(fixed->body);
+        for (const std::string& n : fixed->notes) repairs.push_back(b.source + ": body '" + b.name + "' " + n);
+      }
       r.bodies.push_back(&b);
       polys.push_back(&b.body);
       r.names.push_back({b.name, b.source});
@@ -65,6 +71,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     const SceneBody& b = *r.bodies[e.body()];
     throw RenderBodyError(e.body(), b.name, b.source, e.reason());
   }
+  r.notes = std::move(repairs);
   for (const BodyNote& n : r.drawing.notes)
     r.notes.push_back(r.names[n.body].source + ": body '" + r.names[n.body].name + "' " + n.text);
   eye_plane_notes(r, r.notes);

@@ -199,4 +199,16 @@ std::ostream& operator<<(std::ostream& os, const Point3& p) { return os << to_st
 std::ostream& operator<<(std::ostream& os, const Vector3& v) { return os << to_string(v); }
 std::ostream& operator<<(std::ostream& os, const Plane& h) { return os << to_string(h); }
 
+ZeroAreaKind zero_area_kind(const Point3* const* v, std::size_t n) {
+  // Three vertices not on one line span the plane the others must lie in.
+  for (std::size_t i = 2; i < n; ++i) {
+    Vector3 m = cross(*v[1] - *v[0], *v[i] - *v[0]);
+    if (m.is_zero()) continue;
+    for (std::size_t k = 0; k < n; ++k)
+      if (dot(m, *v[k] - *v[0]) != 0) return ZeroAreaKind::NonPlanar;
+    return ZeroAreaKind::Crossing;
+  }
+  return ZeroAreaKind::Collinear;
+}
+
 }  // namespace hlr

@@ -98,6 +98,12 @@ Vector3 newell_normal(const Point3* const* vertices, std::size_t n);
 /// zero-area polygons. Does not check planarity (see predicates).
 Plane plane_of_polygon(const Point3* const* vertices, std::size_t n);
 
+/// A polygon whose Newell normal is zero: its vertices all on one line (`Collinear`, truly
+/// degenerate), all in one plane but not on a line (`Crossing`: the edges cross so the signed
+/// areas cancel, like a symmetric bow-tie), or not in one plane (`NonPlanar`). Exact.
+enum class ZeroAreaKind { Collinear, Crossing, NonPlanar };
+ZeroAreaKind zero_area_kind(const Point3* const* vertices, std::size_t n);
+
 /// The same oriented plane scaled to integer coefficients with no common factor
 /// (x + 1 = 0 rather than 8x + 8 = 0), the form the course notes write body matrices in.
 /// A degenerate plane is returned unchanged.

@@ -8,6 +8,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "kernel/polyhedron.hpp"
 #include "kernel/predicates.hpp"
 
 namespace hlr {
@@ -97,10 +98,13 @@ void check_faces(const std::vector<Point3>& vs, const std::vector<std::vector<in
     }
     const Plane& h = planes[fi];
     if (h.is_degenerate()) {
-      bool all_collinear = true;
-      for (std::size_t i = 2; i < f.size() && all_collinear; ++i)
-        all_collinear = collinear(vs[f[0]], vs[f[1]], vs[f[i]]);
-      r.degenerate_faces.push_back({face, all_collinear ? "collinear vertices" : "zero area"});
+      std::vector<const Point3*> pts;
+      for (int v : f) pts.push_back(&vs[v]);
+      switch (zero_area_kind(pts.data(), pts.size())) {
+        case ZeroAreaKind::Collinear: r.degenerate_faces.push_back({face, "collinear vertices"}); break;
+        case ZeroAreaKind::Crossing: r.zero_area_crossing.push_back(face); break;  // a symmetric bow-tie
+        case ZeroAreaKind::NonPlanar: r.non_planar_faces.push_back({face, f[0]}); break;
+      }
       continue;
     }
     for (int v : f)
@@ -172,6 +176,33 @@ void check_self_intersections(const std::vector<Point3>& vs, const std::vector<s
     if (!polygon_is_simple(vs, faces[f], polygon_view(planes[f].normal())))
       r.self_intersecting_faces.push_back(static_cast<int>(f));
   }
+  // Planar faces whose signed areas cancel (the Newell normal is zero) cross themselves too.
+  r.self_intersecting_faces.insert(r.self_intersecting_faces.end(), r.zero_area_crossing.begin(), r.zero_area_crossing.end());
+  std::sort(r.self_intersecting_faces.begin(), r.self_intersecting_faces.end());
+}
+
+// Closed, oriented meshes: the signed volume of every component (faces joined across edges);
+// a negative one is inside out or the shell of a cavity.
+void check_components(const std::vector<Point3>& vs, const std::vector<std::vector<int>>& faces, MeshReport& r) {
+  if (!r.closed() || !r.oriented() || faces.empty()) return;
+  std::vector<int> parent(faces.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  std::unordered_map<std::uint64_t, int> first_face;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (std::size_t i = 0; i < faces[f].size(); ++i) {
+      int a = faces[f][i], b = faces[f][(i + 1) % faces[f].size()];
+      if (a == b) continue;
+      auto [it, fresh] = first_face.emplace(key(std::min(a, b), std::max(a, b)), static_cast<int>(f));
+      if (!fresh) parent[find(parent, static_cast<int>(f))] = find(parent, it->second);
+    }
+  std::map<int, std::vector<Face>> comps;
+  for (std::size_t f = 0; f < faces.size(); ++f) comps[find(parent, static_cast<int>(f))].push_back(faces[f]);
+  if (comps.size() < 2) return;
+  std::map<int, int> lowest;
+  for (std::size_t f = 0; f < faces.size(); ++f) lowest.emplace(find(parent, static_cast<int>(f)), static_cast<int>(f));
+  for (const auto& [root, fs] : comps)
+    if (six_signed_volume(vs, fs) < 0) r.negative_components.push_back(lowest[root]);
+  std::sort(r.negative_components.begin(), r.negative_components.end());
 }
 
 }  // namespace
@@ -186,6 +217,7 @@ MeshReport check_mesh(const std::vector<Point3>& vertices,
   check_duplicates(vertices, r);
   check_t_junctions(vertices, r);
   check_self_intersections(vertices, faces, planes, r);
+  check_components(vertices, faces, r);
   return r;
 }
 

@@ -40,6 +40,10 @@ struct MeshReport {
   };
   std::vector<TJunction> t_junctions;
   std::vector<int> self_intersecting_faces;  // planar faces that are not simple polygons (edges cross or touch)
+  /// Closed, oriented meshes of several components: the lowest face of each component whose
+  /// signed volume is negative (inside out, or the shell of a cavity inside another one).
+  std::vector<int> negative_components;
+  std::vector<int> zero_area_crossing;  // internal: planar faces of zero net area, not collinear
 
   bool manifold() const { return non_manifold_edges.empty() && non_manifold_vertices.empty(); }
   bool closed() const { return boundary_edges.empty() && non_manifold_edges.empty(); }

@@ -78,9 +78,19 @@ TEST(Polyhedron, DegenerateFaces) {
   EXPECT_EQ(rep.report().degenerate_faces[0].why, "repeated vertex 1");
   EXPECT_EQ(rep.report().isolated_vertices, (std::vector<int>{3}));
   EXPECT_EQ(rep.refused_faces(), (std::vector<int>{0}));
-  // A bow-tie quad: its Newell normal is zero, but it is not collinear.
+}
+
+// A symmetric bow-tie quad: its Newell normal is zero (the two lobes' areas cancel), but it is
+// not degenerate: it crosses itself (issue 20: it was reported "zero area" and hid nothing).
+TEST(Polyhedron, SymmetricBowTieIsSelfIntersecting) {
   std::vector<Point3> vs = {Point3(0, 0, 0), Point3(1, 1, 0), Point3(1, 0, 0), Point3(0, 1, 0)};
-  EXPECT_EQ(Polyhedron(vs, {{0, 1, 2, 3}}).report().degenerate_faces[0].why, "zero area");
+  Polyhedron p(vs, {{0, 1, 2, 3}});
+  const MeshReport& r = p.report();
+  EXPECT_TRUE(r.degenerate_faces.empty());
+  EXPECT_EQ(r.self_intersecting_faces, std::vector<int>{0});
+  // Asymmetric: non-zero normal, still crossing.
+  std::vector<Point3> ws = {Point3(0, 0, 0), Point3(5, 3, 0), Point3(5, 0, 0), Point3(0, 1, 0)};
+  EXPECT_EQ(Polyhedron(ws, {{0, 1, 2, 3}}).report().self_intersecting_faces, std::vector<int>{0});
 }
 
 TEST(Polyhedron, DuplicateVerticesExactly) {

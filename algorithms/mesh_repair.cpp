@@ -1,0 +1,61 @@
+// Mesh repairs (see mesh_repair.hpp).
+#include "algorithms/mesh_repair.hpp"
+
+#include "kernel/predicates.hpp"
+
+namespace hlr {
+namespace {
+
+// The positions (a, m, c) in a collinear triangle with m strictly between a and c; false when
+// the triangle has area or repeated points.
+bool middle_of(const std::vector<Point3>& vs, const Face& f, int& a, int& m, int& c) {
+  if (f.size() != 3) return false;
+  const Point3 &p0 = vs[f[0]], &p1 = vs[f[1]], &p2 = vs[f[2]];
+  if (p0 == p1 || p1 == p2 || p0 == p2 || !collinear(p0, p1, p2)) return false;
+  for (int k = 0; k < 3; ++k) {
+    const Point3 &x = vs[f[(k + 2) % 3]], &y = vs[f[k]], &z = vs[f[(k + 1) % 3]];
+    if (dot(x - y, z - y) < 0) {
+      m = f[k], a = f[(k + 1) % 3], c = f[(k + 2) % 3];  // long edge a -> c inside this face
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+std::optional<MeshRepair> remove_zero_area_triangles(const Polyhedron& body) {
+  const std::vector<Point3>& vs = body.vertices();
+  std::vector<Face> faces = body.faces();
+  int removed = 0;
+  std::string which;
+  for (std::size_t f = 0; f < faces.size();) {
+    int a, m, c;
+    if (!middle_of(vs, faces[f], a, m, c)) {
+      ++f;
+      continue;
+    }
+    // The face that runs c -> a (the other side of the long edge a -> c).
+    int other = -1, pos = -1, count = 0;
+    for (std::size_t g = 0; g < faces.size(); ++g) {
+      if (g == f) continue;
+      for (std::size_t k = 0; k < faces[g].size(); ++k)
+        if (faces[g][k] == c && faces[g][(k + 1) % faces[g].size()] == a) other = static_cast<int>(g), pos = static_cast<int>(k), ++count;
+    }
+    if (count != 1) {
+      ++f;
+      continue;
+    }
+    faces[other].insert(faces[other].begin() + pos + 1, m);
+    which += (which.empty() ? "" : ", ") + std::to_string(f + removed);
+    faces.erase(faces.begin() + static_cast<long>(f));
+    ++removed;
+  }
+  if (removed == 0) return std::nullopt;
+  MeshRepair out{Polyhedron(vs, std::move(faces)), {}};
+  out.notes.push_back("has " + std::to_string(removed) + " zero-area triangle" + (removed > 1 ? "s" : "") + " (face " + which +
+                      ": three collinear vertices): removed, the middle vertex joined to the neighbouring face");
+  return out;
+}
+
+}  // namespace hlr

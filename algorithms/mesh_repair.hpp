@@ -1,0 +1,26 @@
+// Repairs of meshes that describe a valid solid in a degenerate way (course notes section 19:
+// a solid is its closed surface; a face of zero area bounds nothing). Today: zero-area
+// triangles on a seam, as exporters leave them between two coplanar triangles.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kernel/polyhedron.hpp"
+
+namespace hlr {
+
+struct MeshRepair {
+  Polyhedron body;
+  std::vector<std::string> notes;  // what was changed, after the body's name: "had ...; ..."
+};
+
+/// Removes every triangle whose three (distinct) vertices are collinear: its middle vertex m is
+/// inserted into the face on the other side of its long edge a-c (between a and c, where that
+/// face's edge a-c now runs a-m-c), so the surface stays closed and the sight rays behind the
+/// seam stay inside. Exact. nullopt when there is no such triangle (or its long edge is not
+/// shared by exactly one other face).
+std::optional<MeshRepair> remove_zero_area_triangles(const Polyhedron& body);
+
+}  // namespace hlr
