@@ -171,6 +171,7 @@ void check_self_intersections(const std::vector<Point3>& vs, const std::vector<s
   std::vector<char> skip(faces.size(), 0);
   for (const auto& d : r.degenerate_faces) skip[d.face] = 1;
   for (const auto& n : r.non_planar_faces) skip[n.face] = 1;
+  for (int f : r.zero_area_crossing) skip[f] = 1;
   for (std::size_t f = 0; f < faces.size(); ++f) {
     if (skip[f] || faces[f].size() < 4) continue;
     if (!polygon_is_simple(vs, faces[f], polygon_view(planes[f].normal())))
