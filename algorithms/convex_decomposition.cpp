@@ -235,8 +235,10 @@ Rational six_volume(const Polyhedron& body) { return six_signed_volume(body.vert
 
 Decomposition convex_decomposition(const Polyhedron& body, DecompositionMethod method) {
   const MeshReport& r = body.report();
-  if (!r.valid_solid() || !(six_volume(body) > 0))
-    throw std::invalid_argument("convex decomposition needs a closed, manifold, outward-oriented solid with planar faces");
+  if (!r.valid_solid())
+    throw std::invalid_argument("convex decomposition needs a valid solid: " + solid_problem(r));
+  if (!(six_volume(body) > 0))
+    throw std::invalid_argument("convex decomposition needs an outward-oriented solid: the volume is not positive");
   Decomposition d;
   Nef n = to_nef(body);
   if (method == DecompositionMethod::FacePlanes) {

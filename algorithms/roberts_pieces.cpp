@@ -68,8 +68,8 @@ bool same_plane_opposite(const Plane& a, const Plane& b) { return a == b.opposit
 
 void check_solid(const Polyhedron& p, int i) {
   const MeshReport& r = p.report();
-  if (!r.valid_solid() || !(six_volume(p) > 0))
-    throw BodyError(i, "is not a valid closed solid (closed, manifold, outward-oriented, planar faces, no T-junctions)");
+  if (!r.valid_solid()) throw BodyError(i, "is not a valid closed solid: " + solid_problem(r));
+  if (!(six_volume(p) > 0)) throw BodyError(i, "is not a valid closed solid: its volume is not positive (inside out)");
   if (!r.negative_components.empty())
     throw BodyError(i, "has a component with negative volume (the one with face " + std::to_string(r.negative_components[0]) +
                            ": inside out, or a cavity): Roberts' algorithm takes solids without; use --method faces");

@@ -130,9 +130,7 @@ std::string requirement_failure(const SceneBody& b, const std::string& name) {
   if (name == "distinct" && !r.duplicate_vertices.empty())
     return "has duplicate vertices (" + std::to_string(r.duplicate_vertices[0].first) + " and " +
            std::to_string(r.duplicate_vertices[0].second) + ")";
-  if (name == "solid" && !r.valid_solid())
-    return "is not a valid solid (closed, manifold, oriented, planar, no degenerate or self-intersecting faces, "
-           "distinct vertices, no T-junctions)";
+  if (name == "solid" && !r.valid_solid()) return "is not a valid solid: " + solid_problem(r);
   if (name == "convex") {
     ConvexityResult cv = convexity(b.body);
     if (!cv.convex()) return "is " + describe(cv);

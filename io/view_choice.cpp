@@ -25,8 +25,12 @@ Camera choose_camera(const ViewRequest& req, const View* sv, const std::vector<c
     Point3 eye = req.eye ? *req.eye : sv->eye;
     std::optional<Point3> target = req.target;
     if (!target && sv && sv->type == View::Type::Perspective && sv->target) target = sv->target;
+    const bool default_target = !target;
     if (!target) target = bounding_box_centre(bodies);
     if (!up && sv && sv->up_given) up = sv->up;
+    if (default_target && eye == *target)
+      throw std::invalid_argument("the eye " + to_string(eye) +
+                                  " is the default target, the centre of the scene's bounding box: give a target (--target)");
     return make_perspective(eye, *target, up);
   }
   if (req.target) throw std::invalid_argument("--target needs --eye (a perspective view)");

@@ -226,4 +226,26 @@ std::string to_string(const Edge& e) {
   return std::to_string(e.first) + "-" + std::to_string(e.second);
 }
 
+std::string solid_problem(const MeshReport& r) {
+  auto face = [](int f) { return "face " + std::to_string(f); };
+  if (!r.non_manifold_edges.empty())
+    return "edge " + to_string(r.non_manifold_edges[0]) + " is in three or more faces (not manifold)";
+  if (!r.non_manifold_vertices.empty())
+    return "vertex " + std::to_string(r.non_manifold_vertices[0]) + " joins separate fans of faces (not manifold)";
+  if (!r.boundary_edges.empty()) return "edge " + to_string(r.boundary_edges[0]) + " is in one face only (not closed)";
+  if (!r.misoriented_edges.empty())
+    return "edge " + to_string(r.misoriented_edges[0]) + " is traversed twice in one direction (faces not consistently oriented)";
+  if (!r.non_planar_faces.empty())
+    return face(r.non_planar_faces[0].face) + " is not planar (vertex " + std::to_string(r.non_planar_faces[0].vertex) + " is off its plane)";
+  if (!r.degenerate_faces.empty()) return face(r.degenerate_faces[0].face) + " is degenerate (" + r.degenerate_faces[0].why + ")";
+  if (!r.self_intersecting_faces.empty()) return face(r.self_intersecting_faces[0]) + " crosses itself";
+  if (!r.duplicate_vertices.empty())
+    return "vertices " + std::to_string(r.duplicate_vertices[0].first) + " and " + std::to_string(r.duplicate_vertices[0].second) +
+           " are the same point";
+  if (!r.t_junctions.empty())
+    return "vertex " + std::to_string(r.t_junctions[0].vertex) + " lies inside edge " + to_string(r.t_junctions[0].edge) +
+           " (a T-junction)";
+  return {};
+}
+
 }  // namespace hlr

@@ -62,4 +62,8 @@ MeshReport check_mesh(const std::vector<Point3>& vertices,
 
 std::string to_string(const Edge& e);
 
+/// The first reason the mesh is not a valid solid, naming what is wrong: "edge 3-7 is in 3
+/// faces (not manifold)", "face 4 crosses itself", ...; empty for a valid solid.
+std::string solid_problem(const MeshReport& r);
+
 }  // namespace hlr

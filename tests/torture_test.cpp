@@ -345,3 +345,88 @@ TEST(Torture, MeshDefects) {
   EXPECT_GT(seams, 0);
   EXPECT_GT(refused, 0);
 }
+
+namespace {
+
+Polyhedron cube_box(Rational x0, Rational y0, Rational z0, Rational x1, Rational y1, Rational z1) {
+  return make_box(Point3(x0, y0, z0), Point3(x1, y1, z1));
+}
+
+// Renders a file of data/degenerate/meshes with a view, checks every piece by exact ray casting
+// against the clean convex solids `truth`, and returns the notes.
+std::vector<std::string> check_named(const std::string& file, const ViewRequest& view, const std::vector<Polyhedron>& truth,
+                                     RenderMethod method = RenderMethod::Faces) {
+  RenderOptions opt;
+  opt.method = method;
+  opt.view = view;
+  opt.lines.edges = EdgeSelection::All;
+  opt.lines.intersections = false;
+  RenderResult r = render_files({std::string(HLR_DATA_DIR) + "/degenerate/meshes/" + file}, opt);
+  std::vector<std::vector<OraclePlane>> planes;
+  for (const Polyhedron& p : truth) planes.push_back(oracle_planes(p));
+  Tally t;
+  sample_check(r.drawing, planes, r.camera, t, file.c_str());
+  EXPECT_EQ(t.disagreements, 0) << file;
+  return r.notes;
+}
+
+bool has_note(const std::vector<std::string>& notes, const std::string& part) {
+  for (const auto& n : notes)
+    if (n.find(part) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(Torture, InsideOutComponentIsTurned) {
+  std::vector<Polyhedron> truth = {cube_box(0, 0, 0, 2, 2, 2), cube_box(3, Rational(1, 2), Rational(1, 2), 4, Rational(3, 2), Rational(3, 2))};
+  for (ViewRequest v : {ViewRequest{Vector3(1, Rational(13, 10), Rational(17, 10)), {}, {}, {}},
+                        ViewRequest{Vector3(1, 0, 0), {}, {}, {}}, ViewRequest{{}, Point3(7, 1, 1), Point3(0, 1, 1), {}}})
+    EXPECT_TRUE(has_note(check_named("inside_out_component.off", v, truth), "inside-out component"));
+  EXPECT_THROW(check_named("inside_out_component.off", {}, truth, RenderMethod::Roberts), RenderBodyError);
+}
+
+TEST(Torture, CavityIsNotTurned) {
+  // The oracle cannot hold a cavity; the drawing of the outer cube must equal the plain cube's.
+  RenderOptions opt;
+  opt.view.direction = Vector3(1, Rational(13, 10), Rational(17, 10));
+  opt.lines.edges = EdgeSelection::All;
+  RenderResult r = render_files({std::string(HLR_DATA_DIR) + "/degenerate/meshes/cavity.off"}, opt);
+  EXPECT_FALSE(has_note(r.notes, "inside-out"));
+  for (const Segment& s : r.drawing.segments)
+    for (const Piece& p : s.pieces)  // every edge of the cavity is hidden, every edge of the cube is not
+      if (s.v0 >= 8) EXPECT_FALSE(p.visible);
+}
+
+TEST(Torture, ZeroAreaSeamDoesNotLeak) {
+  std::vector<Polyhedron> truth = {cube_box(0, 0, 0, 1, 1, 1),
+                                   cube_box(Rational(1, 4), Rational(1, 4), -2, Rational(3, 4), Rational(3, 4), -1)};
+  // Along z the box behind is wholly hidden; the seam x = y crosses its edges' images.
+  for (ViewRequest v : {ViewRequest{Vector3(0, 0, 1), {}, {}, {}}, ViewRequest{Vector3(1, -1, 10), {}, {}, {}},
+                        ViewRequest{{}, Point3(Rational(1, 2), Rational(1, 2), 5), Point3(Rational(1, 2), Rational(1, 2), 0), {}}}) {
+    EXPECT_TRUE(has_note(check_named("zero_area_seam.off", v, truth), "zero-area triangle"));
+    check_named("zero_area_seam.off", v, truth, RenderMethod::Roberts);
+  }
+  // Feature lines: no line across the flat front face (the seam is not a boundary).
+  RenderOptions opt;
+  opt.view.direction = Vector3(0, 0, 1);
+  opt.lines.edges = EdgeSelection::Feature;
+  RenderResult r = render_files({std::string(HLR_DATA_DIR) + "/degenerate/meshes/zero_area_seam.off"}, opt);
+  for (const Segment& s : r.drawing.segments) EXPECT_NE(s.line, LineKind::Boundary);
+  for (const Segment& s : r.drawing.segments) EXPECT_FALSE(s.v0 == 16 || s.v1 == 16) << "a line through the seam's middle vertex";
+}
+
+TEST(Torture, OverlappingComponentsRefusedByRoberts) {
+  std::vector<Polyhedron> truth = {cube_box(0, 0, 0, 2, 2, 2), cube_box(1, 1, 1, 3, 3, 3)};
+  check_named("overlapping_cubes.off", {Vector3(1, Rational(13, 10), Rational(17, 10)), {}, {}, {}}, truth);
+  try {
+    check_named("overlapping_cubes.off", {}, truth, RenderMethod::Roberts);
+    FAIL() << "Roberts drew one mesh of two overlapping cubes";
+  } catch (const RenderBodyError& e) {
+    EXPECT_NE(std::string(e.what()).find("volume 8 != its volume 16"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Torture, SymmetricBowTieRefused) {
+  EXPECT_THROW(check_named("symmetric_bow_tie.off", {}, {}), RenderBodyError);
+}
