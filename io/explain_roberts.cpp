@@ -84,6 +84,25 @@ std::string region_svg(std::vector<Line> lines, const std::vector<Rational>& p, 
   return svg + "</svg>";
 }
 
+// p + q·t + w·a as a student writes it: "2 − 4t − a" (zero terms left out, unit coefficients
+// bare, minus signs as operators, fractions as 3/5·t).
+std::string linear_text(const Rational& p, const Rational& qt, const Rational& w) {
+  std::string out;
+  auto term = [&](const Rational& c, const std::string& var) {
+    if (c == 0) return;
+    Rational a = abs(c);
+    std::string mag = var.empty() ? q(a) : a == 1 ? var : q(a) + (a.get_den() == 1 ? "" : "·") + var;
+    if (out.empty())
+      out = (c < 0 ? "−" : "") + mag;
+    else
+      out += (c < 0 ? " − " : " + ") + mag;
+  };
+  term(p, "");
+  term(qt, "t");
+  term(w, "a");
+  return out.empty() ? "0" : out;
+}
+
 J edge_body_table(const Point3& p1, const Point3& p2, const BodyMatrixData& V, const RowVector4& g, Section& sec,
                   const std::string& prefix) {
   const int n = static_cast<int>(V.cols());
@@ -94,7 +113,7 @@ J edge_body_table(const Point3& p1, const Point3& p2, const BodyMatrixData& V, c
   std::vector<Rational> p = row_times_matrix(P, V), qq = row_times_matrix(D, V), w = row_times_matrix(g, V);
   J& ineq = sec.table(prefix + "inequalities", {"face", "p", "q", "w", "h"});
   for (int j = 0; j < n; ++j)
-    ineq.push_back({std::to_string(j), q(p[j]), q(qq[j]), q(w[j]), q(p[j]) + " + " + q(qq[j]) + "·t + " + q(w[j]) + "·a > 0"});
+    ineq.push_back({std::to_string(j), q(p[j]), q(qq[j]), q(w[j]), linear_text(p[j], qq[j], w[j]) + " > 0"});
   std::vector<Line> lines;
   for (int j = 0; j < n; ++j) lines.push_back({"h" + std::to_string(j), qq[j], w[j], -p[j]});
   lines.push_back({"t=0", 1, 0, 0});
@@ -154,6 +173,11 @@ J roberts_solution(const Problem& pr) {
   ro.edges = EdgeSelection::All;
   RobertsResult r = roberts(polys, cam, ro);
   const RowVector4 g = cam.viewpoint();
+  // The matrix every later value of a body is computed with: [VT] = [T]^-1·[V] of the body as
+  // typed when it is transformed (the course's route, printed in its table), else its [V]. Its
+  // columns are positive multiples of the world matrix's, so every sign is the same.
+  std::vector<BodyMatrixData> shown;
+  for (std::size_t i = 0; i < polys.size(); ++i) shown.push_back(r.matrices[i].V);
   for (std::size_t i = 0; i < polys.size(); ++i) {
     const Polyhedron& p = *polys[i];
     const BodyMatrix& bm = r.matrices[i];
@@ -184,15 +208,22 @@ J roberts_solution(const Problem& pr) {
         J& vt = sec.table("VT", {"face", "V", "VT"});
         for (int c = 0; c < VT.cols(); ++c)
           vt.push_back({std::to_string(c), row4(b0.V(0, c), b0.V(1, c), b0.V(2, c), b0.V(3, c)), row4(VT(0, c), VT(1, c), VT(2, c), VT(3, c))});
+        shown[i] = VT;
       }
     }
     out["sections"].push_back(sec.j);
     Section fac("facing", pr.scene.bodies[i].name);
     fac.value("E", cam.perspective ? "[" + q(-cam.eye.x()) + " " + q(-cam.eye.y()) + " " + q(-cam.eye.z()) + " -1]"
                                    : "[" + q(-cam.direction.x()) + " " + q(-cam.direction.y()) + " " + q(-cam.direction.z()) + " 0]");
+    RowVector4 E;
+    if (cam.perspective)
+      E << -cam.eye.x(), -cam.eye.y(), -cam.eye.z(), -1;
+    else
+      E << -cam.direction.x(), -cam.direction.y(), -cam.direction.z(), 0;
+    const std::vector<Rational> ev = row_times_matrix(E, shown[i]);
     J& fr = fac.table("facing_table", {"face", "EV", "class"});
-    for (std::size_t f = 0; f < r.ev[i].size(); ++f)
-      fr.push_back({std::to_string(f), q(r.ev[i][f]), r.facing[i][f] < 0 ? "non-facing" : r.facing[i][f] == 0 ? "edge-on" : "facing"});
+    for (std::size_t f = 0; f < ev.size(); ++f)
+      fr.push_back({std::to_string(f), q(ev[f]), r.facing[i][f] < 0 ? "non-facing" : r.facing[i][f] == 0 ? "edge-on" : "facing"});
     J& sh = fac.table("self_hidden", {"edge", "face_pair"});
     for (const Segment& s : r.segments)
       if (s.body == static_cast<int>(i) && s.self_hidden)
@@ -201,7 +232,7 @@ J roberts_solution(const Problem& pr) {
       const Vector3& L = *pr.scene.light;
       RowVector4 LE;
       LE << -L.x(), -L.y(), -L.z(), 0;
-      std::vector<Rational> lv = row_times_matrix(LE, bm.V);
+      std::vector<Rational> lv = row_times_matrix(LE, shown[i]);
       fac.value("L", "[" + q(-L.x()) + " " + q(-L.y()) + " " + q(-L.z()) + " 0]");
       J& lt = fac.table("light_table", {"face", "LV", "self_shadowed", "visible_shadow"});
       RowVector4 toward_light;  // facing from the light: the same test as from the viewer
@@ -228,7 +259,8 @@ J roberts_solution(const Problem& pr) {
                                       pr.scene.bodies[k].name);
       sec.value("P1", pt(s.from()));
       sec.value("P2", pt(s.to()));
-      J res = edge_body_table(s.from(), s.to(), r.matrices[k].V, g, sec, "");
+      sec.value("g", row4(g(0), g(1), g(2), g(3)));
+      J res = edge_body_table(s.from(), s.to(), shown[k], g, sec, "");
       sec.value("t_min", res["t_min"].get<std::string>());
       sec.value("t_max", res["t_max"].get<std::string>());
       sec.value("hidden_interval", res["hidden"].get<std::string>());

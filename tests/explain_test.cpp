@@ -6,6 +6,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 
 #include "algorithms/roberts.hpp"
 #include "io/drawing.hpp"
@@ -223,4 +225,98 @@ TEST(Explain, BadProblemFilesNameTheLine) {
             std::string::npos);
   EXPECT_NE(err("problem: roberts\ncolour: red\nbodies:\n  - box: {min: [0,0,0], max: [1,1,1]}\n").find("unknown key 'colour'"),
             std::string::npos);
+}
+
+namespace {
+
+// "[a b c d]" or "(x, y, z)" as exact numbers.
+std::vector<Rational> numbers(std::string s) {
+  for (char& c : s)
+    if (c == '[' || c == ']' || c == '(' || c == ')' || c == ',') c = ' ';
+  std::vector<Rational> out;
+  std::istringstream in(s);
+  std::string tok;
+  while (in >> tok) out.push_back(parse_rational(tok));
+  return out;
+}
+
+Rational dot4(const std::vector<Rational>& a, const std::vector<Rational>& b) {
+  Rational s = 0;
+  for (int k = 0; k < 4; ++k) s += a[k] * b[k];
+  return s;
+}
+
+}  // namespace
+
+// Every value of the exam page can be recomputed from values printed before it (issue 12): the
+// matrix a body's later values use is its [VT] when it is transformed, else its [V]; E·[VT],
+// L·[VT], and p = [P1 1]·[VT], q = [P2 - P1 0]·[VT], w = g·[VT] of every edge table follow.
+TEST(Explain, EveryValueRecomputedFromThePrintedMatrices) {
+  int checked = 0;
+  for (const std::string& file : problems()) {
+    Problem pr = load_problem(file);
+    if (pr.type != Problem::Type::Roberts) continue;
+    SolutionJson s = explain(pr);
+    std::map<std::string, std::vector<std::vector<Rational>>> columns;  // body -> columns
+    for (const auto& sec : s["sections"]) {
+      if (sec["title"] != "body_matrix") continue;
+      std::vector<std::vector<Rational>> cols;
+      for (const auto& t : sec["tables"]) {
+        if (t["caption"] == "planes" && cols.empty())
+          for (const auto& row : t["rows"]) cols.push_back(numbers(row[4]));
+        if (t["caption"] == "VT") {
+          cols.clear();
+          for (const auto& row : t["rows"]) cols.push_back(numbers(row[2]));
+        }
+      }
+      columns[sec["subject"]] = cols;
+    }
+    for (const auto& sec : s["sections"]) {
+      if (sec["title"] == "facing") {
+        const auto& cols = columns[sec["subject"]];
+        std::vector<Rational> E = numbers(sec["values"]["E"]);
+        for (const auto& t : sec["tables"]) {
+          if (t["caption"] == "facing_table") {
+            for (std::size_t f = 0; f < t["rows"].size(); ++f, ++checked)
+              EXPECT_EQ(to_string(dot4(E, cols[f])), t["rows"][f][1].get<std::string>()) << file << " face " << f;
+          }
+          if (t["caption"] == "light_table") {
+            std::vector<Rational> L = numbers(sec["values"]["L"]);
+            for (std::size_t f = 0; f < t["rows"].size(); ++f, ++checked)
+              EXPECT_EQ(to_string(dot4(L, cols[f])), t["rows"][f][1].get<std::string>()) << file << " L face " << f;
+          }
+        }
+      }
+      if (sec["title"] == "edge_vs_body") {
+        std::string subject = sec["subject"];
+        const auto& cols = columns[subject.substr(subject.find(" / ") + 3)];
+        std::vector<Rational> P1 = numbers(sec["values"]["P1"]), P2 = numbers(sec["values"]["P2"]), g = numbers(sec["values"]["g"]);
+        std::vector<Rational> P = {P1[0], P1[1], P1[2], 1}, D = {P2[0] - P1[0], P2[1] - P1[1], P2[2] - P1[2], 0};
+        for (const auto& t : sec["tables"]) {
+          if (t["caption"] != "inequalities") continue;
+          for (std::size_t j = 0; j < t["rows"].size(); ++j, ++checked) {
+            EXPECT_EQ(to_string(dot4(P, cols[j])), t["rows"][j][1].get<std::string>()) << file << " " << subject << " p" << j;
+            EXPECT_EQ(to_string(dot4(D, cols[j])), t["rows"][j][2].get<std::string>()) << file << " " << subject << " q" << j;
+            EXPECT_EQ(to_string(dot4(g, cols[j])), t["rows"][j][3].get<std::string>()) << file << " " << subject << " w" << j;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 60);
+}
+
+// Inequalities are written as a student writes them (issue 12: not "2 + -4·t + -1·a > 0").
+TEST(Explain, InequalitiesReadLikeTheNotes) {
+  SolutionJson s = explain(load_problem(kData + "/problems/roberts_rotated_cube.yaml"));
+  const auto& rows = table(s, "edge_vs_body", "inequalities");
+  EXPECT_EQ(rows[2][4], "3/2 > 0");
+  EXPECT_EQ(rows[5][4], "6 − 18/5·t − 4/5·a > 0");
+  for (const auto& sec : s["sections"])
+    for (const auto& t : sec["tables"])
+      if (t["caption"] == "inequalities")
+        for (const auto& r : t["rows"]) {
+          EXPECT_EQ(r[4].get<std::string>().find("+ -"), std::string::npos);
+          EXPECT_EQ(r[4].get<std::string>().find("0·"), std::string::npos);
+        }
 }
