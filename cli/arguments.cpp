@@ -1,6 +1,8 @@
 // Exact option values and negative numbers after a space (see arguments.hpp).
 #include "cli/arguments.hpp"
 
+#include <cctype>
+#include <filesystem>
 #include <stdexcept>
 
 namespace hlr::cli {
@@ -48,6 +50,22 @@ Vector3 parse_vector3(const std::string& option, const std::string& text) {
     }
   }
   return Vector3(c[0], c[1], c[2]);
+}
+
+std::string output_format(const std::string& format, const std::string& output,
+                          const std::vector<std::pair<std::string, std::string>>& by_extension, const std::string& fallback) {
+  if (!format.empty()) return format;
+  std::string ext = std::filesystem::path(output).extension().string();
+  if (ext.empty()) return fallback;
+  std::string lower;
+  for (char c : ext) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  std::string known;
+  for (const auto& [e, f] : by_extension) {
+    if (lower == e) return f;
+    known += (known.empty() ? "" : ", ") + e;
+  }
+  throw std::invalid_argument("cannot write '" + output + "': unknown output format '" + ext + "' (known: " + known +
+                              "; or give --format)");
 }
 
 }  // namespace hlr::cli

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kernel/geometry.hpp"
@@ -17,5 +18,12 @@ std::vector<std::string> join_negative_values(int argc, char** argv);
 
 /// Parses "X,Y,Z" exactly; throws std::invalid_argument naming the option and the bad part.
 Vector3 parse_vector3(const std::string& option, const std::string& text);
+
+/// The output format: `format` when given, else from the output file's extension (case does
+/// not matter) looked up in `by_extension` ({".json", "json"}, ...), else `fallback` when there
+/// is no output file or no extension. An unknown extension is an error naming the file and the
+/// known extensions (issue 12: `-o x.pdf` must not write another format under that name).
+std::string output_format(const std::string& format, const std::string& output,
+                          const std::vector<std::pair<std::string, std::string>>& by_extension, const std::string& fallback);
 
 }  // namespace hlr::cli

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "cli/arguments.hpp"
 #include "cli/commands.hpp"
 #include "io/atomic_file.hpp"
 #include "io/explain.hpp"
@@ -15,11 +16,8 @@ struct ExplainArgs {
 };
 
 int run_explain(const ExplainArgs& a) {
-  std::string format = a.format;
-  if (format.empty()) {
-    std::string ext = std::filesystem::path(a.output).extension().string();
-    format = ext == ".json" ? "json" : ext == ".html" || ext == ".htm" ? "html" : "md";
-  }
+  const std::string format =
+      output_format(a.format, a.output, {{".md", "md"}, {".markdown", "md"}, {".html", "html"}, {".htm", "html"}, {".json", "json"}}, "md");
   Problem pr = load_problem(a.input);
   SolutionJson s;
   try {

@@ -56,11 +56,7 @@ int run_render(const RenderArgs& a) {
   if (!a.view.empty() && !a.eye.empty()) throw std::invalid_argument("give --view (orthographic) or --eye (perspective), not both");
   if (!(a.width > 0) || !std::isfinite(a.width) || a.width > 1e6) throw std::invalid_argument("--width must be a positive size in millimetres");
   if (!(a.stroke > 0) || !std::isfinite(a.stroke) || a.stroke > 1e3) throw std::invalid_argument("--stroke must be a positive width in millimetres");
-  std::string format = a.format;
-  if (format.empty()) {
-    std::string ext = std::filesystem::path(a.output).extension().string();
-    format = ext == ".json" ? "json" : "svg";
-  }
+  const std::string format = output_format(a.format, a.output, {{".svg", "svg"}, {".json", "json"}}, "svg");
   using Clock = std::chrono::steady_clock;
   auto t_start = Clock::now();
   std::vector<Scene> scenes;
