@@ -10,6 +10,19 @@
 
 namespace hlr::explain_parts {
 
+// The convexity verdict in the course's Russian words.
+std::string describe_ru(const ConvexityResult& r) {
+  switch (r.verdict) {
+    case ConvexityResult::Verdict::Convex: return "тело выпуклое";
+    case ConvexityResult::Verdict::Flat: return "тело плоское (вырожденное): все вершины лежат в плоскости каждой грани";
+    case ConvexityResult::Verdict::NoFaces: return "нет граней";
+    case ConvexityResult::Verdict::NonConvex:
+      return "тело невыпуклое: вершина " + std::to_string(r.vertex_positive) + " лежит по одну сторону плоскости грани " +
+             std::to_string(r.face) + ", вершина " + std::to_string(r.vertex_negative) + " — по другую";
+  }
+  return {};
+}
+
 J convexity_solution(const Problem& pr) {
   J out;
   out["sections"] = J::array();
@@ -34,7 +47,7 @@ J convexity_solution(const Problem& pr) {
     t.push_back(row);
   }
   ConvexityResult cv = convexity(p);
-  sec.value("verdict", describe(cv));
+  sec.value("verdict", describe(cv), describe_ru(cv));
   out["sections"].push_back(sec.j);
   out["result"]["convex"] = cv.convex();
   out["result"]["verdict"] = describe(cv);
@@ -48,7 +61,7 @@ J decompose_solution(const Problem& pr) {
   const Polyhedron& p = pr.scene.bodies[0].body;
   Decomposition d = convex_decomposition(p);
   Section sec("decompose", pr.scene.bodies[0].name);
-  J& cuts = sec.table("cuts", {"step", "plane"});
+  J& cuts = sec.table("cuts", {"n_cut", "plane"});
   for (std::size_t i = 0; i < d.cuts.size(); ++i) cuts.push_back({std::to_string(i + 1), row4(d.cuts[i].a(), d.cuts[i].b(), d.cuts[i].c(), d.cuts[i].d())});
   J& pieces = sec.table("pieces", {"piece", "vertices", "faces", "volume", "surface", "cut", "both"});
   J res = J::array();

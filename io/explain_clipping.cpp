@@ -10,6 +10,14 @@
 
 namespace hlr::explain_parts {
 
+// "box [..]" / "frustum [..]" / "mesh F" in the course's Russian words.
+std::string clipper_ru(const std::string& en) {
+  for (auto [from, to] : {std::pair<std::string, std::string>{"box ", "параллелепипед "}, {"frustum ", "пирамида видимости "},
+                          {"mesh ", "выпуклый многогранник "}})
+    if (en.rfind(from, 0) == 0) return to + en.substr(from.size());
+  return en;
+}
+
 J cyrus_beck_solution(const Problem& pr) {
   J out;
   out["sections"] = J::array();
@@ -18,7 +26,7 @@ J cyrus_beck_solution(const Problem& pr) {
     const auto& [p1, p2] = pr.segments[i];
     CyrusBeckResult r = cyrus_beck(*pr.clipper, p1, p2, true);
     Section sec("cyrus_beck", std::to_string(i + 1));
-    sec.value("clipper", pr.clipper_text);
+    sec.value("clipper", pr.clipper_text, clipper_ru(pr.clipper_text));
     sec.value("P1", pt(p1));
     sec.value("P2", pt(p2));
     sec.value("D", vec(p2 - p1));
@@ -60,7 +68,7 @@ J midpoint_solution(const Problem& pr) {
     MidpointResult m = midpoint_clip(*pr.window, p1, p2, pr.eps, &trace);
     CyrusBeckResult cb = cyrus_beck(*pr.clipper, p1, p2, false);
     Section sec("midpoint", std::to_string(i + 1));
-    sec.value("clipper", pr.clipper_text);
+    sec.value("clipper", pr.clipper_text, clipper_ru(pr.clipper_text));
     sec.value("eps", q(pr.eps));
     J& t = sec.table("outcodes", {"end", "point", "outcode", "notes_outcode"});
     t.push_back({"P1", pt(p1), outcode_bits(outcode(*pr.window, p1)), outcode_bits(notes_outcode(*pr.window, p1))});

@@ -35,6 +35,8 @@ struct Section {
     j["tables"] = J::array();
   }
   void value(const std::string& id, const std::string& v) { j["values"][id] = v; }
+  /// A value written in words: {"en": ..., "ru": ...}; the page shows the reader's language.
+  void value(const std::string& id, const std::string& en, const std::string& ru) { j["values"][id] = J{{"en", en}, {"ru", ru}}; }
   J& table(const std::string& caption, std::vector<std::string> columns) {
     J t;
     t["caption"] = caption;

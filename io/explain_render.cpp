@@ -7,8 +7,18 @@ namespace hlr {
 
 using namespace explain_parts;
 
+namespace {
+// "2: rotate" with the transform step's name in the reader's language.
+std::string step_text(const J& t, Lang lang) {
+  std::string st = t["step"].get<std::string>();
+  auto colon = st.find(": ");
+  if (colon == std::string::npos) return st;
+  return st.substr(0, colon + 2) + word("step:" + st.substr(colon + 2), lang);
+}
+}  // namespace
+
 std::string explain_markdown(const SolutionJson& s, Lang lang) {
-  std::string o = "# " + word("problem", lang) + ": " + s["problem"].get<std::string>();
+  std::string o = "# " + word("problem", lang) + ": " + word("type:" + s["problem"].get<std::string>(), lang);
   if (s.contains("title")) o += " — " + s["title"].get<std::string>();
   o += "\n\n";
   for (const J& sec : s["sections"]) {
@@ -19,7 +29,7 @@ std::string explain_markdown(const SolutionJson& s, Lang lang) {
       o += "- " + word(it.key(), lang) + ": " + cell(it.value(), lang) + "\n";
     if (!sec["values"].empty()) o += "\n";
     for (const J& t : sec["tables"]) {
-      o += "**" + word(t["caption"], lang) + (t.contains("step") ? " " + t["step"].get<std::string>() : "") + "**\n\n";
+      o += "**" + word(t["caption"], lang) + (t.contains("step") ? " " + step_text(t, lang) : "") + "**\n\n";
       if (t["rows"].empty()) {
         o += "(" + word("none", lang) + ")\n\n";
         continue;
@@ -59,7 +69,7 @@ std::string explain_html(const SolutionJson& s, Lang lang) {
     }
     return e;
   };
-  std::string title = word("problem", lang) + ": " + s["problem"].get<std::string>();
+  std::string title = word("problem", lang) + ": " + word("type:" + s["problem"].get<std::string>(), lang);
   if (s.contains("title")) title += " — " + s["title"].get<std::string>();
   std::string o = "<!DOCTYPE html>\n<html lang=\"" + std::string(lang == Lang::Ru ? "ru" : "en") +
                   "\">\n<head><meta charset=\"utf-8\"><title>" + esc(title) +
@@ -81,7 +91,7 @@ std::string explain_html(const SolutionJson& s, Lang lang) {
     }
     if (sec.contains("svg")) o += "<p>" + esc(word("region", lang)) + "</p>\n" + sec["svg"].get<std::string>() + "\n";
     for (const J& t : sec["tables"]) {
-      o += "<p><b>" + esc(word(t["caption"], lang)) + (t.contains("step") ? " " + esc(t["step"]) : "") + "</b></p>\n<table><tr>";
+      o += "<p><b>" + esc(word(t["caption"], lang)) + (t.contains("step") ? " " + esc(step_text(t, lang)) : "") + "</b></p>\n<table><tr>";
       for (const J& c : t["columns"]) o += "<th>" + esc(word(c, lang)) + "</th>";
       o += "</tr>\n";
       for (const J& r : t["rows"]) {

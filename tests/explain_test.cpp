@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
+#include <set>
 #include <sstream>
 
 #include "algorithms/roberts.hpp"
@@ -319,4 +321,33 @@ TEST(Explain, InequalitiesReadLikeTheNotes) {
           EXPECT_EQ(r[4].get<std::string>().find("+ -"), std::string::npos);
           EXPECT_EQ(r[4].get<std::string>().find("0·"), std::string::npos);
         }
+}
+
+// The Russian page is Russian (issue 12): apart from the problem's own title and body names
+// (the author's text) and formula symbols, no Latin word; and it uses the course's words.
+TEST(Explain, RussianPageHasNoEnglishOutsideFormulas) {
+  const std::set<std::string> formulas = {"VT", "eps", "h_j", "light", "t_max", "t_min"};
+  bool saw_nonfacing = false, saw_hidden_edges = false, saw_piercing = false;
+  for (const std::string& file : problems()) {
+    Problem pr = load_problem(file);
+    std::string page = explain_markdown(explain(pr), Lang::Ru);
+    for (std::size_t a; (a = page.find("<svg")) != std::string::npos;) page.erase(a, page.find("</svg>", a) + 6 - a);
+    auto erase_all = [&](const std::string& text) {
+      if (text.empty()) return;
+      for (std::size_t a; (a = page.find(text)) != std::string::npos;) page.erase(a, text.size());
+    };
+    erase_all(pr.title);
+    for (const SceneBody& b : pr.scene.bodies) erase_all(b.name);
+    std::regex latin("[A-Za-z_]{2,}");
+    for (auto it = std::sregex_iterator(page.begin(), page.end(), latin); it != std::sregex_iterator(); ++it)
+      EXPECT_TRUE(formulas.count(it->str())) << file << ": English word '" << it->str() << "' on the Russian page";
+    saw_nonfacing = saw_nonfacing || page.find("Нелицевые грани") != std::string::npos;
+    saw_hidden_edges = saw_hidden_edges || page.find("невидимые рёбра") != std::string::npos;
+    saw_piercing = saw_piercing || page.find("протыкания") != std::string::npos;
+    EXPECT_EQ(page.find("самоскрыт"), std::string::npos) << file;
+    EXPECT_EQ(page.find("проникновени"), std::string::npos) << file;
+  }
+  EXPECT_TRUE(saw_nonfacing);
+  EXPECT_TRUE(saw_hidden_edges);
+  EXPECT_TRUE(saw_piercing);
 }
