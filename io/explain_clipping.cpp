@@ -10,6 +10,16 @@
 
 namespace hlr::explain_parts {
 
+// The name of face `f` of a box or viewing-pyramid clipper (in their face order), as a word id.
+std::string face_name(const std::string& clipper, int f) {
+  static const char* box[] = {"left", "right", "bottom", "top", "back", "front"};
+  static const char* frustum[] = {"left", "right", "bottom", "top", "near", "far"};
+  if (f < 0 || f >= 6) return "-";
+  if (clipper.rfind("box ", 0) == 0) return box[f];
+  if (clipper.rfind("frustum ", 0) == 0) return frustum[f];
+  return "-";
+}
+
 // "box [..]" / "frustum [..]" / "mesh F" in the course's Russian words.
 std::string clipper_ru(const std::string& en) {
   for (auto [from, to] : {std::pair<std::string, std::string>{"box ", "параллелепипед "}, {"frustum ", "пирамида видимости "},
@@ -30,11 +40,12 @@ J cyrus_beck_solution(const Problem& pr) {
     sec.value("P1", pt(p1));
     sec.value("P2", pt(p2));
     sec.value("D", vec(p2 - p1));
-    J& t = sec.table("cb_table", {"face", "n", "Wn", "Dn", "t", "limit"});
+    J& t = sec.table("cb_table", {"face", "face_name", "n", "Wn", "Dn", "t", "limit"});
     for (const CyrusBeckRow& row : r.table) {
       const char* kind = row.kind == CyrusBeckRow::Kind::Lower ? "lower" : row.kind == CyrusBeckRow::Kind::Upper ? "upper"
                          : row.kind == CyrusBeckRow::Kind::ParallelInside ? "parallel-inside" : "parallel-outside";
-      t.push_back({std::to_string(row.face), vec(row.n), q(row.wn), q(row.dn), row.t ? q(*row.t) : "-", kind});
+      t.push_back({std::to_string(row.face), face_name(pr.clipper_text, row.face), vec(row.n), q(row.wn), q(row.dn),
+                   row.t ? q(*row.t) : "-", kind});
     }
     sec.value("t_lower", q(r.t_lower));
     sec.value("t_upper", q(r.t_upper));
@@ -48,7 +59,14 @@ J cyrus_beck_solution(const Problem& pr) {
       res["to"] = pt(b);
       res["t"] = J::array({q(r.t_lower), q(r.t_upper)});
     } else {
-      sec.value("visible_part", r.status == CyrusBeckResult::Status::Point ? "point" : "none");
+      if (r.status == CyrusBeckResult::Status::Point) {  // t_lower = t_upper: one point
+        const std::string at = pt(p1 + r.t_lower * (p2 - p1));
+        sec.value("visible_part", "a single point " + at + " (t = " + q(r.t_lower) + ")",
+                  "одна точка " + at + " (t = " + q(r.t_lower) + ")");
+        res["point"] = at;
+      } else {
+        sec.value("visible_part", "none");
+      }
       res["visible"] = false;
     }
     results.push_back(res);
@@ -73,6 +91,10 @@ J midpoint_solution(const Problem& pr) {
     J& t = sec.table("outcodes", {"end", "point", "outcode", "notes_outcode"});
     t.push_back({"P1", pt(p1), outcode_bits(outcode(*pr.window, p1)), outcode_bits(notes_outcode(*pr.window, p1))});
     t.push_back({"P2", pt(p2), outcode_bits(outcode(*pr.window, p2)), outcode_bits(notes_outcode(*pr.window, p2))});
+    // The notes' trivial tests: both codes zero (inside), or their logical product non-zero
+    // (both ends beyond one plane: invisible).
+    const auto c1 = outcode(*pr.window, p1), c2 = outcode(*pr.window, p2);
+    sec.value("codes_and", outcode_bits(c1 & c2) + ((c1 & c2) != 0 ? " ≠ 0" : " = 0"));
     J& st = sec.table("steps", {"n_step", "phase", "point", "outcode"});
     for (std::size_t k = 0; k < trace.size(); ++k)
       st.push_back({std::to_string(k + 1), trace[k].phase, pt(trace[k].point), outcode_bits(trace[k].code)});

@@ -153,6 +153,30 @@ J edge_body_table(const Point3& p1, const Point3& p2, const BodyMatrixData& V, c
   res["t_max"] = tmax ? q(*tmax) : "-";
   Rational lo = iv.lo && *iv.lo > 0 ? *iv.lo : Rational(0), hi = iv.hi && *iv.hi < 1 ? *iv.hi : Rational(1);
   res["hidden"] = !iv.empty && lo < hi ? "(" + q(lo) + ", " + q(hi) + ")" : "none";
+  // t_min and t_max (and the penetration points) come from the closed region h_j >= 0; a point
+  // is hidden only where every h_j > 0 (the strict test). Say so where the two differ.
+  const bool hidden = !iv.empty && lo < hi;
+  if (tmin && tmax && *tmin < *tmax && (!hidden || lo != *tmin || hi != *tmax)) {
+    std::string faces;
+    for (int j = 0; j < n; ++j)
+      if (p[j] == 0 && qq[j] == 0) faces += (faces.empty() ? "" : ", ") + std::to_string(j);
+    std::string en = "t_min and t_max bound the closed region (h_j ≥ 0); a point is hidden only where every h_j > 0. ";
+    std::string ru = "t_min и t_max ограничивают замкнутую область (h_j ≥ 0); точка скрыта, только если все h_j > 0. ";
+    if (!hidden) {
+      en += "No point of the region passes the strict test";
+      ru += "Ни одна точка области не проходит строгую проверку";
+      if (!faces.empty()) {
+        en += ": the edge lies in the plane of face " + faces + " (p = q = 0 there, so h = w·a > 0 would need the region beyond that face)";
+        ru += ": ребро лежит в плоскости грани " + faces + " (там p = q = 0, и h = w·a > 0 требует точек за этой гранью)";
+      }
+      en += ", so no part of the edge is hidden by this body.";
+      ru += ", поэтому эта часть ребра не скрыта этим телом.";
+    } else {
+      en += "The strict test keeps " + res["hidden"].get<std::string>() + ".";
+      ru += "Строгая проверка оставляет " + res["hidden"].get<std::string>() + ".";
+    }
+    sec.value("strict_test", en, ru);
+  }
   return res;
 }
 

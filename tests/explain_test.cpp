@@ -132,20 +132,22 @@ TEST(Explain, CyrusBeckTableByHand) {
   const auto& rows = table(s, "cyrus_beck", "cb_table");
   bool left = false, right = false;
   for (const auto& r : rows) {
-    if (r[3] == "4") {
-      EXPECT_EQ(r[2], "-1");
-      EXPECT_EQ(r[4], "1/4");
-      EXPECT_EQ(r[5], "lower");
+    if (r[4] == "4") {
+      EXPECT_EQ(r[1], "left");
+      EXPECT_EQ(r[3], "-1");
+      EXPECT_EQ(r[5], "1/4");
+      EXPECT_EQ(r[6], "lower");
       left = true;
     }
-    if (r[3] == "-4") {
-      EXPECT_EQ(r[2], "3");
-      EXPECT_EQ(r[4], "3/4");
-      EXPECT_EQ(r[5], "upper");
+    if (r[4] == "-4") {
+      EXPECT_EQ(r[1], "right");
+      EXPECT_EQ(r[3], "3");
+      EXPECT_EQ(r[5], "3/4");
+      EXPECT_EQ(r[6], "upper");
       right = true;
     }
-    if (r[3] == "0") {
-      EXPECT_EQ(r[5], "parallel-inside");
+    if (r[4] == "0") {
+      EXPECT_EQ(r[6], "parallel-inside");
     }
   }
   EXPECT_TRUE(left && right);
@@ -350,4 +352,17 @@ TEST(Explain, RussianPageHasNoEnglishOutsideFormulas) {
   EXPECT_TRUE(saw_nonfacing);
   EXPECT_TRUE(saw_hidden_edges);
   EXPECT_TRUE(saw_piercing);
+}
+
+// An edge lying in a face of another body (issue 12): the closed region gives t_min < t_max,
+// the strict test hides nothing, and the page says why instead of contradicting itself.
+TEST(Explain, EdgeInAFaceSaysWhyItIsNotHidden) {
+  SolutionJson s = explain(load_problem(kData + "/problems/roberts_edge_in_face.yaml"));
+  const auto& v = values(s, "edge_vs_body");
+  EXPECT_EQ(v["t_min"], "0");
+  EXPECT_EQ(v["t_max"], "1");
+  EXPECT_EQ(v["hidden_interval"], "none");
+  const std::string en = v["strict_test"]["en"], ru = v["strict_test"]["ru"];
+  EXPECT_NE(en.find("the edge lies in the plane of face 5"), std::string::npos) << en;
+  EXPECT_NE(ru.find("ребро лежит в плоскости грани 5"), std::string::npos) << ru;
 }
