@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <set>
+#include <string>
 
 namespace hlr {
 namespace {
@@ -37,6 +39,20 @@ bool piece_line(const Segment& s, const Piece& p, const Projector& proj, bool pe
   }
   out = {pa[0], pa[1], pb[0], pb[1]};
   return true;
+}
+
+// Each (body, vertex) that ends an edge segment, once, at its projection (in front of the eye).
+void add_vertex_labels(const LineDrawing& r, const Projector& proj, const Camera& camera, int base, Drawing2D& d) {
+  std::set<std::pair<int, int>> seen;
+  for (const Segment& s : r.segments) {
+    if (s.kind != Segment::Kind::Edge) continue;
+    for (auto [v, p] : {std::make_pair(s.v0, &s.from()), std::make_pair(s.v1, &s.to())}) {
+      if (v < 0 || !seen.insert({s.body, v}).second) continue;
+      if (camera.perspective && camera.in_front(*p) != Sign::Positive) continue;
+      auto q = proj.project(*p);
+      d.labels.push_back({{q[0], q[1]}, std::to_string(v + base)});
+    }
+  }
 }
 
 }  // namespace
@@ -81,6 +97,7 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
       d.lines.push_back(pl);
     }
   }
+  if (opt.vertex_labels) add_vertex_labels(r, proj, camera, opt.label_base, d);
   return d;
 }
 

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "algorithms/camera.hpp"
@@ -31,8 +32,15 @@ struct Polyline2D {
   int body = -1, body2 = -1;
 };
 
+/// A text placed at a point of the drawing (vertex numbers on the exam page's drawing).
+struct Label2D {
+  std::array<double, 2> at;
+  std::string text;
+};
+
 struct Drawing2D {
   std::vector<Polyline2D> lines;               // in order of segment, then piece
+  std::vector<Label2D> labels;                 // vertex numbers when asked (Project2DOptions)
   std::vector<std::array<double, 2>> points;   // x to the right, y up, scene units (frame)
   std::vector<PieceRef> sources;               // per polyline edge
   const std::array<double, 2>& point(const Polyline2D& l, std::uint32_t k) const { return points[l.first + k]; }
@@ -40,6 +48,10 @@ struct Drawing2D {
 
 struct Project2DOptions {
   bool hidden = true;  // include hidden pieces
+  /// Label every vertex that ends a drawn edge with its number (plus `label_base`: 1 for the
+  /// notes' numbering from 1), in front of the eye.
+  bool vertex_labels = false;
+  int label_base = 0;
 };
 
 /// Projects every drawn piece (not behind the eye, not clipped; hidden ones if asked) to a

@@ -312,6 +312,7 @@ J roberts_solution(const Problem& pr) {
   SvgOptions so;
   so.hidden_dashed = true;
   so.width_mm = 120;
+  so.vertex_labels = true;  // every table names vertices by number
   out["result"]["segments"] = segs;
   out["drawing_svg"] = to_svg(names, r, cam, so);
   return out;

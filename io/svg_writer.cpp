@@ -109,6 +109,14 @@ std::string to_svg(const std::vector<DrawingBody>& bodies, const Drawing2D& d, c
     if (open_kind >= 0) out += "  </g>\n";
     out += "</g>\n";
   }
+  if (!d.labels.empty()) {
+    out += "<g id=\"vertex-labels\" font-family=\"sans-serif\" font-size=\"" + fmt(opt.stroke_mm * 9) +
+           "\" fill=\"#b00\">\n";
+    for (const Label2D& l : d.labels)
+      out += "  <text x=\"" + X(l.at[0] + 0) + "\" y=\"" + Y(l.at[1]) + "\" dx=\"" + fmt(opt.stroke_mm * 2) + "\" dy=\"" +
+             fmt(-opt.stroke_mm * 2) + "\">" + escape(l.text) + "</text>\n";
+    out += "</g>\n";
+  }
   out += "</svg>\n";
   return out;
 }
@@ -116,6 +124,8 @@ std::string to_svg(const std::vector<DrawingBody>& bodies, const Drawing2D& d, c
 std::string to_svg(const std::vector<DrawingBody>& bodies, const LineDrawing& r, const Camera& camera, const SvgOptions& opt) {
   Project2DOptions po;
   po.hidden = opt.hidden_dashed;
+  po.vertex_labels = opt.vertex_labels;
+  po.label_base = opt.label_base;
   return to_svg(bodies, project_drawing(r, camera, po), opt);
 }
 

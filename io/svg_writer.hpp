@@ -19,6 +19,8 @@ struct SvgOptions {
   bool hidden_dashed = false;
   double width_mm = 150;
   double stroke_mm = 0.35;
+  bool vertex_labels = false;  // number every vertex (the exam page's drawing)
+  int label_base = 0;          // 1: number from 1 as the notes do
 };
 
 std::string to_svg(const std::vector<DrawingBody>& bodies, const Drawing2D& drawing, const SvgOptions& options);

@@ -366,3 +366,13 @@ TEST(Explain, EdgeInAFaceSaysWhyItIsNotHidden) {
   EXPECT_NE(en.find("the edge lies in the plane of face 5"), std::string::npos) << en;
   EXPECT_NE(ru.find("ребро лежит в плоскости грани 5"), std::string::npos) << ru;
 }
+
+// The exam drawing numbers its vertices (issue 12: every table refers to vertices by number):
+// the cube's eight vertices, each once.
+TEST(Explain, DrawingLabelsVertices) {
+  SolutionJson s = explain(load_problem(kData + "/problems/roberts_cube.yaml"));
+  const std::string svg = s["drawing_svg"];
+  ASSERT_NE(svg.find("<g id=\"vertex-labels\""), std::string::npos);
+  for (int v = 0; v < 8; ++v) EXPECT_NE(svg.find(">" + std::to_string(v) + "</text>"), std::string::npos) << v;
+  EXPECT_EQ(svg.find(">8</text>"), std::string::npos);
+}
