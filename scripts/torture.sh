@@ -14,11 +14,11 @@ seed=1000
 total=0
 while [ $(( $(date +%s) - start )) -lt "$LIMIT" ]; do
   out=$(HLR_TORTURE_SCENES=1000 HLR_TORTURE_SEED=$seed "$BUILD/tests/hlr_tests" --gtest_filter='Torture.*' 2>&1) || {
-    echo "$out" | grep -E "^faces|^roberts|^seed|scene:" | head -20
+    echo "$out" | grep -E "^faces|^roberts|^seed|scene|Failure" | head -20 || true
     echo "torture: FAILED at seed $seed (HLR_TORTURE_DUMP=1 prints the scene)"
     exit 1
   }
-  echo "$out" | grep '\[torture\]' | sed "s/^/seed $seed: /"
+  echo "$out" | grep '\[torture\]' | sed "s/^/seed $seed: /" || true
   total=$((total + 1000))
   seed=$((seed + 1))
 done

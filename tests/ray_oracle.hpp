@@ -78,7 +78,7 @@ inline void sample_check(const LineDrawing& r, const std::vector<std::vector<Ora
                   const char* route) {
   for (const Segment& s : r.segments) {
     for (const Piece& p : s.pieces) {
-      if (p.behind_eye) continue;
+      if (p.behind_eye || p.clipped) continue;  // never drawn (behind the eye, or nearer than the near plane)
       for (Rational f : {Rational(1, 2), Rational(1, 4), Rational(3, 4)}) {
         Point3 x = s.at(p.t0 + f * (p.t1 - p.t0));
         bool hidden = false;

@@ -331,7 +331,18 @@ TEST(Torture, MeshDefects) {
     try {
       RenderResult r = render({scene}, opt);
       EXPECT_FALSE(mesh.bow_tie) << what << ": a bow-tie face was drawn";
+      const long before = tally.disagreements;
       sample_check(r.drawing, planes, r.camera, tally, what.c_str());
+      if (tally.disagreements != before && std::getenv("HLR_TORTURE_DUMP")) {  // the mesh as OFF, and the view
+        std::cout << "# " << what << "; " << (opt.view.eye ? "--eye " + to_string(*opt.view.eye) : "--view " + to_string(*opt.view.direction))
+                  << "\nOFF\n" << mesh.vs.size() << " " << mesh.faces.size() << " 0\n";
+        for (const Point3& p : mesh.vs) std::cout << to_string(p.x()) << " " << to_string(p.y()) << " " << to_string(p.z()) << "\n";
+        for (const Face& f : mesh.faces) {
+          std::cout << f.size();
+          for (int v : f) std::cout << " " << v;
+          std::cout << "\n";
+        }
+      }
     } catch (const RenderBodyError& e) {
       ++refused;
       EXPECT_TRUE(mesh.bow_tie) << what << ": refused: " << e.what();
