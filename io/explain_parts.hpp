@@ -56,15 +56,23 @@ inline void input_section(const Scene& s, J& out) {
       const Point3& p = b.body.vertices()[v];
       vr.push_back({std::to_string(v), q(p.x()), q(p.y()), q(p.z())});
     }
+    // The faces as typed (inline bodies), and which of them the tool turned outward.
+    const bool typed = b.typed_faces.size() == b.body.num_faces();
     J& fr = sec.table("faces", {"face", "vertices"});
+    std::string turned;
     for (std::size_t f = 0; f < b.body.num_faces(); ++f) {
+      const Face& face = typed ? b.typed_faces[f] : b.body.faces()[f];
       std::string l;
-      for (int v : b.body.faces()[f]) {
+      for (int v : face) {
         if (!l.empty()) l += ' ';
         l += std::to_string(v);
       }
       fr.push_back({std::to_string(f), l});
+      if (typed && face != b.body.faces()[f]) turned += (turned.empty() ? "" : ", ") + std::to_string(f);
     }
+    if (!turned.empty())
+      sec.value("reoriented", "faces " + turned + " run clockwise seen from outside as typed; the tool turns them for drawing. The planes below follow the order as typed, and the interior point decides each column's sign either way.",
+                "грани " + turned + " заданы по часовой стрелке (если смотреть снаружи); для рисунка программа их переворачивает. Плоскости ниже вычислены по порядку вершин, как он задан, а знак каждого столбца определяет внутренняя точка.");
     out["sections"].push_back(sec.j);
   }
 }

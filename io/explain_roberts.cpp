@@ -208,10 +208,17 @@ J roberts_solution(const Problem& pr) {
     Section sec("body_matrix", pr.scene.bodies[i].name);
     sec.value("interior_point", pt(bm.interior));
     J& rows = sec.table("planes", {"face", "plane", "S_V", "negated", "V"});
+    // The plane of each face from its vertex order as typed (a turned face gives the opposite
+    // plane, so [S]·[V] changes sign and so does the decision to negate the column; the
+    // corrected column is the same).
+    const SceneBody& sb = pr.scene.bodies[i];
+    const bool typed = sb.typed_faces.size() == p.num_faces();
     for (std::size_t f = 0; f < p.num_faces(); ++f) {
-      const Plane& h = p.planes()[f];
+      const bool turned = typed && sb.typed_faces[f] != p.faces()[f];
+      const Plane h = turned ? p.planes()[f].opposite() : p.planes()[f];
+      const Rational sv = turned ? -bm.s_v[f] : bm.s_v[f];
       int c = static_cast<int>(f);
-      rows.push_back({std::to_string(f), row4(h.a(), h.b(), h.c(), h.d()), q(bm.s_v[f]), bm.negated[f] ? "yes" : "no",
+      rows.push_back({std::to_string(f), row4(h.a(), h.b(), h.c(), h.d()), q(sv), sv < 0 ? "yes" : "no",
                       row4(bm.V(0, c), bm.V(1, c), bm.V(2, c), bm.V(3, c))});
     }
     const Matrix4& T = pr.scene.bodies[i].transform;

@@ -123,6 +123,7 @@ const std::map<std::string, std::pair<std::string, std::string>>& words() {
       {"note", {"note", "примечание"}},
       {"problem", {"Problem", "Задача"}},
       {"face_name", {"face of the clipper", "грань отсекателя"}},
+      {"reoriented", {"note", "примечание"}},
       {"v:left", {"left", "левая"}},
       {"v:right", {"right", "правая"}},
       {"v:bottom", {"bottom", "нижняя"}},

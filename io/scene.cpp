@@ -133,7 +133,7 @@ Polyhedron transformed(const Ctx& c, const YAML::Node& where, const Polyhedron& 
   return Polyhedron(std::move(vs), std::move(faces));
 }
 
-Polyhedron inline_body(const Ctx& c, const YAML::Node& n) {
+Polyhedron inline_body(const Ctx& c, const YAML::Node& n, std::vector<Face>& typed) {
   const YAML::Node vn = n["vertices"], fn = n["faces"];
   if (!vn || !fn) c.fail(n, "an inline body needs both 'vertices' and 'faces'");
   if (!vn.IsSequence() || vn.size() == 0) c.fail(vn, "vertices must be a non-empty list of [x, y, z]");
@@ -155,6 +155,7 @@ Polyhedron inline_body(const Ctx& c, const YAML::Node& n) {
     if (idx.size() < 3) c.fail(face, "face " + std::to_string(f) + " has fewer than 3 vertices");
     faces.push_back(std::move(idx));
   }
+  typed = faces;
   faces = orient_faces(vs, std::move(faces));
   return Polyhedron(std::move(vs), std::move(faces));
 }
@@ -240,6 +241,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
     std::string name = b["name"] ? c.text(b["name"], "name") : "body " + std::to_string(i);
     std::string source = path;
     std::optional<Polyhedron> poly;
+    std::vector<Face> typed;
     if (b["mesh"]) {
       std::string rel = c.text(b["mesh"], "mesh");
       std::filesystem::path mp = rel;
@@ -260,7 +262,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
         c.fail(b["box"], e.what());
       }
     } else {
-      poly.emplace(inline_body(c, b));
+      poly.emplace(inline_body(c, b, typed));
     }
     Matrix4 m = identity_transform();
     std::vector<std::string> notes;
@@ -274,7 +276,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
       }
       poly.emplace(transformed(c, b["transform"], *poly, m));
     }
-    s.bodies.push_back(SceneBody{name, source, std::move(*poly), m, std::move(steps), std::move(notes)});
+    s.bodies.push_back(SceneBody{name, source, std::move(*poly), m, std::move(steps), std::move(notes), std::move(typed)});
   }
   if (root["view"]) s.view = parse_view(c, root["view"]);
   if (root["light"]) {

@@ -34,6 +34,9 @@ struct SceneBody {
   Matrix4 transform;   // composition of the body's transforms (row-vector convention)
   std::vector<std::pair<std::string, Matrix4>> steps;  // each transform step: its key and matrix
   std::vector<std::string> notes;  // e.g. how an inexact rotation angle was realised
+  /// Inline bodies: the faces in the order typed (before they were oriented outward); the
+  /// exam page shows them and says which were turned. Empty for meshes and boxes.
+  std::vector<Face> typed_faces;
 };
 
 struct Scene {

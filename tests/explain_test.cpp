@@ -376,3 +376,22 @@ TEST(Explain, DrawingLabelsVertices) {
   for (int v = 0; v < 8; ++v) EXPECT_NE(svg.find(">" + std::to_string(v) + "</text>"), std::string::npos) << v;
   EXPECT_EQ(svg.find(">8</text>"), std::string::npos);
 }
+
+// Faces typed in both orientations (issue 12): shown as typed, planes from the typed order, only
+// the columns whose [S]·[V] is negative negated, the same corrected [V], and a note naming the
+// faces the tool turned.
+TEST(Explain, FacesShownAsTyped) {
+  SolutionJson s = explain(load_problem(kData + "/problems/roberts_typed_faces.yaml"));
+  const auto& faces = table(s, "input", "faces");
+  EXPECT_EQ(faces[1][1], "0 3 1");
+  EXPECT_EQ(faces[3][1], "1 3 2");
+  const auto& planes = table(s, "body_matrix", "planes");
+  EXPECT_EQ(planes[0][3], "yes");
+  EXPECT_EQ(planes[1][1], "[0 1 0 0]");
+  EXPECT_EQ(planes[1][2], "1/2");
+  EXPECT_EQ(planes[1][3], "no");
+  EXPECT_EQ(planes[1][4], "[0 1 0 0]");
+  EXPECT_EQ(planes[3][4], "[-1 -1 -1 2]");
+  const std::string note = values(s, "input")["reoriented"]["en"];
+  EXPECT_EQ(note.rfind("faces 1, 3 run clockwise", 0), 0u) << note;
+}
