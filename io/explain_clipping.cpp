@@ -20,6 +20,23 @@ std::string face_name(const std::string& clipper, int f) {
   return "-";
 }
 
+// The viewing pyramid as the notes write it: the coefficients α1..δ2 of the side planes and the
+// test functions f of each plane at both ends (f_right = x − zα1 − α2 > 0: right of the right
+// plane, ...; f_near = z − z_near > 0: nearer than the near plane; f_far = z − z_far).
+void frustum_tables(const FrustumWindow& w, const Point3& p1, const Point3& p2, Section& sec) {
+  J& c = sec.table("coefficients", {"side", "c1", "c2"});
+  c.push_back({"right", "α1 = " + q(w.alpha1()), "α2 = " + q(w.alpha2())});
+  c.push_back({"left", "β1 = " + q(w.beta1()), "β2 = " + q(w.beta2())});
+  c.push_back({"top", "γ1 = " + q(w.gamma1()), "γ2 = " + q(w.gamma2())});
+  c.push_back({"bottom", "δ1 = " + q(w.delta1()), "δ2 = " + q(w.delta2())});
+  J& f = sec.table("test_functions", {"end", "f_right", "f_left", "f_top", "f_bottom", "f_near", "f_far"});
+  for (auto [name, p] : {std::make_pair("P1", &p1), std::make_pair("P2", &p2)}) {
+    const Rational &x = p->x(), &y = p->y(), &z = p->z();
+    f.push_back({name, q(x - z * w.alpha1() - w.alpha2()), q(x - z * w.beta1() - w.beta2()), q(y - z * w.gamma1() - w.gamma2()),
+                 q(y - z * w.delta1() - w.delta2()), q(z - w.znear), q(z - w.zfar)});
+  }
+}
+
 // "box [..]" / "frustum [..]" / "mesh F" in the course's Russian words.
 std::string clipper_ru(const std::string& en) {
   for (auto [from, to] : {std::pair<std::string, std::string>{"box ", "параллелепипед "}, {"frustum ", "пирамида видимости "},
@@ -88,6 +105,7 @@ J midpoint_solution(const Problem& pr) {
     Section sec("midpoint", std::to_string(i + 1));
     sec.value("clipper", pr.clipper_text, clipper_ru(pr.clipper_text));
     sec.value("eps", q(pr.eps));
+    if (const auto* fw = std::get_if<FrustumWindow>(&*pr.window)) frustum_tables(*fw, p1, p2, sec);
     J& t = sec.table("outcodes", {"end", "point", "outcode", "notes_outcode"});
     t.push_back({"P1", pt(p1), outcode_bits(outcode(*pr.window, p1)), outcode_bits(notes_outcode(*pr.window, p1))});
     t.push_back({"P2", pt(p2), outcode_bits(outcode(*pr.window, p2)), outcode_bits(notes_outcode(*pr.window, p2))});

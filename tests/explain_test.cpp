@@ -395,3 +395,19 @@ TEST(Explain, FacesShownAsTyped) {
   const std::string note = values(s, "input")["reoriented"]["en"];
   EXPECT_EQ(note.rfind("faces 1, 3 run clockwise", 0), 0u) << note;
 }
+
+// Midpoint subdivision against the viewing pyramid shows the notes' coefficients and test
+// functions (issue 12): α1 = x_R/(z_far - z_cp) = 3/(-10 - 5) = -1/5, α2 = -α1·z_cp = 1; at
+// P1 = (-5, 0, -5): f_right = x - zα1 - α2 = -7, f_left = x - zβ1 - β2 = -3 (left of the left
+// plane: outside).
+TEST(Explain, PyramidTestFunctionsByHand) {
+  SolutionJson s = explain(load_problem(kData + "/problems/midpoint_frustum.yaml"));
+  const auto& c = table(s, "midpoint", "coefficients");
+  EXPECT_EQ(c[0][1], "α1 = -1/5");
+  EXPECT_EQ(c[0][2], "α2 = 1");
+  EXPECT_EQ(c[1][1], "β1 = 1/5");
+  const auto& f = table(s, "midpoint", "test_functions");
+  EXPECT_EQ(f[0][1], "-7");
+  EXPECT_EQ(f[0][2], "-3");
+  EXPECT_EQ(values(s, "midpoint")["codes_and"], "000000 = 0");
+}
