@@ -328,7 +328,7 @@ TEST(Explain, InequalitiesReadLikeTheNotes) {
 // The Russian page is Russian (issue 12): apart from the problem's own title and body names
 // (the author's text) and formula symbols, no Latin word; and it uses the course's words.
 TEST(Explain, RussianPageHasNoEnglishOutsideFormulas) {
-  const std::set<std::string> formulas = {"VT", "eps", "h_j", "light", "t_max", "t_min"};
+  const std::set<std::string> formulas = {"VT", "eps", "h_j", "light", "t_max", "t_min", "f_", "z_"};  // f_п, z_б: the notes' symbols
   bool saw_nonfacing = false, saw_hidden_edges = false, saw_piercing = false;
   for (const std::string& file : problems()) {
     Problem pr = load_problem(file);
