@@ -13,12 +13,14 @@ namespace {
 
 struct ExplainArgs {
   std::string input, output, format, lang = "en";
+  int number_from = 0;
 };
 
 int run_explain(const ExplainArgs& a) {
   const std::string format =
       output_format(a.format, a.output, {{".md", "md"}, {".markdown", "md"}, {".html", "html"}, {".htm", "html"}, {".json", "json"}}, "md");
   Problem pr = load_problem(a.input);
+  pr.index_base = a.number_from;
   SolutionJson s;
   try {
     s = explain(pr);
@@ -45,6 +47,10 @@ void add_explain_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--format", a->format, "md, html or json (default: from the output file's extension, else md)")
       ->check(CLI::IsMember({"md", "html", "json"}));
   cmd->add_option("--lang", a->lang, "en or ru (the course's own terms)")->check(CLI::IsMember({"en", "ru"}));
+  cmd->add_option("--number-from", a->number_from,
+                  "0 or 1: number faces, vertices and columns on the page from 1 as the notes do (the problem file keeps "
+                  "0-based indices)")
+      ->check(CLI::IsMember({0, 1}));
   cmd->callback([a, &exit_code] { exit_code = run_explain(*a); });
 }
 

@@ -10,6 +10,10 @@ namespace hlr {
 using namespace explain_parts;
 
 SolutionJson explain(const Problem& pr) {
+  struct Base {  // the page's numbering for this call only
+    explicit Base(int b) { index_base = b; }
+    ~Base() { index_base = 0; }
+  } base(pr.index_base);
   J out;
   out["problem"] = to_string(pr.type);
   out["file"] = std::filesystem::path(pr.file).filename().string();

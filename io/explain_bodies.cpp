@@ -10,6 +10,13 @@
 
 namespace hlr::explain_parts {
 
+// The convexity verdict with the page's numbering (describe() counts from 0).
+std::string describe_en(const ConvexityResult& r) {
+  if (r.verdict != ConvexityResult::Verdict::NonConvex) return describe(r);
+  return "not convex: face " + ix(r.face) + " has vertex " + ix(r.vertex_positive) + " on one side of its plane and vertex " +
+         ix(r.vertex_negative) + " on the other";
+}
+
 // The convexity verdict in the course's Russian words.
 std::string describe_ru(const ConvexityResult& r) {
   switch (r.verdict) {
@@ -17,8 +24,8 @@ std::string describe_ru(const ConvexityResult& r) {
     case ConvexityResult::Verdict::Flat: return "тело плоское (вырожденное): все вершины лежат в плоскости каждой грани";
     case ConvexityResult::Verdict::NoFaces: return "нет граней";
     case ConvexityResult::Verdict::NonConvex:
-      return "тело невыпуклое: вершина " + std::to_string(r.vertex_positive) + " лежит по одну сторону плоскости грани " +
-             std::to_string(r.face) + ", вершина " + std::to_string(r.vertex_negative) + " — по другую";
+      return "тело невыпуклое: вершина " + ix(r.vertex_positive) + " лежит по одну сторону плоскости грани " + ix(r.face) +
+             ", вершина " + ix(r.vertex_negative) + " — по другую";
   }
   return {};
 }
@@ -30,12 +37,12 @@ J convexity_solution(const Problem& pr) {
   const Polyhedron& p = pr.scene.bodies[0].body;
   Section sec("convexity", pr.scene.bodies[0].name);
   std::vector<std::string> cols = {"face", "plane"};
-  for (std::size_t v = 0; v < p.num_vertices(); ++v) cols.push_back(std::string("v").append(std::to_string(v)));
+  for (std::size_t v = 0; v < p.num_vertices(); ++v) cols.push_back("v" + ix(static_cast<long>(v)));
   cols.push_back("one_side");
   J& t = sec.table("signs", cols);
   for (std::size_t f = 0; f < p.num_faces(); ++f) {
     const Plane& h = p.planes()[f];
-    J row = {std::to_string(f), row4(h.a(), h.b(), h.c(), h.d())};
+    J row = {ix(static_cast<long>(f)), row4(h.a(), h.b(), h.c(), h.d())};
     bool pos = false, neg = false;
     for (const Point3& v : p.vertices()) {
       Sign s = side_of_plane(h, v);
@@ -47,7 +54,7 @@ J convexity_solution(const Problem& pr) {
     t.push_back(row);
   }
   ConvexityResult cv = convexity(p);
-  sec.value("verdict", describe(cv), describe_ru(cv));
+  sec.value("verdict", describe_en(cv), describe_ru(cv));
   out["sections"].push_back(sec.j);
   out["result"]["convex"] = cv.convex();
   out["result"]["verdict"] = describe(cv);
@@ -111,7 +118,7 @@ J transform_solution(const Problem& pr) {
   J res = J::array();
   for (std::size_t i = 0; i < b.body.num_vertices(); ++i) {
     const Point3& after = b.body.vertices()[i];
-    v.push_back({std::to_string(i), Ti ? pt(apply(*Ti, after)) : "-", pt(after)});
+    v.push_back({ix(static_cast<long>(i)), Ti ? pt(apply(*Ti, after)) : "-", pt(after)});
     res.push_back(pt(after));
   }
   for (const std::string& n : b.notes) sec.value("note", n);

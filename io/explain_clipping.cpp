@@ -61,7 +61,7 @@ J cyrus_beck_solution(const Problem& pr) {
     for (const CyrusBeckRow& row : r.table) {
       const char* kind = row.kind == CyrusBeckRow::Kind::Lower ? "lower" : row.kind == CyrusBeckRow::Kind::Upper ? "upper"
                          : row.kind == CyrusBeckRow::Kind::ParallelInside ? "parallel-inside" : "parallel-outside";
-      t.push_back({std::to_string(row.face), face_name(pr.clipper_text, row.face), vec(row.n), q(row.wn), q(row.dn),
+      t.push_back({ix(row.face), face_name(pr.clipper_text, row.face), vec(row.n), q(row.wn), q(row.dn),
                    row.t ? q(*row.t) : "-", kind});
     }
     sec.value("t_lower", q(r.t_lower));

@@ -19,6 +19,11 @@ namespace hlr::explain_parts {
 using J = SolutionJson;
 
 inline std::string q(const Rational& x) { return to_string(x); }
+/// The first number of faces, vertices and columns on the page (0, or 1 as the notes count);
+/// set by explain() for the problem being solved (thread-local: pages build in parallel).
+inline thread_local int index_base = 0;
+/// An index as the page prints it.
+inline std::string ix(long i) { return std::to_string(i + index_base); }
 inline std::string pt(const Point3& p) { return "(" + q(p.x()) + ", " + q(p.y()) + ", " + q(p.z()) + ")"; }
 inline std::string vec(const Vector3& p) { return "(" + q(p.x()) + ", " + q(p.y()) + ", " + q(p.z()) + ")"; }
 inline std::string row4(const Rational& a, const Rational& b, const Rational& c, const Rational& d) {
@@ -54,7 +59,7 @@ inline void input_section(const Scene& s, J& out) {
     J& vr = sec.table("vertices", {"vertex", "x", "y", "z"});
     for (std::size_t v = 0; v < b.body.num_vertices(); ++v) {
       const Point3& p = b.body.vertices()[v];
-      vr.push_back({std::to_string(v), q(p.x()), q(p.y()), q(p.z())});
+      vr.push_back({ix(static_cast<long>(v)), q(p.x()), q(p.y()), q(p.z())});
     }
     // The faces as typed (inline bodies), and which of them the tool turned outward.
     const bool typed = b.typed_faces.size() == b.body.num_faces();
@@ -65,10 +70,10 @@ inline void input_section(const Scene& s, J& out) {
       std::string l;
       for (int v : face) {
         if (!l.empty()) l += ' ';
-        l += std::to_string(v);
+        l += ix(v);
       }
-      fr.push_back({std::to_string(f), l});
-      if (typed && face != b.body.faces()[f]) turned += (turned.empty() ? "" : ", ") + std::to_string(f);
+      fr.push_back({ix(static_cast<long>(f)), l});
+      if (typed && face != b.body.faces()[f]) turned += (turned.empty() ? "" : ", ") + ix(static_cast<long>(f));
     }
     if (!turned.empty())
       sec.value("reoriented", "faces " + turned + " run clockwise seen from outside as typed; the tool turns them for drawing. The planes below follow the order as typed, and the interior point decides each column's sign either way.",

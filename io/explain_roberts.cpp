@@ -113,9 +113,9 @@ J edge_body_table(const Point3& p1, const Point3& p2, const BodyMatrixData& V, c
   std::vector<Rational> p = row_times_matrix(P, V), qq = row_times_matrix(D, V), w = row_times_matrix(g, V);
   J& ineq = sec.table(prefix + "inequalities", {"face", "p", "q", "w", "h"});
   for (int j = 0; j < n; ++j)
-    ineq.push_back({std::to_string(j), q(p[j]), q(qq[j]), q(w[j]), linear_text(p[j], qq[j], w[j]) + " > 0"});
+    ineq.push_back({ix(j), q(p[j]), q(qq[j]), q(w[j]), linear_text(p[j], qq[j], w[j]) + " > 0"});
   std::vector<Line> lines;
-  for (int j = 0; j < n; ++j) lines.push_back({"h" + std::to_string(j), qq[j], w[j], -p[j]});
+  for (int j = 0; j < n; ++j) lines.push_back({"h" + ix(j), qq[j], w[j], -p[j]});
   lines.push_back({"t=0", 1, 0, 0});
   lines.push_back({"t=1", 1, 0, 1});
   lines.push_back({"a=0", 0, 1, 0});
@@ -159,7 +159,7 @@ J edge_body_table(const Point3& p1, const Point3& p2, const BodyMatrixData& V, c
   if (tmin && tmax && *tmin < *tmax && (!hidden || lo != *tmin || hi != *tmax)) {
     std::string faces;
     for (int j = 0; j < n; ++j)
-      if (p[j] == 0 && qq[j] == 0) faces += (faces.empty() ? "" : ", ") + std::to_string(j);
+      if (p[j] == 0 && qq[j] == 0) faces += (faces.empty() ? "" : ", ") + ix(j);
     std::string en = "t_min and t_max bound the closed region (h_j ≥ 0); a point is hidden only where every h_j > 0. ";
     std::string ru = "t_min и t_max ограничивают замкнутую область (h_j ≥ 0); точка скрыта, только если все h_j > 0. ";
     if (!hidden) {
@@ -218,7 +218,7 @@ J roberts_solution(const Problem& pr) {
       const Plane h = turned ? p.planes()[f].opposite() : p.planes()[f];
       const Rational sv = turned ? -bm.s_v[f] : bm.s_v[f];
       int c = static_cast<int>(f);
-      rows.push_back({std::to_string(f), row4(h.a(), h.b(), h.c(), h.d()), q(sv), sv < 0 ? "yes" : "no",
+      rows.push_back({ix(static_cast<long>(f)), row4(h.a(), h.b(), h.c(), h.d()), q(sv), sv < 0 ? "yes" : "no",
                       row4(bm.V(0, c), bm.V(1, c), bm.V(2, c), bm.V(3, c))});
     }
     const Matrix4& T = pr.scene.bodies[i].transform;
@@ -238,7 +238,7 @@ J roberts_solution(const Problem& pr) {
         BodyMatrixData VT = transformed_body_matrix(b0.V, T);
         J& vt = sec.table("VT", {"face", "V", "VT"});
         for (int c = 0; c < VT.cols(); ++c)
-          vt.push_back({std::to_string(c), row4(b0.V(0, c), b0.V(1, c), b0.V(2, c), b0.V(3, c)), row4(VT(0, c), VT(1, c), VT(2, c), VT(3, c))});
+          vt.push_back({ix(c), row4(b0.V(0, c), b0.V(1, c), b0.V(2, c), b0.V(3, c)), row4(VT(0, c), VT(1, c), VT(2, c), VT(3, c))});
         shown[i] = VT;
       }
     }
@@ -254,11 +254,11 @@ J roberts_solution(const Problem& pr) {
     const std::vector<Rational> ev = row_times_matrix(E, shown[i]);
     J& fr = fac.table("facing_table", {"face", "EV", "class"});
     for (std::size_t f = 0; f < ev.size(); ++f)
-      fr.push_back({std::to_string(f), q(ev[f]), r.facing[i][f] < 0 ? "non-facing" : r.facing[i][f] == 0 ? "edge-on" : "facing"});
+      fr.push_back({ix(static_cast<long>(f)), q(ev[f]), r.facing[i][f] < 0 ? "non-facing" : r.facing[i][f] == 0 ? "edge-on" : "facing"});
     J& sh = fac.table("self_hidden", {"edge", "face_pair"});
     for (const Segment& s : r.segments)
       if (s.body == static_cast<int>(i) && s.self_hidden)
-        sh.push_back({std::to_string(s.v0) + "-" + std::to_string(s.v1), std::to_string(s.face0) + ", " + std::to_string(s.face1)});
+        sh.push_back({ix(s.v0) + "-" + ix(s.v1), ix(s.face0) + ", " + ix(s.face1)});
     if (pr.scene.light) {
       const Vector3& L = *pr.scene.light;
       RowVector4 LE;
@@ -271,7 +271,7 @@ J roberts_solution(const Problem& pr) {
       for (std::size_t f = 0; f < lv.size(); ++f) {
         const int j = static_cast<int>(f);
         bool shadowed = facing_sign(Plane(-bm.V(0, j), -bm.V(1, j), -bm.V(2, j), -bm.V(3, j)), toward_light) < 0;
-        lt.push_back({std::to_string(f), q(lv[f]), shadowed ? "yes" : "no", shadowed && r.facing[i][f] > 0 ? "yes" : "no"});
+        lt.push_back({ix(static_cast<long>(f)), q(lv[f]), shadowed ? "yes" : "no", shadowed && r.facing[i][f] > 0 ? "yes" : "no"});
       }
     }
     out["sections"].push_back(fac.j);
@@ -286,7 +286,7 @@ J roberts_solution(const Problem& pr) {
     }
     for (std::size_t k = 0; k < polys.size(); ++k) {
       if (static_cast<int>(k) == s.body) continue;
-      Section sec("edge_vs_body", pr.scene.bodies[s.body].name + " " + std::to_string(s.v0) + "-" + std::to_string(s.v1) + " / " +
+      Section sec("edge_vs_body", pr.scene.bodies[s.body].name + " " + ix(s.v0) + "-" + ix(s.v1) + " / " +
                                       pr.scene.bodies[k].name);
       sec.value("P1", pt(s.from()));
       sec.value("P2", pt(s.to()));
@@ -311,7 +311,7 @@ J roberts_solution(const Problem& pr) {
     for (const Piece& p : s.pieces) {
       segs.push_back(piece_json(s, p));
       if (!p.visible) continue;
-      std::string what = s.kind == Segment::Kind::Edge ? pr.scene.bodies[s.body].name + " " + std::to_string(s.v0) + "-" + std::to_string(s.v1)
+      std::string what = s.kind == Segment::Kind::Edge ? pr.scene.bodies[s.body].name + " " + ix(s.v0) + "-" + ix(s.v1)
                                                        : pr.scene.bodies[s.body].name + " / " + pr.scene.bodies[s.body2].name;
       vr.push_back({what, pt(s.at(p.t0)), pt(s.at(p.t1))});
     }
@@ -320,6 +320,7 @@ J roberts_solution(const Problem& pr) {
   so.hidden_dashed = true;
   so.width_mm = 120;
   so.vertex_labels = true;  // every table names vertices by number
+  so.label_base = index_base;
   out["result"]["segments"] = segs;
   out["drawing_svg"] = to_svg(names, r, cam, so);
   return out;

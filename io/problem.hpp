@@ -29,6 +29,9 @@ struct Problem {
   std::string clipper_text;      // e.g. "box [0, 2, 0, 2, 0, 2]"
   std::vector<std::pair<Point3, Point3>> segments;
   Rational eps = rational(1, 100);
+  /// The page numbers faces, vertices and columns from this (0, or 1 as the notes do); the
+  /// problem file's own indices and the JSON `result` stay 0-based.
+  int index_base = 0;
 };
 
 const char* to_string(Problem::Type t);

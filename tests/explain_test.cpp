@@ -411,3 +411,28 @@ TEST(Explain, PyramidTestFunctionsByHand) {
   EXPECT_EQ(f[0][2], "-3");
   EXPECT_EQ(values(s, "midpoint")["codes_and"], "000000 = 0");
 }
+
+// The notes number faces and vertices from 1 (issue 12: offer it): with index_base 1 every
+// index on the page is one more, the verdict too, and the drawing's labels run 1..8; the
+// problem file's own indices and the JSON result stay 0-based.
+TEST(Explain, NumberingFromOne) {
+  Problem pr = load_problem(kData + "/problems/convexity_l_prism.yaml");
+  pr.index_base = 1;
+  SolutionJson c = explain(pr);
+  EXPECT_EQ(table(c, "input", "faces")[0][0], "1");
+  EXPECT_EQ(table(c, "input", "faces")[0][1], "6 5 4 3 2 1");
+  EXPECT_EQ(values(c, "convexity")["verdict"]["en"], "not convex: face 5 has vertex 5 on one side of its plane and vertex 1 on the other");
+  EXPECT_EQ(c["result"]["verdict"], "not convex: face 4 has vertex 4 on one side of its plane and vertex 0 on the other");
+  Problem cube = load_problem(kData + "/problems/roberts_rotated_cube.yaml");
+  cube.index_base = 1;
+  SolutionJson s = explain(cube);
+  EXPECT_EQ(table(s, "body_matrix", "planes")[0][0], "1");
+  bool subject = false;
+  for (const auto& sec : s["sections"]) subject = subject || sec.value("subject", "") == "slab 3-4 / cube";
+  EXPECT_TRUE(subject);
+  const std::string svg = s["drawing_svg"];
+  EXPECT_NE(svg.find(">8</text>"), std::string::npos);
+  EXPECT_EQ(svg.find(">0</text>"), std::string::npos);
+  // Back to 0 for the next page.
+  EXPECT_EQ(table(explain(load_problem(kData + "/problems/roberts_cube.yaml")), "input", "faces")[0][0], "0");
+}
