@@ -7,6 +7,9 @@
 #include "cli/commands.hpp"
 #include "io/atomic_file.hpp"
 #include "io/explain.hpp"
+#include "io/input_error.hpp"
+#include "io/messages_ru.hpp"
+#include "kernel/number.hpp"
 
 namespace hlr::cli {
 namespace {
@@ -16,20 +19,33 @@ struct ExplainArgs {
   int number_from = 0;
 };
 
+// Prints an error of the problem file in the page's language: "hlr explain: FILE[:LINE]: text".
+int fail(const ExplainArgs& a, const std::string& file, int line, const std::string& message, const std::string& then = "") {
+  const bool ru = a.lang == "ru";
+  std::cerr << "hlr explain: " << file << (line > 0 ? ":" + std::to_string(line) : std::string()) << ": "
+            << (ru ? message_ru(message) : message) << then << "\n";
+  return 1;
+}
+
 int run_explain(const ExplainArgs& a) {
   const std::string format =
       output_format(a.format, a.output, {{".md", "md"}, {".markdown", "md"}, {".html", "html"}, {".htm", "html"}, {".json", "json"}}, "md");
-  Problem pr = load_problem(a.input);
-  pr.index_base = a.number_from;
   SolutionJson s;
   try {
+    Problem pr = load_problem(a.input);
+    pr.index_base = a.number_from;
     s = explain(pr);
+  } catch (const InputError& e) {
+    return fail(a, e.file(), e.line(), e.message());
+  } catch (const NumberError& e) {
+    return fail(a, a.input, 0, e.what());
   } catch (const BodyError& e) {
-    std::cerr << "hlr explain: " << a.input << ": " << e.what() << " (a `decompose` problem splits it first)\n";
-    return 1;
+    std::string then;  // a non-convex body: the problem type that splits it
+    if (e.reason().find("takes convex bodies") != std::string::npos)
+      then = a.lang == "ru" ? " (это делает задача `decompose`)" : " (a `decompose` problem splits it first)";
+    return fail(a, a.input, 0, e.what(), then);
   } catch (const std::invalid_argument& e) {
-    std::cerr << "hlr explain: " << a.input << ": " << e.what() << "\n";
-    return 1;
+    return fail(a, a.input, 0, e.what());
   }
   Lang lang = a.lang == "ru" ? Lang::Ru : Lang::En;
   std::string text = format == "json" ? s.dump(1) + "\n" : format == "html" ? explain_html(s, lang) : explain_markdown(s, lang);

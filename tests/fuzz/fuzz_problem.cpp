@@ -1,10 +1,12 @@
 // libFuzzer target: problem files of `hlr explain` (YAML and JSON). Any text gives an
 // InputError or a problem; a problem is then solved (small bodies only, to keep runs fast).
+// Every error message is also put into Russian (the catalogue's matcher on any text).
 #include <cstdint>
 #include <string>
 
 #include "algorithms/roberts.hpp"
 #include "io/explain.hpp"
+#include "io/messages_ru.hpp"
 #include "io/problem.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -16,11 +18,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (faces <= 64 && p.segments.size() <= 16) {
       try {
         (void)hlr::explain_markdown(hlr::explain(p), hlr::Lang::Ru);
-      } catch (const hlr::BodyError&) {
-      } catch (const std::invalid_argument&) {
+      } catch (const hlr::BodyError& e) {
+        (void)hlr::message_ru(e.what());
+      } catch (const std::invalid_argument& e) {
+        (void)hlr::message_ru(e.what());
       }
     }
-  } catch (const hlr::InputError&) {
+  } catch (const hlr::InputError& e) {
+    (void)hlr::message_ru(e.message());
   }
   return 0;
 }
