@@ -13,7 +13,8 @@ namespace {
 // perspective, ends closer than `near` to the eye plane are pulled to it (drawing only: the
 // visibility of the piece is already decided exactly).
 bool piece_line(const Segment& s, const Piece& p, const Projector& proj, bool perspective, double near,
-                std::array<double, 4>& out) {
+                std::array<double, 4>& out, bool& pulled) {
+  pulled = false;
   // Drawing only: the ends in doubles (in the projector's frame) and t rounded.
   std::array<double, 3> F = proj.frame().to_frame(s.from()), T = proj.frame().to_frame(s.to()), A, B;
   auto at = [&](const Rational& t, std::array<double, 3>& o) {
@@ -35,6 +36,7 @@ bool piece_line(const Segment& s, const Piece& p, const Projector& proj, bool pe
       for (int k = 0; k < 3; ++k) C[k] = A[k] + u * (B[k] - A[k]);
       auto pc = proj.project(C[0], C[1], C[2]);
       (pa[2] < near ? pa : pb) = pc;
+      pulled = true;
     }
   }
   out = {pa[0], pa[1], pb[0], pb[1]};
@@ -81,7 +83,8 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
       const Piece& p = s.pieces[pi];
       if (p.behind_eye || p.clipped || (!p.visible && !opt.hidden)) continue;
       std::array<double, 4> l;
-      if (!piece_line(s, p, proj, camera.perspective, near, l)) continue;
+      bool pulled = false;
+      if (!piece_line(s, p, proj, camera.perspective, near, l, pulled)) continue;
       Polyline2D pl;
       pl.first = static_cast<std::uint32_t>(d.points.size());
       pl.count = 2;
@@ -91,6 +94,7 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
       pl.intersection = s.kind == Segment::Kind::Intersection;
       pl.body = s.body;
       pl.body2 = s.body2;
+      pl.pulled = pulled;
       d.points.push_back({l[0], l[1]});
       d.points.push_back({l[2], l[3]});
       d.sources.push_back(PieceRef{static_cast<int>(si), static_cast<int>(pi)});

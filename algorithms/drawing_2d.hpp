@@ -29,6 +29,7 @@ struct Polyline2D {
   LineKind kind = LineKind::Edge;
   bool visible = true;
   bool intersection = false;  // an intersection line of bodies `body` and `body2`
+  bool pulled = false;        // perspective: an end pulled to the drawing's near depth (not the exact projection)
   int body = -1, body2 = -1;
 };
 

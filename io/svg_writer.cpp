@@ -9,12 +9,11 @@
 #include <tuple>
 
 namespace hlr {
-namespace {
 
 // Three decimals (micrometres in the drawing). Integer formatting of the value rounded to
 // thousandths: several times faster than printf on million-line drawings, same text except
 // for values exactly halfway between two thousandths (rounded away from zero here).
-std::string fmt(double v) {
+std::string svg_number(double v) {
   if (!(std::fabs(v) < 1e12)) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.3f", v);
@@ -34,6 +33,8 @@ std::string fmt(double v) {
   return std::string(p, e);
 }
 
+namespace {
+std::string fmt(double v) { return svg_number(v); }
 }  // namespace
 
 std::string to_svg(const std::vector<DrawingBody>& bodies, const Drawing2D& d, const SvgOptions& opt) {

@@ -15,6 +15,9 @@ struct DrawingBody {
   std::string name, source;
 };
 
+/// A number as the SVG writers print it: three decimals, fixed (deterministic, diffable).
+std::string svg_number(double v);
+
 struct SvgOptions {
   bool hidden_dashed = false;
   double width_mm = 150;

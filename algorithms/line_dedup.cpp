@@ -1,0 +1,327 @@
+// The 2D stage's exact clean-up (see line_dedup.hpp; course notes section 20).
+#include "algorithms/line_dedup.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <optional>
+#include <unordered_map>
+
+namespace hlr {
+namespace {
+
+// Exact picture coordinates with unnormalised rational axes: orthographic (P·r, P·u), with
+// r = up × v and u = v × r; perspective ((P - E)·r / (P - E)·d, (P - E)·u / (P - E)·d) with
+// d = target - E. An affine (or, in front of the eye, projective) image of the drawing's own
+// coordinates: equal points, collinear points and the order along a line are the same.
+class ExactScreen {
+ public:
+  explicit ExactScreen(const Camera& c) : persp_(c.perspective), e_(c.eye) {
+    Vector3 v = c.perspective ? Vector3(c.eye - c.target) : c.direction;
+    r_ = cross(c.up, v);
+    u_ = cross(v, r_);
+    d_ = c.perspective ? Vector3(c.target - c.eye) : v;
+  }
+  std::array<Rational, 2> operator()(const Point3& p) const {
+    if (!persp_) return {dot3(p.x(), p.y(), p.z(), r_), dot3(p.x(), p.y(), p.z(), u_)};
+    Rational qx = p.x() - e_.x(), qy = p.y() - e_.y(), qz = p.z() - e_.z();
+    Rational w = dot3(qx, qy, qz, d_);
+    return {dot3(qx, qy, qz, r_) / w, dot3(qx, qy, qz, u_) / w};
+  }
+
+ private:
+  static Rational dot3(const Rational& x, const Rational& y, const Rational& z, const Vector3& a) {
+    return x * a.x() + y * a.y() + z * a.z();
+  }
+  bool persp_;
+  Point3 e_;
+  Vector3 r_, u_, d_;
+};
+
+struct UnionFind {
+  std::vector<std::uint32_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t a) {
+    while (parent[a] != a) a = parent[a] = parent[parent[a]];
+    return a;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the smallest index is the root: deterministic
+  }
+};
+
+using Exact2 = std::array<Rational, 2>;
+
+int sign_of(const Rational& q) { return q > 0 ? 1 : q < 0 ? -1 : 0; }
+
+int orient2d(const Exact2& a, const Exact2& b, const Exact2& c) {
+  return sign_of((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+}
+
+// The clean-up's working state: endpoint 2k is piece k's start (t0), 2k + 1 its end (t1).
+class Dedup {
+ public:
+  Dedup(const Drawing2D& d, const LineDrawing& r, const Camera& cam) : d_(d), r_(r), screen_(cam), points_(2 * d.lines.size()) {}
+
+  CleanDrawing run(const DedupOptions& opt) {
+    CleanDrawing out;
+    out.pieces_in = d_.lines.size();
+    tolerance();
+    join_same_keys();
+    join_close_points();
+    std::vector<std::uint32_t> point_of(points_.parent.size(), UINT32_MAX);
+    auto point = [&](std::uint32_t e) {
+      std::uint32_t root = points_.find(e);
+      if (point_of[root] == UINT32_MAX) {
+        point_of[root] = static_cast<std::uint32_t>(out.points.size());
+        out.points.push_back(xy(root));
+      }
+      return point_of[root];
+    };
+    std::vector<char> degenerate(d_.lines.size(), 0);
+    for (std::uint32_t k = 0; k < d_.lines.size(); ++k)
+      if (!d_.lines[k].pulled && points_.find(2 * k) == points_.find(2 * k + 1)) degenerate[k] = 1, ++out.zero_length;
+    UnionFind groups(d_.lines.size());
+    if (opt.overlaps) find_overlaps(degenerate, groups);
+    std::vector<std::vector<std::uint32_t>> members(d_.lines.size());
+    for (std::uint32_t k = 0; k < d_.lines.size(); ++k)
+      if (!degenerate[k]) members[groups.find(k)].push_back(k);
+    for (std::uint32_t k = 0; k < d_.lines.size(); ++k) {
+      if (degenerate[k] || groups.find(k) != k) continue;
+      const auto& m = members[k];
+      if (m.size() == 1) {
+        out.edges.push_back(edge(k, point(2 * k), point(2 * k + 1)));
+        continue;
+      }
+      ++out.overlap_groups;
+      out.overlapped_pieces += m.size();
+      resolve(m, out, point);
+    }
+    out.exact_point_tests = point_tests_;
+    out.exact_line_tests = line_tests_;
+    return out;
+  }
+
+ private:
+  const Polyline2D& line(std::uint32_t e) const { return d_.lines[e / 2]; }
+  std::array<double, 2> xy(std::uint32_t e) const { return d_.points[line(e).first + (e & 1)]; }
+  bool pulled(std::uint32_t e) const { return line(e).pulled; }
+
+  const Exact2& exact(std::uint32_t e) {
+    auto it = exact_.find(e);
+    if (it != exact_.end()) return it->second;
+    const Polyline2D& l = line(e);
+    const PieceRef& ref = d_.sources[l.first_edge];
+    const Segment& s = r_.segments[ref.segment];
+    const Piece& p = s.pieces[ref.piece];
+    return exact_.emplace(e, screen_(s.at(e & 1 ? p.t1 : p.t0))).first->second;
+  }
+
+  // Doubles of the picture carry errors near 1e-15 of its largest coordinate (a few roundings
+  // from exact values in a frame of unit size or of the input's size; perspective divides by
+  // depths at least 1e-4 of the largest): delta = 1e-9 of it leaves a margin above 1e3.
+  void tolerance() {
+    double m = 0;
+    for (std::uint32_t e = 0; e < points_.parent.size(); ++e) {
+      auto p = xy(e);
+      m = std::max({m, std::fabs(p[0]), std::fabs(p[1])});
+    }
+    delta_ = 1e-9 * std::max(m, 1e-300);
+  }
+
+  // Ends that are the same mesh vertex, or the same boundary between two pieces of a segment,
+  // are the same point without arithmetic.
+  void join_same_keys() {
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;
+    keys.reserve(points_.parent.size());
+    for (std::uint32_t e = 0; e < points_.parent.size(); ++e) {
+      if (pulled(e)) continue;
+      const Polyline2D& l = line(e);
+      const PieceRef& ref = d_.sources[l.first_edge];
+      const Segment& s = r_.segments[ref.segment];
+      const Piece& p = s.pieces[ref.piece];
+      const Rational& t = e & 1 ? p.t1 : p.t0;
+      int v = s.kind == Segment::Kind::Edge ? (t == 0 ? s.v0 : t == 1 ? s.v1 : -1) : -1;
+      std::uint64_t key = v >= 0 ? (std::uint64_t{1} << 63) | (static_cast<std::uint64_t>(s.body) << 32) | static_cast<std::uint32_t>(v)
+                                 : (static_cast<std::uint64_t>(ref.segment) << 32) | static_cast<std::uint32_t>(ref.piece + (e & 1));
+      keys.emplace_back(key, e);
+    }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 1; i < keys.size(); ++i)
+      if (keys[i].first == keys[i - 1].first) points_.unite(keys[i].second, keys[i - 1].second);
+  }
+
+  // Ends within delta in both coordinates are compared exactly; farther ones differ.
+  void join_close_points() {
+    std::vector<std::uint32_t> order;
+    order.reserve(points_.parent.size());
+    for (std::uint32_t e = 0; e < points_.parent.size(); ++e)
+      if (!pulled(e)) order.push_back(e);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+      auto pa = xy(a), pb = xy(b);
+      return pa[0] < pb[0] || (pa[0] == pb[0] && (pa[1] < pb[1] || (pa[1] == pb[1] && a < b)));
+    });
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      auto pi = xy(order[i]);
+      for (std::size_t j = i + 1; j < order.size(); ++j) {
+        auto pj = xy(order[j]);
+        if (pj[0] - pi[0] > delta_) break;
+        if (std::fabs(pj[1] - pi[1]) > delta_) continue;
+        if (points_.find(order[i]) == points_.find(order[j])) continue;
+        ++point_tests_;
+        if (exact(order[i]) == exact(order[j])) points_.unite(order[i], order[j]);
+      }
+    }
+  }
+
+  // Can pieces a and b lie on one line of the picture and overlap in more than a point? A
+  // double filter with margin 8 delta (exact overlap passes it), then the exact test.
+  bool overlap(std::uint32_t a, std::uint32_t b) {
+    auto A0 = xy(2 * a), A1 = xy(2 * a + 1), B0 = xy(2 * b), B1 = xy(2 * b + 1);
+    double la = std::hypot(A1[0] - A0[0], A1[1] - A0[1]), lb = std::hypot(B1[0] - B0[0], B1[1] - B0[1]);
+    if (lb > la) std::swap(A0, B0), std::swap(A1, B1), std::swap(la, lb);
+    const double m = 8 * delta_;
+    if (la > 4 * delta_) {
+      double nx = (A1[0] - A0[0]) / la, ny = (A1[1] - A0[1]) / la;
+      auto off = [&](const std::array<double, 2>& p) { return std::fabs(nx * (p[1] - A0[1]) - ny * (p[0] - A0[0])); };
+      if (off(B0) > m || off(B1) > m) return false;
+      double s0 = nx * (B0[0] - A0[0]) + ny * (B0[1] - A0[1]), s1 = nx * (B1[0] - A0[0]) + ny * (B1[1] - A0[1]);
+      if (std::max(s0, s1) <= -m || std::min(s0, s1) >= la + m) return false;
+    }
+    ++line_tests_;
+    const Exact2 &p0 = exact(2 * a), &p1 = exact(2 * a + 1), &q0 = exact(2 * b), &q1 = exact(2 * b + 1);
+    if (orient2d(p0, p1, q0) != 0 || orient2d(p0, p1, q1) != 0) return false;
+    int ax = p0[0] != p1[0] ? 0 : 1;
+    const Rational &alo = std::min(p0[ax], p1[ax]), &ahi = std::max(p0[ax], p1[ax]);
+    const Rational &blo = std::min(q0[ax], q1[ax]), &bhi = std::max(q0[ax], q1[ax]);
+    return std::max(alo, blo) < std::min(ahi, bhi);
+  }
+
+  // A grid over the picture; each piece goes into every cell within delta of it (walking the
+  // columns of its major axis), and pieces sharing a cell are tested.
+  void find_overlaps(const std::vector<char>& degenerate, UnionFind& groups) {
+    std::vector<std::uint32_t> live;
+    for (std::uint32_t k = 0; k < d_.lines.size(); ++k)
+      if (!degenerate[k] && !d_.lines[k].pulled) live.push_back(k);
+    if (live.size() < 2) return;
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    for (std::uint32_t k : live)
+      for (std::uint32_t e : {2 * k, 2 * k + 1}) {
+        auto p = xy(e);
+        x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]), y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
+      }
+    const double pad = 16 * delta_;
+    x0 -= pad, y0 -= pad, x1 += pad, y1 += pad;
+    const int g = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(live.size()))), 1, 2048);
+    const double cw = (x1 - x0) / g, ch = (y1 - y0) / g;
+    auto cx = [&](double x) { return std::clamp(static_cast<int>((x - x0) / cw), 0, g - 1); };
+    auto cy = [&](double y) { return std::clamp(static_cast<int>((y - y0) / ch), 0, g - 1); };
+    std::vector<std::vector<std::uint32_t>> cells(static_cast<std::size_t>(g) * g);
+    const double m = 8 * delta_;
+    for (std::uint32_t k : live) {
+      auto a = xy(2 * k), b = xy(2 * k + 1);
+      bool by_x = std::fabs(b[0] - a[0]) >= std::fabs(b[1] - a[1]);
+      int u = by_x ? 0 : 1, v = 1 - u;
+      if (a[u] > b[u]) std::swap(a, b);
+      const double w = by_x ? cw : ch, o = by_x ? x0 : y0;
+      int c0 = by_x ? cx(a[0] - m) : cy(a[1] - m), c1 = by_x ? cx(b[0] + m) : cy(b[1] + m);
+      for (int c = c0; c <= c1; ++c) {
+        double lo = std::max(a[u], o + c * w - m), hi = std::min(b[u], o + (c + 1) * w + m);
+        if (lo > hi) lo = hi = std::clamp(lo, a[u], b[u]);
+        auto at = [&](double s) { return b[u] == a[u] ? a[v] : a[v] + (b[v] - a[v]) * ((s - a[u]) / (b[u] - a[u])); };
+        double v0 = std::min(at(lo), at(hi)) - m, v1 = std::max(at(lo), at(hi)) + m;
+        int r0 = by_x ? cy(v0) : cx(v0), r1 = by_x ? cy(v1) : cx(v1);
+        for (int r = r0; r <= r1; ++r) {
+          std::size_t cell = by_x ? static_cast<std::size_t>(r) * g + c : static_cast<std::size_t>(c) * g + r;
+          if (cells[cell].empty() || cells[cell].back() != k) cells[cell].push_back(k);
+        }
+      }
+    }
+    for (const auto& cell : cells)
+      for (std::size_t i = 0; i < cell.size(); ++i)
+        for (std::size_t j = i + 1; j < cell.size(); ++j) {
+          std::uint32_t a = cell[i], b = cell[j];
+          if (d_.sources[d_.lines[a].first_edge].segment == d_.sources[d_.lines[b].first_edge].segment) continue;
+          if (groups.find(a) == groups.find(b)) continue;
+          if (overlap(a, b)) groups.unite(a, b);
+        }
+  }
+
+  CleanEdge edge(std::uint32_t k, std::uint32_t p, std::uint32_t q) const {
+    const Polyline2D& l = d_.lines[k];
+    return CleanEdge{p, q, d_.sources[l.first_edge], l.kind, l.visible, l.body};
+  }
+
+  // Pieces on one line of the picture: cut at every end (exact order along the line), draw
+  // each part once with the piece that wins it (visible first, then the stronger kind, then
+  // the first piece).
+  template <class PointOf>
+  void resolve(const std::vector<std::uint32_t>& m, CleanDrawing& out, PointOf& point) {
+    const Exact2 &f0 = exact(2 * m[0]), &f1 = exact(2 * m[0] + 1);
+    const int ax = f0[0] != f1[0] ? 0 : 1;
+    std::vector<std::uint32_t> ends;
+    for (std::uint32_t k : m) ends.push_back(2 * k), ends.push_back(2 * k + 1);
+    std::sort(ends.begin(), ends.end(), [&](std::uint32_t a, std::uint32_t b) {
+      int c = cmp(exact(a)[ax], exact(b)[ax]);
+      return c < 0 || (c == 0 && a < b);
+    });
+    std::vector<std::uint32_t> breaks;  // one end per distinct position
+    std::unordered_map<std::uint32_t, std::size_t> index;
+    for (std::uint32_t e : ends) {
+      if (breaks.empty() || exact(breaks.back())[ax] != exact(e)[ax]) breaks.push_back(e);
+      index[e] = breaks.size() - 1;
+    }
+    double before = 0, after = 0;
+    auto len = [&](std::uint32_t a, std::uint32_t b) {
+      auto p = xy(a), q = xy(b);
+      return std::hypot(q[0] - p[0], q[1] - p[1]);
+    };
+    for (std::uint32_t k : m) before += len(2 * k, 2 * k + 1);
+    for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+      int best = -1;
+      for (std::uint32_t k : m) {
+        std::size_t lo = std::min(index[2 * k], index[2 * k + 1]), hi = std::max(index[2 * k], index[2 * k + 1]);
+        if (lo > i || hi < i + 1) continue;
+        if (best < 0 || wins(d_.lines[k], d_.lines[best])) best = static_cast<int>(k);
+      }
+      if (best < 0) continue;
+      out.edges.push_back(edge(static_cast<std::uint32_t>(best), point(breaks[i]), point(breaks[i + 1])));
+      after += len(breaks[i], breaks[i + 1]);
+    }
+    out.duplicate_length += std::max(0.0, before - after);
+  }
+
+  static bool wins(const Polyline2D& a, const Polyline2D& b) {
+    if (a.visible != b.visible) return a.visible;
+    return kind_priority(a.kind) > kind_priority(b.kind);
+  }
+
+  const Drawing2D& d_;
+  const LineDrawing& r_;
+  ExactScreen screen_;
+  UnionFind points_;
+  std::unordered_map<std::uint32_t, Exact2> exact_;
+  double delta_ = 0;
+  std::size_t point_tests_ = 0, line_tests_ = 0;
+};
+
+}  // namespace
+
+int kind_priority(LineKind k) {
+  switch (k) {
+    case LineKind::Silhouette: return 4;
+    case LineKind::Boundary: return 3;
+    case LineKind::Crease: return 2;
+    case LineKind::Intersection: return 1;
+    case LineKind::Edge: return 0;
+  }
+  return 0;
+}
+
+CleanDrawing dedup_drawing(const Drawing2D& drawing, const LineDrawing& lines, const Camera& camera, const DedupOptions& options) {
+  Dedup d(drawing, lines, camera);
+  return d.run(options);
+}
+
+}  // namespace hlr

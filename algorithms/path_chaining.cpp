@@ -1,0 +1,122 @@
+// Chaining edges into the fewest strokes (see path_chaining.hpp).
+#include "algorithms/path_chaining.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace hlr {
+namespace {
+
+constexpr std::uint32_t kNone = UINT32_MAX;
+
+struct Components {
+  std::vector<std::uint32_t> parent;
+  explicit Components(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t a) {
+    while (parent[a] != a) a = parent[a] = parent[parent[a]];
+    return a;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+// Odd-degree vertices of each component (by root), in index order; degree per vertex.
+void odd_vertices(std::size_t n, const std::vector<std::array<std::uint32_t, 2>>& edges, Components& comp,
+                  std::vector<std::uint32_t>& degree, std::vector<std::vector<std::uint32_t>>& odd) {
+  degree.assign(n, 0);
+  for (const auto& e : edges) {
+    ++degree[e[0]], ++degree[e[1]];
+    comp.unite(e[0], e[1]);
+  }
+  odd.assign(n, {});
+  for (std::uint32_t v = 0; v < n; ++v)
+    if (degree[v] % 2) odd[comp.find(v)].push_back(v);
+}
+
+}  // namespace
+
+std::size_t minimum_chain_count(std::size_t n, const std::vector<std::array<std::uint32_t, 2>>& edges) {
+  Components comp(n);
+  std::vector<std::uint32_t> degree;
+  std::vector<std::vector<std::uint32_t>> odd;
+  odd_vertices(n, edges, comp, degree, odd);
+  std::size_t count = 0;
+  for (std::uint32_t v = 0; v < n; ++v)
+    if (degree[v] > 0 && comp.find(v) == v) count += std::max<std::size_t>(1, odd[v].size() / 2);
+  return count;
+}
+
+std::vector<Chain> chain_edges(std::size_t n, const std::vector<std::array<std::uint32_t, 2>>& input) {
+  Components comp(n);
+  std::vector<std::uint32_t> degree;
+  std::vector<std::vector<std::uint32_t>> odd;
+  odd_vertices(n, input, comp, degree, odd);
+  // All edges: the input's, then the virtual ones pairing odd vertices of a component.
+  std::vector<std::array<std::uint32_t, 2>> edges = input;
+  const std::size_t real = input.size();
+  for (std::uint32_t v = 0; v < n; ++v)
+    for (std::size_t i = 0; i + 1 < odd[v].size(); i += 2) edges.push_back({odd[v][i], odd[v][i + 1]});
+  // Adjacency (CSR), in edge order: deterministic.
+  std::vector<std::uint32_t> start(n + 1, 0);
+  for (const auto& e : edges) ++start[e[0] + 1], ++start[e[1] + 1];
+  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<std::uint32_t> adj(2 * edges.size()), fill(start.begin(), start.end() - 1);
+  for (std::uint32_t i = 0; i < edges.size(); ++i) adj[fill[edges[i][0]]++] = i, adj[fill[edges[i][1]]++] = i;
+  std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+  std::vector<char> used(edges.size(), 0);
+  std::vector<Chain> chains;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> stack, circuit;  // (vertex, edge that reached it)
+  for (std::uint32_t root = 0; root < n; ++root) {
+    if (degree[root] == 0 || comp.find(root) != root) continue;
+    std::uint32_t s = odd[root].empty() ? root : odd[root][0];
+    stack.assign(1, {s, kNone});
+    circuit.clear();
+    while (!stack.empty()) {
+      std::uint32_t v = stack.back().first;
+      while (next[v] < start[v + 1] && used[adj[next[v]]]) ++next[v];
+      if (next[v] == start[v + 1]) {
+        circuit.push_back(stack.back());
+        stack.pop_back();
+        continue;
+      }
+      std::uint32_t e = adj[next[v]];
+      used[e] = 1;
+      stack.push_back({edges[e][0] == v ? edges[e][1] : edges[e][0], e});
+    }
+    std::reverse(circuit.begin(), circuit.end());  // v0 (no edge), then (v_i, e_i joining v_{i-1} and v_i)
+    const std::size_t m = circuit.size() - 1;     // edges in the circuit
+    std::size_t first_virtual = 0;
+    for (std::size_t i = 1; i <= m; ++i)
+      if (circuit[i].second >= real) {
+        first_virtual = i;
+        break;
+      }
+    if (first_virtual == 0) {  // a closed stroke
+      Chain c;
+      c.closed = true;
+      for (std::size_t i = 0; i < m; ++i) c.points.push_back(circuit[i].first);
+      for (std::size_t i = 1; i <= m; ++i) c.edges.push_back(circuit[i].second);
+      chains.push_back(std::move(c));
+      continue;
+    }
+    Chain c;
+    c.points.push_back(circuit[first_virtual].first);
+    for (std::size_t k = 1; k <= m; ++k) {
+      std::size_t i = (first_virtual + k - 1) % m + 1;  // edges after the first virtual one, around
+      if (circuit[i].second >= real) {
+        if (!c.edges.empty()) chains.push_back(std::move(c));
+        c = Chain{};
+        c.points.push_back(circuit[i].first);
+      } else {
+        c.points.push_back(circuit[i].first);
+        c.edges.push_back(circuit[i].second);
+      }
+    }
+    if (!c.edges.empty()) chains.push_back(std::move(c));
+  }
+  return chains;
+}
+
+}  // namespace hlr

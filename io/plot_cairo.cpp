@@ -1,0 +1,102 @@
+// The sheet as PDF and PNG through cairo (see plot_output.hpp). Drawn in millimetres: the
+// same strokes, weights and dashes as the SVG.
+#include <cairo-pdf.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "io/plot_output.hpp"
+
+namespace hlr {
+namespace {
+
+cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+void draw_sheet(cairo_t* cr, const Sheet& sheet, const PlotStyle& style) {
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  for (const std::string& name : sheet_layer_names(sheet))
+    for (const SheetView& v : sheet.views)
+      for (const PlotLayer& l : v.plot->layers) {
+        if (l.name() != name) continue;
+        cairo_set_line_width(cr, style.weight(l));
+        auto pat = style.dash_pattern(l);
+        const bool dashed = !l.visible && style.hidden_dashed && style.dashes == DashMode::Pattern;
+        cairo_set_dash(cr, pat.data(), dashed ? 2 : 0, 0);
+        std::vector<char> closed;
+        auto strokes = page_strokes(v, l, style, &closed);
+        for (std::size_t s = 0; s < strokes.size(); ++s) {
+          cairo_move_to(cr, strokes[s][0][0], strokes[s][0][1]);
+          for (std::size_t i = 1; i < strokes[s].size(); ++i) cairo_line_to(cr, strokes[s][i][0], strokes[s][i][1]);
+          if (closed[s]) cairo_close_path(cr);
+          cairo_stroke(cr);
+        }
+      }
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, 3.5);
+  auto text = [&](const std::string& t, double x, double y, double anchor) {
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, t.c_str(), &e);
+    cairo_move_to(cr, x - anchor * e.x_advance, y);
+    cairo_show_text(cr, t.c_str());
+  };
+  for (const SheetView& v : sheet.views) {
+    if (v.label.empty() || v.plot->empty()) continue;
+    const auto& b = v.plot->bounds;
+    Point2 at = v.page({(b[0] + b[2]) / 2, b[1]});
+    text(v.label, at[0], at[1] + 6, 0.5);
+  }
+  if (!sheet.caption.empty()) text(sheet.caption, sheet.width_mm - 5, sheet.height_mm - 5, 1);
+}
+
+void check(cairo_status_t st) {
+  if (st != CAIRO_STATUS_SUCCESS) throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(st));
+}
+
+}  // namespace
+
+std::string sheet_to_pdf(const Sheet& sheet, const PlotStyle& style) {
+  std::string out;
+  const double pt = 72.0 / 25.4;
+  cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(append, &out, sheet.width_mm * pt, sheet.height_mm * pt);
+  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, "exact-hlr drawing");
+  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "exact-hlr");
+  cairo_t* cr = cairo_create(surface);
+  cairo_scale(cr, pt, pt);
+  draw_sheet(cr, sheet, style);
+  cairo_status_t st = cairo_status(cr);
+  cairo_destroy(cr);
+  cairo_surface_finish(surface);
+  cairo_status_t sst = cairo_surface_status(surface);
+  cairo_surface_destroy(surface);
+  check(st);
+  check(sst);
+  return out;
+}
+
+std::string sheet_to_png(const Sheet& sheet, const PlotStyle& style, double dpi) {
+  const double px = dpi / 25.4;
+  int w = std::max(1, static_cast<int>(std::lround(sheet.width_mm * px))), h = std::max(1, static_cast<int>(std::lround(sheet.height_mm * px)));
+  if (static_cast<double>(w) * h > 4e8) throw std::invalid_argument("the PNG would have over 400 million pixels: lower --dpi");
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
+  cairo_t* cr = cairo_create(surface);
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  cairo_scale(cr, px, px);
+  draw_sheet(cr, sheet, style);
+  cairo_status_t st = cairo_status(cr);
+  cairo_destroy(cr);
+  std::string out;
+  if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_write_to_png_stream(surface, append, &out);
+  cairo_surface_destroy(surface);
+  check(st);
+  return out;
+}
+
+}  // namespace hlr

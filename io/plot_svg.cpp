@@ -1,0 +1,80 @@
+// The sheet as SVG (see plot_output.hpp): one Inkscape layer per visibility and line kind
+// (AxiDraw plots layers by their number), one <path> per stroke in pen order, line weights per
+// layer; hidden lines dashed by the pattern (continuous along each stroke) or cut into dashes.
+#include "io/plot_output.hpp"
+#include "io/svg_writer.hpp"
+
+namespace hlr {
+namespace {
+
+std::string escape(const std::string& s) {
+  std::string e;
+  for (char c : s) {
+    if (c == '&') e += "&amp;";
+    else if (c == '<') e += "&lt;";
+    else if (c == '>') e += "&gt;";
+    else if (c == '"') e += "&quot;";
+    else e += c;
+  }
+  return e;
+}
+
+}  // namespace
+
+std::string sheet_to_svg(const Sheet& sheet, const PlotStyle& style) {
+  auto f = svg_number;
+  std::string out;
+  out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\"" +
+         f(sheet.width_mm) + "mm\" height=\"" + f(sheet.height_mm) + "mm\" viewBox=\"0 0 " + f(sheet.width_mm) + " " +
+         f(sheet.height_mm) + "\">\n";
+  out += "<title>exact-hlr drawing</title>\n";
+  const std::vector<std::string> names = sheet_layer_names(sheet);
+  for (std::size_t n = 0; n < names.size(); ++n) {
+    const PlotLayer* any = nullptr;
+    for (const SheetView& v : sheet.views)
+      for (const PlotLayer& l : v.plot->layers)
+        if (l.name() == names[n]) any = &l;
+    const bool dashed = !any->visible && style.hidden_dashed && style.dashes == DashMode::Pattern;
+    auto pat = style.dash_pattern(*any);
+    std::string label = style.numbered_layers ? std::to_string(n + 1) + " " + names[n] : names[n];
+    out += "<g inkscape:groupmode=\"layer\" inkscape:label=\"" + label + "\" id=\"" + names[n] +
+           "\" fill=\"none\" stroke=\"#000\" stroke-width=\"" + f(style.weight(*any)) +
+           "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"" +
+           (dashed ? " stroke-dasharray=\"" + f(pat[0]) + " " + f(pat[1]) + "\"" : std::string()) + ">\n";
+    for (const SheetView& v : sheet.views)
+      for (const PlotLayer& l : v.plot->layers) {
+        if (l.name() != names[n]) continue;
+        std::vector<char> closed;
+        auto strokes = page_strokes(v, l, style, &closed);
+        for (std::size_t s = 0; s < strokes.size(); ++s) {
+          const auto& pts = strokes[s];
+          std::string d = "M" + f(pts[0][0]) + " " + f(pts[0][1]) + "L";
+          for (std::size_t i = 1; i < pts.size(); ++i) d += (i > 1 ? " " : "") + f(pts[i][0]) + " " + f(pts[i][1]);
+          if (closed[s]) d += "Z";
+          out += "  <path d=\"" + d + "\"/>\n";
+        }
+      }
+    out += "</g>\n";
+  }
+  bool labels = !sheet.caption.empty();
+  for (const SheetView& v : sheet.views) labels = labels || !v.label.empty();
+  if (labels) {
+    out += "<g inkscape:groupmode=\"layer\" inkscape:label=\"labels\" id=\"labels\" font-family=\"sans-serif\" font-size=\"3.5\" "
+           "fill=\"#000\">\n";
+    for (const SheetView& v : sheet.views) {
+      if (v.label.empty() || v.plot->empty()) continue;
+      const auto& b = v.plot->bounds;
+      Point2 at = v.page({(b[0] + b[2]) / 2, b[1]});
+      out += "  <text x=\"" + f(at[0]) + "\" y=\"" + f(at[1] + 6) + "\" text-anchor=\"middle\">" + escape(v.label) + "</text>\n";
+    }
+    if (!sheet.caption.empty())
+      out += "  <text x=\"" + f(sheet.width_mm - 5) + "\" y=\"" + f(sheet.height_mm - 5) + "\" text-anchor=\"end\">" +
+             escape(sheet.caption) + "</text>\n";
+    out += "</g>\n";
+  }
+  out += "</svg>\n";
+  return out;
+}
+
+}  // namespace hlr
