@@ -14,9 +14,11 @@ same() {  # name, reference args, extreme args (both after the mesh)
   local name="$1" ref="$2" ext="$3" mesh="${4:-$D/cube.off}"
   for m in faces roberts; do
     # shellcheck disable=SC2086
-    "$HLR" render "$mesh" --method $m $ref --edges all --hidden dashed -o "$W/ref.svg" 2> /dev/null
+    # --raw: one line per exact piece in segment order (pen order breaks ties between strokes at
+    # equal distance by the doubles' last bits; the geometry is what must be the same).
+    "$HLR" render "$mesh" --method $m $ref --edges all --hidden dashed --raw -o "$W/ref.svg" 2> /dev/null
     # shellcheck disable=SC2086
-    "$HLR" render "$mesh" --method $m $ext --edges all --hidden dashed -o "$W/ext.svg" 2> /dev/null || { echo "$name ($m): failed"; fail=1; continue; }
+    "$HLR" render "$mesh" --method $m $ext --edges all --hidden dashed --raw -o "$W/ext.svg" 2> /dev/null || { echo "$name ($m): failed"; fail=1; continue; }
     if grep -q -i -E 'nan|inf[^o]' "$W/ext.svg"; then echo "$name ($m): NaN or inf in the drawing"; fail=1; fi
     if ! cmp -s "$W/ref.svg" "$W/ext.svg"; then echo "$name ($m): differs from $ref"; fail=1; fi
   done
