@@ -1,7 +1,10 @@
 // The 2D stage's exact clean-up (see line_dedup.hpp; course notes section 20).
 #include "algorithms/line_dedup.hpp"
 
+#include "algorithms/parallel.hpp"
+
 #include <algorithm>
+#include <execution>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -84,16 +87,18 @@ class Dedup {
       if (!d_.lines[k].pulled && points_.find(2 * k) == points_.find(2 * k + 1)) degenerate[k] = 1, ++out.zero_length;
     UnionFind groups(d_.lines.size());
     if (opt.overlaps) find_overlaps(degenerate, groups);
-    std::vector<std::vector<std::uint32_t>> members(d_.lines.size());
+    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> members;  // groups of two or more, by root
     for (std::uint32_t k = 0; k < d_.lines.size(); ++k)
-      if (!degenerate[k]) members[groups.find(k)].push_back(k);
+      if (!degenerate[k] && groups.find(k) != k) members[groups.find(k)].push_back(k);
     for (std::uint32_t k = 0; k < d_.lines.size(); ++k) {
       if (degenerate[k] || groups.find(k) != k) continue;
-      const auto& m = members[k];
-      if (m.size() == 1) {
+      auto it = members.find(k);
+      if (it == members.end()) {
         out.edges.push_back(edge(k, point(2 * k), point(2 * k + 1)));
         continue;
       }
+      std::vector<std::uint32_t>& m = it->second;
+      m.insert(m.begin(), k);  // the root is the group's smallest piece
       ++out.overlap_groups;
       out.overlapped_pieces += m.size();
       resolve(m, out, point);
@@ -147,30 +152,34 @@ class Dedup {
                                  : (static_cast<std::uint64_t>(ref.segment) << 32) | static_cast<std::uint32_t>(ref.piece + (e & 1));
       keys.emplace_back(key, e);
     }
-    std::sort(keys.begin(), keys.end());
+    std::sort(std::execution::par, keys.begin(), keys.end());
     for (std::size_t i = 1; i < keys.size(); ++i)
       if (keys[i].first == keys[i - 1].first) points_.unite(keys[i].second, keys[i - 1].second);
   }
 
   // Ends within delta in both coordinates are compared exactly; farther ones differ.
   void join_close_points() {
-    std::vector<std::uint32_t> order;
+    struct End {
+      double x, y;
+      std::uint32_t e;
+    };
+    std::vector<End> order;
     order.reserve(points_.parent.size());
     for (std::uint32_t e = 0; e < points_.parent.size(); ++e)
-      if (!pulled(e)) order.push_back(e);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-      auto pa = xy(a), pb = xy(b);
-      return pa[0] < pb[0] || (pa[0] == pb[0] && (pa[1] < pb[1] || (pa[1] == pb[1] && a < b)));
+      if (!pulled(e)) {
+        auto p = xy(e);
+        order.push_back({p[0], p[1], e});
+      }
+    std::sort(std::execution::par, order.begin(), order.end(), [](const End& a, const End& b) {
+      return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.e < b.e)));
     });
     for (std::size_t i = 0; i < order.size(); ++i) {
-      auto pi = xy(order[i]);
       for (std::size_t j = i + 1; j < order.size(); ++j) {
-        auto pj = xy(order[j]);
-        if (pj[0] - pi[0] > delta_) break;
-        if (std::fabs(pj[1] - pi[1]) > delta_) continue;
-        if (points_.find(order[i]) == points_.find(order[j])) continue;
+        if (order[j].x - order[i].x > delta_) break;
+        if (std::fabs(order[j].y - order[i].y) > delta_) continue;
+        if (points_.find(order[i].e) == points_.find(order[j].e)) continue;
         ++point_tests_;
-        if (exact(order[i]) == exact(order[j])) points_.unite(order[i], order[j]);
+        if (exact(order[i].e) == exact(order[j].e)) points_.unite(order[i].e, order[j].e);
       }
     }
   }
@@ -178,6 +187,11 @@ class Dedup {
   // Can pieces a and b lie on one line of the picture and overlap in more than a point? A
   // double filter with margin 8 delta (exact overlap passes it), then the exact test.
   bool overlap(std::uint32_t a, std::uint32_t b) {
+    if (!maybe_overlap(a, b)) return false;
+    return exact_overlap(a, b);
+  }
+
+  bool maybe_overlap(std::uint32_t a, std::uint32_t b) const {
     auto A0 = xy(2 * a), A1 = xy(2 * a + 1), B0 = xy(2 * b), B1 = xy(2 * b + 1);
     double la = std::hypot(A1[0] - A0[0], A1[1] - A0[1]), lb = std::hypot(B1[0] - B0[0], B1[1] - B0[1]);
     if (lb > la) std::swap(A0, B0), std::swap(A1, B1), std::swap(la, lb);
@@ -189,6 +203,10 @@ class Dedup {
       double s0 = nx * (B0[0] - A0[0]) + ny * (B0[1] - A0[1]), s1 = nx * (B1[0] - A0[0]) + ny * (B1[1] - A0[1]);
       if (std::max(s0, s1) <= -m || std::min(s0, s1) >= la + m) return false;
     }
+    return true;
+  }
+
+  bool exact_overlap(std::uint32_t a, std::uint32_t b) {
     ++line_tests_;
     const Exact2 &p0 = exact(2 * a), &p1 = exact(2 * a + 1), &q0 = exact(2 * b), &q1 = exact(2 * b + 1);
     if (orient2d(p0, p1, q0) != 0 || orient2d(p0, p1, q1) != 0) return false;
@@ -217,9 +235,9 @@ class Dedup {
     const double cw = (x1 - x0) / g, ch = (y1 - y0) / g;
     auto cx = [&](double x) { return std::clamp(static_cast<int>((x - x0) / cw), 0, g - 1); };
     auto cy = [&](double y) { return std::clamp(static_cast<int>((y - y0) / ch), 0, g - 1); };
-    std::vector<std::vector<std::uint32_t>> cells(static_cast<std::size_t>(g) * g);
     const double m = 8 * delta_;
-    for (std::uint32_t k : live) {
+    // The cells of each piece (conservative: every cell within 8 delta of it).
+    auto for_cells = [&](std::uint32_t k, auto&& visit) {
       auto a = xy(2 * k), b = xy(2 * k + 1);
       bool by_x = std::fabs(b[0] - a[0]) >= std::fabs(b[1] - a[1]);
       int u = by_x ? 0 : 1, v = 1 - u;
@@ -229,23 +247,37 @@ class Dedup {
       for (int c = c0; c <= c1; ++c) {
         double lo = std::max(a[u], o + c * w - m), hi = std::min(b[u], o + (c + 1) * w + m);
         if (lo > hi) lo = hi = std::clamp(lo, a[u], b[u]);
-        auto at = [&](double s) { return b[u] == a[u] ? a[v] : a[v] + (b[v] - a[v]) * ((s - a[u]) / (b[u] - a[u])); };
+        auto at = [&](double t) { return b[u] == a[u] ? a[v] : a[v] + (b[v] - a[v]) * ((t - a[u]) / (b[u] - a[u])); };
         double v0 = std::min(at(lo), at(hi)) - m, v1 = std::max(at(lo), at(hi)) + m;
         int r0 = by_x ? cy(v0) : cx(v0), r1 = by_x ? cy(v1) : cx(v1);
-        for (int r = r0; r <= r1; ++r) {
-          std::size_t cell = by_x ? static_cast<std::size_t>(r) * g + c : static_cast<std::size_t>(c) * g + r;
-          if (cells[cell].empty() || cells[cell].back() != k) cells[cell].push_back(k);
-        }
+        for (int r = r0; r <= r1; ++r) visit(by_x ? static_cast<std::size_t>(r) * g + c : static_cast<std::size_t>(c) * g + r);
       }
-    }
-    for (const auto& cell : cells)
-      for (std::size_t i = 0; i < cell.size(); ++i)
-        for (std::size_t j = i + 1; j < cell.size(); ++j) {
-          std::uint32_t a = cell[i], b = cell[j];
-          if (d_.sources[d_.lines[a].first_edge].segment == d_.sources[d_.lines[b].first_edge].segment) continue;
-          if (groups.find(a) == groups.find(b)) continue;
-          if (overlap(a, b)) groups.unite(a, b);
-        }
+    };
+    const std::size_t n_cells = static_cast<std::size_t>(g) * g;
+    std::vector<std::uint32_t> start(n_cells + 1, 0);
+    for (std::uint32_t k : live) for_cells(k, [&](std::size_t cell) { ++start[cell + 1]; });
+    for (std::size_t c = 0; c < n_cells; ++c) start[c + 1] += start[c];
+    std::vector<std::uint32_t> items(start[n_cells]), fill(start.begin(), start.end() - 1);
+    for (std::uint32_t k : live) for_cells(k, [&](std::size_t cell) { items[fill[cell]++] = k; });
+    // Pairs that pass the double filter, found on all cores; the exact tests in a fixed order.
+    ParallelLoop loop;
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop.workers());
+    loop.run(n_cells, 256, [&](unsigned worker, std::size_t begin, std::size_t end) {
+      for (std::size_t c = begin; c < end; ++c)
+        for (std::uint32_t i = start[c]; i < start[c + 1]; ++i)
+          for (std::uint32_t j = i + 1; j < start[c + 1]; ++j) {
+            std::uint32_t a = items[i], b = items[j];
+            if (a == b) continue;
+            if (d_.sources[d_.lines[a].first_edge].segment == d_.sources[d_.lines[b].first_edge].segment) continue;
+            if (maybe_overlap(a, b)) found[worker].emplace_back(std::min(a, b), std::max(a, b));
+          }
+    });
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    for (auto& f : found) pairs.insert(pairs.end(), f.begin(), f.end());
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    for (auto [a, b] : pairs)
+      if (groups.find(a) != groups.find(b) && exact_overlap(a, b)) groups.unite(a, b);
   }
 
   CleanEdge edge(std::uint32_t k, std::uint32_t p, std::uint32_t q) const {

@@ -150,6 +150,7 @@ void print_stats(const std::vector<Plot>& plots, double scale) {
     t.min_path_count += s.min_path_count, t.dropped_short += s.dropped_short;
     t.pen_down_length += s.pen_down_length * scale, t.pen_up_length += s.pen_up_length * scale;
     t.pen_up_greedy += s.pen_up_greedy * scale, t.pen_up_unordered += s.pen_up_unordered * scale;
+    t.exact_point_tests += s.exact_point_tests, t.exact_line_tests += s.exact_line_tests;
     t.seconds_dedup += s.seconds_dedup, t.seconds_chain += s.seconds_chain, t.seconds_order += s.seconds_order;
   }
   std::cerr << std::fixed;
@@ -160,6 +161,7 @@ void print_stats(const std::vector<Plot>& plots, double scale) {
             << " mm, pen-up " << t.pen_up_length << " mm (greedy " << t.pen_up_greedy << ", unordered " << t.pen_up_unordered
             << ")";
   std::cerr.precision(3);
+  std::cerr << ", exact tests: points " << t.exact_point_tests << ", lines " << t.exact_line_tests;
   std::cerr << ", clean-up " << t.seconds_dedup << " s, chaining " << t.seconds_chain << " s, ordering " << t.seconds_order << " s\n";
 }
 
