@@ -49,7 +49,9 @@ V3 d3_direction(const Vector3& v) {
 Vector3 choose_up(const Vector3& axis, std::optional<Vector3> up) {
   if (up) {
     if (up->is_zero()) throw std::invalid_argument("the up vector has zero length");
-    if (cross(axis, *up).is_zero()) throw std::invalid_argument("the up vector is parallel to the viewing direction");
+    if (cross(axis, *up).is_zero())
+      throw std::invalid_argument("the up vector " + to_string(*up) + " is parallel to the viewing direction " + to_string(axis) +
+                                  ": give another up vector (--up X,Y,Z, or up: in the scene's view)");
     return *up;
   }
   Vector3 y(0, 1, 0);

@@ -2,6 +2,8 @@
 // kept in this one translation unit.
 #include "algorithms/convex_decomposition.hpp"
 
+#include "algorithms/progress.hpp"
+
 #include <CGAL/Nef_polyhedron_3.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
@@ -133,6 +135,7 @@ void split(const Polyhedron& p, const Nef& n, int depth, Decomposition& d) {
   ConvexityResult cv = convexity(p);
   if (cv.convex()) {
     d.pieces.push_back({p, {}});
+    if (progress_enabled()) progress("decomposing into convex pieces: " + std::to_string(d.pieces.size()) + " so far");
     return;
   }
   if (depth > 256) throw std::runtime_error("convex decomposition does not terminate (depth 256)");
@@ -244,6 +247,7 @@ Decomposition convex_decomposition(const Polyhedron& body, DecompositionMethod m
   if (method == DecompositionMethod::FacePlanes) {
     split(body, n, 0, d);
   } else {
+    progress("decomposing into convex pieces (CGAL convex_decomposition_3)");
     CGAL::convex_decomposition_3(n);
     for (auto ci = ++n.volumes_begin(); ci != n.volumes_end(); ++ci) {
       if (!ci->mark()) continue;

@@ -1,6 +1,8 @@
 // Roberts' algorithm through convex pieces (see roberts_pieces.hpp).
 #include "algorithms/roberts_pieces.hpp"
 
+#include "algorithms/progress.hpp"
+
 #include <map>
 
 #include "algorithms/convex_decomposition.hpp"
@@ -101,6 +103,7 @@ LineDrawing roberts_pieces(const std::vector<const Polyhedron*>& bodies, const C
     if (convexity(p).convex()) {
       pieces[i].push_back(p);
     } else {
+      if (progress_enabled()) progress("body " + std::to_string(i) + " of " + std::to_string(bodies.size()) + " is not convex: decomposing");
       for (ConvexPiece& c : convex_decomposition(p).pieces) pieces[i].push_back(std::move(c.body));
       check_volume(p, pieces[i], static_cast<int>(i));
     }

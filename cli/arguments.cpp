@@ -1,6 +1,12 @@
 // Exact option values and negative numbers after a space (see arguments.hpp).
 #include "cli/arguments.hpp"
 
+#include <unistd.h>
+
+#include <iostream>
+
+#include "algorithms/progress.hpp"
+
 #include <cctype>
 #include <filesystem>
 #include <stdexcept>
@@ -66,6 +72,22 @@ std::string output_format(const std::string& format, const std::string& output,
   }
   throw std::invalid_argument("cannot write '" + output + "': unknown output format '" + ext + "' (known: " + known +
                               "; or give --format)");
+}
+
+ProgressLine::ProgressLine(const std::string& command, bool progress_flag, bool quiet_flag)
+    : on_(!quiet_flag && (progress_flag || isatty(2))) {
+  if (!on_) return;
+  const bool tty = isatty(2);
+  set_progress_sink([command, tty](const std::string& m) {
+    if (tty) std::cerr << "\rhlr " << command << ": " << m << "\x1b[K" << std::flush;
+    else std::cerr << "hlr " << command << ": " << m << "\n";
+  });
+}
+
+ProgressLine::~ProgressLine() {
+  if (!on_) return;
+  set_progress_sink({});
+  if (isatty(2)) std::cerr << "\r\x1b[K" << std::flush;
 }
 
 }  // namespace hlr::cli

@@ -26,4 +26,18 @@ Vector3 parse_vector3(const std::string& option, const std::string& text);
 std::string output_format(const std::string& format, const std::string& output,
                           const std::vector<std::pair<std::string, std::string>>& by_extension, const std::string& fallback);
 
+/// Progress messages of the library (algorithms/progress.hpp) on one line of standard error,
+/// "hlr COMMAND: message", while this object lives: when `--progress`, or when standard error
+/// is a terminal and not `--quiet`. The line is cleared at the end.
+class ProgressLine {
+ public:
+  ProgressLine(const std::string& command, bool progress_flag, bool quiet_flag);
+  ~ProgressLine();
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+
+ private:
+  bool on_ = false;
+};
+
 }  // namespace hlr::cli

@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "algorithms/convex_decomposition.hpp"
+#include "algorithms/progress.hpp"
+#include "cli/arguments.hpp"
 #include "cli/commands.hpp"
 #include "io/atomic_file.hpp"
 #include "io/scene.hpp"
@@ -14,6 +16,7 @@ namespace {
 
 struct DecomposeArgs {
   std::string input, output, method = "planes";
+  bool progress = false, quiet = false;
 };
 
 // A coordinate as exact text: a terminating decimal when there is one, else p/q (which hlr
@@ -70,6 +73,7 @@ int run_decompose(const DecomposeArgs& a) {
   Scene scene = is_scene_file(a.input) ? load_scene(a.input) : scene_from_mesh(a.input);
   DecompositionMethod m = a.method == "nef" ? DecompositionMethod::Nef : DecompositionMethod::FacePlanes;
   std::vector<Decomposition> all;
+  ProgressLine line("decompose", a.progress, a.quiet);
   for (const SceneBody& b : scene.bodies) {
     try {
       all.push_back(convex_decomposition(b.body, m));
@@ -116,6 +120,8 @@ void add_decompose_command(CLI::App& app, int& exit_code) {
   auto a = std::make_shared<DecomposeArgs>();
   CLI::App* cmd = app.add_subcommand("decompose", "Split closed solids into convex pieces (course notes section 23)");
   cmd->add_option("input", a->input, "Mesh file or scene file")->required();
+  cmd->add_flag("--progress", a->progress, "Say what it is doing on standard error (default: when it is a terminal)");
+  cmd->add_flag("--quiet", a->quiet, "No progress messages");
   cmd->add_option("-o", a->output,
                   "Output: FILE.off (every piece as a separate component of one mesh) or a folder DIR/ (piece_000.off, ...)");
   cmd->add_option("--method", a->method, "planes (default: split by face planes, the course's method) or nef (CGAL's convex_decomposition_3)")

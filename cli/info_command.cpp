@@ -3,6 +3,8 @@
 #include <iostream>
 #include <sstream>
 
+#include "algorithms/progress.hpp"
+#include "cli/arguments.hpp"
 #include "cli/commands.hpp"
 #include "io/info_report.hpp"
 #include "io/scene.hpp"
@@ -12,7 +14,7 @@ namespace {
 
 struct InfoArgs {
   std::vector<std::string> inputs;
-  bool matrix = false;
+  bool matrix = false, progress = false, quiet = false;
   std::string require;
 };
 
@@ -38,8 +40,10 @@ int run_info(const InfoArgs& a) {
   }
   InfoOptions opt;
   opt.matrix = a.matrix;
+  ProgressLine line("info", a.progress, a.quiet);
   int failures = 0;
   for (const auto& input : a.inputs) {
+    progress("loading " + input);
     Scene scene = is_scene_file(input) ? load_scene(input) : scene_from_mesh(input);
     if (is_scene_file(input)) {
       std::cout << "scene " << input << ": " << scene.bodies.size() << " bodies, view ";
@@ -51,6 +55,7 @@ int run_info(const InfoArgs& a) {
       std::cout << "\n";
     }
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+      progress("checking body " + std::to_string(i) + " (" + std::to_string(scene.bodies[i].body.num_faces()) + " faces)");
       std::cout << info_report(scene.bodies[i], static_cast<int>(i), opt);
       for (const auto& r : required) {
         std::string why = requirement_failure(scene.bodies[i], r);
@@ -72,6 +77,8 @@ void add_info_command(CLI::App& app, int& exit_code) {
   cmd->add_option("inputs", args->inputs, "Mesh files (.off .obj .stl .ply) and scene files (.yaml .yml .json)")
       ->required();
   cmd->add_flag("--matrix", args->matrix, "Print the sign-corrected body matrix [V] of small convex bodies");
+  cmd->add_flag("--progress", args->progress, "Say what it is doing on standard error (default: when it is a terminal)");
+  cmd->add_flag("--quiet", args->quiet, "No progress messages");
   cmd->add_option("--require", args->require,
                   "Comma-separated checks that must hold, else exit 1: closed, manifold, oriented, planar, "
                   "nondegenerate, distinct, convex, solid");

@@ -1,6 +1,8 @@
 // The `hlr` command-line tool: exact hidden-line drawings of polyhedra.
 // Exit codes: 0 success, 1 bad input or a failed requirement, 2 bad usage.
+#include <algorithm>
 #include <iostream>
+#include <vector>
 
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
@@ -18,6 +20,35 @@ int main(int argc, char** argv) {
   hlr::cli::add_clip_command(app, exit_code);
   hlr::cli::add_decompose_command(app, exit_code);
   hlr::cli::add_explain_command(app, exit_code);
+  // A mistyped command: name the nearest one.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string given = argv[1], best;
+    std::size_t best_d = 99;
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      const std::string& name = sub->get_name();
+      known = known || name == given;
+      // Edit distance (Levenshtein), small strings.
+      std::vector<std::size_t> row(name.size() + 1);
+      for (std::size_t j = 0; j <= name.size(); ++j) row[j] = j;
+      for (std::size_t i = 1; i <= given.size(); ++i) {
+        std::size_t diag = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= name.size(); ++j) {
+          std::size_t up = row[j];
+          row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (given[i - 1] == name[j - 1] ? 0 : 1)});
+          diag = up;
+        }
+      }
+      if (row[name.size()] < best_d) best_d = row[name.size()], best = name;
+    }
+    if (!known) {
+      std::cerr << "hlr: unknown command '" << given << "'";
+      if (best_d <= 3) std::cerr << "; did you mean '" << best << "'?";
+      std::cerr << " (commands: info, render, clip, decompose, explain; hlr --help)\n";
+      return 2;
+    }
+  }
   try {
     std::vector<std::string> args = hlr::cli::join_negative_values(argc, argv);
     std::vector<std::string> rest(args.rbegin(), args.rend() - 1);  // CLI11 takes them reversed

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "algorithms/progress.hpp"
 #include "cli/arguments.hpp"
 #include "cli/clipper_spec.hpp"
 #include "cli/commands.hpp"
@@ -182,22 +183,6 @@ std::vector<std::array<int, 2>> sheet_cells(const std::vector<std::string>& name
   return cells;
 }
 
-class Progress {
- public:
-  explicit Progress(bool on) : on_(on) {}
-  void say(const std::string& what) {
-    if (!on_) return;
-    std::cerr << "\rhlr render: " << what << "\x1b[K" << std::flush;
-    said_ = true;
-  }
-  ~Progress() {
-    if (said_) std::cerr << "\r\x1b[K" << std::flush;
-  }
-
- private:
-  bool on_, said_ = false;
-};
-
 int run_render(const RenderArgs& a) {
   if (!a.view.empty() && !a.eye.empty()) throw std::invalid_argument("give --view (orthographic) or --eye (perspective), not both");
   if (!a.views.empty() && (!a.view.empty() || !a.eye.empty())) throw std::invalid_argument("give --views (a sheet) or one --view/--eye, not both");
@@ -211,10 +196,10 @@ int run_render(const RenderArgs& a) {
     throw std::invalid_argument("a " + format + " file goes to -o FILE, not to the terminal");
   const PageOptions page = page_options(a);  // options checked before the long work
   const PlotStyle style = plot_style(a);
-  Progress progress(!a.quiet && (a.progress || isatty(2)));
+  ProgressLine progress_line("render", a.progress, a.quiet);
   using Clock = std::chrono::steady_clock;
   auto t_start = Clock::now();
-  progress.say("loading");
+  progress("loading");
   std::vector<Scene> scenes;
   for (const auto& in : a.inputs) scenes.push_back(is_scene_file(in) ? load_scene(in) : scene_from_mesh(in));
   auto t_loaded = Clock::now();
@@ -235,7 +220,7 @@ int run_render(const RenderArgs& a) {
     RenderArgs one = a;
     if (!view_names.empty()) one.view = view_names[i];
     RenderOptions options = render_options(one);
-    progress.say(view_names.empty() ? "hidden lines" : "hidden lines, view " + view_names[i]);
+    progress(view_names.empty() ? "hidden lines" : "hidden lines, view " + view_names[i]);
     try {
       results[i] = render(i + 1 < n_views ? scenes : std::move(scenes), options);
     } catch (const RenderBodyError& e) {
@@ -251,7 +236,7 @@ int run_render(const RenderArgs& a) {
   if (format == "json") {
     text = to_json(results[0].names, results[0].drawing, results[0].camera);
   } else {
-    progress.say("strokes");
+    progress("strokes");
     PlotOptions po;
     po.hidden = a.hidden != "none";
     po.dedup = po.chain = !a.raw;
@@ -269,13 +254,13 @@ int run_render(const RenderArgs& a) {
     Sheet sheet = view_names.empty() ? layout_single(plots[0], page)
                                      : layout_views(ptrs, sheet_cells(view_names, a.projection == "first"), labels, page);
     // Specks and pen order need the page's scale; the layout does not change by them.
-    progress.say("pen order");
+    progress("pen order");
     for (Plot& p : plots) {
       drop_short_strokes(p, a.min_length / sheet.views[0].scale);
       if (!a.raw) order_plot(p, {p.bounds[0], p.bounds[3]});
     }
     for (const std::string& note : sheet.notes) std::cerr << "hlr render: note: " << note << "\n";
-    progress.say("writing");
+    progress("writing");
     text = format == "pdf" ? sheet_to_pdf(sheet, style)
          : format == "png" ? sheet_to_png(sheet, style, a.dpi)
          : format == "dxf" ? sheet_to_dxf(sheet, style)

@@ -119,6 +119,8 @@ const std::vector<Entry>& catalogue() {
       {"box min must be below max in x, y and z", "у параллелепипеда box угол min должен быть меньше max по x, y и z"},
       {"transform must be a list of steps", "transform: ожидается список шагов"},
       {"light vector has zero length", "вектор 'light' имеет нулевую длину"},
+      {"the up vector @x is parallel to the viewing direction @x: give another up vector (--up X,Y,Z, or up: in the scene's view)",
+       "вектор up @1 параллелен направлению взгляда @2: задайте другой вектор up (--up X,Y,Z или up: в виде view)"},
       {"give --view (orthographic) or --eye (perspective), not both", "задайте --view (параллельная проекция) или --eye (центральная), но не оба"},
       {"--target needs --eye (a perspective view)", "--target задаётся вместе с --eye (центральная проекция)"},
       {"the eye @x is the default target, the centre of the scene's bounding box: give a target (--target)",
