@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <filesystem>
 #include <iostream>
@@ -234,7 +235,15 @@ int run_render(const RenderArgs& a) {
   std::string text;
   std::vector<Plot> plots;
   if (format == "json") {
-    text = to_json(results[0].names, results[0].drawing, results[0].camera);
+    // The exact pieces, and the numbers of the 2D stage a plotter would get (drawing units).
+    std::optional<Plot> plot;
+    if (!a.raw) {
+      PlotOptions po;
+      po.hidden = a.hidden != "none";
+      plot = make_plot(results[0].drawing, results[0].camera, po);
+      order_plot(*plot, {plot->bounds[0], plot->bounds[3]});
+    }
+    text = to_json(results[0].names, results[0].drawing, results[0].camera, plot ? &plot->stats : nullptr);
   } else {
     progress("strokes");
     PlotOptions po;

@@ -1,6 +1,8 @@
 // JSON writer (see json_writer.hpp): formats the exact drawing, nothing else.
 #include "io/json_writer.hpp"
 
+#include <cmath>
+
 namespace hlr {
 namespace {
 
@@ -31,7 +33,7 @@ nlohmann::ordered_json piece_json(const Segment& s, const Piece& p) {
   return o;
 }
 
-std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r, const Camera& camera) {
+std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r, const Camera& camera, const PlotStats* plot) {
   Json j;
   Json view;
   if (camera.perspective) {
@@ -82,7 +84,25 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r
   for (std::size_t i = 0; i < j["bodies"].size(); ++i) out += std::string(i ? "," : "") + "\n  " + j["bodies"][i].dump();
   out += "\n ],\n \"segments\": [";
   for (std::size_t i = 0; i < j["segments"].size(); ++i) out += std::string(i ? "," : "") + "\n  " + j["segments"][i].dump();
-  out += "\n ],\n \"stats\": " + j["stats"].dump() + "\n}\n";
+  out += "\n ],\n \"stats\": " + j["stats"].dump();
+  if (plot) {
+    Json pj;
+    pj["pieces"] = plot->pieces;
+    pj["end_on"] = plot->zero_length;
+    pj["overlap_groups"] = plot->overlap_groups;
+    pj["overlapped_pieces"] = plot->overlapped_pieces;
+    auto mm = [](double v) { return std::round(v * 1000) / 1000; };  // three decimals, as the SVG
+    pj["duplicate_length"] = mm(plot->duplicate_length);
+    pj["edges"] = plot->edges;
+    pj["path_count"] = plot->path_count;
+    pj["min_path_count"] = plot->min_path_count;
+    pj["pen_down_length"] = mm(plot->pen_down_length);
+    pj["pen_up_length"] = mm(plot->pen_up_length);
+    pj["pen_up_length_greedy"] = mm(plot->pen_up_greedy);
+    pj["pen_up_length_unordered"] = mm(plot->pen_up_unordered);
+    out += ",\n \"plot\": " + pj.dump();
+  }
+  out += "\n}\n";
   return out;
 }
 

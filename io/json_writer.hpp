@@ -8,11 +8,15 @@
 
 #include "algorithms/line_drawing.hpp"
 #include "algorithms/camera.hpp"
+#include "algorithms/plot.hpp"
 #include "io/svg_writer.hpp"
 
 namespace hlr {
 
-std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera);
+/// With `plot`, a "plot" object follows "stats": the plotting 2D stage's numbers in vpype's
+/// terms (path_count, pen_down_length, pen_up_length, ...; lengths in drawing units).
+std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
+                    const PlotStats* plot = nullptr);
 
 /// One piece of a segment as it appears in `segments` of the JSON; also used by `hlr explain`,
 /// so both print the same.
