@@ -191,6 +191,55 @@ TEST(PlotCleanUp, AxisViewsDrawNothingTwice) {
     }
 }
 
+// Perspective: the eye on the line of a cube's edge (seen end-on) and in the planes of two
+// faces (their edges fall on one line of the picture); and random stacks of boxes with shared
+// faces in axis views. Nothing is drawn twice, nothing is lost.
+TEST(PlotCleanUp, PerspectiveAndRandomBoxes) {
+  auto check = [](const RenderResult& r, const std::string& what, bool expect_end_on) {
+    PlotOptions po;
+    po.hidden = true;
+    Plot p = make_plot(r.drawing, r.camera, po);
+    EXPECT_EQ(overlap_length(p), 0) << what;
+    EXPECT_EQ(p.stats.path_count, p.stats.min_path_count) << what;
+    if (expect_end_on) EXPECT_GT(p.stats.zero_length, 0u) << what;
+    PlotOptions raw = po;
+    raw.dedup = raw.chain = false;
+    Plot q = make_plot(r.drawing, r.camera, raw);
+    EXPECT_NEAR(q.stats.pen_down_length, p.stats.pen_down_length + p.stats.duplicate_length, 1e-9 * q.stats.pen_down_length) << what;
+    // Visible wins: the visible layers hold exactly the visible-only drawing's length.
+    Plot v = make_plot(r.drawing, r.camera, PlotOptions{});
+    double visible = 0;
+    for (const PlotLayer& l : p.layers)
+      if (l.visible)
+        for (const Stroke& s : l.strokes) visible += stroke_length(s);
+    EXPECT_NEAR(visible, v.stats.pen_down_length, 1e-9 * visible + 1e-12) << what;
+    return p;
+  };
+  RenderOptions o;
+  o.view.eye = Point3(1, 1, 5);
+  o.view.target = Point3(0, 0, 0);
+  Plot p = check(render_files({kData + "/cube.off"}, o), "cube, eye on an edge's line", true);
+  EXPECT_GT(p.stats.overlap_groups, 0u);
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> c(0, 4);
+  for (int round = 0; round < 12; ++round) {
+    Scene scene;
+    for (int b = 0; b < 4; ++b) {
+      int x = c(rng), y = c(rng), z = c(rng);
+      Polyhedron box = make_box(Point3(x, y, z), Point3(x + 1 + c(rng) % 2, y + 1, z + 1 + c(rng) % 3));
+      SceneBody body{"box" + std::to_string(b), "random", std::move(box), identity_transform(), {}, {}, {}};
+      scene.bodies.push_back(std::move(body));
+    }
+    for (const char* v : {"front", "top", "right"}) {
+      RenderOptions ro;
+      auto sv = standard_view(v, false);
+      ro.view.direction = sv->direction;
+      ro.view.up = sv->up;
+      check(render({scene}, ro), "random boxes round " + std::to_string(round) + " " + v, true);
+    }
+  }
+}
+
 // Visible wins: where a visible and a hidden piece overlap only the visible one is drawn, and
 // every visible piece of the raw drawing is covered by visible strokes.
 TEST(PlotCleanUp, VisibleLengthIsKept) {
