@@ -173,7 +173,10 @@ TEST(PlotCleanUp, CubeFrontViewIsOneClosedSquare) {
 }
 
 TEST(PlotCleanUp, AxisViewsDrawNothingTwice) {
-  for (const std::string& file : {kData + "/demo.yaml", kData + "/cube.off", kData + "/l_prism.off"})
+  std::vector<std::string> files = {kData + "/demo.yaml", kData + "/cube.off", kData + "/l_prism.off"};
+  for (const char* m : {"/fandisk.off", "/cube-meshed.off"})  // CGAL's meshes, when extracted
+    if (std::filesystem::exists(std::string(HLR_CORPUS_DIR) + m)) files.push_back(std::string(HLR_CORPUS_DIR) + m);
+  for (const std::string& file : files)
     for (const std::string view : {"front", "top", "right", "back", "left", "bottom"}) {
       RenderResult r = render_view(file, view);
       PlotOptions po;
