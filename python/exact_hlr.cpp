@@ -9,6 +9,7 @@
 #include "io/explain.hpp"
 #include "io/json_writer.hpp"
 #include "io/problem.hpp"
+#include "io/plot_output.hpp"
 #include "io/render.hpp"
 #include "io/svg_writer.hpp"
 
@@ -73,6 +74,45 @@ struct Drawing {
     return hlr::to_svg(r->names, r->drawing, r->camera, o);
   }
   std::string json() const { return hlr::to_json(r->names, r->drawing, r->camera); }
+  // The plotting 2D stage: strokes per layer in pen order (drawing coordinates).
+  hlr::Plot make(bool hidden) const {
+    hlr::PlotOptions po;
+    po.hidden = hidden;
+    hlr::Plot p = hlr::make_plot(r->drawing, r->camera, po);
+    hlr::order_plot(p, {p.bounds[0], p.bounds[3]});
+    return p;
+  }
+  py::dict strokes(bool hidden) const {
+    hlr::Plot p = make(hidden);
+    py::dict out;
+    for (const hlr::PlotLayer& l : p.layers) {
+      py::list ls;
+      for (const hlr::Stroke& st : l.strokes) {
+        py::list pts;
+        for (const auto& q : st.points) pts.append(py::make_tuple(q[0], q[1]));
+        if (st.closed && !st.points.empty()) pts.append(py::make_tuple(st.points[0][0], st.points[0][1]));
+        ls.append(pts);
+      }
+      out[py::str(l.name())] = ls;
+    }
+    return out;
+  }
+  py::bytes plot(const std::string& format, bool hidden, py::object page, bool landscape, py::object scale,
+                 const std::string& dashes) const {
+    hlr::Plot p = make(hidden);
+    hlr::PageOptions o;
+    if (!page.is_none()) o.page = hlr::parse_page_size(page.cast<std::string>());
+    o.landscape = landscape;
+    if (!scale.is_none()) o.scale = hlr::parse_scale(py::str(scale).cast<std::string>());
+    hlr::Sheet sheet = hlr::layout_single(p, o);
+    hlr::PlotStyle style;
+    style.dashes = dashes == "geometry" ? hlr::DashMode::Geometry : hlr::DashMode::Pattern;
+    if (format == "svg") return py::bytes(hlr::sheet_to_svg(sheet, style));
+    if (format == "pdf") return py::bytes(hlr::sheet_to_pdf(sheet, style));
+    if (format == "png") return py::bytes(hlr::sheet_to_png(sheet, style));
+    if (format == "dxf") return py::bytes(hlr::sheet_to_dxf(sheet, style));
+    throw std::invalid_argument("format must be svg, pdf, png or dxf");
+  }
   std::vector<std::string> bodies() const {
     std::vector<std::string> n;
     for (const auto& b : r->names) n.push_back(b.name);
@@ -142,7 +182,12 @@ PYBIND11_MODULE(exact_hlr, m) {
       .def_property_readonly("notes", [](const Drawing& d) { return d.r->notes; })
       .def_property_readonly("method", [](const Drawing& d) { return std::string(hlr::to_string(d.r->drawing.stats.method)); })
       .def("svg", &Drawing::svg, py::arg("hidden_dashed") = false, py::arg("width_mm") = 150.0, py::arg("stroke_mm") = 0.35)
-      .def("json", &Drawing::json, "The exact JSON of `hlr render` (docs/output-format.md)");
+      .def("json", &Drawing::json, "The exact JSON of `hlr render` (docs/output-format.md)")
+      .def("strokes", &Drawing::strokes, py::arg("hidden") = false,
+           "Strokes per layer ('visible-silhouette', ...) in pen order: lists of (x, y) drawing points")
+      .def("plot", &Drawing::plot, py::arg("format") = "svg", py::kw_only(), py::arg("hidden") = false, py::arg("page") = py::none(),
+           py::arg("landscape") = false, py::arg("scale") = py::none(), py::arg("dashes") = "pattern",
+           "The drawing to plot or print (svg, pdf, png or dxf bytes), as `hlr render` writes it");
   m.def("render", &render, py::arg("inputs"), py::kw_only(), py::arg("view") = py::none(), py::arg("eye") = py::none(),
         py::arg("target") = py::none(), py::arg("up") = py::none(), py::arg("method") = "faces", py::arg("edges") = "feature",
         py::arg("crease") = py::int_(30), py::arg("threads") = 0u,

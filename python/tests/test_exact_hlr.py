@@ -72,3 +72,18 @@ def test_errors_are_exceptions():
         exact_hlr.render([path("none.off")])
     with pytest.raises(ValueError):
         exact_hlr.render([path("cube.off")], method="painter")
+
+
+def test_plot_strokes_and_formats():
+    # The cube's front view: one closed square (the back edges lie under the front ones, the
+    # four edges along the view are points), and the same sheet in every format.
+    d = exact_hlr.render([path("cube.off")], view=(0, 0, 1))
+    layers = d.strokes(hidden=True)
+    assert list(layers) == ["visible-silhouette"]
+    (square,) = layers["visible-silhouette"]
+    assert len(square) == 5 and square[0] == square[-1]
+    assert sorted(set(square)) == [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)]
+    assert d.plot("pdf", page="A4").startswith(b"%PDF")
+    assert d.plot("png").startswith(b"\x89PNG")
+    assert b"AC1015" in d.plot("dxf")
+    assert b'inkscape:label="1 visible-silhouette"' in d.plot("svg", scale="10:1", page="A4")
