@@ -34,7 +34,7 @@ struct RenderArgs {
   bool timings = false, quiet = false, progress = false;
   double width = 150, stroke = 0.35;
   // Plotting and printing (issue 13).
-  std::string page, margin, scale, weights, dashes = "pattern", layers, views, projection = "third", up_axis = "y";
+  std::string page, margin, scale, weights, dashes = "pattern", layers, views, projection = "third", up_axis;
   bool landscape = false, raw = false, stats = false;
   double min_length = 0, dpi = 150;
 };
@@ -193,6 +193,7 @@ int run_render(const RenderArgs& a) {
   if (!(a.dpi > 0) || a.dpi > 4800) throw std::invalid_argument("--dpi must be between 0 and 4800");
   const std::string format = output_format(a.format, a.output,
                                            {{".svg", "svg"}, {".pdf", "pdf"}, {".png", "png"}, {".dxf", "dxf"}, {".json", "json"}}, "svg");
+  if (format == "json" && !a.views.empty()) throw std::invalid_argument("--views makes a sheet: write svg, pdf, png or dxf (JSON is one view)");
   if ((format == "pdf" || format == "png") && a.output.empty() && isatty(1))
     throw std::invalid_argument("a " + format + " file goes to -o FILE, not to the terminal");
   const PageOptions page = page_options(a);  // options checked before the long work
@@ -204,6 +205,12 @@ int run_render(const RenderArgs& a) {
   std::vector<Scene> scenes;
   for (const auto& in : a.inputs) scenes.push_back(is_scene_file(in) ? load_scene(in) : scene_from_mesh(in));
   auto t_loaded = Clock::now();
+  // Named views follow the scene's up axis: z when its view says up 0,0,1 (CAD, architecture).
+  bool z_up = false;
+  if (!scenes.empty() && scenes[0].view.up_given) {
+    const Vector3& u = scenes[0].view.up;
+    z_up = u.x() == 0 && u.y() == 0 && u.z() > 0;
+  }
   // One render per view: --views names several standard views for one sheet.
   std::vector<std::string> view_names;
   if (!a.views.empty()) {
@@ -220,6 +227,7 @@ int run_render(const RenderArgs& a) {
   for (std::size_t i = 0; i < n_views; ++i) {
     RenderArgs one = a;
     if (!view_names.empty()) one.view = view_names[i];
+    if (one.up_axis.empty()) one.up_axis = z_up ? "z" : "y";
     RenderOptions options = render_options(one);
     progress(view_names.empty() ? "hidden lines" : "hidden lines, view " + view_names[i]);
     try {
@@ -311,7 +319,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--views", a->views, "A sheet of standard views at one scale, e.g. front,top,right,iso");
   cmd->add_option("--projection", a->projection, "Arrangement of --views: third (top above front; default) or first angle")
       ->check(CLI::IsMember({"first", "third"}));
-  cmd->add_option("--up-axis", a->up_axis, "Which axis is up for the named views: y (default) or z")->check(CLI::IsMember({"y", "z"}));
+  cmd->add_option("--up-axis", a->up_axis,
+                  "Which axis is up for the named views: y or z (default: z when the scene's view has up 0,0,1, else y)")
+      ->check(CLI::IsMember({"y", "z"}));
   cmd->add_option("--eye", a->eye, "Perspective: the eye point X,Y,Z");
   cmd->add_option("--target", a->target, "Perspective: the point looked at (default: centre of the scene's bounding box)");
   cmd->add_option("--up", a->up, "Up direction X,Y,Z (default 0,1,0, or 0,0,1 when looking along y)");
