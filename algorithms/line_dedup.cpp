@@ -2,6 +2,7 @@
 #include "algorithms/line_dedup.hpp"
 
 #include "algorithms/parallel.hpp"
+#include "algorithms/union_find.hpp"
 
 #include <algorithm>
 #include <execution>
@@ -39,19 +40,6 @@ class ExactScreen {
   bool persp_;
   Point3 e_;
   Vector3 r_, u_, d_;
-};
-
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a), b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the smallest index is the root: deterministic
-  }
 };
 
 using Exact2 = std::array<Rational, 2>;

@@ -1,6 +1,8 @@
 // Chaining edges into the fewest strokes (see path_chaining.hpp).
 #include "algorithms/path_chaining.hpp"
 
+#include "algorithms/union_find.hpp"
+
 #include <algorithm>
 #include <numeric>
 
@@ -9,18 +11,7 @@ namespace {
 
 constexpr std::uint32_t kNone = UINT32_MAX;
 
-struct Components {
-  std::vector<std::uint32_t> parent;
-  explicit Components(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a), b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
+using Components = UnionFind;
 
 // Odd-degree vertices of each component (by root), in index order; degree per vertex.
 void odd_vertices(std::size_t n, const std::vector<std::array<std::uint32_t, 2>>& edges, Components& comp,

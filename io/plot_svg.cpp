@@ -5,22 +5,6 @@
 #include "io/svg_writer.hpp"
 
 namespace hlr {
-namespace {
-
-std::string escape(const std::string& s) {
-  std::string e;
-  for (char c : s) {
-    if (c == '&') e += "&amp;";
-    else if (c == '<') e += "&lt;";
-    else if (c == '>') e += "&gt;";
-    else if (c == '"') e += "&quot;";
-    else e += c;
-  }
-  return e;
-}
-
-}  // namespace
-
 std::string sheet_to_svg(const Sheet& sheet, const PlotStyle& style) {
   auto f = svg_number;
   std::string out;
@@ -66,11 +50,11 @@ std::string sheet_to_svg(const Sheet& sheet, const PlotStyle& style) {
       if (v.label.empty() || v.plot->empty()) continue;
       const auto& b = v.plot->bounds;
       Point2 at = v.page({(b[0] + b[2]) / 2, b[1]});
-      out += "  <text x=\"" + f(at[0]) + "\" y=\"" + f(at[1] + 6) + "\" text-anchor=\"middle\">" + escape(v.label) + "</text>\n";
+      out += "  <text x=\"" + f(at[0]) + "\" y=\"" + f(at[1] + 6) + "\" text-anchor=\"middle\">" + svg_escape(v.label) + "</text>\n";
     }
     if (!sheet.caption.empty())
       out += "  <text x=\"" + f(sheet.width_mm - 5) + "\" y=\"" + f(sheet.height_mm - 5) + "\" text-anchor=\"end\">" +
-             escape(sheet.caption) + "</text>\n";
+             svg_escape(sheet.caption) + "</text>\n";
     out += "</g>\n";
   }
   out += "</svg>\n";

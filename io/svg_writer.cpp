@@ -33,6 +33,18 @@ std::string svg_number(double v) {
   return std::string(p, e);
 }
 
+std::string svg_escape(const std::string& s) {
+  std::string e;
+  for (char c : s) {
+    if (c == '&') e += "&amp;";
+    else if (c == '<') e += "&lt;";
+    else if (c == '>') e += "&gt;";
+    else if (c == '"') e += "&quot;";
+    else e += c;
+  }
+  return e;
+}
+
 namespace {
 std::string fmt(double v) { return svg_number(v); }
 }  // namespace
@@ -68,17 +80,7 @@ std::string to_svg(const std::vector<DrawingBody>& bodies, const Drawing2D& d, c
   out += "<title>exact-hlr drawing</title>\n";
   auto X = [&](double x) { return fmt((x - x0 + m) * k); };
   auto Y = [&](double y) { return fmt((y1 - y + m) * k); };
-  auto escape = [](const std::string& s) {
-    std::string e;
-    for (char c : s) {
-      if (c == '&') e += "&amp;";
-      else if (c == '<') e += "&lt;";
-      else if (c == '>') e += "&gt;";
-      else if (c == '"') e += "&quot;";
-      else e += c;
-    }
-    return e;
-  };
+  auto escape = svg_escape;
   for (int vis = 0; vis < 2; ++vis) {
     if (vis == 1 && !opt.hidden_dashed) break;
     const char* id = vis == 0 ? "visible" : "hidden";

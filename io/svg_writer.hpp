@@ -17,6 +17,8 @@ struct DrawingBody {
 
 /// A number as the SVG writers print it: three decimals, fixed (deterministic, diffable).
 std::string svg_number(double v);
+/// Text for SVG/XML: & < > " escaped.
+std::string svg_escape(const std::string& s);
 
 struct SvgOptions {
   bool hidden_dashed = false;
