@@ -74,7 +74,7 @@ class Dedup {
     for (std::uint32_t k = 0; k < d_.lines.size(); ++k)
       if (!d_.lines[k].pulled && points_.find(2 * k) == points_.find(2 * k + 1)) degenerate[k] = 1, ++out.zero_length;
     UnionFind groups(d_.lines.size());
-    if (opt.overlaps) find_overlaps(degenerate, groups);
+    if (opt.overlaps) find_overlaps(degenerate, groups, opt.threads);
     std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> members;  // groups of two or more, by root
     for (std::uint32_t k = 0; k < d_.lines.size(); ++k)
       if (!degenerate[k] && groups.find(k) != k) members[groups.find(k)].push_back(k);
@@ -206,7 +206,7 @@ class Dedup {
 
   // A grid over the picture; each piece goes into every cell within delta of it (walking the
   // columns of its major axis), and pieces sharing a cell are tested.
-  void find_overlaps(const std::vector<char>& degenerate, UnionFind& groups) {
+  void find_overlaps(const std::vector<char>& degenerate, UnionFind& groups, unsigned threads) {
     std::vector<std::uint32_t> live;
     for (std::uint32_t k = 0; k < d_.lines.size(); ++k)
       if (!degenerate[k] && !d_.lines[k].pulled) live.push_back(k);
@@ -248,7 +248,7 @@ class Dedup {
     std::vector<std::uint32_t> items(start[n_cells]), fill(start.begin(), start.end() - 1);
     for (std::uint32_t k : live) for_cells(k, [&](std::size_t cell) { items[fill[cell]++] = k; });
     // Pairs that pass the double filter, found on all cores; the exact tests in a fixed order.
-    ParallelLoop loop;
+    ParallelLoop loop(threads);
     std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop.workers());
     loop.run(n_cells, 256, [&](unsigned worker, std::size_t begin, std::size_t end) {
       for (std::size_t c = begin; c < end; ++c)

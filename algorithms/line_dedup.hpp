@@ -42,6 +42,7 @@ struct DedupOptions {
   /// Resolve overlaps (collinear pieces drawn once: visible over hidden, then the stronger
   /// kind: silhouette, boundary, crease, intersection, edge). Off: only points and end-on.
   bool overlaps = true;
+  unsigned threads = 0;  // 0: all cores
 };
 
 /// Identifies the exact points of the picture, drops pieces seen end-on, and draws every part

@@ -69,6 +69,7 @@ Plot make_plot(const LineDrawing& lines, const Camera& camera, const PlotOptions
   auto t0 = std::chrono::steady_clock::now();
   DedupOptions dopt;
   dopt.overlaps = opt.dedup;
+  dopt.threads = opt.threads;
   CleanDrawing c;
   if (opt.dedup) {
     c = dedup_drawing(d, lines, camera, dopt);

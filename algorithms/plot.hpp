@@ -50,6 +50,7 @@ struct PlotOptions {
   bool hidden = false;  // include hidden lines (their own layers)
   bool dedup = true;    // exact clean-up (off: every piece as it is)
   bool chain = true;    // join pieces into strokes
+  unsigned threads = 0; // 0: all cores
 };
 
 /// Projects, cleans up and chains (not yet ordered: see order_plot).

@@ -248,6 +248,7 @@ int run_render(const RenderArgs& a) {
     if (!a.raw) {
       PlotOptions po;
       po.hidden = a.hidden != "none";
+      po.threads = a.threads;
       plot = make_plot(results[0].drawing, results[0].camera, po);
       order_plot(*plot, {plot->bounds[0], plot->bounds[3]});
     }
@@ -257,6 +258,7 @@ int run_render(const RenderArgs& a) {
     PlotOptions po;
     po.hidden = a.hidden != "none";
     po.dedup = po.chain = !a.raw;
+    po.threads = a.threads;
     for (const RenderResult& r : results) plots.push_back(make_plot(r.drawing, r.camera, po));
     select_layers(a.layers, plots);
     if (results[0].camera.perspective && page.scale) throw std::invalid_argument("--scale (true scale) needs an orthographic view");
