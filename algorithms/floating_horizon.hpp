@@ -1,0 +1,47 @@
+// The floating horizon, exactly (course notes section 24; issue 18): a surface y = f(x, z)
+// given on a grid is cut by the planes z = z_j; the cuts are drawn nearest to the viewer first,
+// and a point of the next cut is visible where it lies on or above the upper horizon, or on or
+// below the lower horizon, of everything in front of it. The horizons are exact piecewise-
+// linear functions of the screen x (rational breakpoints), not per-pixel arrays; they are
+// updated with the projected strips of the surface between consecutive cuts (the grid split
+// into triangles along the diagonal (i, j)-(i+1, j+1)), not only with the cuts, because a strip
+// can rise above both of its cuts in the picture when the view turns about the vertical axis.
+// Every crossing point is exact, so the result is the general renderer's drawing of the same
+// triangulated surface (a test checks it).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "algorithms/camera.hpp"
+#include "kernel/number.hpp"
+
+namespace hlr {
+
+/// Samples y = f(x, z) at x = xs[i], z = zs[j] (each strictly increasing): ys[j * nx + i].
+struct HeightGrid {
+  std::vector<Rational> xs, zs, ys;
+  const Rational& y(std::size_t i, std::size_t j) const { return ys[j * xs.size() + i]; }
+  Point3 point(std::size_t i, std::size_t j) const { return Point3(xs[i], y(i, j), zs[j]); }
+};
+
+/// A visible part of a cut: on curve `curve` (z = zs[curve]), on its segment from sample
+/// `segment` to `segment + 1`, the parameter range [t0, t1] (t = 0 at sample `segment`).
+struct HorizonPiece {
+  int curve = 0, segment = 0;
+  Rational t0, t1;
+};
+
+struct HorizonResult {
+  std::vector<HorizonPiece> visible;  // by curve in drawing order (nearest first), then segment
+  std::vector<int> order;             // the curves, nearest to the viewer first
+  std::size_t horizon_breakpoints = 0;  // largest size of the upper or lower horizon
+};
+
+/// Runs the exact floating horizon for an orthographic camera whose view direction has a z
+/// component (the cutting planes are not seen edge-on) and whose up vector makes the cuts
+/// x-monotone in the picture (up has no x or z component... any up with the picture's x axis
+/// not orthogonal to the x axis). Throws std::invalid_argument otherwise or for a bad grid.
+HorizonResult floating_horizon(const HeightGrid& grid, const Camera& camera);
+
+}  // namespace hlr

@@ -1,0 +1,131 @@
+// The exact floating horizon (issue 18, course notes section 24) against the general renderer
+// on the same triangulated surface: the visible pieces of every cut must be identical, exactly,
+// for surfaces with peaks, saddles and flat regions, in several views.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <map>
+#include <tuple>
+
+#include "algorithms/floating_horizon.hpp"
+#include "io/render.hpp"
+
+namespace hlr {
+namespace {
+
+HeightGrid grid(int n, const std::function<Rational(const Rational&, const Rational&)>& f) {
+  HeightGrid g;
+  for (int i = 0; i < n; ++i) {
+    Rational x(2 * i - (n - 1), n - 1);  // -1 .. 1
+    x.canonicalize();
+    g.xs.push_back(x);
+  }
+  g.zs = g.xs;
+  for (const Rational& z : g.zs)
+    for (const Rational& x : g.xs) g.ys.push_back(f(x, z));
+  return g;
+}
+
+// The surface as a mesh: vertex j * nx + i, the cell (i, j) split along (i, j)-(i+1, j+1).
+Polyhedron surface(const HeightGrid& g) {
+  const int nx = static_cast<int>(g.xs.size()), nz = static_cast<int>(g.zs.size());
+  std::vector<Point3> vs;
+  for (int j = 0; j < nz; ++j)
+    for (int i = 0; i < nx; ++i) vs.push_back(g.point(i, j));
+  std::vector<Face> fs;
+  for (int j = 0; j + 1 < nz; ++j)
+    for (int i = 0; i + 1 < nx; ++i) {
+      int a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
+      fs.push_back({a, b, c});
+      fs.push_back({a, c, d});
+    }
+  return Polyhedron(vs, fs);
+}
+
+using Key = std::tuple<int, int, Rational, Rational>;  // curve, segment, t0, t1
+
+std::vector<Key> by_renderer(const HeightGrid& g, const Vector3& view, const Vector3& up) {
+  const int nx = static_cast<int>(g.xs.size());
+  Scene scene;
+  scene.bodies.push_back(SceneBody{"surface", "grid", surface(g), identity_transform(), {}, {}, {}});
+  RenderOptions o;
+  o.view.direction = view;
+  o.view.up = up;
+  o.lines.edges = EdgeSelection::All;
+  o.lines.intersections = false;
+  RenderResult r = render({scene}, o);
+  std::map<std::pair<int, int>, std::vector<std::pair<Rational, Rational>>> runs;
+  for (const Segment& s : r.drawing.segments) {
+    if (s.kind != Segment::Kind::Edge) continue;
+    int a = std::min(s.v0, s.v1), b = std::max(s.v0, s.v1);
+    if (b != a + 1 || a / nx != b / nx) continue;  // only the cuts' edges (i, j)-(i+1, j)
+    const bool flip = s.v0 > s.v1;
+    for (const Piece& p : s.pieces) {
+      if (!p.visible) continue;
+      Rational t0 = flip ? Rational(1 - p.t1) : p.t0, t1 = flip ? Rational(1 - p.t0) : p.t1;
+      runs[{a / nx, a % nx}].push_back({t0, t1});
+    }
+  }
+  std::vector<Key> out;
+  for (auto& [k, v] : runs) {
+    std::sort(v.begin(), v.end());
+    for (auto& [t0, t1] : v) out.emplace_back(k.first, k.second, t0, t1);
+  }
+  return out;
+}
+
+std::vector<Key> by_horizon(const HeightGrid& g, const Vector3& view, const Vector3& up) {
+  HorizonResult h = floating_horizon(g, make_orthographic(view, up));
+  std::vector<Key> out;
+  for (const HorizonPiece& p : h.visible) out.emplace_back(p.curve, p.segment, p.t0, p.t1);
+  std::sort(out.begin(), out.end());
+  // Runs that meet across pieces of one segment are one run.
+  std::vector<Key> merged;
+  for (const Key& k : out) {
+    if (!merged.empty() && std::get<0>(merged.back()) == std::get<0>(k) && std::get<1>(merged.back()) == std::get<1>(k) &&
+        std::get<3>(merged.back()) == std::get<2>(k))
+      std::get<3>(merged.back()) = std::get<3>(k);
+    else
+      merged.push_back(k);
+  }
+  return merged;
+}
+
+TEST(FloatingHorizon, EqualsTheRendererOnTheTriangulatedSurface) {
+  const std::vector<std::pair<std::string, std::function<Rational(const Rational&, const Rational&)>>> surfaces = {
+      {"peak", [](const Rational& x, const Rational& z) -> Rational { return Rational(1) / (1 + 8 * (x * x + z * z)); }},
+      {"saddle", [](const Rational& x, const Rational& z) -> Rational { return (x * x - z * z) / 2; }},
+      {"flat with a bump", [](const Rational& x, const Rational& z) -> Rational {
+         Rational d = x * x + (z - Rational(1, 3)) * (z - Rational(1, 3));
+         return d < Rational(1, 4) ? Rational(1, 4) - d : Rational(0);
+       }},
+      {"ridges", [](const Rational& x, const Rational& z) -> Rational {
+         Rational w = 3 * x + z;
+         w -= Rational(static_cast<long>(mpz_class(w.get_num() / w.get_den()).get_si()));
+         return w * (1 - w) / 2;
+       }},
+  };
+  const std::vector<Vector3> views = {Vector3(1, 2, 3), Vector3(-2, 1, 5), Vector3(0, 1, 4), Vector3(3, 1, -2),
+                                      Vector3(1, -1, 3), Vector3(5, 1, 1)};
+  int compared = 0;
+  for (const auto& [name, f] : surfaces)
+    for (int n : {5, 9}) {
+      HeightGrid g = grid(n, f);
+      for (const Vector3& v : views) {
+        Vector3 up(0, 1, 0);
+        std::vector<Key> a = by_horizon(g, v, up), b = by_renderer(g, v, up);
+        EXPECT_EQ(a, b) << name << " n=" << n << " view " << to_string(v) << ": " << a.size() << " runs against " << b.size();
+        ++compared;
+      }
+    }
+  EXPECT_EQ(compared, 48);
+}
+
+TEST(FloatingHorizon, RefusesViewsItCannotTake) {
+  HeightGrid g = grid(3, [](const Rational& x, const Rational&) -> Rational { return x; });
+  EXPECT_THROW(floating_horizon(g, make_orthographic(Vector3(1, 1, 0))), std::invalid_argument);
+  EXPECT_THROW(floating_horizon(g, make_perspective(Point3(0, 2, 5), Point3(0, 0, 0))), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace hlr
