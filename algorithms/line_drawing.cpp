@@ -20,6 +20,7 @@ const char* to_string(Method m) {
   switch (m) {
     case Method::Faces: return "faces";
     case Method::RobertsPieces: return "roberts-pieces";
+    case Method::Horizon: return "horizon";
     case Method::Roberts: break;
   }
   return "roberts";

@@ -79,8 +79,8 @@ struct Segment {
 
 /// The hidden-line methods: per-face occluders (any mesh), Roberts' algorithm on convex bodies,
 /// Roberts' algorithm through convex pieces (non-convex solids).
-enum class Method { Faces, Roberts, RobertsPieces };
-/// "faces", "roberts", "roberts-pieces" (the JSON's stats.method).
+enum class Method { Faces, Roberts, RobertsPieces, Horizon };
+/// "faces", "roberts", "roberts-pieces", "horizon" (the JSON's stats.method).
 const char* to_string(Method m);
 
 /// Counters of the per-face route (JSON stats, docs/output-format.md).

@@ -15,6 +15,7 @@
 #include "algorithms/progress.hpp"
 #include "cli/arguments.hpp"
 #include "cli/clipper_spec.hpp"
+#include "cli/drawing_output.hpp"
 #include "cli/commands.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_writer.hpp"
@@ -26,17 +27,12 @@
 namespace hlr::cli {
 namespace {
 
-struct RenderArgs {
+struct RenderArgs : OutputArgs {
   std::vector<std::string> inputs;
-  std::string output, format, view, eye, target, up, hidden = "none", edges = "feature", clip, near = "1/1000";
+  std::string view, eye, target, up, edges = "feature", clip, near = "1/1000";
   std::string method = "faces", crease = "30";
-  unsigned threads = 0;
-  bool timings = false, quiet = false, progress = false;
-  double width = 150, stroke = 0.35;
-  // Plotting and printing (issue 13).
-  std::string page, margin, scale, weights, dashes = "pattern", layers, views, projection = "third", up_axis;
-  bool landscape = false, raw = false, stats = false;
-  double min_length = 0, dpi = 150;
+  bool timings = false;
+  std::string views, up_axis;
 };
 
 Point3 as_point(const Vector3& v) { return Point3(v.x(), v.y(), v.z()); }
@@ -73,131 +69,10 @@ RenderOptions render_options(const RenderArgs& a) {
   return o;
 }
 
-PageOptions page_options(const RenderArgs& a) {
-  PageOptions p;
-  if (!a.page.empty()) p.page = parse_page_size(a.page);
-  p.landscape = a.landscape;
-  if (!a.margin.empty()) {
-    double m = 0;
-    try {
-      m = std::stod(a.margin);
-    } catch (const std::exception&) {
-      m = -1;
-    }
-    if (!(m >= 0) || m > 1e4) throw std::invalid_argument("--margin must be a size in millimetres");
-    p.margin_mm = m;
-  }
-  if (!a.scale.empty()) p.scale = parse_scale(a.scale);
-  p.width_mm = a.width;
-  return p;
-}
-
-PlotStyle plot_style(const RenderArgs& a) {
-  PlotStyle st;
-  for (auto& [k, w] : st.weights) w *= a.stroke / 0.35;  // --stroke: the visible edges' width, the rest in proportion
-  if (!a.weights.empty()) parse_weights(a.weights, st);
-  st.dashes = a.dashes == "geometry" ? DashMode::Geometry : DashMode::Pattern;
-  st.hidden_dashed = a.hidden != "solid";
-  return st;
-}
-
-// Keeps the layers named (or numbered, from 1 in the order the writers use) in --layers.
-void select_layers(const std::string& list, std::vector<Plot>& plots) {
-  if (list.empty()) return;
-  std::vector<std::string> names;
-  {
-    Sheet all;
-    for (const Plot& p : plots) all.views.push_back(SheetView{&p, 1, 0, 0, ""});
-    names = sheet_layer_names(all);
-  }
-  std::set<std::string> keep;
-  std::size_t at = 0;
-  while (at <= list.size()) {
-    std::size_t comma = list.find(',', at);
-    std::string item = list.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
-    at = comma == std::string::npos ? list.size() + 1 : comma + 1;
-    if (item.empty()) continue;
-    bool number = std::all_of(item.begin(), item.end(), [](char c) { return c >= '0' && c <= '9'; });
-    if (number) {
-      std::size_t n = std::stoul(item);
-      if (n >= 1 && n <= names.size()) keep.insert(names[n - 1]);
-      continue;
-    }
-    if (item == "visible" || item == "hidden") {
-      for (const std::string& n : names)
-        if (n.rfind(item + "-", 0) == 0) keep.insert(n);
-      continue;
-    }
-    static const std::set<std::string> known = {"visible-silhouette", "visible-boundary", "visible-crease", "visible-intersection",
-                                                "visible-edge", "hidden-silhouette", "hidden-boundary", "hidden-crease",
-                                                "hidden-intersection", "hidden-edge"};
-    if (!known.count(item))
-      throw std::invalid_argument("--layers: unknown layer '" + item + "' (visible, hidden, visible-silhouette, hidden-crease, ... or numbers)");
-    keep.insert(item);
-  }
-  for (Plot& p : plots) {
-    std::vector<PlotLayer> kept;
-    for (PlotLayer& l : p.layers)
-      if (keep.count(l.name())) kept.push_back(std::move(l));
-    p.layers = std::move(kept);
-  }
-}
-
-void print_stats(const std::vector<Plot>& plots, double scale) {
-  PlotStats t;
-  for (const Plot& p : plots) {
-    const PlotStats& s = p.stats;
-    t.pieces += s.pieces, t.zero_length += s.zero_length, t.overlap_groups += s.overlap_groups;
-    t.duplicate_length += s.duplicate_length * scale, t.edges += s.edges, t.path_count += s.path_count;
-    t.min_path_count += s.min_path_count, t.dropped_short += s.dropped_short;
-    t.pen_down_length += s.pen_down_length * scale, t.pen_up_length += s.pen_up_length * scale;
-    t.pen_up_greedy += s.pen_up_greedy * scale, t.pen_up_unordered += s.pen_up_unordered * scale;
-    t.exact_point_tests += s.exact_point_tests, t.exact_line_tests += s.exact_line_tests;
-    t.seconds_dedup += s.seconds_dedup, t.seconds_chain += s.seconds_chain, t.seconds_order += s.seconds_order;
-  }
-  std::cerr << std::fixed;
-  std::cerr.precision(1);
-  std::cerr << "stats: pieces " << t.pieces << ", end-on " << t.zero_length << ", overlap groups " << t.overlap_groups
-            << " (duplicate length " << t.duplicate_length << " mm removed), edges " << t.edges << ", paths " << t.path_count
-            << " (minimum " << t.min_path_count << "), specks dropped " << t.dropped_short << ", pen-down " << t.pen_down_length
-            << " mm, pen-up " << t.pen_up_length << " mm (greedy " << t.pen_up_greedy << ", unordered " << t.pen_up_unordered
-            << ")";
-  std::cerr.precision(3);
-  std::cerr << ", exact tests: points " << t.exact_point_tests << ", lines " << t.exact_line_tests;
-  std::cerr << ", clean-up " << t.seconds_dedup << " s, chaining " << t.seconds_chain << " s, ordering " << t.seconds_order << " s\n";
-}
-
-// Standard views on one sheet: their names and their cells (third-angle: top above front).
-std::vector<std::array<int, 2>> sheet_cells(const std::vector<std::string>& names, bool first_angle) {
-  std::vector<std::array<int, 2>> cells;
-  for (const std::string& n : names) {
-    std::array<int, 2> c{0, 0};
-    if (n == "top") c = {0, 1};
-    else if (n == "bottom") c = {0, -1};
-    else if (n == "right") c = {1, 0};
-    else if (n == "left") c = {-1, 0};
-    else if (n == "back") c = {2, 0};
-    else if (n != "front") c = {1, 1};  // a pictorial view: the free corner
-    if (first_angle && n != "back" && n != "front" && (c[0] != 1 || c[1] != 1)) c = {-c[0], -c[1]};
-    cells.push_back(c);
-  }
-  return cells;
-}
-
 int run_render(const RenderArgs& a) {
   if (!a.view.empty() && !a.eye.empty()) throw std::invalid_argument("give --view (orthographic) or --eye (perspective), not both");
   if (!a.views.empty() && (!a.view.empty() || !a.eye.empty())) throw std::invalid_argument("give --views (a sheet) or one --view/--eye, not both");
-  if (!(a.width > 0) || !std::isfinite(a.width) || a.width > 1e6) throw std::invalid_argument("--width must be a positive size in millimetres");
-  if (!(a.stroke > 0) || !std::isfinite(a.stroke) || a.stroke > 1e3) throw std::invalid_argument("--stroke must be a positive width in millimetres");
-  if (!(a.min_length >= 0) || !std::isfinite(a.min_length)) throw std::invalid_argument("--min-length must be a length in millimetres");
-  if (!(a.dpi > 0) || a.dpi > 4800) throw std::invalid_argument("--dpi must be between 0 and 4800");
-  const std::string format = output_format(a.format, a.output,
-                                           {{".svg", "svg"}, {".pdf", "pdf"}, {".png", "png"}, {".dxf", "dxf"}, {".json", "json"}}, "svg");
-  if (format == "json" && !a.views.empty()) throw std::invalid_argument("--views makes a sheet: write svg, pdf, png or dxf (JSON is one view)");
-  if ((format == "pdf" || format == "png") && a.output.empty() && isatty(1))
-    throw std::invalid_argument("a " + format + " file goes to -o FILE, not to the terminal");
-  const PageOptions page = page_options(a);  // options checked before the long work
-  const PlotStyle style = plot_style(a);
+  const std::string format = check_output_args(a, !a.views.empty());  // before the long work
   ProgressLine progress_line("render", a.progress, a.quiet);
   using Clock = std::chrono::steady_clock;
   auto t_start = Clock::now();
@@ -240,52 +115,7 @@ int run_render(const RenderArgs& a) {
       for (const std::string& note : results[i].notes) std::cerr << "hlr render: note: " << note << "\n";
   }
   auto t_solved = Clock::now();
-  std::string text;
-  std::vector<Plot> plots;
-  if (format == "json") {
-    // The exact pieces, and the numbers of the 2D stage a plotter would get (drawing units).
-    std::optional<Plot> plot;
-    if (!a.raw) {
-      PlotOptions po;
-      po.hidden = a.hidden != "none";
-      po.threads = a.threads;
-      plot = make_plot(results[0].drawing, results[0].camera, po);
-      order_plot(*plot, {plot->bounds[0], plot->bounds[3]});
-    }
-    text = to_json(results[0].names, results[0].drawing, results[0].camera, plot ? &plot->stats : nullptr);
-  } else {
-    progress("strokes");
-    PlotOptions po;
-    po.hidden = a.hidden != "none";
-    po.dedup = po.chain = !a.raw;
-    po.threads = a.threads;
-    for (const RenderResult& r : results) plots.push_back(make_plot(r.drawing, r.camera, po));
-    select_layers(a.layers, plots);
-    if (results[0].camera.perspective && page.scale) throw std::invalid_argument("--scale (true scale) needs an orthographic view");
-    std::vector<const Plot*> ptrs;
-    for (const Plot& p : plots) ptrs.push_back(&p);
-    std::vector<std::string> labels;
-    for (const std::string& v : view_names) {
-      std::string up = v;
-      for (char& c : up) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-      labels.push_back(up);
-    }
-    Sheet sheet = view_names.empty() ? layout_single(plots[0], page)
-                                     : layout_views(ptrs, sheet_cells(view_names, a.projection == "first"), labels, page);
-    // Specks and pen order need the page's scale; the layout does not change by them.
-    progress("pen order");
-    for (Plot& p : plots) {
-      drop_short_strokes(p, a.min_length / sheet.views[0].scale);
-      if (!a.raw) order_plot(p, {p.bounds[0], p.bounds[3]});
-    }
-    for (const std::string& note : sheet.notes) std::cerr << "hlr render: note: " << note << "\n";
-    progress("writing");
-    text = format == "pdf" ? sheet_to_pdf(sheet, style)
-         : format == "png" ? sheet_to_png(sheet, style, a.dpi)
-         : format == "dxf" ? sheet_to_dxf(sheet, style)
-                           : sheet_to_svg(sheet, style);
-    if (a.stats) print_stats(plots, sheet.views[0].scale);
-  }
+  std::string text = drawing_text(results, view_names, a, format, "render");
   write_output(a.output, text);
   if (a.timings) {
     auto t_end = Clock::now();
@@ -312,25 +142,17 @@ void add_render_command(CLI::App& app, int& exit_code) {
   auto a = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Exact hidden-line drawing as SVG, PDF, PNG, DXF or JSON");
   cmd->add_option("inputs", a->inputs, "Mesh files (.off .obj .stl .ply) and scene files (.yaml .yml .json)")->required();
-  cmd->add_option("-o", a->output, "Output file (default: standard output); the extension picks the format (.svg .pdf .png .dxf .json)");
-  cmd->add_option("--format", a->format, "svg, pdf, png, dxf or json (default: from the output file's extension, else svg)")
-      ->check(CLI::IsMember({"svg", "pdf", "png", "dxf", "json"}));
+  add_output_options(cmd, *a, true);
   cmd->add_option("--view", a->view,
                   "Orthographic view: front, back, top, bottom, left, right, iso, dimetric, or a direction X,Y,Z from the scene "
                   "toward the viewer (default 0,0,1 = front)");
   cmd->add_option("--views", a->views, "A sheet of standard views at one scale, e.g. front,top,right,iso");
-  cmd->add_option("--projection", a->projection, "Arrangement of --views: third (top above front; default) or first angle")
-      ->check(CLI::IsMember({"first", "third"}));
   cmd->add_option("--up-axis", a->up_axis,
                   "Which axis is up for the named views: y or z (default: z when the scene's view has up 0,0,1, else y)")
       ->check(CLI::IsMember({"y", "z"}));
   cmd->add_option("--eye", a->eye, "Perspective: the eye point X,Y,Z");
   cmd->add_option("--target", a->target, "Perspective: the point looked at (default: centre of the scene's bounding box)");
   cmd->add_option("--up", a->up, "Up direction X,Y,Z (default 0,1,0, or 0,0,1 when looking along y)");
-  cmd->add_option("--hidden", a->hidden, "none, dashed or solid (default none); hidden lines go to their own layers")
-      ->check(CLI::IsMember({"none", "dashed", "solid"}));
-  cmd->add_option("--dashes", a->dashes, "pattern (stroke-dasharray, continuous along each stroke) or geometry (real dash strokes for plotters)")
-      ->check(CLI::IsMember({"pattern", "geometry"}));
   cmd->add_option("--edges", a->edges,
                   "feature (default: boundaries, silhouettes, creases over --crease, intersection lines) or all (every mesh edge)")
       ->check(CLI::IsMember({"all", "feature"}));
@@ -338,26 +160,11 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--method", a->method,
                   "faces (the default: per-face occluders, any mesh) or roberts (the course's algorithm; non-convex solids are split into convex pieces)")
       ->check(CLI::IsMember({"faces", "roberts"}));
-  cmd->add_option("--threads", a->threads, "Threads for the visibility stage (default: all cores)");
   cmd->add_flag("--timings", a->timings, "Print the time of each stage to standard error");
-  cmd->add_flag("--stats", a->stats, "Print the 2D stage's numbers (paths, pen-up and pen-down lengths in mm) to standard error");
-  cmd->add_flag("--progress", a->progress, "Say what it is doing on standard error (default: when it is a terminal)");
-  cmd->add_flag("--quiet", a->quiet, "No progress messages");
   cmd->add_option("--clip", a->clip,
                   "Clip the drawing to box:XMIN,XMAX,YMIN,YMAX,ZMIN,ZMAX, frustum:XL,XR,YB,YT,ZNEAR,ZFAR,ZCP or a convex mesh file");
   cmd->add_option("--near", a->near,
                   "Perspective near plane at this fraction of the eye-target distance from the eye (default 1/1000)");
-  cmd->add_option("--page", a->page, "Page: A0..A5, letter, legal, tabloid or WxHmm (default: the drawing's own size)");
-  cmd->add_flag("--landscape", a->landscape, "Turn the page to landscape");
-  cmd->add_option("--margin", a->margin, "Margin in millimetres (default 10 on a page)");
-  cmd->add_option("--scale", a->scale, "True scale 1:N or N:1 (scene units are millimetres; default: fit the page)");
-  cmd->add_option("--width", a->width, "Drawing width in millimetres without --page (default 150)");
-  cmd->add_option("--stroke", a->stroke, "Width of visible edges in millimetres (default 0.35; outlines 0.5 and hidden 0.25 in proportion)");
-  cmd->add_option("--weights", a->weights, "Line widths per kind in mm, e.g. silhouette=0.7,crease=0.35,hidden=0.18");
-  cmd->add_option("--layers", a->layers, "Layers to write: visible, hidden, visible-silhouette, hidden-crease, ... or their numbers");
-  cmd->add_option("--min-length", a->min_length, "Drop strokes shorter than this many millimetres on the page (specks)");
-  cmd->add_option("--dpi", a->dpi, "PNG resolution (default 150)");
-  cmd->add_flag("--raw", a->raw, "One line per exact piece: no clean-up, chaining or pen order");
   cmd->callback([a, &exit_code] { exit_code = run_render(*a); });
 }
 

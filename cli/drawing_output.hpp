@@ -1,0 +1,36 @@
+// The output options every drawing command shares (issue 13: `hlr render`, `hlr horizon`):
+// format by extension, hidden lines, dashes, page, scale, line weights, layers, specks, PNG
+// resolution; and the step from exact line drawings to the text or bytes written (the plotting
+// 2D stage, the page layout, the writers; or the exact JSON).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+#include "io/render.hpp"
+
+namespace hlr::cli {
+
+struct OutputArgs {
+  std::string output, format, hidden = "none", dashes = "pattern", page, margin, scale, weights, layers, projection = "third";
+  bool landscape = false, raw = false, stats = false, quiet = false, progress = false;
+  double width = 150, stroke = 0.35, min_length = 0, dpi = 150;
+  unsigned threads = 0;
+};
+
+/// Adds -o, --format, --hidden, --dashes, --page, --landscape, --margin, --scale, --width,
+/// --stroke, --weights, --layers, --min-length, --dpi, --raw, --stats, --progress, --quiet,
+/// --threads (and --projection when `sheets`).
+void add_output_options(CLI::App* cmd, OutputArgs& a, bool sheets);
+
+/// Checks the options (before any long work) and returns the format: svg, pdf, png, dxf, json.
+std::string check_output_args(const OutputArgs& a, bool sheet);
+
+/// The file's content: JSON of the first drawing (with the 2D stage's numbers), or the sheet of
+/// all drawings (`view_names` label them and place them as standard views when not empty).
+std::string drawing_text(const std::vector<RenderResult>& results, const std::vector<std::string>& view_names, const OutputArgs& a,
+                         const std::string& format, const std::string& command);
+
+}  // namespace hlr::cli

@@ -1,0 +1,73 @@
+// `hlr horizon`: a surface y = f(x, z), from an expression or a CSV height grid, drawn by the
+// exact floating horizon (course notes section 24; issue 18), through the same 2D stage and
+// writers as `hlr render`.
+#include <iostream>
+#include <optional>
+
+#include "algorithms/progress.hpp"
+#include "cli/arguments.hpp"
+#include "cli/commands.hpp"
+#include "cli/drawing_output.hpp"
+#include "io/atomic_file.hpp"
+#include "io/horizon.hpp"
+#include "kernel/rotation.hpp"
+
+namespace hlr::cli {
+namespace {
+
+struct HorizonArgs : OutputArgs {
+  std::string expression, grid, x = "-1:1", z = "-1:1", view, angles = "30,30", up;
+};
+
+// The notes' view: the surface turned about x (elevation) and y (azimuth): the direction toward
+// the viewer is (cos e sin a, sin e, cos e cos a), exactly (rational angles are realised as
+// exact rational rotations, within 1e-11 degrees).
+Vector3 view_from_angles(const std::string& text) {
+  auto comma = text.find(',');
+  if (comma == std::string::npos) throw std::invalid_argument("--angles: '" + text + "' is not ELEVATION,AZIMUTH in degrees");
+  Rotation e, a;
+  try {
+    e = rotation_from_degrees(parse_rational(text.substr(0, comma)));
+    a = rotation_from_degrees(parse_rational(text.substr(comma + 1)));
+  } catch (const NumberError& err) {
+    throw std::invalid_argument(std::string("--angles: ") + err.what());
+  }
+  return Vector3(e.cos * a.sin, e.sin, e.cos * a.cos);
+}
+
+int run_horizon(const HorizonArgs& a) {
+  if (a.expression.empty() == a.grid.empty()) throw std::invalid_argument("give --expr EXPRESSION or --grid FILE.csv (one of them)");
+  const std::string format = check_output_args(a, false);
+  SampleRange x = parse_sample_range("--x", a.x, 81), z = parse_sample_range("--z", a.z, 41);
+  Vector3 v = a.view.empty() ? view_from_angles(a.angles) : parse_vector3("--view", a.view);
+  std::optional<Vector3> up;
+  if (!a.up.empty()) up = parse_vector3("--up", a.up);
+  Camera cam = make_orthographic(v, up);
+  ProgressLine line("horizon", a.progress, a.quiet);
+  progress("sampling");
+  HeightGrid g = a.grid.empty() ? grid_from_expression(a.expression, x, z) : grid_from_csv(a.grid, x, z);
+  progress("floating horizon (" + std::to_string(g.zs.size()) + " cuts of " + std::to_string(g.xs.size()) + " samples)");
+  std::vector<RenderResult> results;
+  results.push_back(render_horizon(g, cam, a.grid.empty() ? "y = " + a.expression : a.grid));
+  std::string text = drawing_text(results, {}, a, format, "horizon");
+  write_output(a.output, text);
+  return 0;
+}
+
+}  // namespace
+
+void add_horizon_command(CLI::App& app, int& exit_code) {
+  auto a = std::make_shared<HorizonArgs>();
+  CLI::App* cmd = app.add_subcommand("horizon", "A surface y = f(x, z) by the exact floating horizon (course notes section 24)");
+  cmd->add_option("--expr", a->expression, "y as an expression of x and z (muparser: sin, cos, exp, sqrt, ^, ...)");
+  cmd->add_option("--grid", a->grid, "A CSV of heights: one row per z cut, one column per x sample");
+  cmd->add_option("--x", a->x, "x range FROM:TO[:SAMPLES] (default -1:1:81; for --grid the columns set the count)");
+  cmd->add_option("--z", a->z, "z range FROM:TO[:CUTS] (default -1:1:41; for --grid the rows set the count)");
+  cmd->add_option("--angles", a->angles, "View as the notes turn it: ELEVATION,AZIMUTH in degrees (about x, then y; default 30,30)");
+  cmd->add_option("--view", a->view, "View direction X,Y,Z toward the viewer (instead of --angles; needs a z component)");
+  cmd->add_option("--up", a->up, "Up direction (default 0,1,0)");
+  add_output_options(cmd, *a, false);
+  cmd->callback([a, &exit_code] { exit_code = run_horizon(*a); });
+}
+
+}  // namespace hlr::cli

@@ -1,0 +1,191 @@
+// `hlr horizon` as a library (see horizon.hpp).
+#include "io/horizon.hpp"
+
+#include <muParser.h>
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include "algorithms/facing.hpp"
+#include "io/input_error.hpp"
+#include "io/text_reader.hpp"
+
+namespace hlr {
+namespace {
+
+std::vector<Rational> samples(const SampleRange& r) {
+  std::vector<Rational> out;
+  for (std::size_t k = 0; k < r.count; ++k) {
+    Rational t(static_cast<long>(k), static_cast<long>(r.count - 1));
+    t.canonicalize();
+    out.push_back(r.from + (r.to - r.from) * t);
+  }
+  return out;
+}
+
+}  // namespace
+
+SampleRange parse_sample_range(const std::string& option, const std::string& text, std::size_t default_count) {
+  SampleRange r;
+  r.count = default_count;
+  std::vector<std::string> parts;
+  std::size_t at = 0;
+  while (true) {
+    std::size_t c = text.find(':', at);
+    parts.push_back(text.substr(at, c == std::string::npos ? std::string::npos : c - at));
+    if (c == std::string::npos) break;
+    at = c + 1;
+  }
+  if (parts.size() < 2 || parts.size() > 3) throw std::invalid_argument(option + ": '" + text + "' is not FROM:TO or FROM:TO:SAMPLES");
+  try {
+    r.from = parse_rational(parts[0]);
+    r.to = parse_rational(parts[1]);
+  } catch (const NumberError& e) {
+    throw std::invalid_argument(option + ": " + e.what());
+  }
+  if (!(r.from < r.to)) throw std::invalid_argument(option + ": FROM must be below TO");
+  if (parts.size() == 3) {
+    std::size_t used = 0;
+    unsigned long n = 0;
+    try {
+      n = std::stoul(parts[2], &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != parts[2].size() || n < 2 || n > 100000) throw std::invalid_argument(option + ": SAMPLES must be a whole number from 2 to 100000");
+    r.count = n;
+  }
+  return r;
+}
+
+HeightGrid grid_from_expression(const std::string& expression, const SampleRange& x, const SampleRange& z) {
+  HeightGrid g;
+  g.xs = samples(x);
+  g.zs = samples(z);
+  double xv = 0, zv = 0;
+  mu::Parser p;
+  try {
+    p.DefineVar("x", &xv);
+    p.DefineVar("z", &zv);
+    p.SetExpr(expression);
+    g.ys.reserve(g.xs.size() * g.zs.size());
+    for (const Rational& zq : g.zs) {
+      zv = to_double(zq);
+      for (const Rational& xq : g.xs) {
+        xv = to_double(xq);
+        double y = p.Eval();
+        if (!std::isfinite(y))
+          throw std::invalid_argument("the expression is not finite at x = " + to_string(xq) + ", z = " + to_string(zq));
+        g.ys.push_back(rational_from_double(y));
+      }
+    }
+  } catch (const mu::Parser::exception_type& e) {
+    throw std::invalid_argument("expression '" + expression + "': " + e.GetMsg());
+  }
+  return g;
+}
+
+HeightGrid grid_from_csv(const std::string& path, const SampleRange& x, const SampleRange& z) {
+  std::string text = read_file_bytes(path);
+  HeightGrid g;
+  std::size_t nx = 0, line = 0, at = 0;
+  while (at <= text.size()) {
+    std::size_t end = text.find('\n', at);
+    std::string row = text.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    at = end == std::string::npos ? text.size() + 1 : end + 1;
+    ++line;
+    if (!row.empty() && row.back() == '\r') row.pop_back();
+    if (row.empty() || row[0] == '#') continue;
+    std::size_t n = 0, c = 0;
+    while (true) {
+      std::size_t comma = row.find(',', c);
+      std::string cell = row.substr(c, comma == std::string::npos ? std::string::npos : comma - c);
+      while (!cell.empty() && (cell.front() == ' ' || cell.front() == '\t')) cell.erase(0, 1);
+      while (!cell.empty() && (cell.back() == ' ' || cell.back() == '\t')) cell.pop_back();
+      try {
+        g.ys.push_back(parse_rational(cell));
+      } catch (const NumberError& e) {
+        throw InputError(path, static_cast<int>(line), "column " + std::to_string(n + 1) + ": " + e.what());
+      }
+      ++n;
+      if (comma == std::string::npos) break;
+      c = comma + 1;
+    }
+    if (nx == 0) nx = n;
+    if (n != nx)
+      throw InputError(path, static_cast<int>(line), "row has " + std::to_string(n) + " heights, the first row " + std::to_string(nx));
+  }
+  if (nx < 2 || g.ys.size() / nx < 1) throw InputError(path, 0, "a height grid needs at least 2 columns and 1 row");
+  SampleRange xr = x, zr = z;
+  xr.count = nx;
+  zr.count = g.ys.size() / nx;
+  g.xs = samples(xr);
+  g.zs = zr.count == 1 ? std::vector<Rational>{zr.from} : samples(zr);
+  return g;
+}
+
+RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std::string& name) {
+  const std::size_t nx = g.xs.size(), nz = g.zs.size();
+  HorizonResult h = floating_horizon(g, camera);
+  std::vector<Point3> vs;
+  vs.reserve(nx * nz);
+  for (std::size_t j = 0; j < nz; ++j)
+    for (std::size_t i = 0; i < nx; ++i) vs.push_back(g.point(i, j));
+  std::vector<Face> fs;
+  for (std::size_t j = 0; j + 1 < nz; ++j)
+    for (std::size_t i = 0; i + 1 < nx; ++i) {
+      int a = static_cast<int>(j * nx + i), b = a + 1, c = a + static_cast<int>(nx) + 1, d = a + static_cast<int>(nx);
+      fs.push_back({a, b, c});
+      fs.push_back({a, c, d});
+    }
+  RenderResult r;
+  auto scenes = std::make_shared<std::vector<Scene>>(1);
+  (*scenes)[0].bodies.push_back(SceneBody{name, name, Polyhedron(std::move(vs), std::move(fs)), identity_transform(), {}, {}, {}});
+  r.scenes = scenes;
+  const SceneBody& body = (*scenes)[0].bodies[0];
+  r.bodies = {&body};
+  r.names = {DrawingBody{name, name}};
+  r.camera = camera;
+  r.drawing.stats.method = Method::Horizon;
+  std::vector<signed char> facing;
+  for (const Plane& p : body.body.planes()) facing.push_back(static_cast<signed char>(facing_sign(p, camera)));
+  r.drawing.facing.push_back(std::move(facing));
+  // Visible runs by (curve, segment); each cut edge gets them and hidden pieces between.
+  std::map<std::pair<int, int>, std::vector<std::pair<Rational, Rational>>> runs;
+  for (const HorizonPiece& p : h.visible) runs[{p.curve, p.segment}].push_back({p.t0, p.t1});
+  for (int j : h.order)
+    for (std::size_t i = 0; i + 1 < nx; ++i) {
+      Segment s;
+      s.kind = Segment::Kind::Edge;
+      s.line = LineKind::Edge;
+      s.body = 0;
+      s.v0 = static_cast<int>(static_cast<std::size_t>(j) * nx + i);
+      s.v1 = s.v0 + 1;
+      s.borrow_ends(body.body.vertices()[s.v0], body.body.vertices()[s.v1]);
+      Rational at = 0;
+      auto add = [&](const Rational& t0, const Rational& t1, bool visible) {
+        if (!(t0 < t1)) return;
+        if (!s.pieces.empty() && s.pieces.back().visible == visible) {
+          s.pieces.back().t1 = t1;
+          return;
+        }
+        Piece p;
+        p.t0 = t0, p.t1 = t1, p.visible = visible;
+        s.pieces.push_back(p);
+      };
+      auto it = runs.find({j, static_cast<int>(i)});
+      if (it != runs.end())
+        for (const auto& [t0, t1] : it->second) {
+          add(at, t0, false);
+          add(t0, t1, true);
+          at = t1;
+        }
+      add(at, 1, false);
+      r.drawing.segments.push_back(std::move(s));
+    }
+  r.drawing.stats.edges = r.drawing.segments.size();
+  return r;
+}
+
+}  // namespace hlr
