@@ -1,6 +1,7 @@
 // `hlr horizon`: a surface y = f(x, z), from an expression or a CSV height grid, drawn by the
 // exact floating horizon (course notes section 24; issue 18), through the same 2D stage and
 // writers as `hlr render`.
+#include <cmath>
 #include <iostream>
 #include <optional>
 
@@ -20,15 +21,28 @@ struct HorizonArgs : OutputArgs {
 };
 
 // The notes' view: the surface turned about x (elevation) and y (azimuth): the direction toward
-// the viewer is (cos e sin a, sin e, cos e cos a), exactly (rational angles are realised as
-// exact rational rotations, within 1e-11 degrees).
+// the viewer is (cos e sin a, sin e, cos e cos a). Each angle is realised exactly as the
+// rational rotation whose tangent of the half angle is the nearest multiple of 1/4096 (within
+// 0.01 degree of the angle asked for): small exact numbers, so the horizon stays fast.
+Rotation rotation_near(const Rational& degrees) {
+  const double pi = 3.14159265358979323846;
+  double d = std::fmod(to_double(degrees), 360.0);
+  if (d > 180) d -= 360;
+  if (d < -180) d += 360;
+  if (std::fabs(std::fabs(d) - 180) < 1e-12) return Rotation{-1, 0, true, 0};
+  double t = std::tan(d * pi / 360);
+  Rational q(static_cast<long>(std::llround(t * 4096)), 4096L);
+  q.canonicalize();
+  return rotation_from_tan_half(q);
+}
+
 Vector3 view_from_angles(const std::string& text) {
   auto comma = text.find(',');
   if (comma == std::string::npos) throw std::invalid_argument("--angles: '" + text + "' is not ELEVATION,AZIMUTH in degrees");
   Rotation e, a;
   try {
-    e = rotation_from_degrees(parse_rational(text.substr(0, comma)));
-    a = rotation_from_degrees(parse_rational(text.substr(comma + 1)));
+    e = rotation_near(parse_rational(text.substr(0, comma)));
+    a = rotation_near(parse_rational(text.substr(comma + 1)));
   } catch (const NumberError& err) {
     throw std::invalid_argument(std::string("--angles: ") + err.what());
   }
@@ -63,7 +77,7 @@ void add_horizon_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--grid", a->grid, "A CSV of heights: one row per z cut, one column per x sample");
   cmd->add_option("--x", a->x, "x range FROM:TO[:SAMPLES] (default -1:1:81; for --grid the columns set the count)");
   cmd->add_option("--z", a->z, "z range FROM:TO[:CUTS] (default -1:1:41; for --grid the rows set the count)");
-  cmd->add_option("--angles", a->angles, "View as the notes turn it: ELEVATION,AZIMUTH in degrees (about x, then y; default 30,30)");
+  cmd->add_option("--angles", a->angles, "View as the notes turn it: ELEVATION,AZIMUTH in degrees (about x, then y; default 30,30; each realised exactly within 0.01 degree)");
   cmd->add_option("--view", a->view, "View direction X,Y,Z toward the viewer (instead of --angles; needs a z component)");
   cmd->add_option("--up", a->up, "Up direction (default 0,1,0)");
   add_output_options(cmd, *a, false);
