@@ -17,7 +17,8 @@ namespace hlr::cli {
 namespace {
 
 struct HorizonArgs : OutputArgs {
-  std::string expression, grid, x = "-1:1", z = "-1:1", view, angles = "30,30", up;
+  std::string expression, grid, x = "-1:1", z = "-1:1", view, angles = "30,30", up, method = "exact";
+  double dx = 0;
 };
 
 // The notes' view: the surface turned about x (elevation) and y (azimuth): the direction toward
@@ -62,7 +63,8 @@ int run_horizon(const HorizonArgs& a) {
   HeightGrid g = a.grid.empty() ? grid_from_expression(a.expression, x, z) : grid_from_csv(a.grid, x, z);
   progress("floating horizon (" + std::to_string(g.zs.size()) + " cuts of " + std::to_string(g.xs.size()) + " samples)");
   std::vector<RenderResult> results;
-  results.push_back(render_horizon(g, cam, a.grid.empty() ? "y = " + a.expression : a.grid));
+  if (a.method == "classic" && !(a.dx > 0)) throw std::invalid_argument("--method classic needs --dx (the column width in drawing units)");
+  results.push_back(render_horizon(g, cam, a.grid.empty() ? "y = " + a.expression : a.grid, a.method == "classic" ? a.dx : 0));
   std::string text = drawing_text(results, {}, a, format, "horizon");
   write_output(a.output, text);
   return 0;
@@ -80,6 +82,9 @@ void add_horizon_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--angles", a->angles, "View as the notes turn it: ELEVATION,AZIMUTH in degrees (about x, then y; default 30,30; each realised exactly within 0.01 degree)");
   cmd->add_option("--view", a->view, "View direction X,Y,Z toward the viewer (instead of --angles; needs a z component)");
   cmd->add_option("--up", a->up, "Up direction (default 0,1,0)");
+  cmd->add_option("--method", a->method, "exact (default) or classic: the notes' per-column arrays, approximate, to compare")
+      ->check(CLI::IsMember({"exact", "classic"}));
+  cmd->add_option("--dx", a->dx, "classic: the column width in the picture (drawing units)");
   add_output_options(cmd, *a, false);
   cmd->callback([a, &exit_code] { exit_code = run_horizon(*a); });
 }

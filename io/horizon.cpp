@@ -125,9 +125,9 @@ HeightGrid grid_from_csv(const std::string& path, const SampleRange& x, const Sa
   return g;
 }
 
-RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std::string& name) {
+RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std::string& name, double classic_dx) {
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
-  HorizonResult h = floating_horizon(g, camera);
+  HorizonResult h = classic_dx > 0 ? floating_horizon_classic(g, camera, classic_dx) : floating_horizon(g, camera);
   std::vector<Point3> vs;
   vs.reserve(nx * nz);
   for (std::size_t j = 0; j < nz; ++j)

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "algorithms/floating_horizon.hpp"
+#include "algorithms/floating_horizon_classic.hpp"
 #include "io/render.hpp"
 
 namespace hlr {
@@ -34,6 +35,8 @@ HeightGrid grid_from_csv(const std::string& path, const SampleRange& x, const Sa
 /// The drawing of the surface's cuts with their exact visibility: one body (the triangulated
 /// surface, cell (i, j) split along (i, j)-(i+1, j+1)), one segment per cut edge, pieces
 /// visible as the floating horizon decides and hidden elsewhere.
-RenderResult render_horizon(const HeightGrid& grid, const Camera& camera, const std::string& name);
+/// `classic_dx` > 0: the notes' classic per-column method with that column width instead
+/// (floating_horizon_classic.hpp), to show its faults next to the exact one.
+RenderResult render_horizon(const HeightGrid& grid, const Camera& camera, const std::string& name, double classic_dx = 0);
 
 }  // namespace hlr

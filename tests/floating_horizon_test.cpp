@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "algorithms/floating_horizon.hpp"
+#include "algorithms/floating_horizon_classic.hpp"
 #include "io/render.hpp"
 
 namespace hlr {
@@ -119,6 +120,34 @@ TEST(FloatingHorizon, EqualsTheRendererOnTheTriangulatedSurface) {
       }
     }
   EXPECT_EQ(compared, 48);
+}
+
+// The notes' fault of the classic method: a peak of a front cut between two columns is not in
+// the horizon arrays, so the cut behind it is drawn where the peak hides it. The exact method
+// keeps the peak.
+TEST(FloatingHorizon, ClassicLosesThePeakTheExactMethodKeeps) {
+  HeightGrid g;
+  for (const char* x : {"-1", "-1/10", "0", "1/10", "1"}) g.xs.push_back(parse_rational(x));
+  g.zs = {Rational(0), Rational(1, 8), Rational(1, 4)};
+  // The back cut (z = 0) flat at 1/2, the middle one at 1/4; the front cut (z = 1/4, nearest
+  // for this view) flat at 0 with a spike of 1 at x = 0. In the picture the back cut runs
+  // between the middle cut (below) and the spike's apex (above).
+  for (int i = 0; i < 5; ++i) g.ys.push_back(Rational(1, 2));
+  for (int i = 0; i < 5; ++i) g.ys.push_back(Rational(1, 4));
+  for (int i = 0; i < 5; ++i) g.ys.push_back(i == 2 ? Rational(1) : Rational(0));
+  Camera cam = make_orthographic(Vector3(0, 1, 4), Vector3(0, 1, 0));
+  auto hidden_on_back = [](const HorizonResult& h) {
+    Rational visible = 0;
+    for (const HorizonPiece& p : h.visible)
+      if (p.curve == 0) visible += p.t1 - p.t0;
+    return Rational(4 - visible);  // four segments of t length 1
+  };
+  HorizonResult exact = floating_horizon(g, cam);
+  HorizonResult classic = floating_horizon_classic(g, cam, 0.3);  // columns at -1, -0.7, ..., -0.1, 0.2: not at 0
+  EXPECT_GT(hidden_on_back(exact), 0) << "the spike hides part of the back cut";
+  EXPECT_EQ(hidden_on_back(classic), 0) << "the classic arrays miss the spike";
+  HorizonResult fine = floating_horizon_classic(g, cam, 0.01);  // a column near the apex: the peak is seen again
+  EXPECT_GT(hidden_on_back(fine), 0);
 }
 
 TEST(FloatingHorizon, RefusesViewsItCannotTake) {
