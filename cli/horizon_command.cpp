@@ -17,7 +17,7 @@ namespace hlr::cli {
 namespace {
 
 struct HorizonArgs : OutputArgs {
-  std::string expression, grid, x = "-1:1", z = "-1:1", view, angles = "30,30", up, method = "exact";
+  std::string expression, grid, x = "-1:1", z = "-1:1", view, angles = "30,30", up, method = "exact", height = "1/4";
   double dx = 0;
 };
 
@@ -60,7 +60,13 @@ int run_horizon(const HorizonArgs& a) {
   Camera cam = make_orthographic(v, up);
   ProgressLine line("horizon", a.progress, a.quiet);
   progress("sampling");
-  HeightGrid g = a.grid.empty() ? grid_from_expression(a.expression, x, z) : grid_from_csv(a.grid, x, z);
+  Rational height;
+  try {
+    height = parse_rational(a.height);
+  } catch (const NumberError& e) {
+    throw std::invalid_argument(std::string("--height: ") + e.what());
+  }
+  HeightGrid g = a.grid.empty() ? grid_from_expression(a.expression, x, z) : grid_from_file(a.grid, x, z, height);
   progress("floating horizon (" + std::to_string(g.zs.size()) + " cuts of " + std::to_string(g.xs.size()) + " samples)");
   std::vector<RenderResult> results;
   if (a.method == "classic" && !(a.dx > 0)) throw std::invalid_argument("--method classic needs --dx (the column width in drawing units)");
@@ -76,7 +82,9 @@ void add_horizon_command(CLI::App& app, int& exit_code) {
   auto a = std::make_shared<HorizonArgs>();
   CLI::App* cmd = app.add_subcommand("horizon", "A surface y = f(x, z) by the exact floating horizon (course notes section 24)");
   cmd->add_option("--expr", a->expression, "y as an expression of x and z (muparser: sin, cos, exp, sqrt, ^, ...)");
-  cmd->add_option("--grid", a->grid, "A CSV of heights: one row per z cut, one column per x sample");
+  cmd->add_option("--grid", a->grid,
+                  "Heights from a file: .csv (one row per z cut, one column per x sample, exact decimals), or a grey .pgm/.png heightmap");
+  cmd->add_option("--height", a->height, "Heightmaps: the height of the brightest value (default 1/4; exact)");
   cmd->add_option("--x", a->x, "x range FROM:TO[:SAMPLES] (default -1:1:81; for --grid the columns set the count)");
   cmd->add_option("--z", a->z, "z range FROM:TO[:CUTS] (default -1:1:41; for --grid the rows set the count)");
   cmd->add_option("--angles", a->angles, "View as the notes turn it: ELEVATION,AZIMUTH in degrees (about x, then y; default 30,30; each realised exactly within 0.01 degree)");

@@ -3,7 +3,11 @@
 
 #include <muParser.h>
 
+#include <png.h>
+
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <stdexcept>
 
@@ -123,6 +127,132 @@ HeightGrid grid_from_csv(const std::string& path, const SampleRange& x, const Sa
   g.xs = samples(xr);
   g.zs = zr.count == 1 ? std::vector<Rational>{zr.from} : samples(zr);
   return g;
+}
+
+namespace {
+
+// A grey image: width, height, maxval, values row by row.
+struct GreyImage {
+  std::size_t w = 0, h = 0;
+  unsigned maxval = 255;
+  std::vector<unsigned> v;
+};
+
+GreyImage read_pgm(const std::string& path) {
+  std::string data = read_file_bytes(path);
+  std::size_t at = 0;
+  auto fail = [&](const std::string& why) -> void { throw InputError(path, 0, why); };
+  auto token = [&]() {
+    while (at < data.size()) {
+      if (data[at] == '#') {
+        while (at < data.size() && data[at] != '\n') ++at;
+      } else if (std::isspace(static_cast<unsigned char>(data[at]))) {
+        ++at;
+      } else {
+        break;
+      }
+    }
+    std::size_t b = at;
+    while (at < data.size() && !std::isspace(static_cast<unsigned char>(data[at])) && data[at] != '#') ++at;
+    return data.substr(b, at - b);
+  };
+  auto number = [&](const char* what) {
+    std::string t = token();
+    if (t.empty() || t.size() > 9 || t.find_first_not_of("0123456789") != std::string::npos) fail(std::string("bad ") + what + " '" + t.substr(0, 20) + "'");
+    return static_cast<unsigned>(std::stoul(t));
+  };
+  std::string magic = token();
+  if (magic != "P2" && magic != "P5") fail("not a PGM file (expected P2 or P5, found '" + magic.substr(0, 8) + "')");
+  GreyImage img;
+  img.w = number("width");
+  img.h = number("height");
+  img.maxval = number("maxval");
+  if (img.w < 2 || img.h < 1 || img.w * img.h > 50'000'000) fail("image size " + std::to_string(img.w) + "x" + std::to_string(img.h) + " out of range");
+  if (img.maxval < 1 || img.maxval > 65535) fail("maxval must be 1 to 65535");
+  img.v.reserve(img.w * img.h);
+  if (magic == "P2") {
+    for (std::size_t k = 0; k < img.w * img.h; ++k) {
+      unsigned x = number("value");
+      if (x > img.maxval) fail("value " + std::to_string(x) + " above maxval");
+      img.v.push_back(x);
+    }
+  } else {
+    ++at;  // one whitespace after maxval
+    const std::size_t bytes = img.maxval > 255 ? 2 : 1;
+    if (data.size() < at + img.w * img.h * bytes) fail("the file ends before its " + std::to_string(img.w * img.h) + " values");
+    for (std::size_t k = 0; k < img.w * img.h; ++k) {
+      unsigned x = bytes == 2 ? (static_cast<unsigned char>(data[at + 2 * k]) << 8) | static_cast<unsigned char>(data[at + 2 * k + 1])
+                              : static_cast<unsigned char>(data[at + k]);
+      if (x > img.maxval) fail("value " + std::to_string(x) + " above maxval");
+      img.v.push_back(x);
+    }
+  }
+  return img;
+}
+
+GreyImage read_png(const std::string& path) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  std::string data = read_file_bytes(path);
+  if (!png_image_begin_read_from_memory(&image, data.data(), data.size()))
+    throw InputError(path, 0, std::string("not a PNG image: ") + image.message);
+  if (image.format & PNG_FORMAT_FLAG_COLOR) {
+    png_image_free(&image);
+    throw InputError(path, 0, "a heightmap must be a grey image, this PNG has colour");
+  }
+  GreyImage img;
+  img.w = image.width, img.h = image.height;
+  if (img.w < 2 || img.h < 1 || img.w * img.h > 50'000'000) {
+    png_image_free(&image);
+    throw InputError(path, 0, "image size out of range");
+  }
+  // The stored values as they are: 16-bit files as 16-bit linear grey (no conversion), 8-bit
+  // files as 8-bit grey (libpng would convert 8-bit values through the sRGB curve if read as
+  // linear).
+  const bool sixteen = (image.format & PNG_FORMAT_FLAG_LINEAR) != 0;
+  if (sixteen) {
+    image.format = PNG_FORMAT_LINEAR_Y;
+    std::vector<png_uint_16> buf(img.w * img.h);
+    if (!png_image_finish_read(&image, nullptr, buf.data(), 0, nullptr)) throw InputError(path, 0, std::string("PNG: ") + image.message);
+    img.maxval = 65535;
+    img.v.assign(buf.begin(), buf.end());
+  } else {
+    image.format = PNG_FORMAT_GRAY;
+    std::vector<png_byte> buf(img.w * img.h);
+    if (!png_image_finish_read(&image, nullptr, buf.data(), 0, nullptr)) throw InputError(path, 0, std::string("PNG: ") + image.message);
+    img.maxval = 255;
+    img.v.assign(buf.begin(), buf.end());
+  }
+  return img;
+}
+
+}  // namespace
+
+HeightGrid grid_from_image(const std::string& path, const SampleRange& x, const SampleRange& z, const Rational& height) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  GreyImage img = ext == ".png" ? read_png(path) : read_pgm(path);
+  HeightGrid g;
+  SampleRange xr = x, zr = z;
+  xr.count = img.w;
+  zr.count = img.h;
+  g.xs = samples(xr);
+  g.zs = img.h == 1 ? std::vector<Rational>{zr.from} : samples(zr);
+  g.ys.reserve(img.v.size());
+  for (unsigned val : img.v) {
+    Rational y(static_cast<long>(val), static_cast<long>(img.maxval));
+    y.canonicalize();
+    g.ys.push_back(y * height);
+  }
+  return g;
+}
+
+HeightGrid grid_from_file(const std::string& path, const SampleRange& x, const SampleRange& z, const Rational& height) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".csv") return grid_from_csv(path, x, z);
+  if (ext == ".pgm" || ext == ".png") return grid_from_image(path, x, z, height);
+  throw InputError(path, 0, "unknown height grid format '" + ext + "' (expected .csv, .pgm or .png)");
 }
 
 RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std::string& name, double classic_dx) {

@@ -32,6 +32,14 @@ HeightGrid grid_from_expression(const std::string& expression, const SampleRange
 /// the file). Throws InputError (file and line) for bad input.
 HeightGrid grid_from_csv(const std::string& path, const SampleRange& x, const SampleRange& z);
 
+/// A heightmap image: PGM (P2 or P5, maxval up to 65535) or PNG (8- or 16-bit grey; colour is
+/// refused), one row per z cut (the image's top row at z = z.from), one column per x sample;
+/// y = value / maxval * height, exactly. Throws InputError for bad input.
+HeightGrid grid_from_image(const std::string& path, const SampleRange& x, const SampleRange& z, const Rational& height);
+
+/// By extension: .csv (grid_from_csv), .pgm or .png (grid_from_image).
+HeightGrid grid_from_file(const std::string& path, const SampleRange& x, const SampleRange& z, const Rational& height);
+
 /// The drawing of the surface's cuts with their exact visibility: one body (the triangulated
 /// surface, cell (i, j) split along (i, j)-(i+1, j+1)), one segment per cut edge, pieces
 /// visible as the floating horizon decides and hidden elsewhere.
