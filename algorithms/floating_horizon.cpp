@@ -242,4 +242,21 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam) {
   return res;
 }
 
+HorizonResult floating_horizon_x(const HeightGrid& g, const Camera& cam) {
+  HeightGrid t;
+  t.xs = g.zs;
+  t.zs = g.xs;
+  t.ys.resize(g.ys.size());
+  const std::size_t nx = g.xs.size(), nz = g.zs.size();
+  for (std::size_t j = 0; j < nz; ++j)
+    for (std::size_t i = 0; i < nx; ++i) t.ys[i * nz + j] = g.y(i, j);
+  auto swap_xz = [](const Vector3& v) { return Vector3(v.z(), v.y(), v.x()); };
+  Camera c = cam;
+  c.direction = swap_xz(cam.direction);
+  c.up = swap_xz(cam.up);
+  return floating_horizon(t, c);
+}
+
+bool x_cuts_edge_on(const Camera& camera) { return !camera.perspective && camera.direction.x() == 0; }
+
 }  // namespace hlr

@@ -44,4 +44,17 @@ struct HorizonResult {
 /// not orthogonal to the x axis). Throws std::invalid_argument otherwise or for a bad grid.
 HorizonResult floating_horizon(const HeightGrid& grid, const Camera& camera);
 
+/// The second family of cuts, x = xs[i] (a grid with both families; the notes' side edges are
+/// its first and last cut): the same method on the grid with x and z exchanged (a reflection of
+/// the scene and the view, which changes no visibility; the cells' diagonals stay the same).
+/// `curve` is then i and `segment` j (the edge from (i, j) to (i, j+1)). Needs a view with an x
+/// component; with none, every x cut lies in a plane through the viewing direction and is seen
+/// edge-on: see x_cuts_edge_on().
+HorizonResult floating_horizon_x(const HeightGrid& grid, const Camera& camera);
+
+/// True when the view has no x component: the x cuts lie in planes through the viewing
+/// direction (each is seen as a vertical line). The first and last (the side edges) are then
+/// visible whole: their sight rays stay in a plane where the surface has only its boundary.
+bool x_cuts_edge_on(const Camera& camera);
+
 }  // namespace hlr

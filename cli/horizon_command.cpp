@@ -17,7 +17,7 @@ namespace hlr::cli {
 namespace {
 
 struct HorizonArgs : OutputArgs {
-  std::string expression, grid, x = "-1:1", z = "-1:1", view, angles = "30,30", up, method = "exact", height = "1/4";
+  std::string expression, grid, x = "-1:1", z = "-1:1", view, angles = "30,30", up, method = "exact", height = "1/4", cuts = "z";
   double dx = 0;
 };
 
@@ -70,7 +70,7 @@ int run_horizon(const HorizonArgs& a) {
   progress("floating horizon (" + std::to_string(g.zs.size()) + " cuts of " + std::to_string(g.xs.size()) + " samples)");
   std::vector<RenderResult> results;
   if (a.method == "classic" && !(a.dx > 0)) throw std::invalid_argument("--method classic needs --dx (the column width in drawing units)");
-  results.push_back(render_horizon(g, cam, a.grid.empty() ? "y = " + a.expression : a.grid, a.method == "classic" ? a.dx : 0));
+  results.push_back(render_horizon(g, cam, a.grid.empty() ? "y = " + a.expression : a.grid, a.method == "classic" ? a.dx : 0, a.cuts));
   std::string text = drawing_text(results, {}, a, format, "horizon");
   write_output(a.output, text);
   return 0;
@@ -90,6 +90,8 @@ void add_horizon_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--angles", a->angles, "View as the notes turn it: ELEVATION,AZIMUTH in degrees (about x, then y; default 30,30; each realised exactly within 0.01 degree)");
   cmd->add_option("--view", a->view, "View direction X,Y,Z toward the viewer (instead of --angles; needs a z component)");
   cmd->add_option("--up", a->up, "Up direction (default 0,1,0)");
+  cmd->add_option("--cuts", a->cuts, "z (default: the cuts z = const and the side edges), x (the cuts x = const) or both (a grid)")
+      ->check(CLI::IsMember({"z", "x", "both"}));
   cmd->add_option("--method", a->method, "exact (default) or classic: the notes' per-column arrays, approximate, to compare")
       ->check(CLI::IsMember({"exact", "classic"}));
   cmd->add_option("--dx", a->dx, "classic: the column width in the picture (drawing units)");

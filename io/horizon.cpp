@@ -255,9 +255,17 @@ HeightGrid grid_from_file(const std::string& path, const SampleRange& x, const S
   throw InputError(path, 0, "unknown height grid format '" + ext + "' (expected .csv, .pgm or .png)");
 }
 
-RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std::string& name, double classic_dx) {
+RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std::string& name, double classic_dx,
+                            const std::string& cuts) {
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
-  HorizonResult h = classic_dx > 0 ? floating_horizon_classic(g, camera, classic_dx) : floating_horizon(g, camera);
+  const bool z_family = cuts != "x", x_family = cuts != "z" || classic_dx <= 0;  // "z": its side edges
+  HorizonResult h;
+  if (z_family) h = classic_dx > 0 ? floating_horizon_classic(g, camera, classic_dx) : floating_horizon(g, camera);
+  HorizonResult hx;
+  const bool edge_on = x_cuts_edge_on(camera);
+  if (edge_on && cuts != "z")
+    throw std::invalid_argument("the view has no x component: the x cuts are seen edge-on; give the view an x component (or draw the z cuts)");
+  if (x_family && classic_dx <= 0 && !edge_on && nz >= 2) hx = floating_horizon_x(g, camera);
   std::vector<Point3> vs;
   vs.reserve(nx * nz);
   for (std::size_t j = 0; j < nz; ++j)
@@ -284,36 +292,60 @@ RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std
   // Visible runs by (curve, segment); each cut edge gets them and hidden pieces between.
   std::map<std::pair<int, int>, std::vector<std::pair<Rational, Rational>>> runs;
   for (const HorizonPiece& p : h.visible) runs[{p.curve, p.segment}].push_back({p.t0, p.t1});
-  for (int j : h.order)
-    for (std::size_t i = 0; i + 1 < nx; ++i) {
-      Segment s;
-      s.kind = Segment::Kind::Edge;
-      s.line = LineKind::Edge;
-      s.body = 0;
-      s.v0 = static_cast<int>(static_cast<std::size_t>(j) * nx + i);
-      s.v1 = s.v0 + 1;
-      s.borrow_ends(body.body.vertices()[s.v0], body.body.vertices()[s.v1]);
-      Rational at = 0;
-      auto add = [&](const Rational& t0, const Rational& t1, bool visible) {
-        if (!(t0 < t1)) return;
-        if (!s.pieces.empty() && s.pieces.back().visible == visible) {
-          s.pieces.back().t1 = t1;
-          return;
+  // One segment per drawn edge, visible where the runs say, hidden between.
+  auto add_segment = [&](int v0, int v1, const std::vector<std::pair<Rational, Rational>>* vis) {
+    Segment s;
+    s.kind = Segment::Kind::Edge;
+    s.line = LineKind::Edge;
+    s.body = 0;
+    s.v0 = v0;
+    s.v1 = v1;
+    s.borrow_ends(body.body.vertices()[s.v0], body.body.vertices()[s.v1]);
+    Rational at = 0;
+    auto add = [&](const Rational& t0, const Rational& t1, bool visible) {
+      if (!(t0 < t1)) return;
+      if (!s.pieces.empty() && s.pieces.back().visible == visible) {
+        s.pieces.back().t1 = t1;
+        return;
+      }
+      Piece p;
+      p.t0 = t0, p.t1 = t1, p.visible = visible;
+      s.pieces.push_back(p);
+    };
+    if (vis)
+      for (const auto& [t0, t1] : *vis) {
+        add(at, t0, false);
+        add(t0, t1, true);
+        at = t1;
+      }
+    add(at, 1, false);
+    r.drawing.segments.push_back(std::move(s));
+  };
+  if (z_family)
+    for (int j : h.order)
+      for (std::size_t i = 0; i + 1 < nx; ++i) {
+        auto it = runs.find({j, static_cast<int>(i)});
+        int v0 = static_cast<int>(static_cast<std::size_t>(j) * nx + i);
+        add_segment(v0, v0 + 1, it != runs.end() ? &it->second : nullptr);
+      }
+  // The x cuts (all of them, or the side edges i = 0 and i = nx - 1 with the z cuts).
+  if (x_family && classic_dx <= 0 && nz >= 2) {
+    std::map<std::pair<int, int>, std::vector<std::pair<Rational, Rational>>> xruns;
+    for (const HorizonPiece& p : hx.visible) xruns[{p.curve, p.segment}].push_back({p.t0, p.t1});
+    static const std::vector<std::pair<Rational, Rational>> whole{{Rational(0), Rational(1)}};
+    for (std::size_t i = 0; i < nx; ++i) {
+      if (cuts == "z" && i != 0 && i + 1 != nx) continue;
+      for (std::size_t j = 0; j + 1 < nz; ++j) {
+        int v0 = static_cast<int>(j * nx + i), v1 = static_cast<int>((j + 1) * nx + i);
+        if (edge_on) {  // the side edges, seen edge-on: visible whole (see x_cuts_edge_on)
+          add_segment(v0, v1, &whole);
+          continue;
         }
-        Piece p;
-        p.t0 = t0, p.t1 = t1, p.visible = visible;
-        s.pieces.push_back(p);
-      };
-      auto it = runs.find({j, static_cast<int>(i)});
-      if (it != runs.end())
-        for (const auto& [t0, t1] : it->second) {
-          add(at, t0, false);
-          add(t0, t1, true);
-          at = t1;
-        }
-      add(at, 1, false);
-      r.drawing.segments.push_back(std::move(s));
+        auto it = xruns.find({static_cast<int>(i), static_cast<int>(j)});
+        add_segment(v0, v1, it != xruns.end() ? &it->second : nullptr);
+      }
     }
+  }
   r.drawing.stats.edges = r.drawing.segments.size();
   return r;
 }

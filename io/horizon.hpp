@@ -45,6 +45,9 @@ HeightGrid grid_from_file(const std::string& path, const SampleRange& x, const S
 /// visible as the floating horizon decides and hidden elsewhere.
 /// `classic_dx` > 0: the notes' classic per-column method with that column width instead
 /// (floating_horizon_classic.hpp), to show its faults next to the exact one.
-RenderResult render_horizon(const HeightGrid& grid, const Camera& camera, const std::string& name, double classic_dx = 0);
+/// `cuts`: "z" (the notes' cuts and their side edges), "x" (the other family only) or "both"
+/// (a grid). The classic method draws the z cuts only.
+RenderResult render_horizon(const HeightGrid& grid, const Camera& camera, const std::string& name, double classic_dx = 0,
+                            const std::string& cuts = "z");
 
 }  // namespace hlr

@@ -45,7 +45,9 @@ Polyhedron surface(const HeightGrid& g) {
 
 using Key = std::tuple<int, int, Rational, Rational>;  // curve, segment, t0, t1
 
-std::vector<Key> by_renderer(const HeightGrid& g, const Vector3& view, const Vector3& up) {
+// Key for an edge of the grid: z cuts (curve j, segment i) as before; x cuts (i, j) with the
+// curve number offset by 1000 so both families can be compared in one list.
+std::vector<Key> by_renderer(const HeightGrid& g, const Vector3& view, const Vector3& up, bool x_cuts = false) {
   const int nx = static_cast<int>(g.xs.size());
   Scene scene;
   scene.bodies.push_back(SceneBody{"surface", "grid", surface(g), identity_transform(), {}, {}, {}});
@@ -59,12 +61,14 @@ std::vector<Key> by_renderer(const HeightGrid& g, const Vector3& view, const Vec
   for (const Segment& s : r.drawing.segments) {
     if (s.kind != Segment::Kind::Edge) continue;
     int a = std::min(s.v0, s.v1), b = std::max(s.v0, s.v1);
-    if (b != a + 1 || a / nx != b / nx) continue;  // only the cuts' edges (i, j)-(i+1, j)
+    const bool zcut = b == a + 1 && a / nx == b / nx, xcut = b == a + nx;
+    if (!(zcut || (x_cuts && xcut))) continue;  // the cuts' edges (i, j)-(i+1, j), and (i, j)-(i, j+1)
     const bool flip = s.v0 > s.v1;
     for (const Piece& p : s.pieces) {
       if (!p.visible) continue;
       Rational t0 = flip ? Rational(1 - p.t1) : p.t0, t1 = flip ? Rational(1 - p.t0) : p.t1;
-      runs[{a / nx, a % nx}].push_back({t0, t1});
+      if (zcut) runs[{a / nx, a % nx}].push_back({t0, t1});
+      else runs[{1000 + a % nx, a / nx}].push_back({t0, t1});
     }
   }
   std::vector<Key> out;
@@ -75,10 +79,13 @@ std::vector<Key> by_renderer(const HeightGrid& g, const Vector3& view, const Vec
   return out;
 }
 
-std::vector<Key> by_horizon(const HeightGrid& g, const Vector3& view, const Vector3& up) {
+std::vector<Key> by_horizon(const HeightGrid& g, const Vector3& view, const Vector3& up, bool x_cuts = false) {
   HorizonResult h = floating_horizon(g, make_orthographic(view, up));
   std::vector<Key> out;
   for (const HorizonPiece& p : h.visible) out.emplace_back(p.curve, p.segment, p.t0, p.t1);
+  if (x_cuts)
+    for (const HorizonPiece& p : floating_horizon_x(g, make_orthographic(view, up)).visible)
+      out.emplace_back(1000 + p.curve, p.segment, p.t0, p.t1);
   std::sort(out.begin(), out.end());
   // Runs that meet across pieces of one segment are one run.
   std::vector<Key> merged;
@@ -114,7 +121,8 @@ TEST(FloatingHorizon, EqualsTheRendererOnTheTriangulatedSurface) {
       HeightGrid g = grid(n, f);
       for (const Vector3& v : views) {
         Vector3 up(0, 1, 0);
-        std::vector<Key> a = by_horizon(g, v, up), b = by_renderer(g, v, up);
+        const bool both = v.x() != 0;  // the x cuts too (a grid) where they are not seen edge-on
+        std::vector<Key> a = by_horizon(g, v, up, both), b = by_renderer(g, v, up, both);
         EXPECT_EQ(a, b) << name << " n=" << n << " view " << to_string(v) << ": " << a.size() << " runs against " << b.size();
         ++compared;
       }
@@ -148,6 +156,21 @@ TEST(FloatingHorizon, ClassicLosesThePeakTheExactMethodKeeps) {
   EXPECT_EQ(hidden_on_back(classic), 0) << "the classic arrays miss the spike";
   HorizonResult fine = floating_horizon_classic(g, cam, 0.01);  // a column near the apex: the peak is seen again
   EXPECT_GT(hidden_on_back(fine), 0);
+}
+
+// With no x component in the view, the side edges (the first and last x cuts) are visible
+// whole, as render_horizon draws them: the renderer agrees.
+TEST(FloatingHorizon, SideEdgesSeenEdgeOnAreVisible) {
+  HeightGrid g = grid(7, [](const Rational& x, const Rational& z) -> Rational { return Rational(1) / (1 + 8 * (x * x + z * z)); });
+  for (const Vector3& v : {Vector3(0, 1, 4), Vector3(0, 3, 1), Vector3(0, -1, 2)}) {
+    std::vector<Key> b = by_renderer(g, v, Vector3(0, 1, 0), true);
+    for (int side : {1000, 1006}) {
+      Rational visible = 0;
+      for (const Key& k : b)
+        if (std::get<0>(k) == side) visible += std::get<3>(k) - std::get<2>(k);
+      EXPECT_EQ(visible, 6) << "side " << side - 1000 << " view " << to_string(v);
+    }
+  }
 }
 
 TEST(FloatingHorizon, RefusesViewsItCannotTake) {
