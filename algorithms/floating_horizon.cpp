@@ -3,20 +3,26 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
 #include <map>
 #include <stdexcept>
 
 namespace hlr {
 namespace {
 
-// A piece of a horizon: the segment (x0, y0)-(x1, y1) of the picture, x0 < x1.
+// A line of the picture, y = s·x + c, exact: the line of a projected edge. Pieces of the
+// horizons keep the line they lie on, so values and crossings are always computed from the
+// original edges' numbers (their size does not grow with the number of cuts).
+struct Line {
+  Rational s, c;
+  Rational at(const Rational& x) const { return s * x + c; }
+};
+
+// A piece of a horizon: its line over x0 < x < x1.
 struct Seg {
-  Rational x0, y0, x1, y1;
-  Rational at(const Rational& x) const {
-    if (x == x0) return y0;
-    if (x == x1) return y1;
-    return y0 + (y1 - y0) * (x - x0) / (x1 - x0);
-  }
+  Rational x0, x1;
+  const Line* line;
+  Rational at(const Rational& x) const { return line->at(x); }
 };
 
 // A horizon: pieces in increasing x, not overlapping (they may touch, or leave gaps where no
@@ -25,29 +31,58 @@ using Env = std::vector<Seg>;
 
 int sgn(const Rational& q) { return q > 0 ? 1 : q < 0 ? -1 : 0; }
 
-// Appends s to e, joined to the last piece when they continue one segment exactly.
-void push(Env& e, Seg s) {
-  if (!(s.x0 < s.x1)) return;
-  if (!e.empty()) {
-    Seg& b = e.back();
-    if (b.x1 == s.x0 && b.y1 == s.y0 && (b.y1 - b.y0) * (s.x1 - s.x0) == (s.y1 - s.y0) * (b.x1 - b.x0)) {
-      b.x1 = s.x1, b.y1 = s.y1;
-      return;
-    }
+// The lines of one run (stable addresses).
+class Lines {
+ public:
+  const Line* through(const Rational& ax, const Rational& ay, const Rational& bx, const Rational& by) {
+    Rational s = (by - ay) / (bx - ax);
+    Rational c = ay - s * ax;
+    pool_.push_back(Line{std::move(s), std::move(c)});
+    return &pool_.back();
   }
-  e.push_back(std::move(s));
+
+ private:
+  std::deque<Line> pool_;
+};
+
+bool same_line(const Line* a, const Line* b) { return a == b || (a->s == b->s && a->c == b->c); }
+
+// Appends a piece, joined to the last one when it continues it on the same line.
+void push(Env& e, const Rational& x0, const Rational& x1, const Line* line) {
+  if (!(x0 < x1)) return;
+  if (!e.empty() && e.back().x1 == x0 && same_line(e.back().line, line)) {
+    e.back().x1 = x1;
+    return;
+  }
+  e.push_back(Seg{x0, x1, line});
 }
 
 // The pointwise maximum (upper) or minimum of two horizons: cut at every breakpoint of both and
 // at every crossing, exactly.
 Env merge(const Env& A, const Env& B, bool upper) {
+  // The breakpoints of each horizon are already in order: merge the two lists.
+  auto points = [](const Env& e) {
+    std::vector<const Rational*> p;
+    p.reserve(2 * e.size());
+    for (const Seg& s : e) {
+      if (p.empty() || *p.back() != s.x0) p.push_back(&s.x0);
+      p.push_back(&s.x1);
+    }
+    return p;
+  };
+  std::vector<const Rational*> pa = points(A), pb = points(B);
   std::vector<Rational> xs;
-  xs.reserve(2 * (A.size() + B.size()));
-  for (const Env* e : {&A, &B})
-    for (const Seg& s : *e) xs.push_back(s.x0), xs.push_back(s.x1);
-  std::sort(xs.begin(), xs.end());
-  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  xs.reserve(pa.size() + pb.size());
+  std::size_t i = 0, j = 0;
+  while (i < pa.size() || j < pb.size()) {
+    const Rational* next;
+    if (j == pb.size() || (i < pa.size() && *pa[i] < *pb[j])) next = pa[i++];
+    else if (i == pa.size() || *pb[j] < *pa[i]) next = pb[j++];
+    else next = pa[i++], ++j;  // equal
+    if (xs.empty() || xs.back() != *next) xs.push_back(*next);
+  }
   Env out;
+  out.reserve(A.size() + B.size());
   std::size_t ia = 0, ib = 0;
   for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
     const Rational &a = xs[k], &b = xs[k + 1];
@@ -56,28 +91,21 @@ Env merge(const Env& A, const Env& B, bool upper) {
     const Seg* sa = ia < A.size() && A[ia].x0 <= a ? &A[ia] : nullptr;
     const Seg* sb = ib < B.size() && B[ib].x0 <= a ? &B[ib] : nullptr;
     if (!sa && !sb) continue;
-    if (!sa || !sb) {
-      const Seg* s = sa ? sa : sb;
-      push(out, {a, s->at(a), b, s->at(b)});
+    if (!sa || !sb || same_line(sa->line, sb->line)) {
+      push(out, a, b, (sa ? sa : sb)->line);
       continue;
     }
-    Rational ya = sa->at(a), yb = sa->at(b), za = sb->at(a), zb = sb->at(b);
-    int d0 = sgn(ya - za), d1 = sgn(yb - zb);
+    const Line &la = *sa->line, &lb = *sb->line;
+    int d0 = sgn(la.at(a) - lb.at(a)), d1 = sgn(la.at(b) - lb.at(b));
     if (!upper) d0 = -d0, d1 = -d1;  // d > 0: A is the better one
     if (d0 >= 0 && d1 >= 0) {
-      push(out, {a, ya, b, yb});
+      push(out, a, b, &la);
     } else if (d0 <= 0 && d1 <= 0) {
-      push(out, {a, za, b, zb});
+      push(out, a, b, &lb);
     } else {  // they cross inside (a, b)
-      Rational u = (za - ya) / ((yb - ya) - (zb - za));  // fraction of the way from a to b
-      Rational xc = a + u * (b - a), yc = ya + u * (yb - ya);
-      if (d0 > 0) {
-        push(out, {a, ya, xc, yc});
-        push(out, {xc, yc, b, zb});
-      } else {
-        push(out, {a, za, xc, yc});
-        push(out, {xc, yc, b, yb});
-      }
+      Rational xc = (lb.c - la.c) / (la.s - lb.s);
+      push(out, a, xc, d0 > 0 ? &la : &lb);
+      push(out, xc, b, d0 > 0 ? &lb : &la);
     }
   }
   return out;
@@ -88,7 +116,7 @@ struct P2 {
 };
 
 // The upper (or lower) boundary of a projected triangle as a horizon.
-Env triangle_side(P2 a, P2 b, P2 c, bool upper) {
+Env triangle_side(P2 a, P2 b, P2 c, bool upper, Lines& lines) {
   if (b.x < a.x) std::swap(a, b);
   if (c.x < b.x) std::swap(b, c);
   if (b.x < a.x) std::swap(a, b);
@@ -98,10 +126,10 @@ Env triangle_side(P2 a, P2 b, P2 c, bool upper) {
   int side = sgn((c.x - a.x) * (b.y - a.y) - (c.y - a.y) * (b.x - a.x));
   bool via_b = upper ? side > 0 : side < 0;
   if (via_b) {
-    push(e, {a.x, a.y, b.x, b.y});
-    push(e, {b.x, b.y, c.x, c.y});
+    if (a.x < b.x) push(e, a.x, b.x, lines.through(a.x, a.y, b.x, b.y));
+    if (b.x < c.x) push(e, b.x, c.x, lines.through(b.x, b.y, c.x, c.y));
   } else {
-    push(e, {a.x, a.y, c.x, c.y});
+    push(e, a.x, c.x, lines.through(a.x, a.y, c.x, c.y));
   }
   return e;
 }
@@ -118,15 +146,18 @@ Env envelope(std::vector<Env> parts, bool upper) {
   return std::move(parts[0]);
 }
 
-// Hidden open intervals of the segment s (x0 < x1) against the horizons: where L < s < U.
-std::vector<std::pair<Rational, Rational>> hidden_parts(const Seg& s, const Env& U, const Env& L) {
-  std::vector<Rational> xs{s.x0, s.x1};
-  for (const Env* e : {&U, &L})
-    for (const Seg& p : *e) {
-      if (p.x1 <= s.x0 || p.x0 >= s.x1) continue;
-      if (p.x0 > s.x0) xs.push_back(p.x0);
-      if (p.x1 < s.x1) xs.push_back(p.x1);
+// Hidden open intervals of the cut's segment on `line` over (x0, x1) against the horizons:
+// where L < segment < U.
+std::vector<std::pair<Rational, Rational>> hidden_parts(const Line& line, const Rational& x0, const Rational& x1, const Env& U,
+                                                         const Env& L) {
+  std::vector<Rational> xs{x0, x1};
+  for (const Env* e : {&U, &L}) {
+    auto first = std::upper_bound(e->begin(), e->end(), x0, [](const Rational& v, const Seg& p) { return v < p.x1; });
+    for (auto it = first; it != e->end() && it->x0 < x1; ++it) {
+      if (it->x0 > x0) xs.push_back(it->x0);
+      if (it->x1 < x1) xs.push_back(it->x1);
     }
+  }
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
   auto find = [](const Env& e, const Rational& x) -> const Seg* {  // the piece over (x, next)
@@ -138,18 +169,20 @@ std::vector<std::pair<Rational, Rational>> hidden_parts(const Seg& s, const Env&
     const Rational &a = xs[k], &b = xs[k + 1];
     const Seg *u = find(U, a), *l = find(L, a);
     if (!u || !l) continue;
-    // On (a, b): s < U where the difference U - s is positive; an interval of (a, b).
-    auto open_where_positive = [&](const Rational& d0, const Rational& d1, Rational& lo, Rational& hi) {
-      int s0 = sgn(d0), s1 = sgn(d1);
+    // On (a, b): where the line `hi` is above the line `lo`: an open interval of (a, b).
+    auto where_above = [&](const Line& hi, const Line& lo, Rational& from, Rational& to) {
+      int s0 = sgn(hi.at(a) - lo.at(a)), s1 = sgn(hi.at(b) - lo.at(b));
       if (s0 <= 0 && s1 <= 0) return false;
-      lo = a, hi = b;
-      if (s0 > 0 && s1 < 0) hi = a + (b - a) * d0 / (d0 - d1);
-      if (s0 < 0 && s1 > 0) lo = a + (b - a) * d0 / (d0 - d1);
+      from = a, to = b;
+      if (s0 != s1 && s0 != 0 && s1 != 0) {
+        Rational xc = (lo.c - hi.c) / (hi.s - lo.s);
+        (s0 > 0 ? to : from) = xc;
+      }
       return true;
     };
     Rational lo1, hi1, lo2, hi2;
-    if (!open_where_positive(u->at(a) - s.at(a), u->at(b) - s.at(b), lo1, hi1)) continue;
-    if (!open_where_positive(s.at(a) - l->at(a), s.at(b) - l->at(b), lo2, hi2)) continue;
+    if (!where_above(*u->line, line, lo1, hi1)) continue;
+    if (!where_above(line, *l->line, lo2, hi2)) continue;
     Rational lo = std::max(lo1, lo2), hi = std::min(hi1, hi2);
     if (!(lo < hi)) continue;
     if (!out.empty() && out.back().second == lo) out.back().second = hi;  // a single point between is hidden too
@@ -181,6 +214,7 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam) {
   HorizonResult res;
   for (std::size_t k = 0; k < nz; ++k) res.order.push_back(static_cast<int>(v.z() > 0 ? nz - 1 - k : k));
   Env U, L;
+  Lines lines;
   for (std::size_t k = 0; k < nz; ++k) {
     const std::size_t j = static_cast<std::size_t>(res.order[k]);
     std::vector<P2> c(nx);
@@ -191,8 +225,8 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam) {
       for (std::size_t i = 0; i + 1 < nx; ++i) {
         P2 a = project(i, j0), b = project(i + 1, j0), cc = project(i + 1, j1), d = project(i, j1);
         for (auto [p, q, s] : {std::array<P2*, 3>{&a, &b, &cc}, std::array<P2*, 3>{&a, &cc, &d}}) {
-          up.push_back(triangle_side(*p, *q, *s, true));
-          lo.push_back(triangle_side(*p, *q, *s, false));
+          up.push_back(triangle_side(*p, *q, *s, true, lines));
+          lo.push_back(triangle_side(*p, *q, *s, false, lines));
         }
       }
       U = merge(U, envelope(std::move(up), true), true);
@@ -201,33 +235,34 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam) {
     for (std::size_t i = 0; i + 1 < nx; ++i) {
       const bool forward = c[i].x < c[i + 1].x;
       const P2 &p = forward ? c[i] : c[i + 1], &q = forward ? c[i + 1] : c[i];
-      Seg s{p.x, p.y, q.x, q.y};
+      const Line* cut = lines.through(p.x, p.y, q.x, q.y);
       // Visible = the segment minus its hidden open intervals, as parameters t from sample i.
       auto t_of = [&](const Rational& x) {
-        Rational t = (x - s.x0) / (s.x1 - s.x0);
+        Rational t = (x - p.x) / (q.x - p.x);
         return forward ? t : Rational(1 - t);
       };
-      Rational at = s.x0;
+      Rational at = p.x;
       auto emit = [&](const Rational& x0, const Rational& x1) {
         if (!(x0 < x1)) return;
         Rational t0 = t_of(x0), t1 = t_of(x1);
         if (t1 < t0) std::swap(t0, t1);
         res.visible.push_back({static_cast<int>(j), static_cast<int>(i), t0, t1});
       };
-      for (const auto& [h0, h1] : (k == 0 ? std::vector<std::pair<Rational, Rational>>{} : hidden_parts(s, U, L))) {
+      for (const auto& [h0, h1] : (k == 0 ? std::vector<std::pair<Rational, Rational>>{} : hidden_parts(*cut, p.x, q.x, U, L))) {
         emit(at, h0);
         at = h1;
       }
-      emit(at, s.x1);
+      emit(at, q.x);
     }
     if (k == 0) {  // the nearest cut is the first geometry: a strip of zero width
-      Env up, lo;
-      for (std::size_t i = 0; i + 1 < nx; ++i) {
+      Env cut;
+      std::vector<std::size_t> idx(nx - 1);
+      for (std::size_t i = 0; i + 1 < nx; ++i) idx[i] = c[0].x < c[1].x ? i : nx - 2 - i;
+      for (std::size_t i : idx) {
         const P2 &p = c[i].x < c[i + 1].x ? c[i] : c[i + 1], &q = c[i].x < c[i + 1].x ? c[i + 1] : c[i];
-        push(up, {p.x, p.y, q.x, q.y});
+        push(cut, p.x, q.x, lines.through(p.x, p.y, q.x, q.y));
       }
-      if (!(c[0].x < c[1].x)) std::reverse(up.begin(), up.end());
-      U = up, L = up;
+      U = cut, L = cut;
     }
     res.horizon_breakpoints = std::max({res.horizon_breakpoints, U.size(), L.size()});
   }
