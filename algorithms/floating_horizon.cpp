@@ -5,6 +5,7 @@
 #include <array>
 #include <deque>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 namespace hlr {
@@ -191,9 +192,30 @@ std::vector<std::pair<Rational, Rational>> hidden_parts(const Line& line, const 
   return out;
 }
 
+// A sample's verdict against the horizons at its abscissa (at a breakpoint the horizon's value
+// is the largest, or smallest, of the pieces there).
+std::string verdict(const P2& p, const Env& U, const Env& L) {
+  std::optional<Rational> u, l;
+  for (const Seg& s : U)
+    if (s.x0 <= p.x && p.x <= s.x1) {
+      Rational v = s.at(p.x);
+      if (!u || v > *u) u = v;
+    }
+  for (const Seg& s : L)
+    if (s.x0 <= p.x && p.x <= s.x1) {
+      Rational v = s.at(p.x);
+      if (!l || v < *l) l = v;
+    }
+  if (!u || !l) return "free";  // nothing in front at this abscissa: visible
+  if (p.y > *u) return "above";
+  if (p.y < *l) return "below";
+  if (p.y == *u || p.y == *l) return "on";
+  return "between";
+}
+
 }  // namespace
 
-HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam) {
+HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam, std::vector<HorizonStep>* trace) {
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
   if (nx < 2 || nz < 1 || g.ys.size() != nx * nz) throw std::invalid_argument("the grid needs at least 2 x samples and one cut");
   for (std::size_t i = 1; i < nx; ++i)
@@ -232,6 +254,18 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam) {
       U = merge(U, envelope(std::move(up), true), true);
       L = merge(L, envelope(std::move(lo), false), false);
     }
+    HorizonStep* step = nullptr;
+    if (trace) {
+      trace->push_back(HorizonStep{});
+      step = &trace->back();
+      step->curve = static_cast<int>(j);
+      for (const P2& p : c) step->points.push_back({p.x, p.y});
+      if (k > 0) {
+        for (const Seg& p : U) step->upper.push_back({p.x0, p.x1, {p.line->s, p.line->c}});
+        for (const Seg& p : L) step->lower.push_back({p.x0, p.x1, {p.line->s, p.line->c}});
+      }
+      for (const P2& p : c) step->verdicts.push_back(k == 0 ? "first" : verdict(p, U, L));
+    }
     for (std::size_t i = 0; i + 1 < nx; ++i) {
       const bool forward = c[i].x < c[i + 1].x;
       const P2 &p = forward ? c[i] : c[i + 1], &q = forward ? c[i + 1] : c[i];
@@ -251,6 +285,20 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam) {
       for (const auto& [h0, h1] : (k == 0 ? std::vector<std::pair<Rational, Rational>>{} : hidden_parts(*cut, p.x, q.x, U, L))) {
         emit(at, h0);
         at = h1;
+        if (step)  // the ends of a hidden run inside the segment are crossings with a horizon
+          for (const Rational* x : {&h0, &h1}) {
+            if (*x == p.x || *x == q.x) continue;
+            Rational y = cut->at(*x);
+            for (bool up : {true, false}) {
+              const Env& e = up ? U : L;
+              for (const Seg& h : e)
+                if (h.x0 <= *x && *x <= h.x1 && h.line->at(*x) == y && !same_line(h.line, cut)) {
+                  step->crossings.push_back({static_cast<int>(i), *x, y, {cut->s, cut->c}, {h.line->s, h.line->c}, up});
+                  goto found;
+                }
+            }
+          found:;
+          }
       }
       emit(at, q.x);
     }

@@ -10,7 +10,9 @@
 // triangulated surface (a test checks it).
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "algorithms/camera.hpp"
@@ -38,11 +40,41 @@ struct HorizonResult {
   std::size_t horizon_breakpoints = 0;  // largest size of the upper or lower horizon
 };
 
+/// A line of the picture y = s·x + c (exact), as the exam page writes horizon pieces.
+struct HorizonLine {
+  Rational s, c;
+};
+
+/// A piece of a horizon: its line over [x0, x1].
+struct HorizonPieceLine {
+  Rational x0, x1;
+  HorizonLine line;
+};
+
+/// One step of the method, for the exam page: a cut, the horizons it is tested against (after
+/// the strip in front of it was added), each sample's verdict, and each crossing.
+struct HorizonStep {
+  int curve = 0;
+  std::vector<std::array<Rational, 2>> points;  // the cut's samples in the picture (X, Y)
+  std::vector<HorizonPieceLine> upper, lower;   // empty for the first cut
+  /// Per sample: "first" (the nearest cut), "free" (nothing in front there), "above", "below",
+  /// "on" (touches a horizon: visible),
+  /// "between" (hidden).
+  std::vector<std::string> verdicts;
+  struct Crossing {
+    int segment = 0;
+    Rational x, y;       // the crossing point in the picture
+    HorizonLine cut, horizon;  // x = (c_h − c_s) / (s_s − s_h)
+    bool upper = true;   // with the upper horizon (else the lower)
+  };
+  std::vector<Crossing> crossings;
+};
+
 /// Runs the exact floating horizon for an orthographic camera whose view direction has a z
 /// component (the cutting planes are not seen edge-on) and whose up vector makes the cuts
 /// x-monotone in the picture (up has no x or z component... any up with the picture's x axis
 /// not orthogonal to the x axis). Throws std::invalid_argument otherwise or for a bad grid.
-HorizonResult floating_horizon(const HeightGrid& grid, const Camera& camera);
+HorizonResult floating_horizon(const HeightGrid& grid, const Camera& camera, std::vector<HorizonStep>* trace = nullptr);
 
 /// The second family of cuts, x = xs[i] (a grid with both families; the notes' side edges are
 /// its first and last cut): the same method on the grid with x and z exchanged (a reflection of

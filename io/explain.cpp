@@ -26,6 +26,7 @@ SolutionJson explain(const Problem& pr) {
     case Problem::Type::Convexity: body = convexity_solution(pr); break;
     case Problem::Type::Decompose: body = decompose_solution(pr); break;
     case Problem::Type::Transform: body = transform_solution(pr); break;
+    case Problem::Type::Horizon: body = horizon_solution(pr); break;
   }
   for (auto it = body.begin(); it != body.end(); ++it) out[it.key()] = it.value();
   return out;

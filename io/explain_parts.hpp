@@ -4,6 +4,7 @@
 //   explain_roberts.cpp   Roberts (sections 26-28, 40): body matrices, facing, light, edges
 //   explain_clipping.cpp  Cyrus-Beck (21) and midpoint subdivision (22)
 //   explain_bodies.cpp    convexity and decomposition (23), transforms (20)
+//   explain_horizon.cpp   the floating horizon (24)
 //   explain_words.cpp     English and Russian words of the course
 //   explain_render.cpp    Markdown and HTML
 #pragma once
@@ -89,6 +90,7 @@ J midpoint_solution(const Problem& pr);
 J convexity_solution(const Problem& pr);
 J decompose_solution(const Problem& pr);
 J transform_solution(const Problem& pr);
+J horizon_solution(const Problem& pr);
 
 /// The word for `id` in `lang` (the id itself when there is none).
 std::string word(const std::string& id, Lang lang);

@@ -24,10 +24,16 @@ struct Entry {
 const std::vector<Entry>& catalogue() {
   static const std::vector<Entry> c = {
       // ---- the problem reader (io/problem.cpp)
-      {"a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform)",
-       "в файле задачи нужна строка 'problem: ТИП' (roberts, cyrus-beck, midpoint, convexity, decompose, transform)"},
-      {"unknown problem type '@x' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform)",
-       "неизвестный тип задачи '@1' (известны: roberts, cyrus-beck, midpoint, convexity, decompose, transform)"},
+      {"a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon)",
+       "в файле задачи нужна строка 'problem: ТИП' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon)"},
+      {"unknown problem type '@x' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon)",
+       "неизвестный тип задачи '@1' (известны: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon)"},
+      {"a horizon problem takes heights, not bodies", "задача horizon принимает высоты (heights), а не тела (bodies)"},
+      {"a horizon problem needs 'heights': one list of heights per cut z = const",
+       "задаче horizon нужны высоты 'heights': по списку высот для каждого сечения z = const"},
+      {"each row of heights needs at least 2 numbers", "в каждой строке высот нужно не меньше 2 чисел"},
+      {"every row of heights must have @x numbers, as the first", "в каждой строке высот должно быть @1 чисел, как в первой"},
+      {"@x: from must be below to", "@1: начало должно быть меньше конца"},
       {"title must be text", "title: ожидается текст"},
       {"clipper must be one of {box: [6 numbers]}, {frustum: [7 numbers]}, {mesh: PATH}",
        "отсекатель clipper задаётся одним из: {box: [6 чисел]}, {frustum: [7 чисел]}, {mesh: ПУТЬ}"},
@@ -241,6 +247,9 @@ const std::map<std::string, std::string>& what_words() {
       {"a segment [x1, y1, z1, x2, y2, z2]", "отрезок [x1, y1, z1, x2, y2, z2]"},
       {"box [xmin, xmax, ymin, ymax, zmin, zmax]", "параллелепипед box [xmin, xmax, ymin, ymax, zmin, zmax]"},
       {"frustum [xl, xr, yb, yt, znear, zfar, zcp]", "пирамида видимости frustum [xl, xr, yb, yt, znear, zfar, zcp]"},
+      {"height", "высота"},
+      {"x [from, to]", "x [начало, конец]"},
+      {"z [from, to]", "z [начало, конец]"},
   };
   return w;
 }

@@ -23,7 +23,7 @@ std::vector<Rational> numbers(const P& c, const YAML::Node& n, std::size_t count
 }
 
 Problem::Type parse_type(const P& c, const YAML::Node& n) {
-  if (!n || !n.IsScalar()) c.fail(n, "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform)");
+  if (!n || !n.IsScalar()) c.fail(n, "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon)");
   const std::string t = n.Scalar();
   if (t == "roberts") return Problem::Type::Roberts;
   if (t == "cyrus-beck") return Problem::Type::CyrusBeck;
@@ -31,7 +31,8 @@ Problem::Type parse_type(const P& c, const YAML::Node& n) {
   if (t == "convexity") return Problem::Type::Convexity;
   if (t == "decompose") return Problem::Type::Decompose;
   if (t == "transform") return Problem::Type::Transform;
-  c.fail(n, "unknown problem type '" + t + "' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform)");
+  if (t == "horizon") return Problem::Type::Horizon;
+  c.fail(n, "unknown problem type '" + t + "' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon)");
 }
 
 std::string list_text(const std::vector<Rational>& v) {
@@ -80,9 +81,10 @@ const char* to_string(Problem::Type t) {
     case Problem::Type::Midpoint: return "midpoint";
     case Problem::Type::Convexity: return "convexity";
     case Problem::Type::Decompose: return "decompose";
-    case Problem::Type::Transform: break;
+    case Problem::Type::Transform: return "transform";
+    case Problem::Type::Horizon: break;
   }
-  return "transform";
+  return "horizon";
 }
 
 Problem load_problem(const std::string& path) { return load_problem_text(read_file_bytes(path), path); }
@@ -100,11 +102,13 @@ Problem load_problem_text(const std::string& text, const std::string& path) {
   pr.file = path;
   pr.type = parse_type(c, root["problem"]);
   const bool clipping = pr.type == Problem::Type::CyrusBeck || pr.type == Problem::Type::Midpoint;
+  const bool horizon = pr.type == Problem::Type::Horizon;
   std::vector<std::string> extra = {"problem", "title"};
   if (pr.type == Problem::Type::Roberts) extra.push_back("edges");
   if (clipping) extra.insert(extra.end(), {"clipper", "segments"});
   if (pr.type == Problem::Type::Midpoint) extra.push_back("eps");
-  pr.scene = load_scene_text(text, path, extra, !clipping);
+  if (horizon) extra.insert(extra.end(), {"heights", "x", "z"});
+  pr.scene = load_scene_text(text, path, extra, !clipping && !horizon);
   if (root["title"]) {
     if (!root["title"].IsScalar()) c.fail(root["title"], "title must be text");
     pr.title = root["title"].Scalar();
@@ -137,6 +141,34 @@ Problem load_problem_text(const std::string& text, const std::string& path) {
       auto v = numbers(c, x, 6, "a segment [x1, y1, z1, x2, y2, z2]");
       pr.segments.push_back({Point3(v[0], v[1], v[2]), Point3(v[3], v[4], v[5])});
     }
+  }
+  if (horizon) {
+    if (root["bodies"]) c.fail(root["bodies"], "a horizon problem takes heights, not bodies");
+    const YAML::Node h = root["heights"];
+    if (!h || !h.IsSequence() || h.size() == 0) c.fail(h ? h : root, "a horizon problem needs 'heights': one list of heights per cut z = const");
+    std::size_t nx = 0;
+    for (const YAML::Node& row : h) {
+      if (!row.IsSequence() || row.size() < 2) c.fail(row, "each row of heights needs at least 2 numbers");
+      if (nx == 0) nx = row.size();
+      if (row.size() != nx) c.fail(row, "every row of heights must have " + std::to_string(nx) + " numbers, as the first");
+      for (const YAML::Node& v : row) pr.grid.ys.push_back(c.number(v, "height"));
+    }
+    const std::size_t nz = h.size();
+    auto axis = [&](const char* key, std::size_t n, std::vector<Rational>& out) {
+      Rational from = 0, to = static_cast<long>(n) - 1;
+      if (root[key]) {
+        auto v = numbers(c, root[key], 2, std::string(key) + " [from, to]");
+        from = v[0], to = v[1];
+        if (!(from < to)) c.fail(root[key], std::string(key) + ": from must be below to");
+      }
+      for (std::size_t k = 0; k < n; ++k) {
+        Rational t(static_cast<long>(k), static_cast<long>(std::max<std::size_t>(n - 1, 1)));
+        t.canonicalize();
+        out.push_back(from + (to - from) * t);
+      }
+    };
+    axis("x", nx, pr.grid.xs);
+    axis("z", nz, pr.grid.zs);
   }
   if (root["eps"]) {
     pr.eps = c.number(root["eps"], "eps");

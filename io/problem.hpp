@@ -1,7 +1,7 @@
 // Problem files for `hlr explain` (issue 6): a scene file (docs/scene-format.md) with a
 // `problem` type and the data of that type. Types: roberts (bodies, view, optional light and
 // edges to analyse), cyrus-beck (a convex clipper and segments), midpoint (a box or frustum,
-// segments, eps), convexity, decompose, transform (one body). Every number is exact; unknown
+// segments, eps), convexity, decompose, transform (one body), horizon (heights on a grid). Every number is exact; unknown
 // keys and wrong types are errors with file and line. Format: docs/problem-format.md.
 #pragma once
 
@@ -10,13 +10,14 @@
 #include <vector>
 
 #include "algorithms/cyrus_beck.hpp"
+#include "algorithms/floating_horizon.hpp"
 #include "algorithms/midpoint_clip.hpp"
 #include "io/scene.hpp"
 
 namespace hlr {
 
 struct Problem {
-  enum class Type { Roberts, CyrusBeck, Midpoint, Convexity, Decompose, Transform };
+  enum class Type { Roberts, CyrusBeck, Midpoint, Convexity, Decompose, Transform, Horizon };
   Type type = Type::Roberts;
   std::string file;
   std::string title;  // optional `title`
@@ -29,6 +30,8 @@ struct Problem {
   std::string clipper_text;      // e.g. "box [0, 2, 0, 2, 0, 2]"
   std::vector<std::pair<Point3, Point3>> segments;
   Rational eps = rational(1, 100);
+  // horizon: the heights (row j: the cut z = zs[j]) on x from..to and z from..to
+  HeightGrid grid;
   /// The page numbers faces, vertices and columns from this (0, or 1 as the notes do); the
   /// problem file's own indices and the JSON `result` stay 0-based.
   int index_base = 0;

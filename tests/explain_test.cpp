@@ -54,7 +54,7 @@ TEST(Explain, AtLeastEightProblemsCoveringEveryType) {
   std::set<std::string> types;
   for (const auto& p : problems()) types.insert(to_string(load_problem(p).type));
   EXPECT_GE(problems().size(), 8u);
-  EXPECT_EQ(types.size(), 6u);
+  EXPECT_EQ(types.size(), 7u);
 }
 
 TEST(Explain, GoldenMarkdownAndJson) {
@@ -436,3 +436,75 @@ TEST(Explain, NumberingFromOne) {
   // Back to 0 for the next page.
   EXPECT_EQ(table(explain(load_problem(kData + "/problems/roberts_cube.yaml")), "input", "faces")[0][0], "0");
 }
+
+namespace hlr {
+namespace {
+
+// The horizon page (issue 18): every crossing printed is the meeting of the two lines printed
+// beside it, each point's picture coordinates follow from the axes printed, and the visible
+// runs are those of the drawing (render_horizon) of the same grid.
+TEST(Explain, HorizonPageValuesFollowFromEachOther) {
+  Problem pr = load_problem(std::string(HLR_DATA_DIR) + "/problems/horizon_small.yaml");
+  SolutionJson s = explain(pr);
+  auto line = [](const std::string& text, Rational& slope, Rational& c) {  // "Y = a·X − b"
+    std::string t = text.substr(4);
+    auto take = [](std::string v) {
+      std::string out;
+      for (std::size_t i = 0; i < v.size();) {
+        if (v.compare(i, 3, "−") == 0) out += '-', i += 3;
+        else if (v[i] != ' ') out += v[i++];
+        else ++i;
+      }
+      return out;
+    };
+    t = take(t);
+    auto x = t.find("·X");
+    if (x == std::string::npos && (x = t.find('X')) == std::string::npos) {
+      slope = 0;
+      c = parse_rational(t);
+      return;
+    }
+    std::string a = t.substr(0, x);
+    slope = a.empty() ? Rational(1) : a == "-" ? Rational(-1) : parse_rational(a);
+    std::string rest = t.substr(x + (t.compare(x, 3, "·X") == 0 ? 3 : 1));
+    c = rest.empty() ? Rational(0) : parse_rational(rest[0] == '+' ? rest.substr(1) : rest);
+  };
+  int crossings = 0, points = 0;
+  for (const auto& sec : s["sections"]) {
+    if (sec["title"] != "horizon_cut") continue;
+    for (const auto& t : sec["tables"]) {
+      if (t["caption"] == "crossings")
+        for (const auto& r : t["rows"]) {
+          Rational s1, c1, s2, c2;
+          line(r[2], s1, c1);
+          line(r[3], s2, c2);
+          std::string xs = r[4];
+          Rational x = parse_rational(xs.substr(xs.rfind("= ") + 2)), y = parse_rational(std::string(r[5]));
+          EXPECT_EQ(x, (c2 - c1) / (s1 - s2)) << xs;
+          EXPECT_EQ(y, s1 * x + c1);
+          EXPECT_EQ(y, s2 * x + c2);
+          ++crossings;
+        }
+      if (t["caption"] == "cut_points") {
+        const int j = std::stoi(sec["subject"].get<std::string>());
+        for (const auto& r : t["rows"]) {
+          const int i = std::stoi(r[0].get<std::string>());
+          Rational X = 4 * pr.grid.xs[i] - pr.grid.zs[j], Y = -2 * pr.grid.xs[i] + 17 * pr.grid.y(i, j) - 8 * pr.grid.zs[j];
+          EXPECT_EQ(parse_rational(std::string(r[2])), X);
+          EXPECT_EQ(parse_rational(std::string(r[3])), Y);
+          ++points;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(points, 15);
+  EXPECT_GE(crossings, 3);
+  // The far cut is hidden behind the peak between its crossings: t in (1/6, 5/6) of segment 1-2.
+  bool found = false;
+  for (const auto& v : s["result"]["visible"])
+    if (v["cut"] == 0 && v["segment"] == 1 && v["t"][1] == "1/6") found = true;
+  EXPECT_TRUE(found);
+}
+
+}  // namespace
+}  // namespace hlr

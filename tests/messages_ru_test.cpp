@@ -26,7 +26,7 @@ const std::string kSource = std::string(HLR_DATA_DIR) + "/..";
 // the student types), formula symbols, and format names.
 bool allowed_latin(const std::string& w) {
   static const std::set<std::string> keys = {
-      "problem", "roberts", "cyrus", "beck", "midpoint", "convexity", "decompose", "transform", "bodies", "vertices", "faces",
+      "problem", "roberts", "cyrus", "beck", "midpoint", "convexity", "decompose", "transform", "horizon", "heights", "bodies", "vertices", "faces",
       "box", "frustum", "mesh", "clipper", "segments", "edges", "eps", "title", "view", "direction", "eye", "target", "up",
       "light", "name", "translate", "scale", "rotate", "reflect", "matrix", "factors", "axis", "degrees", "cos", "sin",
       "tan_half", "centre", "center", "min", "max", "xmin", "xmax", "ymin", "ymax", "zmin", "zmax", "xl", "xr", "yb", "yt",
