@@ -3,6 +3,7 @@
 // along small integer directions, or perspective from an eye anywhere outside the bodies,
 // possibly on a face plane or on a surface); both hidden-line routes run and must agree on
 // every piece of every edge. A disagreement aborts (a finding). Exact throughout.
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -10,6 +11,7 @@
 #include <tuple>
 
 #include "algorithms/face_occluders.hpp"
+#include "algorithms/plot.hpp"
 #include "algorithms/roberts.hpp"
 
 using namespace hlr;
@@ -99,6 +101,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (std::size_t i = 0; i < s.pieces.size(); ++i)
       if (!(g.pieces[i].t0 == s.pieces[i].t0) || !(g.pieces[i].t1 == s.pieces[i].t1) || g.pieces[i].visible != s.pieces[i].visible)
         finding(s, &g);
+  }
+  // The plotting 2D stage (issue 13) on the same drawing: the fewest strokes, nothing lost,
+  // pen order a permutation that never lengthens the greedy travel.
+  PlotOptions po;
+  po.hidden = true;
+  Plot plot = make_plot(f, cam, po);
+  PlotOptions raw = po;
+  raw.dedup = raw.chain = false;
+  Plot q = make_plot(f, cam, raw);
+  const double tol = 1e-9 * (q.stats.pen_down_length + 1);
+  if (plot.stats.path_count != plot.stats.min_path_count ||
+      std::fabs(q.stats.pen_down_length - plot.stats.pen_down_length - plot.stats.duplicate_length) > tol) {
+    std::fprintf(stderr, "fuzz_render: 2D stage: paths %zu (minimum %zu), raw length %.17g, clean %.17g + duplicates %.17g\n",
+                 plot.stats.path_count, plot.stats.min_path_count, q.stats.pen_down_length, plot.stats.pen_down_length,
+                 plot.stats.duplicate_length);
+    std::abort();
+  }
+  order_plot(plot, {plot.bounds[0], plot.bounds[3]});
+  if (plot.stats.pen_up_length > plot.stats.pen_up_greedy * (1 + 1e-12) + 1e-12) {
+    std::fprintf(stderr, "fuzz_render: 2-opt lengthened the pen-up travel\n");
+    std::abort();
   }
   return 0;
 }
