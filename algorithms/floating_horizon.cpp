@@ -1,6 +1,8 @@
 // The exact floating horizon (see floating_horizon.hpp; course notes section 24).
 #include "algorithms/floating_horizon.hpp"
 
+#include "algorithms/parallel.hpp"
+
 #include <algorithm>
 #include <array>
 #include <deque>
@@ -237,22 +239,35 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam, std::vect
   for (std::size_t k = 0; k < nz; ++k) res.order.push_back(static_cast<int>(v.z() > 0 ? nz - 1 - k : k));
   Env U, L;
   Lines lines;
+  // The strips' own envelopes do not depend on each other: all of them first, on every core
+  // (each strip with its own lines), then the sweep in order.
+  std::vector<Lines> strip_lines(nz);
+  std::vector<Env> strip_up(nz), strip_lo(nz);
+  ParallelLoop loop;
+  loop.for_each(nz > 0 ? nz - 1 : 0, 1, [&](std::size_t km1) {
+    const std::size_t k = km1 + 1;
+    const std::size_t j = static_cast<std::size_t>(res.order[k]), jp = static_cast<std::size_t>(res.order[k - 1]);
+    const std::size_t j0 = std::min(j, jp), j1 = std::max(j, jp);
+    std::vector<Env> up, lo;
+    for (std::size_t i = 0; i + 1 < nx; ++i) {
+      P2 a = project(i, j0), b = project(i + 1, j0), cc = project(i + 1, j1), d = project(i, j1);
+      for (auto [p, q, s] : {std::array<P2*, 3>{&a, &b, &cc}, std::array<P2*, 3>{&a, &cc, &d}}) {
+        up.push_back(triangle_side(*p, *q, *s, true, strip_lines[k]));
+        lo.push_back(triangle_side(*p, *q, *s, false, strip_lines[k]));
+      }
+    }
+    strip_up[k] = envelope(std::move(up), true);
+    strip_lo[k] = envelope(std::move(lo), false);
+  });
   for (std::size_t k = 0; k < nz; ++k) {
     const std::size_t j = static_cast<std::size_t>(res.order[k]);
     std::vector<P2> c(nx);
     for (std::size_t i = 0; i < nx; ++i) c[i] = project(i, j);
     if (k > 0) {  // the strip between this cut and the previous one, in front of this cut
-      const std::size_t jp = static_cast<std::size_t>(res.order[k - 1]), j0 = std::min(j, jp), j1 = std::max(j, jp);
-      std::vector<Env> up, lo;
-      for (std::size_t i = 0; i + 1 < nx; ++i) {
-        P2 a = project(i, j0), b = project(i + 1, j0), cc = project(i + 1, j1), d = project(i, j1);
-        for (auto [p, q, s] : {std::array<P2*, 3>{&a, &b, &cc}, std::array<P2*, 3>{&a, &cc, &d}}) {
-          up.push_back(triangle_side(*p, *q, *s, true, lines));
-          lo.push_back(triangle_side(*p, *q, *s, false, lines));
-        }
-      }
-      U = merge(U, envelope(std::move(up), true), true);
-      L = merge(L, envelope(std::move(lo), false), false);
+      U = merge(U, strip_up[k], true);
+      L = merge(L, strip_lo[k], false);
+      Env().swap(strip_up[k]);
+      Env().swap(strip_lo[k]);
     }
     HorizonStep* step = nullptr;
     if (trace) {
@@ -313,6 +328,44 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam, std::vect
       U = cut, L = cut;
     }
     res.horizon_breakpoints = std::max({res.horizon_breakpoints, U.size(), L.size()});
+  }
+  // The side edges (see HorizonResult::side).
+  if (nz >= 2) {
+    const Rational& vx = v.x();
+    const std::size_t far = vx > 0 ? 0 : nx - 1, near = vx > 0 ? nx - 1 : 0;
+    for (std::size_t j = 0; j + 1 < nz; ++j) {
+      if (vx == 0 || nx == 1) {
+        res.side.push_back({0, static_cast<int>(j), Rational(0), Rational(1)});
+        res.side.push_back({static_cast<int>(nx - 1), static_cast<int>(j), Rational(0), Rational(1)});
+        continue;
+      }
+      res.side.push_back({static_cast<int>(near), static_cast<int>(j), Rational(0), Rational(1)});
+      P2 a = project(far, j), b = project(far, j + 1);
+      const bool forward = a.x < b.x;
+      const P2 &p = forward ? a : b, &q = forward ? b : a;
+      const Line* edge = lines.through(p.x, p.y, q.x, q.y);
+      auto t_of = [&](const Rational& x) {
+        Rational t = (x - p.x) / (q.x - p.x);
+        return forward ? t : Rational(1 - t);
+      };
+      Rational at = p.x;
+      auto emit = [&](const Rational& x0, const Rational& x1) {
+        if (!(x0 < x1)) return;
+        Rational t0 = t_of(x0), t1 = t_of(x1);
+        if (t1 < t0) std::swap(t0, t1);
+        res.side.push_back({static_cast<int>(far), static_cast<int>(j), t0, t1});
+      };
+      for (const auto& [h0, h1] : hidden_parts(*edge, p.x, q.x, U, L)) {
+        emit(at, h0);
+        at = h1;
+      }
+      emit(at, q.x);
+    }
+    std::stable_sort(res.side.begin(), res.side.end(), [](const HorizonPiece& a, const HorizonPiece& b) {
+      if (a.curve != b.curve) return a.curve < b.curve;
+      if (a.segment != b.segment) return a.segment < b.segment;
+      return a.t0 < b.t0;
+    });
   }
   // Curves nearest first, then segments, then t (a reversed segment emitted its runs backwards).
   std::map<int, int> rank;

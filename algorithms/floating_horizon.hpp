@@ -38,6 +38,12 @@ struct HorizonResult {
   std::vector<HorizonPiece> visible;  // by curve in drawing order (nearest first), then segment
   std::vector<int> order;             // the curves, nearest to the viewer first
   std::size_t horizon_breakpoints = 0;  // largest size of the upper or lower horizon
+  /// The notes' side edges, the edges (i, j)-(i, j+1) at i = 0 and i = nx - 1 (`curve` = i,
+  /// `segment` = j). The one on the viewer's side in x has nothing in front: visible whole.
+  /// Everything else of the surface lies on the viewer's side of the other one, so it is
+  /// hidden exactly where it is strictly inside the envelope of the whole surface (the final
+  /// horizons). A view with no x component sees both edge-on: visible whole.
+  std::vector<HorizonPiece> side;
 };
 
 /// A line of the picture y = s·x + c (exact), as the exam page writes horizon pieces.

@@ -11,7 +11,6 @@
 #include <map>
 #include <stdexcept>
 
-#include "algorithms/facing.hpp"
 #include "io/input_error.hpp"
 #include "io/text_reader.hpp"
 
@@ -265,7 +264,8 @@ RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std
   const bool edge_on = x_cuts_edge_on(camera);
   if (edge_on && cuts != "z")
     throw std::invalid_argument("the view has no x component: the x cuts are seen edge-on; give the view an x component (or draw the z cuts)");
-  if (x_family && classic_dx <= 0 && !edge_on && nz >= 2) hx = floating_horizon_x(g, camera);
+  if (x_family && cuts != "z" && classic_dx <= 0 && !edge_on && nz >= 2) hx = floating_horizon_x(g, camera);
+  if (cuts == "z") hx.visible = h.side;  // the side edges, from the z sweep's final horizons
   std::vector<Point3> vs;
   vs.reserve(nx * nz);
   for (std::size_t j = 0; j < nz; ++j)
@@ -286,9 +286,7 @@ RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std
   r.names = {DrawingBody{name, name}};
   r.camera = camera;
   r.drawing.stats.method = Method::Horizon;
-  std::vector<signed char> facing;
-  for (const Plane& p : body.body.planes()) facing.push_back(static_cast<signed char>(facing_sign(p, camera)));
-  r.drawing.facing.push_back(std::move(facing));
+  r.drawing.facing.push_back({});  // the faces' classes are not part of the horizon (their planes cost time)
   // Visible runs by (curve, segment); each cut edge gets them and hidden pieces between.
   std::map<std::pair<int, int>, std::vector<std::pair<Rational, Rational>>> runs;
   for (const HorizonPiece& p : h.visible) runs[{p.curve, p.segment}].push_back({p.t0, p.t1});
@@ -337,7 +335,7 @@ RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std
       if (cuts == "z" && i != 0 && i + 1 != nx) continue;
       for (std::size_t j = 0; j + 1 < nz; ++j) {
         int v0 = static_cast<int>(j * nx + i), v1 = static_cast<int>((j + 1) * nx + i);
-        if (edge_on) {  // the side edges, seen edge-on: visible whole (see x_cuts_edge_on)
+        if (edge_on && cuts != "z") {  // the side edges, seen edge-on: visible whole (see x_cuts_edge_on)
           add_segment(v0, v1, &whole);
           continue;
         }

@@ -160,6 +160,30 @@ TEST(FloatingHorizon, ClassicLosesThePeakTheExactMethodKeeps) {
 
 // With no x component in the view, the side edges (the first and last x cuts) are visible
 // whole, as render_horizon draws them: the renderer agrees.
+// The side edges from the z sweep's final horizons equal the renderer's (and the x sweep's).
+TEST(FloatingHorizon, SideEdgesFromTheFinalHorizons) {
+  for (int n : {5, 8}) {
+    HeightGrid g = grid(n, [](const Rational& x, const Rational& z) -> Rational { return (x * x - z * z) / 2 + Rational(1) / (2 + 8 * x * x); });
+    for (const Vector3& v : {Vector3(1, 2, 3), Vector3(-2, 1, 5), Vector3(3, 1, -2), Vector3(5, 1, 1), Vector3(-1, -1, 3), Vector3(0, 1, 4)}) {
+      std::vector<Key> want;
+      for (const Key& k : by_renderer(g, v, Vector3(0, 1, 0), true))
+        if (std::get<0>(k) == 1000 || std::get<0>(k) == 1000 + n - 1) want.push_back(k);
+      HorizonResult h = floating_horizon(g, make_orthographic(v, Vector3(0, 1, 0)));
+      std::vector<Key> got;
+      for (const HorizonPiece& p : h.side) {
+        Key k{1000 + p.curve, p.segment, p.t0, p.t1};
+        if (!got.empty() && std::get<0>(got.back()) == std::get<0>(k) && std::get<1>(got.back()) == std::get<1>(k) &&
+            std::get<3>(got.back()) == std::get<2>(k))
+          std::get<3>(got.back()) = std::get<3>(k);
+        else
+          got.push_back(k);
+      }
+      std::sort(got.begin(), got.end());
+      EXPECT_EQ(got, want) << "n=" << n << " view " << to_string(v);
+    }
+  }
+}
+
 TEST(FloatingHorizon, SideEdgesSeenEdgeOnAreVisible) {
   HeightGrid g = grid(7, [](const Rational& x, const Rational& z) -> Rational { return Rational(1) / (1 + 8 * (x * x + z * z)); });
   for (const Vector3& v : {Vector3(0, 1, 4), Vector3(0, 3, 1), Vector3(0, -1, 2)}) {
