@@ -215,6 +215,30 @@ std::string verdict(const P2& p, const Env& U, const Env& L) {
   return "between";
 }
 
+// The visible runs of the segment from sample a (t = 0) to sample b (t = 1) of the picture: the
+// segment minus its hidden open intervals (in picture x), as parameter ranges.
+void emit_runs(const P2& a, const P2& b, const std::vector<std::pair<Rational, Rational>>& hidden, int curve, int segment,
+               std::vector<HorizonPiece>& out) {
+  const bool forward = a.x < b.x;
+  const P2 &p = forward ? a : b, &q = forward ? b : a;
+  auto t_of = [&](const Rational& x) {
+    Rational t = (x - p.x) / (q.x - p.x);
+    return forward ? t : Rational(1 - t);
+  };
+  auto emit = [&](const Rational& x0, const Rational& x1) {
+    if (!(x0 < x1)) return;
+    Rational t0 = t_of(x0), t1 = t_of(x1);
+    if (t1 < t0) std::swap(t0, t1);
+    out.push_back({curve, segment, t0, t1});
+  };
+  Rational at = p.x;
+  for (const auto& [h0, h1] : hidden) {
+    emit(at, h0);
+    at = h1;
+  }
+  emit(at, q.x);
+}
+
 }  // namespace
 
 HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam, std::vector<HorizonStep>* trace) {
@@ -285,37 +309,22 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam, std::vect
       const bool forward = c[i].x < c[i + 1].x;
       const P2 &p = forward ? c[i] : c[i + 1], &q = forward ? c[i + 1] : c[i];
       const Line* cut = lines.through(p.x, p.y, q.x, q.y);
-      // Visible = the segment minus its hidden open intervals, as parameters t from sample i.
-      auto t_of = [&](const Rational& x) {
-        Rational t = (x - p.x) / (q.x - p.x);
-        return forward ? t : Rational(1 - t);
-      };
-      Rational at = p.x;
-      auto emit = [&](const Rational& x0, const Rational& x1) {
-        if (!(x0 < x1)) return;
-        Rational t0 = t_of(x0), t1 = t_of(x1);
-        if (t1 < t0) std::swap(t0, t1);
-        res.visible.push_back({static_cast<int>(j), static_cast<int>(i), t0, t1});
-      };
-      for (const auto& [h0, h1] : (k == 0 ? std::vector<std::pair<Rational, Rational>>{} : hidden_parts(*cut, p.x, q.x, U, L))) {
-        emit(at, h0);
-        at = h1;
-        if (step)  // the ends of a hidden run inside the segment are crossings with a horizon
+      std::vector<std::pair<Rational, Rational>> hidden;
+      if (k > 0) hidden = hidden_parts(*cut, p.x, q.x, U, L);
+      emit_runs(c[i], c[i + 1], hidden, static_cast<int>(j), static_cast<int>(i), res.visible);
+      if (step)  // the ends of a hidden run inside the segment are crossings with a horizon
+        for (const auto& [h0, h1] : hidden)
           for (const Rational* x : {&h0, &h1}) {
             if (*x == p.x || *x == q.x) continue;
             Rational y = cut->at(*x);
-            for (bool up : {true, false}) {
-              const Env& e = up ? U : L;
-              for (const Seg& h : e)
-                if (h.x0 <= *x && *x <= h.x1 && h.line->at(*x) == y && !same_line(h.line, cut)) {
+            bool done = false;
+            for (bool up : {true, false})
+              for (const Seg& h : up ? U : L)
+                if (!done && h.x0 <= *x && *x <= h.x1 && h.line->at(*x) == y && !same_line(h.line, cut)) {
                   step->crossings.push_back({static_cast<int>(i), *x, y, {cut->s, cut->c}, {h.line->s, h.line->c}, up});
-                  goto found;
+                  done = true;
                 }
-            }
-          found:;
           }
-      }
-      emit(at, q.x);
     }
     if (k == 0) {  // the nearest cut is the first geometry: a strip of zero width
       Env cut;
@@ -341,25 +350,9 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam, std::vect
       }
       res.side.push_back({static_cast<int>(near), static_cast<int>(j), Rational(0), Rational(1)});
       P2 a = project(far, j), b = project(far, j + 1);
-      const bool forward = a.x < b.x;
-      const P2 &p = forward ? a : b, &q = forward ? b : a;
+      const P2 &p = a.x < b.x ? a : b, &q = a.x < b.x ? b : a;
       const Line* edge = lines.through(p.x, p.y, q.x, q.y);
-      auto t_of = [&](const Rational& x) {
-        Rational t = (x - p.x) / (q.x - p.x);
-        return forward ? t : Rational(1 - t);
-      };
-      Rational at = p.x;
-      auto emit = [&](const Rational& x0, const Rational& x1) {
-        if (!(x0 < x1)) return;
-        Rational t0 = t_of(x0), t1 = t_of(x1);
-        if (t1 < t0) std::swap(t0, t1);
-        res.side.push_back({static_cast<int>(far), static_cast<int>(j), t0, t1});
-      };
-      for (const auto& [h0, h1] : hidden_parts(*edge, p.x, q.x, U, L)) {
-        emit(at, h0);
-        at = h1;
-      }
-      emit(at, q.x);
+      emit_runs(a, b, hidden_parts(*edge, p.x, q.x, U, L), static_cast<int>(far), static_cast<int>(j), res.side);
     }
     std::stable_sort(res.side.begin(), res.side.end(), [](const HorizonPiece& a, const HorizonPiece& b) {
       if (a.curve != b.curve) return a.curve < b.curve;
@@ -367,7 +360,11 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam, std::vect
       return a.t0 < b.t0;
     });
   }
-  // Curves nearest first, then segments, then t (a reversed segment emitted its runs backwards).
+  sort_visible(res);
+  return res;
+}
+
+void sort_visible(HorizonResult& res) {
   std::map<int, int> rank;
   for (std::size_t k = 0; k < res.order.size(); ++k) rank[res.order[k]] = static_cast<int>(k);
   std::stable_sort(res.visible.begin(), res.visible.end(), [&](const HorizonPiece& a, const HorizonPiece& b) {
@@ -375,7 +372,6 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam, std::vect
     if (a.segment != b.segment) return a.segment < b.segment;
     return a.t0 < b.t0;
   });
-  return res;
 }
 
 HorizonResult floating_horizon_x(const HeightGrid& g, const Camera& cam) {

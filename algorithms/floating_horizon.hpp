@@ -82,6 +82,9 @@ struct HorizonStep {
 /// not orthogonal to the x axis). Throws std::invalid_argument otherwise or for a bad grid.
 HorizonResult floating_horizon(const HeightGrid& grid, const Camera& camera, std::vector<HorizonStep>* trace = nullptr);
 
+/// Orders `visible` as floating_horizon() returns it: curves nearest first, then segments, then t.
+void sort_visible(HorizonResult& result);
+
 /// The second family of cuts, x = xs[i] (a grid with both families; the notes' side edges are
 /// its first and last cut): the same method on the grid with x and z exchanged (a reflection of
 /// the scene and the view, which changes no visibility; the cells' diagonals stay the same).

@@ -93,13 +93,7 @@ HorizonResult floating_horizon_classic(const HeightGrid& g, const Camera& cam, d
       }
     }
   }
-  std::map<int, int> rank;
-  for (std::size_t k = 0; k < res.order.size(); ++k) rank[res.order[k]] = static_cast<int>(k);
-  std::stable_sort(res.visible.begin(), res.visible.end(), [&](const HorizonPiece& a, const HorizonPiece& b) {
-    if (a.curve != b.curve) return rank[a.curve] < rank[b.curve];
-    if (a.segment != b.segment) return a.segment < b.segment;
-    return a.t0 < b.t0;
-  });
+  sort_visible(res);
   return res;
 }
 
