@@ -30,14 +30,14 @@ void Engine<P>::collect_edges(int b, LineDrawing& res) {
         if (third_a >= 0 && third_c >= 0 && !opposite_in_projection(voff_[b] + e.u, voff_[b] + e.v, third_a, third_c))
           kind = LineKind::Silhouette;
       }
-      if (kind == LineKind::Edge && opt_.edges == EdgeSelection::Feature && crease(b, a, c)) kind = LineKind::Crease;
+      if (kind == LineKind::Edge && (opt_.edges == EdgeSelection::Feature || opt_.classify_all) && crease(b, a, c)) kind = LineKind::Crease;
     } else if (live.size() == 1) {
       kind = LineKind::Boundary;
     } else {
       kind = LineKind::Crease;  // non-manifold: a feature
     }
     if (opt_.edges == EdgeSelection::Feature && kind == LineKind::Edge) continue;
-    if (opt_.edges == EdgeSelection::All) kind = LineKind::Edge;
+    if (opt_.edges == EdgeSelection::All && !opt_.classify_all) kind = LineKind::Edge;
     Segment s;
     s.body = b;
     s.line = kind;

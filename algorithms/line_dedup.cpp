@@ -2,6 +2,7 @@
 #include "algorithms/line_dedup.hpp"
 
 #include "algorithms/parallel.hpp"
+#include "algorithms/picture_plane.hpp"
 #include "algorithms/union_find.hpp"
 
 #include <algorithm>
@@ -18,38 +19,6 @@ namespace {
 // r = up × v and u = v × r; perspective ((P - E)·r / (P - E)·d, (P - E)·u / (P - E)·d) with
 // d = target - E. An affine (or, in front of the eye, projective) image of the drawing's own
 // coordinates: equal points, collinear points and the order along a line are the same.
-class ExactScreen {
- public:
-  explicit ExactScreen(const Camera& c) : persp_(c.perspective), e_(c.eye) {
-    Vector3 v = c.perspective ? Vector3(c.eye - c.target) : c.direction;
-    r_ = cross(c.up, v);
-    u_ = cross(v, r_);
-    d_ = c.perspective ? Vector3(c.target - c.eye) : v;
-  }
-  std::array<Rational, 2> operator()(const Point3& p) const {
-    if (!persp_) return {dot3(p.x(), p.y(), p.z(), r_), dot3(p.x(), p.y(), p.z(), u_)};
-    Rational qx = p.x() - e_.x(), qy = p.y() - e_.y(), qz = p.z() - e_.z();
-    Rational w = dot3(qx, qy, qz, d_);
-    return {dot3(qx, qy, qz, r_) / w, dot3(qx, qy, qz, u_) / w};
-  }
-
- private:
-  static Rational dot3(const Rational& x, const Rational& y, const Rational& z, const Vector3& a) {
-    return x * a.x() + y * a.y() + z * a.z();
-  }
-  bool persp_;
-  Point3 e_;
-  Vector3 r_, u_, d_;
-};
-
-using Exact2 = std::array<Rational, 2>;
-
-int sign_of(const Rational& q) { return q > 0 ? 1 : q < 0 ? -1 : 0; }
-
-int orient2d(const Exact2& a, const Exact2& b, const Exact2& c) {
-  return sign_of((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
-}
-
 // The clean-up's working state: endpoint 2k is piece k's start (t0), 2k + 1 its end (t1).
 class Dedup {
  public:
@@ -67,6 +36,7 @@ class Dedup {
       if (point_of[root] == UINT32_MAX) {
         point_of[root] = static_cast<std::uint32_t>(out.points.size());
         out.points.push_back(xy(root));
+        out.point_ends.push_back(root);
       }
       return point_of[root];
     };
@@ -108,7 +78,7 @@ class Dedup {
     const PieceRef& ref = d_.sources[l.first_edge];
     const Segment& s = r_.segments[ref.segment];
     const Piece& p = s.pieces[ref.piece];
-    return exact_.emplace(e, screen_(s.at(e & 1 ? p.t1 : p.t0))).first->second;
+    return exact_.emplace(e, screen_.project(s.at(e & 1 ? p.t1 : p.t0))).first->second;
   }
 
   // Doubles of the picture carry errors near 1e-15 of its largest coordinate (a few roundings
@@ -319,7 +289,7 @@ class Dedup {
 
   const Drawing2D& d_;
   const LineDrawing& r_;
-  ExactScreen screen_;
+  PicturePlane screen_;
   UnionFind points_;
   std::unordered_map<std::uint32_t, Exact2> exact_;
   double delta_ = 0;

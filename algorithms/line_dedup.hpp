@@ -29,6 +29,8 @@ struct CleanEdge {
 
 struct CleanDrawing {
   std::vector<std::array<double, 2>> points;  // drawing coordinates of each exact point
+  /// Per point, one piece end that is that point: 2k + 0 (t0) or 2k + 1 (t1) of Drawing2D::lines[k].
+  std::vector<std::uint32_t> point_ends;
   std::vector<CleanEdge> edges;
   std::size_t pieces_in = 0;         // drawn pieces of the 2D stage
   std::size_t zero_length = 0;       // seen end-on: a point in the picture (not drawn)

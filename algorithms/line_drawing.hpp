@@ -42,6 +42,7 @@ struct LineOptions {
   EdgeSelection edges = EdgeSelection::Feature;  // Feature: boundaries, silhouettes, creases
   Rational crease_degrees = 30;                   // Feature: creases over this angle
   bool intersections = true;                      // per-face route: intersection lines (and self)
+  bool classify_all = false;                      // All: still name silhouettes, boundaries, creases
   bool prefilter = true;                          // Roberts: spatial pre-filter of (edge, body) pairs
   unsigned threads = 0;                           // 0: all cores
 };

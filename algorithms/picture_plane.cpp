@@ -1,0 +1,63 @@
+// The picture plane in exact numbers (course notes section 20). See picture_plane.hpp.
+#include "algorithms/picture_plane.hpp"
+
+namespace hlr {
+namespace {
+
+Rational dot3(const Rational& x, const Rational& y, const Rational& z, const Vector3& a) {
+  return x * a.x() + y * a.y() + z * a.z();
+}
+
+}  // namespace
+
+int orient2d(const Exact2& a, const Exact2& b, const Exact2& c) {
+  Rational det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  return sgn(det);
+}
+
+PicturePlane::PicturePlane(const Camera& c) : persp_(c.perspective), e_(c.eye) {
+  Vector3 v = c.perspective ? Vector3(c.eye - c.target) : c.direction;
+  r_ = cross(c.up, v);
+  u_ = cross(v, r_);
+  d_ = c.perspective ? Vector3(c.target - c.eye) : v;
+  rr_ = dot(r_, r_);
+  uu_ = dot(u_, u_);
+  dd_ = dot(d_, d_);
+}
+
+Exact2 PicturePlane::project(const Point3& p) const {
+  if (!persp_) return {dot3(p.x(), p.y(), p.z(), r_), dot3(p.x(), p.y(), p.z(), u_)};
+  Rational qx = p.x() - e_.x(), qy = p.y() - e_.y(), qz = p.z() - e_.z();
+  Rational w = dot3(qx, qy, qz, d_);
+  return {dot3(qx, qy, qz, r_) / w, dot3(qx, qy, qz, u_) / w};
+}
+
+// Orthographic: base(q) = x·r/|r|² + y·u/|u|² projects to q (r, u, v are orthogonal) and the
+// ray is base(q) + s·v. Perspective: dir(q) = x·|d|²/|r|²·r + y·|d|²/|u|²·u + d has
+// dir·r / dir·d = x and dir·u / dir·d = y, and the ray is E + l·dir(q).
+std::array<PictureLinear, 2> PicturePlane::ray_parameter(const Plane& h) const {
+  const Vector3 n = h.normal();
+  Rational nr = dot(n, r_), nu = dot(n, u_), nd = dot(n, d_);
+  if (!persp_) {
+    // n·(base + s v) + d = 0: s = -(d + x n·r/|r|² + y n·u/|u|²) / n·v.
+    return {PictureLinear{-h.d(), -nr / rr_, -nu / uu_}, PictureLinear{nd, 0, 0}};
+  }
+  // n·(E + l dir) + d = 0: l = -(n·E + d) / n·dir(q).
+  Rational ne = h.value(e_);
+  return {PictureLinear{-ne, 0, 0}, PictureLinear{nd, nr * dd_ / rr_, nu * dd_ / uu_}};
+}
+
+Point3 PicturePlane::lift(const Exact2& q, const Plane& h) const {
+  auto [num, den] = ray_parameter(h);
+  Rational s = num.at(q) / den.at(q);
+  if (!persp_) {
+    Rational a = q[0] / rr_, b = q[1] / uu_;
+    return Point3(a * r_.x() + b * u_.x() + s * d_.x(), a * r_.y() + b * u_.y() + s * d_.y(),
+                  a * r_.z() + b * u_.z() + s * d_.z());
+  }
+  Rational a = q[0] * dd_ / rr_, b = q[1] * dd_ / uu_;
+  return Point3(e_.x() + s * (a * r_.x() + b * u_.x() + d_.x()), e_.y() + s * (a * r_.y() + b * u_.y() + d_.y()),
+                e_.z() + s * (a * r_.z() + b * u_.z() + d_.z()));
+}
+
+}  // namespace hlr

@@ -1,0 +1,65 @@
+// Visible surfaces as exact polygons (course notes section 31, after Weiler–Atherton; section 25:
+// an object-space method whose result is exact). The visible lines of the exact line drawing
+// (every edge and every intersection line) cut the picture into cells; inside a cell the face
+// seen does not change, since it can only change across a visible edge or intersection line.
+// The cells are an exact planar arrangement (planar_arrangement.hpp); the face seen in each is
+// decided by exact ray casting at a point just beside one of its edges (a symbolic offset: no
+// epsilon); cells of the same face are merged and lifted into the face's plane. The result is,
+// for every face, the part of it that is seen, as polygons with holes with exact rational
+// vertices; pieces of different faces do not overlap and together cover the projection.
+#pragma once
+
+#include <vector>
+
+#include "algorithms/line_drawing.hpp"
+#include "algorithms/planar_arrangement.hpp"
+#include "kernel/polyhedron.hpp"
+
+namespace hlr {
+
+struct SurfaceOptions {
+  unsigned threads = 0;  // 0: all cores
+  /// Label every half-edge, not only one per cycle, and count disagreements (tests).
+  bool check_cycles = false;
+};
+
+/// One visible piece of a face: exact 3D vertices in the face's plane and the same points in
+/// the picture (picture_plane.hpp), outer boundary counter-clockwise in the picture, holes
+/// clockwise; `area2` is twice its exact area in picture units.
+struct VisiblePolygon {
+  std::vector<Point3> outer;
+  std::vector<std::vector<Point3>> holes;
+  std::vector<Exact2> outer_2d;
+  std::vector<std::vector<Exact2>> holes_2d;
+  Rational area2;
+};
+
+struct VisibleFace {
+  int body = -1, face = -1;
+  bool front = true;  // the side the face's normal points to is toward the viewer
+  std::vector<VisiblePolygon> polygons;
+};
+
+struct SurfaceStats {
+  std::size_t segments = 0;     // visible pieces after the 2D clean-up
+  std::size_t edges = 0;        // arrangement edges
+  std::size_t cycles = 0;       // arrangement cycles (each labelled once)
+  std::size_t crossings = 0, splits = 0, exact_tests = 0;
+  std::size_t triangles = 0;    // scene triangles that can be seen (not edge-on)
+  std::size_t polygons = 0;     // visible polygons out
+  std::size_t label_mismatches = 0;  // check_cycles: half-edges whose label differs from their cycle's
+  double seconds = 0;
+};
+
+struct VisibleSurfaces {
+  std::vector<VisibleFace> faces;  // faces with a visible part, in order of body and face
+  SurfaceStats stats;
+};
+
+/// The visible part of every face. `lines` must be the drawing of `bodies` from `camera` with
+/// every edge (EdgeSelection::All) and intersection lines. Perspective: every vertex must lie in
+/// front of the eye and no drawn piece may be clipped by the near plane (std::invalid_argument).
+VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineDrawing& lines,
+                                 const SurfaceOptions& options = {});
+
+}  // namespace hlr
