@@ -297,20 +297,20 @@ PlanarArrangement build_arrangement(std::vector<Exact2> points, const std::vecto
 
 namespace {
 
-Rational area2_of(const std::vector<Exact2>& p, const std::vector<std::uint32_t>& ring) {
+Rational area2_of(const PlanarArrangement& arr, const std::vector<std::uint32_t>& ring) {
   Rational s = 0;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const Exact2 &a = p[ring[i]], &b = p[ring[(i + 1) % ring.size()]];
+  for (std::uint32_t h : ring) {
+    const Exact2 &a = arr.points[arr.origin[h]], &b = arr.points[arr.head(h)];
     s += a[0] * b[1] - a[1] * b[0];
   }
   return s;
 }
 
 // Is m strictly inside the ring (m is on none of its edges)? Crossing number, exact.
-bool inside_ring(const std::vector<Exact2>& p, const std::vector<std::uint32_t>& ring, const Exact2& m) {
+bool inside_ring(const PlanarArrangement& arr, const std::vector<std::uint32_t>& ring, const Exact2& m) {
   bool in = false;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const Exact2 &a = p[ring[i]], &b = p[ring[(i + 1) % ring.size()]];
+  for (std::uint32_t h : ring) {
+    const Exact2 &a = arr.points[arr.origin[h]], &b = arr.points[arr.head(h)];
     bool ua = a[1] > m[1], ub = b[1] > m[1];
     if (ua == ub) continue;
     if ((orient2d(a, b, m) > 0) == ub) in = !in;
@@ -345,16 +345,15 @@ std::vector<LabelledRegion> merge_regions(const PlanarArrangement& a, const std:
     Ring r{label(h), {}, 0, h};
     for (std::uint32_t g = h; !seen[g]; g = next_kept(g)) {
       seen[g] = 1;
-      r.pts.push_back(a.origin[g]);
+      r.pts.push_back(g);
     }
-    r.area2 = area2_of(a.points, r.pts);
+    r.area2 = area2_of(a, r.pts);
     if (r.area2 > 0)
       outers.push_back(std::move(r));
     else if (r.area2 < 0)
       holes.push_back(std::move(r));
   }
   std::vector<LabelledRegion> out(outers.size());
-  std::vector<std::pair<std::pair<int, std::uint32_t>, std::size_t>> order;
   std::multimap<int, std::size_t> by_label;
   for (std::size_t i = 0; i < outers.size(); ++i) {
     out[i].label = outers[i].label;
@@ -370,7 +369,7 @@ std::vector<LabelledRegion> merge_regions(const PlanarArrangement& a, const std:
     auto [lo, hi] = by_label.equal_range(hole.label);
     for (auto it = lo; it != hi; ++it) {
       const Ring& o = outers[it->second];
-      if ((best == SIZE_MAX || o.area2 < outers[best].area2) && inside_ring(a.points, o.pts, m)) best = it->second;
+      if ((best == SIZE_MAX || o.area2 < outers[best].area2) && inside_ring(a, o.pts, m)) best = it->second;
     }
     if (best == SIZE_MAX) throw std::logic_error("merge_regions: a hole outside every region of its label");
     out[best].holes.push_back(std::move(hole.pts));
@@ -379,7 +378,8 @@ std::vector<LabelledRegion> merge_regions(const PlanarArrangement& a, const std:
   std::vector<std::size_t> idx(out.size());
   std::iota(idx.begin(), idx.end(), 0);
   std::sort(idx.begin(), idx.end(), [&](std::size_t x, std::size_t y) {
-    return out[x].label < out[y].label || (out[x].label == out[y].label && out[x].outer.front() < out[y].outer.front());
+    return out[x].label < out[y].label ||
+           (out[x].label == out[y].label && a.origin[out[x].outer.front()] < a.origin[out[y].outer.front()]);
   });
   std::vector<LabelledRegion> sorted;
   sorted.reserve(out.size());

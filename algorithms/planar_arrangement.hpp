@@ -45,7 +45,8 @@ PlanarArrangement build_arrangement(std::vector<Exact2> points, const std::vecto
                                     const ArrangementOptions& options = {});
 
 /// A region of equal label: its outer boundary counter-clockwise and its holes clockwise, as
-/// point indices of the arrangement; `area2` is twice its exact area (outer minus holes).
+/// half-edges of the arrangement (the region on their left; their origins are the corners);
+/// `area2` is twice its exact area (outer minus holes).
 struct LabelledRegion {
   int label = -1;
   std::vector<std::uint32_t> outer;

@@ -247,16 +247,14 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
   std::vector<std::pair<int, int>> face_of(prober.total_faces());
   for (std::size_t b = 0, id = 0; b < bodies.size(); ++b)
     for (std::size_t f = 0; f < bodies[b]->num_faces(); ++f, ++id) face_of[id] = {static_cast<int>(b), static_cast<int>(f)};
-  std::vector<VisiblePolygon> polys(regions.size());
-  loop.for_each(regions.size(), 16, [&](std::size_t i) {
-    const LabelledRegion& r = regions[i];
-    auto [b, f] = face_of[r.label];
-    const Plane& h = bodies[b]->planes()[f];
-    VisiblePolygon& vp = polys[i];
-    auto ring = [&](const std::vector<std::uint32_t>& ids, std::vector<Point3>& p3, std::vector<Exact2>& p2) {
-      for (std::uint32_t k : ids) {
-        p2.push_back(arr.points[k]);
-        p3.push_back(pp.lift(arr.points[k], h));
+  // A corner is lifted into the plane of the face on the left of its half-edge.
+  auto polygon = [&](const LabelledRegion& r) {
+    VisiblePolygon vp;
+    auto ring = [&](const std::vector<std::uint32_t>& hs, std::vector<Point3>& p3, std::vector<Exact2>& p2) {
+      for (std::uint32_t h : hs) {
+        auto [b, f] = face_of[label[arr.cycle[h]]];
+        p2.push_back(arr.points[arr.origin[h]]);
+        p3.push_back(pp.lift(p2.back(), bodies[b]->planes()[f]));
       }
     };
     ring(r.outer, vp.outer, vp.outer_2d);
@@ -266,7 +264,10 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
       ring(hole, vp.holes.back(), vp.holes_2d.back());
     }
     vp.area2 = r.area2;
-  });
+    return vp;
+  };
+  std::vector<VisiblePolygon> polys(regions.size());
+  loop.for_each(regions.size(), 16, [&](std::size_t i) { polys[i] = polygon(regions[i]); });
   for (std::size_t i = 0; i < regions.size(); ++i) {
     auto [b, f] = face_of[regions[i].label];
     if (out.faces.empty() || out.faces.back().body != b || out.faces.back().face != f) {
@@ -277,6 +278,21 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
       out.faces.push_back(std::move(vf));
     }
     out.faces.back().polygons.push_back(std::move(polys[i]));
+  }
+  if (!options.face_group.empty()) {
+    std::vector<int> group_label(label.size(), -1);
+    for (std::size_t c = 0; c < label.size(); ++c)
+      if (label[c] >= 0) {
+        auto [b, f] = face_of[label[c]];
+        group_label[c] = options.face_group.at(b).at(f);
+      }
+    std::vector<LabelledRegion> gr = merge_regions(arr, group_label, -1);
+    std::vector<VisiblePolygon> gp(gr.size());
+    loop.for_each(gr.size(), 16, [&](std::size_t i) { gp[i] = polygon(gr[i]); });
+    for (std::size_t i = 0; i < gr.size(); ++i) {
+      if (out.groups.empty() || out.groups.back().group != gr[i].label) out.groups.push_back(VisibleGroup{gr[i].label, {}});
+      out.groups.back().polygons.push_back(std::move(gp[i]));
+    }
   }
   out.stats.polygons = regions.size();
   out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

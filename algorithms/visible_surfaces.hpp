@@ -21,6 +21,10 @@ struct SurfaceOptions {
   unsigned threads = 0;  // 0: all cores
   /// Label every half-edge, not only one per cycle, and count disagreements (tests).
   bool check_cycles = false;
+  /// Optional: a group per face (indexed by body, then face), e.g. faces of one colour; the
+  /// regions of equal group are merged too (VisibleSurfaces::groups): no seam between faces
+  /// that are filled alike.
+  std::vector<std::vector<int>> face_group;
 };
 
 /// One visible piece of a face: exact 3D vertices in the face's plane and the same points in
@@ -51,8 +55,16 @@ struct SurfaceStats {
   double seconds = 0;
 };
 
+/// A region of faces of one group (SurfaceOptions::face_group): each corner lifted into the
+/// plane of a face of the group that it bounds (for drawing; the 2D corners are exact).
+struct VisibleGroup {
+  int group = -1;
+  std::vector<VisiblePolygon> polygons;
+};
+
 struct VisibleSurfaces {
   std::vector<VisibleFace> faces;  // faces with a visible part, in order of body and face
+  std::vector<VisibleGroup> groups;  // with SurfaceOptions::face_group, in order of group
   SurfaceStats stats;
 };
 
