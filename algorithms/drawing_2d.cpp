@@ -59,11 +59,15 @@ void add_vertex_labels(const LineDrawing& r, const Projector& proj, const Camera
 
 }  // namespace
 
-Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Project2DOptions& opt) {
+Projector drawing_projector(const LineDrawing& r, const Camera& camera) {
   const auto& segs = r.segments;
-  Projector proj(camera, drawing_frame(2 * segs.size(), [&](std::size_t i) -> const Point3& {
-                   return i % 2 ? segs[i / 2].to() : segs[i / 2].from();
-                 }));
+  return Projector(camera, drawing_frame(2 * segs.size(), [&](std::size_t i) -> const Point3& {
+                     return i % 2 ? segs[i / 2].to() : segs[i / 2].from();
+                   }));
+}
+
+Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Project2DOptions& opt) {
+  Projector proj = drawing_projector(r, camera);
   double near = 0;
   if (camera.perspective) {
     double far = 0;

@@ -60,6 +60,10 @@ struct Project2DOptions {
 /// depth are pulled to that depth (drawing only).
 Drawing2D project_drawing(const LineDrawing& drawing, const Camera& camera, const Project2DOptions& options = {});
 
+/// The projector of project_drawing() for `drawing` (its frame chosen from the segments' ends):
+/// anything drawn with the lines (filled surfaces) goes through it to stay on them.
+Projector drawing_projector(const LineDrawing& drawing, const Camera& camera);
+
 /// Bounds [x0, x1] x [y0, y1] of the polylines; false when there are none.
 bool drawing_bounds(const Drawing2D& d, double& x0, double& y0, double& x1, double& y1);
 

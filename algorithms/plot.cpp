@@ -48,6 +48,7 @@ std::vector<Stroke> layer_strokes(const CleanDrawing& c, const std::vector<std::
 std::string PlotLayer::name() const { return std::string(visible ? "visible-" : "hidden-") + to_string(kind); }
 
 bool Plot::empty() const {
+  if (!fills.empty()) return false;
   for (const PlotLayer& l : layers)
     if (!l.strokes.empty()) return false;
   return true;

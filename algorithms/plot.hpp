@@ -39,7 +39,15 @@ struct PlotStats {
   double seconds_dedup = 0, seconds_chain = 0, seconds_order = 0;
 };
 
+/// A filled region (visible surfaces, issue 15): rings in drawing coordinates (outer
+/// counter-clockwise, holes clockwise; fill by the even-odd rule) and its colour.
+struct PlotFill {
+  std::vector<std::vector<Point2>> rings;
+  std::array<double, 3> colour{1, 1, 1};
+};
+
 struct Plot {
+  std::vector<PlotFill> fills;    // drawn first, under the lines (none for a line drawing)
   std::vector<PlotLayer> layers;  // visible layers first, then hidden; only non-empty ones
   PlotStats stats;
   std::array<double, 4> bounds{0, 0, 0, 0};  // x0, y0, x1, y1 of everything drawn

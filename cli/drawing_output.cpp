@@ -189,14 +189,20 @@ std::string drawing_text(const std::vector<RenderResult>& results, const std::ve
       plot = make_plot(results[0].drawing, results[0].camera, po);
       order_plot(*plot, {plot->bounds[0], plot->bounds[3]});
     }
-    text = to_json(results[0].names, results[0].drawing, results[0].camera, plot ? &plot->stats : nullptr);
+    const RenderResult& r0 = results[0];
+    SurfacesJson sj;
+    if (r0.surfaces) sj = SurfacesJson{&*r0.surfaces, &r0.face_colours};
+    text = to_json(r0.names, r0.drawing, r0.camera, plot ? &plot->stats : nullptr, sj);
   } else {
     progress("strokes");
     PlotOptions po;
     po.hidden = a.hidden != "none";
     po.dedup = po.chain = !a.raw;
     po.threads = a.threads;
-    for (const RenderResult& r : results) plots.push_back(make_plot(r.drawing, r.camera, po));
+    for (const RenderResult& r : results) {
+      plots.push_back(make_plot(r.drawing, r.camera, po));
+      add_surface_fills(plots.back(), r);
+    }
     select_layers(a.layers, plots);
     if (results[0].camera.perspective && page.scale) throw std::invalid_argument("--scale (true scale) needs an orthographic view");
     std::vector<const Plot*> ptrs;

@@ -31,7 +31,7 @@ struct RenderArgs : OutputArgs {
   std::vector<std::string> inputs;
   std::string view, eye, target, up, edges = "feature", clip, near = "1/1000";
   std::string method = "faces", crease = "30";
-  bool timings = false;
+  bool timings = false, surfaces = false;
   std::string views, up_axis;
 };
 
@@ -66,6 +66,7 @@ RenderOptions render_options(const RenderArgs& a) {
     throw std::invalid_argument(std::string("--near: ") + e.what());
   }
   if (!a.clip.empty()) o.clip = parse_clipper("--clip", a.clip).clipper;
+  o.surfaces = a.surfaces;
   return o;
 }
 
@@ -132,6 +133,10 @@ int run_render(const RenderArgs& a) {
               << results[0].drawing.segments.size() << ", comparisons " << fs.comparisons << " (identical "
               << fs.comparisons_identical << ", exact fallback " << fs.comparisons_exact << ")"
               << "\n";
+    if (const auto& sf = results[0].surfaces)
+      std::cerr << "timings: surfaces " << sf->stats.seconds << " s, visible pieces " << sf->stats.segments << ", arrangement edges "
+                << sf->stats.edges << ", cells " << sf->stats.cycles << ", crossings " << sf->stats.crossings << ", polygons "
+                << sf->stats.polygons << ", exact sign tests " << sf->stats.exact_tests << "\n";
   }
   return 0;
 }
@@ -160,6 +165,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--method", a->method,
                   "faces (the default: per-face occluders, any mesh) or roberts (the course's algorithm; non-convex solids are split into convex pieces)")
       ->check(CLI::IsMember({"faces", "roberts"}));
+  cmd->add_flag("--surfaces", a->surfaces,
+                "Also the visible part of every face as exact polygons, flat-shaded by the scene's lights and materials "
+                "(SVG/PDF/PNG fills under the lines; JSON 'surfaces')");
   cmd->add_flag("--timings", a->timings, "Print the time of each stage to standard error");
   cmd->add_option("--clip", a->clip,
                   "Clip the drawing to box:XMIN,XMAX,YMIN,YMAX,ZMIN,ZMAX, frustum:XL,XR,YB,YT,ZNEAR,ZFAR,ZCP or a convex mesh file");

@@ -2,6 +2,9 @@
 #include "io/json_writer.hpp"
 
 #include <cmath>
+#include <cstdio>
+
+#include "algorithms/picture_plane.hpp"
 
 namespace hlr {
 namespace {
@@ -34,6 +37,76 @@ nlohmann::ordered_json piece_json(const Segment& s, const Piece& p) {
 }
 
 std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r, const Camera& camera, const PlotStats* plot) {
+  return to_json(bodies, r, camera, plot, SurfacesJson{});
+}
+
+namespace {
+
+std::string surfaces_text(const SurfacesJson& sj, const Camera& camera) {
+  const VisibleSurfaces& vs = *sj.surfaces;
+  PicturePlane pp(camera);
+  Json axes;
+  axes["right"] = exact_vector(pp.r());
+  axes["up"] = exact_vector(pp.u());
+  axes["depth"] = exact_vector(pp.d());
+  std::string out = ",\n \"surfaces\": {\n  \"picture_axes\": " + axes.dump() + ",\n  \"faces\": [";
+  Rational total = 0;
+  std::size_t polygons = 0;
+  for (std::size_t i = 0; i < vs.faces.size(); ++i) {
+    const VisibleFace& f = vs.faces[i];
+    Json jf;
+    jf["body"] = f.body;
+    jf["face"] = f.face;
+    jf["side"] = f.front ? "front" : "back";
+    if (sj.colours) {
+      auto c = rgb8((*sj.colours)[f.body][f.face]);
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "#%02x%02x%02x", c[0], c[1], c[2]);
+      jf["shade"] = hex;
+    }
+    Rational area = 0;
+    Json polys = Json::array();
+    for (const VisiblePolygon& p : f.polygons) {
+      Json jp;
+      Json outer = Json::array();
+      for (const Point3& q : p.outer) outer.push_back(exact_point(q));
+      jp["outer"] = outer;
+      Json holes = Json::array();
+      for (const auto& h : p.holes) {
+        Json ring = Json::array();
+        for (const Point3& q : h) ring.push_back(exact_point(q));
+        holes.push_back(ring);
+      }
+      jp["holes"] = holes;
+      Rational a = p.area2 / 2;
+      jp["area"] = to_string(a);
+      area += a;
+      polys.push_back(jp);
+      ++polygons;
+    }
+    jf["area"] = to_string(area);
+    jf["visible"] = polys;
+    total += area;
+    out += std::string(i ? "," : "") + "\n   " + jf.dump();
+  }
+  Json st;
+  st["faces_seen"] = vs.faces.size();
+  st["polygons"] = polygons;
+  st["area"] = to_string(total);
+  st["segments"] = vs.stats.segments;
+  st["arrangement_edges"] = vs.stats.edges;
+  st["cells"] = vs.stats.cycles;
+  st["crossings"] = vs.stats.crossings;
+  st["exact_sign_tests"] = vs.stats.exact_tests;
+  st["triangles"] = vs.stats.triangles;
+  out += "\n  ],\n  \"stats\": " + st.dump() + "\n }";
+  return out;
+}
+
+}  // namespace
+
+std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r, const Camera& camera, const PlotStats* plot,
+                    const SurfacesJson& surfaces) {
   Json j;
   Json view;
   if (camera.perspective) {
@@ -102,6 +175,7 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r
     pj["pen_up_length_unordered"] = mm(plot->pen_up_unordered);
     out += ",\n \"plot\": " + pj.dump();
   }
+  if (surfaces.surfaces) out += surfaces_text(surfaces, camera);
   out += "\n}\n";
   return out;
 }

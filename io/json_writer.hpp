@@ -8,7 +8,9 @@
 
 #include "algorithms/line_drawing.hpp"
 #include "algorithms/camera.hpp"
+#include "algorithms/lighting.hpp"
 #include "algorithms/plot.hpp"
+#include "algorithms/visible_surfaces.hpp"
 #include "io/svg_writer.hpp"
 
 namespace hlr {
@@ -17,6 +19,16 @@ namespace hlr {
 /// terms (path_count, pen_down_length, pen_up_length, ...; lengths in drawing units).
 std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
                     const PlotStats* plot = nullptr);
+
+/// The visible surfaces of a render (issue 15): a "surfaces" object after "stats" with the
+/// picture's exact axes, one face per line with its side, shade, exact area and visible
+/// polygons (exact 3D corners in the face's plane), and the route's counters.
+struct SurfacesJson {
+  const VisibleSurfaces* surfaces = nullptr;
+  const std::vector<std::vector<Rgb>>* colours = nullptr;
+};
+std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
+                    const PlotStats* plot, const SurfacesJson& surfaces);
 
 /// One piece of a segment as it appears in `segments` of the JSON; also used by `hlr explain`,
 /// so both print the same.

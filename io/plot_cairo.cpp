@@ -17,7 +17,30 @@ cairo_status_t append(void* closure, const unsigned char* data, unsigned int len
   return CAIRO_STATUS_SUCCESS;
 }
 
+void draw_fills(cairo_t* cr, const Sheet& sheet) {
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_line_width(cr, 0.08);  // edged in its own colour: no seams between regions
+  for (const SheetView& v : sheet.views)
+    for (const PlotFill& fl : v.plot->fills) {
+      for (const auto& ring : fl.rings) {
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          Point2 p = v.page(ring[i]);
+          if (i == 0)
+            cairo_move_to(cr, p[0], p[1]);
+          else
+            cairo_line_to(cr, p[0], p[1]);
+        }
+        cairo_close_path(cr);
+      }
+      cairo_set_source_rgb(cr, fl.colour[0], fl.colour[1], fl.colour[2]);
+      cairo_fill_preserve(cr);
+      cairo_stroke(cr);
+    }
+}
+
 void draw_sheet(cairo_t* cr, const Sheet& sheet, const PlotStyle& style) {
+  draw_fills(cr, sheet);
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);

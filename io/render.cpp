@@ -1,7 +1,11 @@
 // The render pipeline (see render.hpp).
 #include "io/render.hpp"
 
+#include <cmath>
+#include <map>
+
 #include "algorithms/convexity.hpp"
+#include "algorithms/drawing_2d.hpp"
 #include "algorithms/face_occluders.hpp"
 #include "algorithms/mesh_repair.hpp"
 #include "algorithms/parallel.hpp"
@@ -40,6 +44,99 @@ void eye_plane_notes(const RenderResult& r, std::vector<std::string>& notes) {
   }
 }
 
+std::array<double, 3> d3(const Point3& p) { return {to_double(p.x()), to_double(p.y()), to_double(p.z())}; }
+std::array<double, 3> d3(const Vector3& p) { return d3(Point3(p.x(), p.y(), p.z())); }
+std::array<double, 3> unit3(std::array<double, 3> a) {
+  double l = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  if (l > 0) a = {a[0] / l, a[1] / l, a[2] / l};
+  return a;
+}
+std::array<double, 3> cross3(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// The scene's lights: `lighting:`, else `light:` as one directional light, else the default.
+Lighting scene_lighting(const std::vector<Scene>& scenes, const Camera& cam) {
+  for (const Scene& s : scenes)
+    if (s.lighting) return *s.lighting;
+  for (const Scene& s : scenes)
+    if (s.light) {
+      Lighting l;
+      Light d;
+      d.direction = unit3(d3(*s.light));
+      l.lights.push_back(d);
+      return l;
+    }
+  auto v = unit3(cam.perspective ? d3(Vector3(cam.eye - cam.target)) : d3(cam.direction));
+  auto right = unit3(cross3(d3(cam.up), v)), up = cross3(v, right);
+  return default_lighting(v, up, right);
+}
+
+// Flat colour of every face, for the side the viewer sees (facing: 1 front, -1 back, 0 edge-on).
+void shade_faces(RenderResult& r, const std::vector<Scene>& scenes, const LineDrawing& all) {
+  const Lighting light = scene_lighting(scenes, r.camera);
+  r.face_colours.resize(r.bodies.size());
+  for (std::size_t b = 0; b < r.bodies.size(); ++b) {
+    const Polyhedron& p = r.bodies[b]->body;
+    Material m;
+    m.colour = palette_colour(static_cast<int>(b));
+    if (r.bodies[b]->material) m = *r.bodies[b]->material;
+    r.face_colours[b].resize(p.num_faces());
+    ParallelLoop().for_each(p.num_faces(), 256, [&](std::size_t f) {
+      const Plane& h = p.planes()[f];
+      std::array<double, 3> n = unit3({to_double(h.a()), to_double(h.b()), to_double(h.c())});
+      if (b < all.facing.size() && f < all.facing[b].size() && all.facing[b][f] < 0) n = {-n[0], -n[1], -n[2]};
+      std::array<double, 3> c{0, 0, 0};
+      for (int v : p.faces()[f]) {
+        auto q = d3(p.vertices()[v]);
+        for (int k = 0; k < 3; ++k) c[k] += q[k] / static_cast<double>(p.faces()[f].size());
+      }
+      std::array<double, 3> to_viewer =
+          r.camera.perspective ? unit3({to_double(r.camera.eye.x()) - c[0], to_double(r.camera.eye.y()) - c[1], to_double(r.camera.eye.z()) - c[2]})
+                               : unit3(d3(r.camera.direction));
+      r.face_colours[b][f] = shade(m, light, c, n, to_viewer);
+    });
+  }
+}
+
+// Surfaces: every edge for the cells, then the selected lines of the same solution drawn.
+void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys, const std::vector<Scene>& scenes,
+                    const RenderOptions& o) {
+  if (o.method != RenderMethod::Faces) throw std::invalid_argument("--surfaces works with --method faces");
+  if (o.clip) throw std::invalid_argument("--surfaces does not take --clip (a clipped face is not a surface of the scene)");
+  for (const Polyhedron* p : polys) p->planes();  // computed once, before the parallel stages
+  LineOptions all = o.lines;
+  all.edges = EdgeSelection::All;
+  all.classify_all = true;
+  LineDrawing d = face_occluders(polys, r.camera, all);
+  if (r.camera.perspective) {
+    Plane near = near_plane(r.camera, o.near);
+    for (Segment& s : d.segments) clip_near(s, near);
+  }
+  shade_faces(r, scenes, d);
+  SurfaceOptions so;
+  so.threads = o.lines.threads;
+  std::map<std::array<int, 3>, int> group_of;
+  so.face_group.resize(r.bodies.size());
+  for (std::size_t b = 0; b < r.bodies.size(); ++b)
+    for (const Rgb& c : r.face_colours[b]) {
+      auto [it, fresh] = group_of.emplace(rgb8(c), static_cast<int>(r.group_colours.size()));
+      if (fresh) r.group_colours.push_back(c);
+      so.face_group[b].push_back(it->second);
+    }
+  r.surfaces = visible_surfaces(polys, r.camera, d, so);
+  if (o.lines.edges == EdgeSelection::Feature) {
+    std::vector<Segment> kept;
+    for (Segment& s : d.segments)
+      if (s.kind == Segment::Kind::Intersection || s.line != LineKind::Edge) kept.push_back(std::move(s));
+    d.segments = std::move(kept);
+  } else {
+    for (Segment& s : d.segments)
+      if (s.kind == Segment::Kind::Edge) s.line = LineKind::Edge;
+  }
+  r.drawing = std::move(d);
+}
+
 }  // namespace
 
 RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
@@ -66,7 +163,10 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     for (const Polyhedron* p : polys) p->report();  // Roberts' checks belong to loading
   r.camera = choose_camera(o.view, scene_view, polys);
   try {
-    r.drawing = solve(polys, r.camera, o);
+    if (o.surfaces)
+      solve_surfaces(r, polys, *owned, o);
+    else
+      r.drawing = solve(polys, r.camera, o);
   } catch (const BodyError& e) {
     const SceneBody& b = *r.bodies[e.body()];
     throw RenderBodyError(e.body(), b.name, b.source, e.reason());
@@ -78,13 +178,38 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   // Clipping: the near plane (perspective) and the clipping volume, exactly, in world space.
   std::optional<Plane> near;
   if (r.camera.perspective) near = near_plane(r.camera, o.near);
-  if (near || o.clip)
+  if ((near || o.clip) && !o.surfaces)
     ParallelLoop(o.lines.threads).for_each(r.drawing.segments.size(), 1024, [&](std::size_t i) {
       Segment& s = r.drawing.segments[i];
       if (near) clip_near(s, *near);
       if (o.clip) clip_pieces(s, *o.clip);
     });
   return r;
+}
+
+void add_surface_fills(Plot& plot, const RenderResult& r) {
+  if (!r.surfaces) return;
+  Projector proj = drawing_projector(r.drawing, r.camera);
+  bool had = !plot.empty();
+  for (const VisibleGroup& g : r.surfaces->groups)
+    for (const VisiblePolygon& p : g.polygons) {
+      PlotFill f;
+      f.colour = r.group_colours[g.group];
+      auto ring = [&](const std::vector<Point3>& pts) {
+        std::vector<Point2> out;
+        for (const Point3& q : pts) {
+          auto xy = proj.project(q);
+          out.push_back({xy[0], xy[1]});
+          if (!had) plot.bounds = {xy[0], xy[1], xy[0], xy[1]}, had = true;
+          plot.bounds = {std::min(plot.bounds[0], xy[0]), std::min(plot.bounds[1], xy[1]), std::max(plot.bounds[2], xy[0]),
+                         std::max(plot.bounds[3], xy[1])};
+        }
+        f.rings.push_back(std::move(out));
+      };
+      ring(p.outer);
+      for (const auto& h : p.holes) ring(h);
+      plot.fills.push_back(std::move(f));
+    }
 }
 
 RenderResult render_files(const std::vector<std::string>& inputs, const RenderOptions& o) {

@@ -11,7 +11,10 @@
 #include <vector>
 
 #include "algorithms/cyrus_beck.hpp"
+#include "algorithms/lighting.hpp"
 #include "algorithms/line_drawing.hpp"
+#include "algorithms/plot.hpp"
+#include "algorithms/visible_surfaces.hpp"
 #include "io/scene.hpp"
 #include "io/svg_writer.hpp"
 #include "io/view_choice.hpp"
@@ -30,6 +33,9 @@ struct RenderOptions {
   Rational near = Rational(1, 1000);
   /// Clip the drawing to a convex volume (Cyrus-Beck, exact).
   std::optional<ConvexClipper> clip;
+  /// Also the visible part of every face as exact polygons, shaded (visible_surfaces.hpp,
+  /// lighting.hpp); the line drawing is then the selected lines of the same exact solution.
+  bool surfaces = false;
 };
 
 struct RenderResult {
@@ -38,6 +44,11 @@ struct RenderResult {
   std::vector<DrawingBody> names;                     // their names and sources
   Camera camera;
   LineDrawing drawing;
+  /// With RenderOptions::surfaces: the visible polygons (merged per colour in `groups`), each
+  /// face's flat colour (per body, per face) and the colour of each group.
+  std::optional<VisibleSurfaces> surfaces;
+  std::vector<std::vector<Rgb>> face_colours;
+  std::vector<Rgb> group_colours;
   /// Remarks for the user ("file: body 'name' is open ...: drawn as a surface", eye in a face plane).
   std::vector<std::string> notes;
 };
@@ -59,6 +70,10 @@ class RenderBodyError : public std::runtime_error {
 /// Renders loaded scenes (the first scene file's view unless options.view overrides it).
 /// Throws RenderBodyError, std::invalid_argument (bad view or options).
 RenderResult render(std::vector<Scene> scenes, const RenderOptions& options = {});
+
+/// The shaded regions of a surfaces render in the 2D stage's drawing coordinates (the same
+/// projector as the lines), one fill per region of one colour; also widens the plot's bounds.
+void add_surface_fills(Plot& plot, const RenderResult& result);
 
 /// Loads mesh files (.off .obj .stl .ply) and scene files (.yaml .yml .json), then renders.
 /// Also throws InputError (file and line) for bad input.

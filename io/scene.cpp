@@ -8,6 +8,7 @@
 #include <set>
 
 #include "io/mesh_reader.hpp"
+#include "io/scene_lighting.hpp"
 #include "io/text_reader.hpp"
 #include "io/yaml_context.hpp"
 
@@ -198,7 +199,7 @@ Scene scene_from_mesh(const std::string& path) {
   Scene s;
   s.file = path;
   s.bodies.push_back(SceneBody{std::filesystem::path(path).stem().string(), path, load_mesh(path),
-                               identity_transform(), {}, {}});
+                               identity_transform(), {}, {}, {}, std::nullopt});
   return s;
 }
 
@@ -217,7 +218,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
   }
   if (!root || root.IsNull()) throw InputError(path, 0, "empty scene file");
   if (depth(root) > kMaxNesting) throw InputError(path, 0, "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
-  std::vector<std::string> known = {"bodies", "view", "light"};
+  std::vector<std::string> known = {"bodies", "view", "light", "lighting"};
   known.insert(known.end(), extra_keys.begin(), extra_keys.end());
   // A problem file (docs/problem-format.md) is a scene too: `hlr render` draws its bodies.
   if (extra_keys.empty() && root.IsMap() && root["problem"])
@@ -235,7 +236,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const YAML::Node b = bodies[i];
-    c.check_keys(b, "a body", {"name", "mesh", "vertices", "faces", "box", "transform"});
+    c.check_keys(b, "a body", {"name", "mesh", "vertices", "faces", "box", "transform", "material"});
     int kinds = (b["mesh"] ? 1 : 0) + (b["vertices"] || b["faces"] ? 1 : 0) + (b["box"] ? 1 : 0);
     if (kinds != 1) c.fail(b, "a body needs exactly one of: mesh, vertices + faces, box");
     std::string name = b["name"] ? c.text(b["name"], "name") : "body " + std::to_string(i);
@@ -276,13 +277,15 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
       }
       poly.emplace(transformed(c, b["transform"], *poly, m));
     }
-    s.bodies.push_back(SceneBody{name, source, std::move(*poly), m, std::move(steps), std::move(notes), std::move(typed)});
+    s.bodies.push_back(SceneBody{name, source, std::move(*poly), m, std::move(steps), std::move(notes), std::move(typed), std::nullopt});
+    if (b["material"]) s.bodies.back().material = parse_material(c, b["material"], static_cast<int>(i));
   }
   if (root["view"]) s.view = parse_view(c, root["view"]);
   if (root["light"]) {
     s.light = c.vector(root["light"], "light");
     if (s.light->is_zero()) c.fail(root["light"], "light vector has zero length");
   }
+  if (root["lighting"]) s.lighting = parse_lighting(c, root["lighting"]);
   return s;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/lighting.hpp"
 #include "io/input_error.hpp"
 #include "kernel/polyhedron.hpp"
 #include "kernel/transform.hpp"
@@ -37,6 +38,8 @@ struct SceneBody {
   /// Inline bodies: the faces in the order typed (before they were oriented outward); the
   /// exam page shows them and says which were turned. Empty for meshes and boxes.
   std::vector<Face> typed_faces;
+  /// The body's material for shaded surfaces (unset: the default, in the palette's colour).
+  std::optional<Material> material = std::nullopt;
 };
 
 struct Scene {
@@ -44,6 +47,8 @@ struct Scene {
   std::vector<SceneBody> bodies;
   View view;
   std::optional<Vector3> light;
+  /// Lights for shaded surfaces (`lighting:`); unset: `light` as a directional light, else the default.
+  std::optional<Lighting> lighting;
 };
 
 /// True for .yaml, .yml and .json files.

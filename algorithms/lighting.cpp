@@ -1,0 +1,79 @@
+// Flat shading (course notes sections 36 and 39, seeds 002 and 004). See lighting.hpp.
+#include "algorithms/lighting.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hlr {
+namespace {
+
+double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3d unit(const Vec3d& a) {
+  double l = std::sqrt(dot(a, a));
+  return l > 0 ? Vec3d{a[0] / l, a[1] / l, a[2] / l} : a;
+}
+
+}  // namespace
+
+Rgb shade(const Material& m, const Lighting& l, const Vec3d& p, const Vec3d& n, const Vec3d& to_viewer) {
+  Rgb out;
+  for (int c = 0; c < 3; ++c) out[c] = m.ka * l.ambient[c] * m.colour[c];
+  for (const Light& li : l.lights) {
+    Vec3d L;
+    double f = li.intensity;
+    if (li.type == Light::Type::Directional) {
+      L = unit(li.direction);
+    } else {
+      Vec3d d{li.position[0] - p[0], li.position[1] - p[1], li.position[2] - p[2]};
+      double dist = std::sqrt(dot(d, d));
+      L = unit(d);
+      double att = li.attenuation[0] + li.attenuation[1] * dist + li.attenuation[2] * dist * dist;
+      f /= std::max(att, 1e-300);
+      if (li.type == Light::Type::Spot) {
+        // cos(alpha) = V_light·V_obj (V_obj: from the light to the point); nothing outside the cone.
+        double cos_a = -dot(unit(li.direction), L);
+        if (cos_a < std::cos(li.cone_degrees * M_PI / 180)) continue;
+        f *= std::pow(cos_a, li.exponent);
+      }
+    }
+    double cos_t = dot(n, L);
+    if (cos_t <= 0) continue;  // the light is behind the face
+    double spec = 0;
+    if (m.ks > 0) {
+      double s;
+      if (l.blinn) {
+        s = dot(n, unit(Vec3d{L[0] + to_viewer[0], L[1] + to_viewer[1], L[2] + to_viewer[2]}));
+      } else {
+        Vec3d R{2 * cos_t * n[0] - L[0], 2 * cos_t * n[1] - L[1], 2 * cos_t * n[2] - L[2]};
+        s = dot(R, to_viewer);
+      }
+      spec = s > 0 ? std::pow(s, m.shininess) : 0;
+    }
+    for (int c = 0; c < 3; ++c) out[c] += f * li.colour[c] * (m.kd * m.colour[c] * cos_t + m.ks * spec);
+  }
+  for (double& c : out) c = std::clamp(c, 0.0, 1.0);
+  return out;
+}
+
+Lighting default_lighting(const Vec3d& v, const Vec3d& up, const Vec3d& right) {
+  Lighting l;
+  Light key;
+  key.direction = unit(Vec3d{v[0] + 0.8 * up[0] - 0.5 * right[0], v[1] + 0.8 * up[1] - 0.5 * right[1],
+                             v[2] + 0.8 * up[2] - 0.5 * right[2]});
+  l.lights.push_back(key);
+  return l;
+}
+
+Rgb palette_colour(int body) {
+  static const Rgb kPalette[] = {{0.78, 0.80, 0.84}, {0.85, 0.72, 0.55}, {0.60, 0.75, 0.65}, {0.70, 0.66, 0.82},
+                                 {0.86, 0.62, 0.62}, {0.58, 0.72, 0.84}, {0.84, 0.80, 0.58}, {0.66, 0.70, 0.70}};
+  return kPalette[static_cast<std::size_t>(body) % (sizeof kPalette / sizeof kPalette[0])];
+}
+
+std::array<int, 3> rgb8(const Rgb& c) {
+  std::array<int, 3> out;
+  for (int i = 0; i < 3; ++i) out[i] = static_cast<int>(std::lround(std::clamp(c[i], 0.0, 1.0) * 255));
+  return out;
+}
+
+}  // namespace hlr

@@ -1,0 +1,55 @@
+// Flat shading of faces (course notes sections 36 and 39, seeds 002 and 004): the illumination
+// model I = ka·Ia·C + sum over lights of f_rad·f_ang·Il·(kd·C·cos(theta) + ks·spec), with
+// directional lights (at infinity), point lights with the radial attenuation
+// 1 / (a0 + a1·d + a2·d²) and spot lights that also attenuate by the angle from their axis
+// (cos^a of it, nothing outside the cone), spec = cos^n of the angle between the reflected ray
+// and the viewer (Phong) or between the normal and the half vector (Blinn). Doubles: shading
+// comes after every visibility decision and decides nothing (docs/design.md).
+#pragma once
+
+#include <array>
+#include <vector>
+
+namespace hlr {
+
+using Rgb = std::array<double, 3>;  // 0..1 per channel
+using Vec3d = std::array<double, 3>;
+
+struct Material {
+  Rgb colour{0.78, 0.80, 0.84};
+  double ka = 0.3, kd = 0.7, ks = 0.15, shininess = 20;
+};
+
+struct Light {
+  enum class Type { Directional, Point, Spot };
+  Type type = Type::Directional;
+  Vec3d direction{0, 0, 1};  // directional: toward the light; spot: where the spot points
+  Vec3d position{0, 0, 0};   // point and spot
+  Rgb colour{1, 1, 1};
+  double intensity = 1;
+  std::array<double, 3> attenuation{1, 0, 0};  // a0, a1, a2 (point and spot)
+  double cone_degrees = 30;                     // spot: half-angle of the cone
+  double exponent = 2;                          // spot: angular attenuation cos^exponent
+};
+
+struct Lighting {
+  Rgb ambient{1, 1, 1};  // Ia
+  bool blinn = false;    // specular by the half vector (Blinn) instead of the reflected ray (Phong)
+  std::vector<Light> lights;
+};
+
+/// The colour of a flat face at point `p` with unit normal `n` turned toward the viewer,
+/// `to_viewer` the unit vector from p toward the viewer. Channels clamped to [0, 1].
+Rgb shade(const Material& m, const Lighting& l, const Vec3d& p, const Vec3d& n, const Vec3d& to_viewer);
+
+/// The lighting when a scene gives none: one white directional light from above, left and
+/// behind the viewer (`toward_viewer`, `up`, `right`: unit vectors of the view).
+Lighting default_lighting(const Vec3d& toward_viewer, const Vec3d& up, const Vec3d& right);
+
+/// Default material colours per body (a muted palette, repeating).
+Rgb palette_colour(int body);
+
+/// "#rrggbb" of a colour (rounded to 8 bits per channel).
+std::array<int, 3> rgb8(const Rgb& c);
+
+}  // namespace hlr

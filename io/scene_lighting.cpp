@@ -1,0 +1,100 @@
+// Lights and materials in scene files (see scene_lighting.hpp, docs/scene-format.md).
+#include "io/scene_lighting.hpp"
+
+#include <cmath>
+
+namespace hlr {
+namespace {
+
+double real(const YamlContext& c, const YAML::Node& n, const std::string& what, double lo, double hi) {
+  double v = to_double(c.number(n, what));
+  if (!(v >= lo && v <= hi)) c.fail(n, what + " must be between " + to_string(rational_from_double(lo)) + " and " + to_string(rational_from_double(hi)));
+  return v;
+}
+
+Vec3d vec(const YamlContext& c, const YAML::Node& n, const std::string& what, bool nonzero) {
+  auto t = c.triple(n, what);
+  if (nonzero && t[0] == 0 && t[1] == 0 && t[2] == 0) c.fail(n, what + " has zero length");
+  return {to_double(t[0]), to_double(t[1]), to_double(t[2])};
+}
+
+// [r, g, b] from 0 to 1, or "#rrggbb".
+Rgb colour(const YamlContext& c, const YAML::Node& n, const std::string& what) {
+  if (n.IsScalar()) {
+    const std::string& s = n.Scalar();
+    bool ok = s.size() == 7 && s[0] == '#';
+    for (std::size_t i = 1; ok && i < 7; ++i) ok = std::isxdigit(static_cast<unsigned char>(s[i])) != 0;
+    if (!ok) c.fail(n, what + " must be [r, g, b] from 0 to 1 or #rrggbb");
+    Rgb out;
+    for (int i = 0; i < 3; ++i) out[i] = std::stoi(s.substr(1 + 2 * i, 2), nullptr, 16) / 255.0;
+    return out;
+  }
+  if (!n.IsSequence() || n.size() != 3) c.fail(n, what + " must be [r, g, b] from 0 to 1 or #rrggbb");
+  return {real(c, n[0], what, 0, 1), real(c, n[1], what, 0, 1), real(c, n[2], what, 0, 1)};
+}
+
+Light parse_light(const YamlContext& c, const YAML::Node& n) {
+  c.check_keys(n, "a light", {"type", "direction", "position", "colour", "color", "intensity", "attenuation", "cone", "exponent"});
+  if (!n["type"]) c.fail(n, "a light needs a 'type' (directional, point or spot)");
+  std::string type = c.text(n["type"], "light type");
+  Light l;
+  if (type == "directional") l.type = Light::Type::Directional;
+  else if (type == "point") l.type = Light::Type::Point;
+  else if (type == "spot") l.type = Light::Type::Spot;
+  else c.fail(n["type"], "light type must be directional, point or spot");
+  bool needs_dir = l.type != Light::Type::Point, needs_pos = l.type != Light::Type::Directional;
+  if (needs_dir != static_cast<bool>(n["direction"]))
+    c.fail(n, needs_dir ? "a " + type + " light needs a 'direction'" : "a point light has no 'direction'");
+  if (needs_pos != static_cast<bool>(n["position"]))
+    c.fail(n, needs_pos ? "a " + type + " light needs a 'position'" : "a directional light has no 'position' (it is at infinity)");
+  if (n["direction"]) l.direction = vec(c, n["direction"], "light direction", true);
+  if (n["position"]) l.position = vec(c, n["position"], "light position", false);
+  if (n["colour"] && n["color"]) c.fail(n, "give 'colour' or 'color', not both");
+  if (n["colour"]) l.colour = colour(c, n["colour"], "light colour");
+  if (n["color"]) l.colour = colour(c, n["color"], "light colour");
+  if (n["intensity"]) l.intensity = real(c, n["intensity"], "light intensity", 0, 1e6);
+  if (n["attenuation"]) {
+    if (l.type == Light::Type::Directional) c.fail(n["attenuation"], "a directional light has no attenuation (it is at infinity)");
+    auto a = vec(c, n["attenuation"], "attenuation", true);
+    if (a[0] < 0 || a[1] < 0 || a[2] < 0) c.fail(n["attenuation"], "attenuation [a0, a1, a2] must not be negative");
+    l.attenuation = a;
+  }
+  if ((n["cone"] || n["exponent"]) && l.type != Light::Type::Spot) c.fail(n, "'cone' and 'exponent' belong to a spot light");
+  if (n["cone"]) l.cone_degrees = real(c, n["cone"], "cone", 0, 90);
+  if (n["exponent"]) l.exponent = real(c, n["exponent"], "exponent", 0, 1e4);
+  return l;
+}
+
+}  // namespace
+
+Lighting parse_lighting(const YamlContext& c, const YAML::Node& n) {
+  c.check_keys(n, "lighting", {"ambient", "specular", "lights"});
+  Lighting l;
+  if (n["ambient"]) l.ambient = colour(c, n["ambient"], "ambient");
+  if (n["specular"]) {
+    std::string s = c.text(n["specular"], "specular");
+    if (s != "phong" && s != "blinn") c.fail(n["specular"], "specular must be phong or blinn");
+    l.blinn = s == "blinn";
+  }
+  if (n["lights"]) {
+    if (!n["lights"].IsSequence()) c.fail(n["lights"], "lights must be a list");
+    for (const auto& li : n["lights"]) l.lights.push_back(parse_light(c, li));
+  }
+  return l;
+}
+
+Material parse_material(const YamlContext& c, const YAML::Node& n, int body) {
+  c.check_keys(n, "a material", {"colour", "color", "ka", "kd", "ks", "shininess"});
+  Material m;
+  m.colour = palette_colour(body);
+  if (n["colour"] && n["color"]) c.fail(n, "give 'colour' or 'color', not both");
+  if (n["colour"]) m.colour = colour(c, n["colour"], "colour");
+  if (n["color"]) m.colour = colour(c, n["color"], "colour");
+  if (n["ka"]) m.ka = real(c, n["ka"], "ka", 0, 1);
+  if (n["kd"]) m.kd = real(c, n["kd"], "kd", 0, 1);
+  if (n["ks"]) m.ks = real(c, n["ks"], "ks", 0, 1);
+  if (n["shininess"]) m.shininess = real(c, n["shininess"], "shininess", 0, 1e4);
+  return m;
+}
+
+}  // namespace hlr
