@@ -31,7 +31,10 @@ bool allowed_latin(const std::string& w) {
       "light", "name", "translate", "scale", "rotate", "reflect", "matrix", "factors", "axis", "degrees", "cos", "sin",
       "tan_half", "centre", "center", "min", "max", "xmin", "xmax", "ymin", "ymax", "zmin", "zmax", "xl", "xr", "yb", "yt",
       "znear", "zfar", "zcp", "XMIN", "XMAX", "YMIN", "YMAX", "ZMIN", "ZMAX", "XL", "XR", "YB", "YT", "ZCP", "ZNEAR",
-      "ZFAR", "x1", "y1", "z1", "x2", "y2", "z2", "YAML", "JSON", "NaN", "hlr", "off", "obj", "stl", "ply", "GiB", "yaml"};
+      "ZFAR", "x1", "y1", "z1", "x2", "y2", "z2", "YAML", "JSON", "NaN", "hlr", "off", "obj", "stl", "ply", "GiB", "yaml",
+      "material", "lighting", "lights", "ambient", "specular", "phong", "blinn", "colour", "color", "ka", "kd", "ks", "shininess",
+      "type", "directional", "point", "spot", "position", "intensity", "attenuation", "cone", "exponent", "rrggbb", "a0", "a1",
+      "a2", "r", "g", "b"};
   return keys.count(w) > 0;
 }
 
@@ -87,6 +90,24 @@ TEST(MessagesRu, EveryErrorOfABadProblemIsTranslated) {
   const std::string box = "clipper: {box: [0, 1, 0, 1, 0, 1]}\n";
   const std::vector<std::string> bad = {
       "title: x\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "    material: {colour: red}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "    material: {ka: 2}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "    material: {colour: [1, 1, 1], color: [1, 1, 1]}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {specular: gouraud}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: 3}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{direction: [1, 2, 3]}]}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{type: lamp}]}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{type: spot, position: [1, 2, 3]}]}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{type: point, position: [1, 2, 3], direction: [1, 0, 0]}]}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{type: point}]}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{type: directional, direction: [1, 0, 0], position: [0, 0, 0]}]}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{type: directional, direction: [0, 0, 0]}]}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{type: directional, direction: [1, 0, 0], attenuation: [1, 0, 0]}]}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{type: point, position: [0, 0, 9], attenuation: [1, -1, 0]}]}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{type: point, position: [0, 0, 9], cone: 20}]}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{type: spot, position: [0, 0, 9], direction: [0, 0, -1], cone: 100}]}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{type: point, position: [0, 0, 9], colour: '#12'}]}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{type: point, position: [0, 0, 9], flux: 2}]}\n",
       "problem: [roberts]\n",
       "problem: robert\n",
       "- 1\n- 2\n",
@@ -205,7 +226,7 @@ TEST(MessagesRu, EveryMessageInTheSourcesHasAnEntry) {
       "io/problem.cpp", "io/scene.cpp", "io/yaml_context.hpp", "io/mesh_reader.cpp", "kernel/body_matrix.cpp",
       "kernel/number.cpp", "kernel/rotation.cpp", "kernel/polyhedron.cpp", "kernel/transform.cpp", "kernel/mesh_checks.cpp",
       "algorithms/roberts.cpp", "algorithms/roberts_pieces.cpp", "algorithms/cyrus_beck.cpp", "algorithms/midpoint_clip.cpp",
-      "algorithms/convex_decomposition.cpp", "algorithms/convexity.cpp", "io/view_choice.cpp"};
+      "algorithms/convex_decomposition.cpp", "algorithms/convexity.cpp", "io/view_choice.cpp", "io/scene_lighting.cpp"};
   std::string all;
   for (const std::string& t : message_ru_templates()) all += t + "\n";
   std::regex statement(R"re((throw |fail\(|return "|push_back\(\{face, ")[^;]*;)re");
