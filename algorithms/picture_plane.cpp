@@ -1,6 +1,8 @@
 // The picture plane in exact numbers (course notes section 20). See picture_plane.hpp.
 #include "algorithms/picture_plane.hpp"
 
+#include <cmath>
+
 namespace hlr {
 namespace {
 
@@ -47,8 +49,8 @@ std::array<PictureLinear, 2> PicturePlane::ray_parameter(const Plane& h) const {
   return {PictureLinear{-ne, 0, 0}, PictureLinear{nd, nr * dd_ / rr_, nu * dd_ / uu_}};
 }
 
-Point3 PicturePlane::lift(const Exact2& q, const Plane& h) const {
-  auto [num, den] = ray_parameter(h);
+Point3 PicturePlane::lift(const Exact2& q, const std::array<PictureLinear, 2>& ray) const {
+  const auto& [num, den] = ray;
   Rational s = num.at(q) / den.at(q);
   if (!persp_) {
     Rational a = q[0] / rr_, b = q[1] / uu_;
@@ -58,6 +60,28 @@ Point3 PicturePlane::lift(const Exact2& q, const Plane& h) const {
   Rational a = q[0] * dd_ / rr_, b = q[1] * dd_ / uu_;
   return Point3(e_.x() + s * (a * r_.x() + b * u_.x() + d_.x()), e_.y() + s * (a * r_.y() + b * u_.y() + d_.y()),
                 e_.z() + s * (a * r_.z() + b * u_.z() + d_.z()));
+}
+
+PictureToDrawing::PictureToDrawing(const PicturePlane& pp, const DrawingFrame& frame)
+    : persp_(pp.perspective()), scale_(frame.identity ? Rational(1) : frame.scale) {
+  rr_ = dot(pp.r(), pp.r());
+  uu_ = dot(pp.u(), pp.u());
+  dd_ = dot(pp.d(), pp.d());
+  if (!persp_ && !frame.identity) {
+    const Point3& c = frame.centre;
+    cr_ = c.x() * pp.r().x() + c.y() * pp.r().y() + c.z() * pp.r().z();
+    cu_ = c.x() * pp.u().x() + c.y() * pp.u().y() + c.z() * pp.u().z();
+  }
+}
+
+std::array<double, 2> PictureToDrawing::operator()(const Exact2& q) const {
+  // sign(v)·sqrt(v² / w) keeps any exact magnitude away from double overflow until the end.
+  auto scaled = [](const Rational& v, const Rational& w) {
+    double m = std::sqrt(to_double(v * v / w));
+    return sgn(v) < 0 ? -m : m;
+  };
+  if (persp_) return {scaled(q[0], rr_ / dd_), scaled(q[1], uu_ / dd_)};
+  return {scaled((q[0] - cr_) * scale_, rr_), scaled((q[1] - cu_) * scale_, uu_)};
 }
 
 }  // namespace hlr

@@ -35,7 +35,9 @@ class PicturePlane {
   /// The exact picture point of p (perspective: p must be in front of the eye).
   Exact2 project(const Point3& p) const;
   /// The point of the plane `h` that the sight ray through q meets (h not containing the ray).
-  Point3 lift(const Exact2& q, const Plane& h) const;
+  Point3 lift(const Exact2& q, const Plane& h) const { return lift(q, ray_parameter(h)); }
+  /// The same with the plane's ray_parameter() computed once.
+  Point3 lift(const Exact2& q, const std::array<PictureLinear, 2>& ray) const;
   /// Where the sight ray through q meets the plane h, as a fraction num(q) / den(q) of two
   /// values linear in q: orthographic, the parameter s of base(q) + s·v (larger is nearer the
   /// viewer, den constant); perspective, the parameter l of E + l·dir(q) (smaller is nearer,
@@ -51,6 +53,20 @@ class PicturePlane {
   Point3 e_;
   Vector3 r_, u_, d_;
   Rational rr_, uu_, dd_;  // squared lengths
+};
+
+/// Drawing coordinates (Projector's, in its DrawingFrame) of exact picture points, without a
+/// 3D point: orthographic x = s·(X - c·r) / |r| (c, s: the frame's centre and scale),
+/// perspective x = X·|d| / |r| (the frame does not change a perspective picture); y alike.
+class PictureToDrawing {
+ public:
+  PictureToDrawing(const PicturePlane& pp, const DrawingFrame& frame);
+  std::array<double, 2> operator()(const Exact2& q) const;
+
+ private:
+  bool persp_;
+  Rational cr_, cu_, scale_;
+  Rational rr_, uu_, dd_;
 };
 
 }  // namespace hlr

@@ -306,6 +306,23 @@ Rational area2_of(const PlanarArrangement& arr, const std::vector<std::uint32_t>
   return s;
 }
 
+// Sign of a ring's area: the doubles' shoelace sum when its error bound (design.md) allows.
+int area_sign(const PlanarArrangement& arr, const std::vector<std::uint32_t>& ring) {
+  double sum = 0, mag = 0;
+  bool ok = true;
+  for (std::uint32_t h : ring) {
+    const auto &a = arr.approx[arr.origin[h]], &b = arr.approx[arr.head(h)];
+    double p = a[0] * b[1], q = a[1] * b[0];
+    sum += p - q;
+    mag += std::fabs(p) + std::fabs(q);
+    for (double x : {a[0], a[1]}) ok = ok && (x == 0 || (std::fabs(x) >= 0x1p-400 && std::fabs(x) <= 0x1p400));
+  }
+  double bound = (16 + 2 * static_cast<double>(ring.size())) * kU * mag;
+  if (ok && sum > bound) return 1;
+  if (ok && sum < -bound) return -1;
+  return sgn(area2_of(arr, ring));
+}
+
 // Is m strictly inside the ring (m is on none of its edges)? Crossing number, exact.
 bool inside_ring(const PlanarArrangement& arr, const std::vector<std::uint32_t>& ring, const Exact2& m) {
   bool in = false;
@@ -320,7 +337,8 @@ bool inside_ring(const PlanarArrangement& arr, const std::vector<std::uint32_t>&
 
 }  // namespace
 
-std::vector<LabelledRegion> merge_regions(const PlanarArrangement& a, const std::vector<int>& cycle_label, int background) {
+std::vector<LabelledRegion> merge_regions(const PlanarArrangement& a, const std::vector<int>& cycle_label, int background,
+                                         bool exact_area) {
   const std::size_t nh = a.origin.size();
   auto label = [&](std::uint32_t h) { return cycle_label[a.cycle[h]]; };
   std::vector<char> kept(nh);
@@ -347,29 +365,55 @@ std::vector<LabelledRegion> merge_regions(const PlanarArrangement& a, const std:
       seen[g] = 1;
       r.pts.push_back(g);
     }
-    r.area2 = area2_of(a, r.pts);
-    if (r.area2 > 0)
+    int sign = area_sign(a, r.pts);
+    if (exact_area) r.area2 = area2_of(a, r.pts);
+    if (sign > 0)
       outers.push_back(std::move(r));
-    else if (r.area2 < 0)
+    else if (sign < 0)
       holes.push_back(std::move(r));
   }
   std::vector<LabelledRegion> out(outers.size());
+  std::vector<std::array<double, 4>> box(outers.size());  // doubles' box, widened: only skips
   std::multimap<int, std::size_t> by_label;
   for (std::size_t i = 0; i < outers.size(); ++i) {
     out[i].label = outers[i].label;
     out[i].outer = outers[i].pts;
     out[i].area2 = outers[i].area2;
     by_label.emplace(outers[i].label, i);
+    std::array<double, 4> b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (std::uint32_t h : outers[i].pts) {
+      const auto& p = a.approx[a.origin[h]];
+      b = {std::min(b[0], p[0]), std::min(b[1], p[1]), std::max(b[2], p[0]), std::max(b[3], p[1])};
+    }
+    double pad = 1e-9 * std::max({std::fabs(b[0]), std::fabs(b[1]), std::fabs(b[2]), std::fabs(b[3]), 1e-300});
+    box[i] = {b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad};
   }
   for (Ring& hole : holes) {
     const std::uint32_t h = hole.first_half;
     const Exact2 &p = a.points[a.origin[h]], &q = a.points[a.head(h)];
     Exact2 m{(p[0] + q[0]) / 2, (p[1] + q[1]) / 2};
-    std::size_t best = SIZE_MAX;
+    const auto &pa = a.approx[a.origin[h]], &qa = a.approx[a.head(h)];
+    const double mx = (pa[0] + qa[0]) / 2, my = (pa[1] + qa[1]) / 2;
+    // Candidates of the hole's label whose box holds the point, smallest first: the first
+    // that contains it is the innermost.
+    std::vector<std::size_t> cand;
     auto [lo, hi] = by_label.equal_range(hole.label);
     for (auto it = lo; it != hi; ++it) {
-      const Ring& o = outers[it->second];
-      if ((best == SIZE_MAX || o.area2 < outers[best].area2) && inside_ring(a, o.pts, m)) best = it->second;
+      const auto& b = box[it->second];
+      if (b[0] <= mx && mx <= b[2] && b[1] <= my && my <= b[3]) cand.push_back(it->second);
+    }
+    // Outers of one label containing the point are nested: the innermost has the least area.
+    std::size_t best = SIZE_MAX;
+    for (std::size_t c : cand) {
+      if (!inside_ring(a, outers[c].pts, m)) continue;
+      if (best != SIZE_MAX) {
+        if (!exact_area) {
+          outers[best].area2 = area2_of(a, outers[best].pts);
+          outers[c].area2 = area2_of(a, outers[c].pts);
+        }
+        if (!(outers[c].area2 < outers[best].area2)) continue;
+      }
+      best = c;
     }
     if (best == SIZE_MAX) throw std::logic_error("merge_regions: a hole outside every region of its label");
     out[best].holes.push_back(std::move(hole.pts));

@@ -57,7 +57,8 @@ struct LabelledRegion {
 /// Removes every edge whose two sides carry the same label (`cycle_label` per cycle of `a`),
 /// traces the remaining boundaries and nests every hole in the smallest outer boundary of its
 /// label that contains it. Regions labelled `background` are not returned. Regions come in
-/// order of label, then of their first point.
-std::vector<LabelledRegion> merge_regions(const PlanarArrangement& a, const std::vector<int>& cycle_label, int background);
+/// order of label, then of their first point. `exact_area` off: area2 is left 0.
+std::vector<LabelledRegion> merge_regions(const PlanarArrangement& a, const std::vector<int>& cycle_label, int background,
+                                          bool exact_area = true);
 
 }  // namespace hlr

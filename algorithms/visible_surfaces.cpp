@@ -23,7 +23,17 @@ struct PictureTriangle {
   bool front;
   std::array<Exact2, 3> p;
   std::array<PictureLinear, 2> ray;
+  // Filters (decide only when their error bound allows; docs/design.md): the corners' doubles,
+  // and for orthographic views the depth s(q) = num(q) / den exactly and in doubles.
+  std::array<std::array<double, 2>, 3> pd;
+  PictureLinear depth;
+  std::array<double, 3> depth_d;
 };
+
+constexpr double kU = 0x1p-52;  // relative error of mpq_get_d
+
+// Doubles are trusted only in [2^-400, 2^400] (no underflow or overflow in products of two).
+bool in_range(double x) { return x == 0 || (std::fabs(x) >= 0x1p-400 && std::fabs(x) <= 0x1p400); }
 
 // Lexicographic sign of f at m + e·n + e²·t.
 int lex_sign(const PictureLinear& f, const Exact2& m, const Exact2& n, const Exact2& t) {
@@ -38,6 +48,12 @@ PictureLinear scaled_minus(const PictureLinear& f, const Rational& a, const Pict
   // a·f - b·g
   return {a * f.c0 - b * g.c0, a * f.cx - b * g.cx, a * f.cy - b * g.cy};
 }
+
+// The probe point m in doubles, bounds on |m| per axis, and whether the filters may be used.
+struct Near {
+  double x, y, mag_x, mag_y;
+  bool ok;
+};
 
 class Prober {
  public:
@@ -74,6 +90,12 @@ class Prober {
         if (o < 0) std::swap(pt.p[1], pt.p[2]);
         pt.front = front_facing(h);
         front_[pt.id] = pt.front;
+        for (int k = 0; k < 3; ++k) pt.pd[k] = {pt.p[k][0].get_d(), pt.p[k][1].get_d()};
+        if (!pp_.perspective()) {
+          const Rational& den = ray[1].c0;
+          pt.depth = PictureLinear{ray[0].c0 / den, ray[0].cx / den, ray[0].cy / den};
+          pt.depth_d = {pt.depth.c0.get_d(), pt.depth.cx.get_d(), pt.depth.cy.get_d()};
+        }
         per_face[i].push_back(std::move(pt));
       }
     });
@@ -103,6 +125,12 @@ class Prober {
     Exact2 t{b[0] - a[0], b[1] - a[1]};
     Exact2 n{-t[1], t[0]};
     double mx = m[0].get_d(), my = m[1].get_d();
+    // |m - (mx, my)| <= kU·|m| per coordinate; the filters below use mag = the largest of |a|,
+    // |b| per axis, which bounds |m| too.
+    Near nr{mx, my, std::max(std::fabs(a[0].get_d()), std::fabs(b[0].get_d())) * (1 + 4 * kU),
+            std::max(std::fabs(a[1].get_d()), std::fabs(b[1].get_d())) * (1 + 4 * kU),
+            in_range(mx) && in_range(my) && in_range(a[0].get_d()) && in_range(a[1].get_d()) && in_range(b[0].get_d()) &&
+                in_range(b[1].get_d())};
     double pad = 1e-9 * std::max({std::fabs(mx), std::fabs(my), 1e-300});
     scratch.clear();
     grid_.visit(ScreenRect{mx - pad, my - pad, mx + pad, my + pad}, [&](int i) {
@@ -113,8 +141,8 @@ class Prober {
     scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
     int best = -1;
     for (int i : scratch) {
-      if (!contains(tris_[i], m, n, t)) continue;
-      if (best < 0 || nearer(tris_[i], tris_[best], m, n, t)) best = i;
+      if (!contains(tris_[i], m, n, t, nr)) continue;
+      if (best < 0 || nearer(tris_[i], tris_[best], m, n, t, nr)) best = i;
     }
     return best < 0 ? -1 : tris_[best].id;
   }
@@ -128,9 +156,19 @@ class Prober {
     return pp_.perspective() ? sgn(ray[0].c0) < 0 : sgn(ray[1].c0) > 0;
   }
 
-  // Is m + e·n + e²·t inside the (counter-clockwise) triangle?
-  static bool contains(const PictureTriangle& tr, const Exact2& m, const Exact2& n, const Exact2& t) {
+  // Is m + e·n + e²·t inside the (counter-clockwise) triangle? Each side first by the double
+  // filter at m (error bound as planar_arrangement.cpp's orientation, doubled for m's own
+  // rounding), then lexicographically in rationals.
+  static bool contains(const PictureTriangle& tr, const Exact2& m, const Exact2& n, const Exact2& t, const Near& nr) {
     for (int k = 0; k < 3; ++k) {
+      if (nr.ok) {
+        const auto &p = tr.pd[k], &q = tr.pd[(k + 1) % 3];
+        double det = (q[0] - p[0]) * (nr.y - p[1]) - (q[1] - p[1]) * (nr.x - p[0]);
+        double mx = std::max({std::fabs(p[0]), std::fabs(q[0]), nr.mag_x}), my = std::max({std::fabs(p[1]), std::fabs(q[1]), nr.mag_y});
+        double bound = 128 * kU * mx * my;
+        if (det > bound) continue;
+        if (det < -bound) return false;
+      }
       const Exact2 &p = tr.p[k], &q = tr.p[(k + 1) % 3];
       // Left of p -> q: cross(q - p, X - p) > 0, linear in X.
       Rational ex = q[0] - p[0], ey = q[1] - p[1];
@@ -142,13 +180,22 @@ class Prober {
 
   // Is triangle x strictly nearer the viewer than y at the offset point? Equal depth (one
   // plane): the side facing the viewer first, then the smaller face number.
-  bool nearer(const PictureTriangle& x, const PictureTriangle& y, const Exact2& m, const Exact2& n, const Exact2& t) const {
+  bool nearer(const PictureTriangle& x, const PictureTriangle& y, const Exact2& m, const Exact2& n, const Exact2& t,
+              const Near& nr) const {
     if (x.id == y.id) return false;
     int s;
     if (!pp_.perspective()) {
-      // s = num / den with den constant; larger is nearer: sign(s_x - s_y).
-      const Rational &dx = x.ray[1].c0, &dy = y.ray[1].c0;
-      PictureLinear diff = scaled_minus(x.ray[0], 1 / dx, y.ray[0], 1 / dy);
+      // s = num / den with den constant; larger is nearer: sign(s_x - s_y). Filter: each
+      // depth's double at m is within 16·kU·(|c0| + |cx|·|mx| + |cy|·|my|) of its value.
+      if (nr.ok && in_range(x.depth_d[0]) && in_range(x.depth_d[1]) && in_range(x.depth_d[2]) && in_range(y.depth_d[0]) &&
+          in_range(y.depth_d[1]) && in_range(y.depth_d[2])) {
+        auto val = [&](const std::array<double, 3>& c) { return c[0] + c[1] * nr.x + c[2] * nr.y; };
+        auto mag = [&](const std::array<double, 3>& c) { return std::fabs(c[0]) + std::fabs(c[1]) * nr.mag_x + std::fabs(c[2]) * nr.mag_y; };
+        double d = val(x.depth_d) - val(y.depth_d), bound = 16 * kU * (mag(x.depth_d) + mag(y.depth_d));
+        if (d > bound) return true;
+        if (d < -bound) return false;
+      }
+      PictureLinear diff{x.depth.c0 - y.depth.c0, x.depth.cx - y.depth.cx, x.depth.cy - y.depth.cy};
       s = lex_sign(diff, m, n, t);
     } else {
       // l = num / den(q), num constant; smaller is nearer. l_x - l_y = G / (den_x den_y) with
@@ -188,6 +235,12 @@ void check_in_front(const std::vector<const Polyhedron*>& bodies, const Camera& 
 VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineDrawing& lines,
                                  const SurfaceOptions& options) {
   auto t0 = std::chrono::steady_clock::now();
+  auto lap = [t = t0]() mutable {
+    auto now = std::chrono::steady_clock::now();
+    double d = std::chrono::duration<double>(now - t).count();
+    t = now;
+    return d;
+  };
   check_in_front(bodies, camera, lines);
   VisibleSurfaces out;
   PicturePlane pp(camera);
@@ -200,6 +253,7 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
   DedupOptions dopt;
   dopt.threads = options.threads;
   CleanDrawing clean = dedup_drawing(d2, lines, camera, dopt);
+  out.stats.seconds_clean = lap();
   std::vector<Exact2> pts(clean.points.size());
   ParallelLoop loop(options.threads);
   loop.for_each(pts.size(), 256, [&](std::size_t i) {
@@ -215,6 +269,7 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
   for (const CleanEdge& e : clean.edges)
     if (e.visible) segs.push_back({e.p, e.q});
   out.stats.segments = segs.size();
+  out.stats.seconds_points = lap();
   ArrangementOptions ao;
   ao.threads = options.threads;
   PlanarArrangement arr = build_arrangement(std::move(pts), segs, ao);
@@ -223,6 +278,7 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
   out.stats.crossings = arr.crossings;
   out.stats.splits = arr.splits;
   out.stats.exact_tests = arr.exact_tests;
+  out.stats.seconds_arrangement = lap();
 
   // The face seen in each cycle's cell.
   Prober prober(bodies, pp, options.threads);
@@ -241,20 +297,32 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
       if (prober.probe(arr.points[arr.origin[h]], arr.points[arr.head(h)], scratch) != label[arr.cycle[h]])
         ++out.stats.label_mismatches;
   }
-  std::vector<LabelledRegion> regions = merge_regions(arr, label, -1);
+  out.stats.seconds_probe = lap();
+  std::vector<LabelledRegion> regions = merge_regions(arr, label, -1, options.lift);
 
   // Lift each region into its face's plane.
   std::vector<std::pair<int, int>> face_of(prober.total_faces());
   for (std::size_t b = 0, id = 0; b < bodies.size(); ++b)
     for (std::size_t f = 0; f < bodies[b]->num_faces(); ++f, ++id) face_of[id] = {static_cast<int>(b), static_cast<int>(f)};
   // A corner is lifted into the plane of the face on the left of its half-edge.
-  auto polygon = [&](const LabelledRegion& r) {
+  std::vector<std::array<PictureLinear, 2>> ray_of(prober.total_faces());
+  {
+    std::vector<char> used(prober.total_faces(), 0);
+    if (options.lift)
+      for (int l : label)
+        if (l >= 0) used[l] = 1;
+    loop.for_each(used.size(), 256, [&](std::size_t id) {
+      if (!used[id]) return;
+      auto [b, f] = face_of[id];
+      ray_of[id] = pp.ray_parameter(bodies[b]->planes()[f]);
+    });
+  }
+  auto polygon = [&](const LabelledRegion& r, bool lift) {
     VisiblePolygon vp;
     auto ring = [&](const std::vector<std::uint32_t>& hs, std::vector<Point3>& p3, std::vector<Exact2>& p2) {
       for (std::uint32_t h : hs) {
-        auto [b, f] = face_of[label[arr.cycle[h]]];
         p2.push_back(arr.points[arr.origin[h]]);
-        p3.push_back(pp.lift(p2.back(), bodies[b]->planes()[f]));
+        if (lift) p3.push_back(pp.lift(p2.back(), ray_of[label[arr.cycle[h]]]));
       }
     };
     ring(r.outer, vp.outer, vp.outer_2d);
@@ -267,7 +335,7 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
     return vp;
   };
   std::vector<VisiblePolygon> polys(regions.size());
-  loop.for_each(regions.size(), 16, [&](std::size_t i) { polys[i] = polygon(regions[i]); });
+  loop.for_each(regions.size(), 16, [&](std::size_t i) { polys[i] = polygon(regions[i], options.lift); });
   for (std::size_t i = 0; i < regions.size(); ++i) {
     auto [b, f] = face_of[regions[i].label];
     if (out.faces.empty() || out.faces.back().body != b || out.faces.back().face != f) {
@@ -286,15 +354,16 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
         auto [b, f] = face_of[label[c]];
         group_label[c] = options.face_group.at(b).at(f);
       }
-    std::vector<LabelledRegion> gr = merge_regions(arr, group_label, -1);
+    std::vector<LabelledRegion> gr = merge_regions(arr, group_label, -1, false);
     std::vector<VisiblePolygon> gp(gr.size());
-    loop.for_each(gr.size(), 16, [&](std::size_t i) { gp[i] = polygon(gr[i]); });
+    loop.for_each(gr.size(), 16, [&](std::size_t i) { gp[i] = polygon(gr[i], false); });
     for (std::size_t i = 0; i < gr.size(); ++i) {
       if (out.groups.empty() || out.groups.back().group != gr[i].label) out.groups.push_back(VisibleGroup{gr[i].label, {}});
       out.groups.back().polygons.push_back(std::move(gp[i]));
     }
   }
   out.stats.polygons = regions.size();
+  out.stats.seconds_regions = lap();
   out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

@@ -25,6 +25,9 @@ struct SurfaceOptions {
   /// regions of equal group are merged too (VisibleSurfaces::groups): no seam between faces
   /// that are filled alike.
   std::vector<std::vector<int>> face_group;
+  /// Lift the faces' polygons to exact 3D corners (VisiblePolygon::outer, holes); off: the
+  /// exact picture corners only. Group polygons are never lifted.
+  bool lift = true;
 };
 
 /// One visible piece of a face: exact 3D vertices in the face's plane and the same points in
@@ -53,10 +56,11 @@ struct SurfaceStats {
   std::size_t polygons = 0;     // visible polygons out
   std::size_t label_mismatches = 0;  // check_cycles: half-edges whose label differs from their cycle's
   double seconds = 0;
+  // Stages (wall clock): 2D clean-up, exact picture points, arrangement, probes, merge and lift.
+  double seconds_clean = 0, seconds_points = 0, seconds_arrangement = 0, seconds_probe = 0, seconds_regions = 0;
 };
 
-/// A region of faces of one group (SurfaceOptions::face_group): each corner lifted into the
-/// plane of a face of the group that it bounds (for drawing; the 2D corners are exact).
+/// A region of faces of one group (SurfaceOptions::face_group), exact picture corners only.
 struct VisibleGroup {
   int group = -1;
   std::vector<VisiblePolygon> polygons;

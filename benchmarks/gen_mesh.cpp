@@ -6,10 +6,13 @@
 //   gen_mesh star N     prism on a non-convex star polygon of 2·N vertices (radii 1000, 600)
 //   gen_mesh cubes N    N unit cubes on a jittered grid with gaps (one mesh, N components)
 //   gen_mesh cube-scene N  the same cubes as a YAML scene of N box bodies (Roberts' input)
+//   gen_mesh triangles N S  N random triangles in the unit cube, corners k/1024 (exact as
+//                           written), edges about 0.1; seed S (the visible-surfaces benchmark)
 // Writes to standard output.
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <algorithm>
 #include <map>
@@ -155,6 +158,24 @@ void torus(int N, int M) {
   write(v, f);
 }
 
+// N separate triangles: a corner at k/1024 in [0, 1]³, the others within ±100/1024 of it
+// (a linear congruential generator: the same file on every machine).
+void triangles(int n, unsigned seed) {
+  std::uint64_t state = seed * 2654435761u + 1;
+  auto next = [&](int lo, int hi) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return lo + static_cast<int>((state >> 33) % static_cast<std::uint64_t>(hi - lo + 1));
+  };
+  std::printf("OFF\n%d %d 0\n", 3 * n, n);
+  for (int t = 0; t < n; ++t) {
+    int x = next(0, 1024), y = next(0, 1024), z = next(0, 1024);
+    std::printf("%.10f %.10f %.10f\n", x / 1024.0, y / 1024.0, z / 1024.0);
+    for (int k = 0; k < 2; ++k)
+      std::printf("%.10f %.10f %.10f\n", (x + next(-100, 100)) / 1024.0, (y + next(-100, 100)) / 1024.0, (z + next(-100, 100)) / 1024.0);
+  }
+  for (int t = 0; t < n; ++t) std::printf("3 %d %d %d\n", 3 * t, 3 * t + 1, 3 * t + 2);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -175,6 +196,10 @@ int main(int argc, char** argv) {
       prism(n, what == "star");
     return 0;
   }
-  std::fprintf(stderr, "usage: gen_mesh sphere F | torus N M | prism N | star N | cubes N | cube-scene N\n");
+  if (what == "triangles" && argc == 4) {
+    triangles(std::atoi(argv[2]), static_cast<unsigned>(std::atoi(argv[3])));
+    return 0;
+  }
+  std::fprintf(stderr, "usage: gen_mesh sphere F | torus N M | prism N | star N | cubes N | cube-scene N | triangles N SEED\n");
   return 2;
 }

@@ -219,7 +219,8 @@ std::string drawing_text(const std::vector<RenderResult>& results, const std::ve
     progress("pen order");
     for (Plot& p : plots) {
       drop_short_strokes(p, a.min_length / sheet.views[0].scale);
-      if (!a.raw) order_plot(p, {p.bounds[0], p.bounds[3]});
+      // A shaded picture is not plotted: its lines keep their chained order.
+      if (!a.raw && p.fills.empty()) order_plot(p, {p.bounds[0], p.bounds[3]});
     }
     for (const std::string& note : sheet.notes) std::cerr << "hlr " << command << ": note: " << note << "\n";
     progress("writing");

@@ -105,6 +105,7 @@ int run_render(const RenderArgs& a) {
     if (!view_names.empty()) one.view = view_names[i];
     if (one.up_axis.empty()) one.up_axis = z_up ? "z" : "y";
     RenderOptions options = render_options(one);
+    options.surface_corners = format == "json";
     progress(view_names.empty() ? "hidden lines" : "hidden lines, view " + view_names[i]);
     try {
       results[i] = render(i + 1 < n_views ? scenes : std::move(scenes), options);
@@ -136,7 +137,9 @@ int run_render(const RenderArgs& a) {
     if (const auto& sf = results[0].surfaces)
       std::cerr << "timings: surfaces " << sf->stats.seconds << " s, visible pieces " << sf->stats.segments << ", arrangement edges "
                 << sf->stats.edges << ", cells " << sf->stats.cycles << ", crossings " << sf->stats.crossings << ", polygons "
-                << sf->stats.polygons << ", exact sign tests " << sf->stats.exact_tests << "\n";
+                << sf->stats.polygons << ", exact sign tests " << sf->stats.exact_tests << " (clean-up " << sf->stats.seconds_clean
+                << " s, points " << sf->stats.seconds_points << " s, arrangement " << sf->stats.seconds_arrangement << " s, probes "
+                << sf->stats.seconds_probe << " s, regions " << sf->stats.seconds_regions << " s)\n";
   }
   return 0;
 }

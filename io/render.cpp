@@ -116,6 +116,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
   shade_faces(r, scenes, d);
   SurfaceOptions so;
   so.threads = o.lines.threads;
+  so.lift = o.surface_corners;
   std::map<std::array<int, 3>, int> group_of;
   so.face_group.resize(r.bodies.size());
   for (std::size_t b = 0; b < r.bodies.size(); ++b)
@@ -190,15 +191,16 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
 void add_surface_fills(Plot& plot, const RenderResult& r) {
   if (!r.surfaces) return;
   Projector proj = drawing_projector(r.drawing, r.camera);
+  PictureToDrawing to_drawing(PicturePlane(r.camera), proj.frame());
   bool had = !plot.empty();
   for (const VisibleGroup& g : r.surfaces->groups)
     for (const VisiblePolygon& p : g.polygons) {
       PlotFill f;
       f.colour = r.group_colours[g.group];
-      auto ring = [&](const std::vector<Point3>& pts) {
+      auto ring = [&](const std::vector<Exact2>& pts) {
         std::vector<Point2> out;
-        for (const Point3& q : pts) {
-          auto xy = proj.project(q);
+        for (const Exact2& q : pts) {
+          auto xy = to_drawing(q);
           out.push_back({xy[0], xy[1]});
           if (!had) plot.bounds = {xy[0], xy[1], xy[0], xy[1]}, had = true;
           plot.bounds = {std::min(plot.bounds[0], xy[0]), std::min(plot.bounds[1], xy[1]), std::max(plot.bounds[2], xy[0]),
@@ -206,8 +208,8 @@ void add_surface_fills(Plot& plot, const RenderResult& r) {
         }
         f.rings.push_back(std::move(out));
       };
-      ring(p.outer);
-      for (const auto& h : p.holes) ring(h);
+      ring(p.outer_2d);
+      for (const auto& h : p.holes_2d) ring(h);
       plot.fills.push_back(std::move(f));
     }
 }

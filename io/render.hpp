@@ -36,6 +36,9 @@ struct RenderOptions {
   /// Also the visible part of every face as exact polygons, shaded (visible_surfaces.hpp,
   /// lighting.hpp); the line drawing is then the selected lines of the same exact solution.
   bool surfaces = false;
+  /// With surfaces: lift every visible polygon to exact 3D corners (the JSON needs them; the
+  /// fills of SVG, PDF and PNG do not).
+  bool surface_corners = true;
 };
 
 struct RenderResult {
