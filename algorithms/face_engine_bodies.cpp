@@ -181,6 +181,8 @@ void Engine<P>::prepare_body(int b, LineDrawing& res) {
     flipped_.push_back(b);
   }
   res.facing.emplace_back(facing_[b].begin(), facing_[b].end());
+  res.back_faces_unseen.resize(b + 1, 0);
+  res.back_faces_unseen[b] = solid_[b] && !eye_on_[b];
 }
 
 // Parity of the crossings of a ray from `x` with the triangles `ids`, exactly: 1 inside, 0

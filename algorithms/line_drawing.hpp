@@ -113,6 +113,9 @@ struct BodyNote {
 struct LineDrawing {
   /// Per body and face: 1 facing, 0 edge-on, -1 non-facing (facing.hpp).
   std::vector<std::vector<signed char>> facing;
+  /// Per body (per-face route): a closed solid with the eye off its surface, so no sight ray
+  /// meets a non-facing face of it before a facing one (empty: not known).
+  std::vector<char> back_faces_unseen;
   std::vector<Segment> segments;
   DrawingStats stats;
   std::vector<BodyNote> notes;

@@ -21,8 +21,8 @@ namespace {
 struct PictureTriangle {
   int body, face, id;  // id: global face number
   bool front;
-  std::array<Exact2, 3> p;
-  std::array<PictureLinear, 2> ray;
+  std::array<const Exact2*, 3> p;  // into the projected vertices
+  const std::array<PictureLinear, 2>* ray;  // the face's
   // Filters (decide only when their error bound allows; docs/design.md): the corners' doubles,
   // and for orthographic views the depth s(q) = num(q) / den exactly and in doubles.
   std::array<std::array<double, 2>, 3> pd;
@@ -57,18 +57,19 @@ struct Near {
 
 class Prober {
  public:
-  Prober(const std::vector<const Polyhedron*>& bodies, const PicturePlane& pp, unsigned threads) : pp_(pp) {
+  Prober(const std::vector<const Polyhedron*>& bodies, const PicturePlane& pp, const LineDrawing& lines, unsigned threads) : pp_(pp) {
     std::vector<int> offset(bodies.size() + 1, 0);
     for (std::size_t b = 0; b < bodies.size(); ++b) offset[b + 1] = offset[b] + static_cast<int>(bodies[b]->num_faces());
     total_faces_ = offset.back();
     std::vector<std::vector<PictureTriangle>> per_face(total_faces_);
     front_.assign(total_faces_, 1);
     ParallelLoop loop(threads);
-    std::vector<std::vector<Exact2>> proj(bodies.size());
+    proj_.resize(bodies.size());
+    rays_.resize(total_faces_);
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       bodies[b]->planes();  // computed on first use, not thread-safe then
-      proj[b].resize(bodies[b]->num_vertices());
-      loop.for_each(proj[b].size(), 256, [&](std::size_t v) { proj[b][v] = pp_.project(bodies[b]->vertices()[v]); });
+      proj_[b].resize(bodies[b]->num_vertices());
+      loop.for_each(proj_[b].size(), 256, [&](std::size_t v) { proj_[b][v] = pp_.project(bodies[b]->vertices()[v]); });
     }
     std::vector<std::pair<int, int>> faces;
     for (std::size_t b = 0; b < bodies.size(); ++b)
@@ -78,24 +79,34 @@ class Prober {
       const Polyhedron& p = *bodies[b];
       const Plane& h = p.planes()[f];
       if (h.is_degenerate()) return;
+      // A closed solid's faces turned away are never met first by a sight ray.
+      if (static_cast<std::size_t>(b) < lines.back_faces_unseen.size() && lines.back_faces_unseen[b] &&
+          lines.facing[b][f] < 0)
+        return;
       FaceTriangles ft = face_triangles(p, f);
       if (ft.status != FaceTriangles::Status::Ok) return;
-      auto ray = pp_.ray_parameter(h);
+      const int id = offset[b] + f;
+      rays_[id] = pp_.ray_parameter(h);
+      const auto& ray = rays_[id];
+      if (!pp_.perspective() && ray[1].c0 == 0) return;  // edge-on: never the face seen at a point of a cell
+      const bool front = pp_.perspective() ? sgn(ray[0].c0) < 0 : sgn(ray[1].c0) > 0;
+      front_[id] = front;
+      PictureLinear depth;
+      std::array<double, 3> depth_d{0, 0, 0};
+      if (!pp_.perspective()) {
+        const Rational& den = ray[1].c0;
+        depth = PictureLinear{ray[0].c0 / den, ray[0].cx / den, ray[0].cy / den};
+        depth_d = {depth.c0.get_d(), depth.cx.get_d(), depth.cy.get_d()};
+      }
       const Face& face = p.faces()[f];
       for (const FaceTriangle& t : ft.triangles) {
-        PictureTriangle pt{b, f, offset[b] + f, true, {}, ray};
-        for (int k = 0; k < 3; ++k) pt.p[k] = proj[b][face[t.v[k]]];
-        int o = orient2d(pt.p[0], pt.p[1], pt.p[2]);
+        PictureTriangle pt{b, f, id, front, {}, &ray, {}, {}, depth_d};
+        for (int k = 0; k < 3; ++k) pt.p[k] = &proj_[b][face[t.v[k]]];
+        int o = orient2d(*pt.p[0], *pt.p[1], *pt.p[2]);
         if (o == 0) continue;  // edge-on: never the face seen at a point of a cell
         if (o < 0) std::swap(pt.p[1], pt.p[2]);
-        pt.front = front_facing(h);
-        front_[pt.id] = pt.front;
-        for (int k = 0; k < 3; ++k) pt.pd[k] = {pt.p[k][0].get_d(), pt.p[k][1].get_d()};
-        if (!pp_.perspective()) {
-          const Rational& den = ray[1].c0;
-          pt.depth = PictureLinear{ray[0].c0 / den, ray[0].cx / den, ray[0].cy / den};
-          pt.depth_d = {pt.depth.c0.get_d(), pt.depth.cx.get_d(), pt.depth.cy.get_d()};
-        }
+        for (int k = 0; k < 3; ++k) pt.pd[k] = {(*pt.p[k])[0].get_d(), (*pt.p[k])[1].get_d()};
+        if (!pp_.perspective()) pt.depth = depth;
         per_face[i].push_back(std::move(pt));
       }
     });
@@ -105,8 +116,8 @@ class Prober {
     rects.reserve(tris_.size());
     for (const auto& t : tris_) {
       ScreenRect r{INFINITY, INFINITY, -INFINITY, -INFINITY};
-      for (const auto& q : t.p) {
-        double x = q[0].get_d(), y = q[1].get_d();
+      for (const auto& q : t.pd) {
+        double x = q[0], y = q[1];
         r.x0 = std::min(r.x0, x), r.x1 = std::max(r.x1, x), r.y0 = std::min(r.y0, y), r.y1 = std::max(r.y1, y);
       }
       double pad = 1e-9 * std::max({std::fabs(r.x0), std::fabs(r.x1), std::fabs(r.y0), std::fabs(r.y1), 1e-300});
@@ -150,12 +161,6 @@ class Prober {
   bool front(int id) const { return front_[id]; }
 
  private:
-  bool front_facing(const Plane& h) const {
-    auto ray = pp_.ray_parameter(h);
-    // Orthographic: n·v > 0. Perspective: the eye on the positive side, h(E) > 0 (num = -h(E)).
-    return pp_.perspective() ? sgn(ray[0].c0) < 0 : sgn(ray[1].c0) > 0;
-  }
-
   // Is m + e·n + e²·t inside the (counter-clockwise) triangle? Each side first by the double
   // filter at m (error bound as planar_arrangement.cpp's orientation, doubled for m's own
   // rounding), then lexicographically in rationals.
@@ -169,7 +174,7 @@ class Prober {
         if (det > bound) continue;
         if (det < -bound) return false;
       }
-      const Exact2 &p = tr.p[k], &q = tr.p[(k + 1) % 3];
+      const Exact2 &p = *tr.p[k], &q = *tr.p[(k + 1) % 3];
       // Left of p -> q: cross(q - p, X - p) > 0, linear in X.
       Rational ex = q[0] - p[0], ey = q[1] - p[1];
       PictureLinear f{-(ex * p[1] - ey * p[0]), -ey, ex};
@@ -200,8 +205,9 @@ class Prober {
     } else {
       // l = num / den(q), num constant; smaller is nearer. l_x - l_y = G / (den_x den_y) with
       // G = num_x den_y - num_y den_x linear in q.
-      PictureLinear g = scaled_minus(y.ray[1], x.ray[0].c0, x.ray[1], y.ray[0].c0);
-      int sg = lex_sign(g, m, n, t) * lex_sign(x.ray[1], m, n, t) * lex_sign(y.ray[1], m, n, t);
+      const auto &rx = *x.ray, &ry = *y.ray;
+      PictureLinear g = scaled_minus(ry[1], rx[0].c0, rx[1], ry[0].c0);
+      int sg = lex_sign(g, m, n, t) * lex_sign(rx[1], m, n, t) * lex_sign(ry[1], m, n, t);
       s = -sg;
     }
     if (s != 0) return s > 0;
@@ -210,6 +216,8 @@ class Prober {
   }
 
   const PicturePlane& pp_;
+  std::vector<std::vector<Exact2>> proj_;                  // per body and vertex
+  std::vector<std::array<PictureLinear, 2>> rays_;         // per global face
   std::vector<PictureTriangle> tris_;
   std::vector<ScreenRect> rects_;
   ScreenGrid grid_;
@@ -281,8 +289,9 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
   out.stats.seconds_arrangement = lap();
 
   // The face seen in each cycle's cell.
-  Prober prober(bodies, pp, options.threads);
+  Prober prober(bodies, pp, lines, options.threads);
   out.stats.triangles = prober.triangles();
+  out.stats.seconds_triangles = lap();
   std::vector<int> label(arr.cycle_edge.size(), -1);
   loop.run(label.size(), 64, [&](unsigned, std::size_t begin, std::size_t end) {
     std::vector<int> scratch;

@@ -56,8 +56,10 @@ struct SurfaceStats {
   std::size_t polygons = 0;     // visible polygons out
   std::size_t label_mismatches = 0;  // check_cycles: half-edges whose label differs from their cycle's
   double seconds = 0;
-  // Stages (wall clock): 2D clean-up, exact picture points, arrangement, probes, merge and lift.
-  double seconds_clean = 0, seconds_points = 0, seconds_arrangement = 0, seconds_probe = 0, seconds_regions = 0;
+  // Stages (wall clock): 2D clean-up, exact picture points, arrangement, the scene's triangles
+  // in the picture, probes, merge and lift.
+  double seconds_clean = 0, seconds_points = 0, seconds_arrangement = 0, seconds_triangles = 0, seconds_probe = 0,
+         seconds_regions = 0;
 };
 
 /// A region of faces of one group (SurfaceOptions::face_group), exact picture corners only.

@@ -138,7 +138,7 @@ int run_render(const RenderArgs& a) {
       std::cerr << "timings: surfaces " << sf->stats.seconds << " s, visible pieces " << sf->stats.segments << ", arrangement edges "
                 << sf->stats.edges << ", cells " << sf->stats.cycles << ", crossings " << sf->stats.crossings << ", polygons "
                 << sf->stats.polygons << ", exact sign tests " << sf->stats.exact_tests << " (clean-up " << sf->stats.seconds_clean
-                << " s, points " << sf->stats.seconds_points << " s, arrangement " << sf->stats.seconds_arrangement << " s, probes "
+                << " s, points " << sf->stats.seconds_points << " s, arrangement " << sf->stats.seconds_arrangement << " s, triangles " << sf->stats.seconds_triangles << " s, probes "
                 << sf->stats.seconds_probe << " s, regions " << sf->stats.seconds_regions << " s)\n";
   }
   return 0;

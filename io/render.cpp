@@ -44,7 +44,9 @@ void eye_plane_notes(const RenderResult& r, std::vector<std::string>& notes) {
   }
 }
 
-std::array<double, 3> d3(const Point3& p) { return {to_double(p.x()), to_double(p.y()), to_double(p.z())}; }
+// Doubles for shading: the midpoint of the certified bounds each exact number carries.
+double mid(const Bounds& b) { return b.lo + (b.hi - b.lo) / 2; }
+std::array<double, 3> d3(const Point3& p) { return {mid(p.approx(0)), mid(p.approx(1)), mid(p.approx(2))}; }
 std::array<double, 3> d3(const Vector3& p) { return d3(Point3(p.x(), p.y(), p.z())); }
 std::array<double, 3> unit3(std::array<double, 3> a) {
   double l = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
@@ -82,9 +84,10 @@ void shade_faces(RenderResult& r, const std::vector<Scene>& scenes, const LineDr
     m.colour = palette_colour(static_cast<int>(b));
     if (r.bodies[b]->material) m = *r.bodies[b]->material;
     r.face_colours[b].resize(p.num_faces());
+    const std::array<double, 3> eye = d3(r.camera.eye), view = unit3(d3(r.camera.direction));
     ParallelLoop().for_each(p.num_faces(), 256, [&](std::size_t f) {
       const Plane& h = p.planes()[f];
-      std::array<double, 3> n = unit3({to_double(h.a()), to_double(h.b()), to_double(h.c())});
+      std::array<double, 3> n = unit3({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))});
       if (b < all.facing.size() && f < all.facing[b].size() && all.facing[b][f] < 0) n = {-n[0], -n[1], -n[2]};
       std::array<double, 3> c{0, 0, 0};
       for (int v : p.faces()[f]) {
@@ -92,8 +95,7 @@ void shade_faces(RenderResult& r, const std::vector<Scene>& scenes, const LineDr
         for (int k = 0; k < 3; ++k) c[k] += q[k] / static_cast<double>(p.faces()[f].size());
       }
       std::array<double, 3> to_viewer =
-          r.camera.perspective ? unit3({to_double(r.camera.eye.x()) - c[0], to_double(r.camera.eye.y()) - c[1], to_double(r.camera.eye.z()) - c[2]})
-                               : unit3(d3(r.camera.direction));
+          r.camera.perspective ? unit3({eye[0] - c[0], eye[1] - c[1], eye[2] - c[2]}) : view;
       r.face_colours[b][f] = shade(m, light, c, n, to_viewer);
     });
   }
