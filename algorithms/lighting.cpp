@@ -58,8 +58,8 @@ Rgb shade(const Material& m, const Lighting& l, const Vec3d& p, const Vec3d& n, 
 Lighting default_lighting(const Vec3d& v, const Vec3d& up, const Vec3d& right) {
   Lighting l;
   Light key;
-  key.direction = unit(Vec3d{v[0] + 0.8 * up[0] - 0.5 * right[0], v[1] + 0.8 * up[1] - 0.5 * right[1],
-                             v[2] + 0.8 * up[2] - 0.5 * right[2]});
+  key.direction = unit(Vec3d{v[0] + 0.5 * up[0] - 0.25 * right[0], v[1] + 0.5 * up[1] - 0.25 * right[1],
+                             v[2] + 0.5 * up[2] - 0.25 * right[2]});
   l.lights.push_back(key);
   return l;
 }
