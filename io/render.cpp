@@ -107,6 +107,12 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
   if (o.method != RenderMethod::Faces) throw std::invalid_argument("--surfaces works with --method faces");
   if (o.clip) throw std::invalid_argument("--surfaces does not take --clip (a clipped face is not a surface of the scene)");
   for (const Polyhedron* p : polys) p->planes();  // computed once, before the parallel stages
+  if (r.camera.perspective)
+    for (std::size_t b = 0; b < polys.size(); ++b)
+      for (const Point3& v : polys[b]->vertices())
+        if (r.camera.in_front(v) != Sign::Positive)
+          throw std::invalid_argument(r.names[b].source + ": body '" + r.names[b].name +
+                                      "' reaches the eye's plane or behind it: --surfaces needs every body in front of the eye");
   LineOptions all = o.lines;
   all.edges = EdgeSelection::All;
   all.classify_all = true;
