@@ -238,6 +238,81 @@ void check_in_front(const std::vector<const Polyhedron*>& bodies, const Camera& 
         throw std::invalid_argument("surfaces: a body is nearer than the near plane; move the eye back or lower --near");
 }
 
+// Merges the labelled cells into each face's polygons (and each group's), lifted into the
+// faces' planes when asked.
+template <class Front>
+void regions_to_surfaces(const PlanarArrangement& arr, const std::vector<int>& label, const std::vector<const Polyhedron*>& bodies,
+                         const PicturePlane& pp, Front front, const SurfaceOptions& options, VisibleSurfaces& out) {
+  ParallelLoop loop(options.threads);
+  std::size_t total_faces = 0;
+  for (const Polyhedron* b : bodies) total_faces += b->num_faces();
+  std::vector<LabelledRegion> regions = merge_regions(arr, label, -1, options.lift);
+
+  // Lift each region into its face's plane.
+  std::vector<std::pair<int, int>> face_of(total_faces);
+  for (std::size_t b = 0, id = 0; b < bodies.size(); ++b)
+    for (std::size_t f = 0; f < bodies[b]->num_faces(); ++f, ++id) face_of[id] = {static_cast<int>(b), static_cast<int>(f)};
+  // A corner is lifted into the plane of the face on the left of its half-edge.
+  std::vector<std::array<PictureLinear, 2>> ray_of(total_faces);
+  {
+    std::vector<char> used(total_faces, 0);
+    if (options.lift)
+      for (int l : label)
+        if (l >= 0) used[l] = 1;
+    loop.for_each(used.size(), 256, [&](std::size_t id) {
+      if (!used[id]) return;
+      auto [b, f] = face_of[id];
+      ray_of[id] = pp.ray_parameter(bodies[b]->planes()[f]);
+    });
+  }
+  auto polygon = [&](const LabelledRegion& r, bool lift) {
+    VisiblePolygon vp;
+    auto ring = [&](const std::vector<std::uint32_t>& hs, std::vector<Point3>& p3, std::vector<Exact2>& p2) {
+      for (std::uint32_t h : hs) {
+        p2.push_back(arr.points[arr.origin[h]]);
+        if (lift) p3.push_back(pp.lift(p2.back(), ray_of[label[arr.cycle[h]]]));
+      }
+    };
+    ring(r.outer, vp.outer, vp.outer_2d);
+    for (const auto& hole : r.holes) {
+      vp.holes.emplace_back();
+      vp.holes_2d.emplace_back();
+      ring(hole, vp.holes.back(), vp.holes_2d.back());
+    }
+    vp.area2 = r.area2;
+    return vp;
+  };
+  std::vector<VisiblePolygon> polys(regions.size());
+  loop.for_each(regions.size(), 16, [&](std::size_t i) { polys[i] = polygon(regions[i], options.lift); });
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    auto [b, f] = face_of[regions[i].label];
+    if (out.faces.empty() || out.faces.back().body != b || out.faces.back().face != f) {
+      VisibleFace vf;
+      vf.body = b;
+      vf.face = f;
+      vf.front = front(regions[i].label);
+      out.faces.push_back(std::move(vf));
+    }
+    out.faces.back().polygons.push_back(std::move(polys[i]));
+  }
+  if (!options.face_group.empty()) {
+    std::vector<int> group_label(label.size(), -1);
+    for (std::size_t c = 0; c < label.size(); ++c)
+      if (label[c] >= 0) {
+        auto [b, f] = face_of[label[c]];
+        group_label[c] = options.face_group.at(b).at(f);
+      }
+    std::vector<LabelledRegion> gr = merge_regions(arr, group_label, -1, false);
+    std::vector<VisiblePolygon> gp(gr.size());
+    loop.for_each(gr.size(), 16, [&](std::size_t i) { gp[i] = polygon(gr[i], false); });
+    for (std::size_t i = 0; i < gr.size(); ++i) {
+      if (out.groups.empty() || out.groups.back().group != gr[i].label) out.groups.push_back(VisibleGroup{gr[i].label, {}});
+      out.groups.back().polygons.push_back(std::move(gp[i]));
+    }
+  }
+  out.stats.polygons = regions.size();
+}
+
 }  // namespace
 
 VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineDrawing& lines,
@@ -307,73 +382,60 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
         ++out.stats.label_mismatches;
   }
   out.stats.seconds_probe = lap();
-  std::vector<LabelledRegion> regions = merge_regions(arr, label, -1, options.lift);
-
-  // Lift each region into its face's plane.
-  std::vector<std::pair<int, int>> face_of(prober.total_faces());
-  for (std::size_t b = 0, id = 0; b < bodies.size(); ++b)
-    for (std::size_t f = 0; f < bodies[b]->num_faces(); ++f, ++id) face_of[id] = {static_cast<int>(b), static_cast<int>(f)};
-  // A corner is lifted into the plane of the face on the left of its half-edge.
-  std::vector<std::array<PictureLinear, 2>> ray_of(prober.total_faces());
-  {
-    std::vector<char> used(prober.total_faces(), 0);
-    if (options.lift)
-      for (int l : label)
-        if (l >= 0) used[l] = 1;
-    loop.for_each(used.size(), 256, [&](std::size_t id) {
-      if (!used[id]) return;
-      auto [b, f] = face_of[id];
-      ray_of[id] = pp.ray_parameter(bodies[b]->planes()[f]);
-    });
-  }
-  auto polygon = [&](const LabelledRegion& r, bool lift) {
-    VisiblePolygon vp;
-    auto ring = [&](const std::vector<std::uint32_t>& hs, std::vector<Point3>& p3, std::vector<Exact2>& p2) {
-      for (std::uint32_t h : hs) {
-        p2.push_back(arr.points[arr.origin[h]]);
-        if (lift) p3.push_back(pp.lift(p2.back(), ray_of[label[arr.cycle[h]]]));
-      }
-    };
-    ring(r.outer, vp.outer, vp.outer_2d);
-    for (const auto& hole : r.holes) {
-      vp.holes.emplace_back();
-      vp.holes_2d.emplace_back();
-      ring(hole, vp.holes.back(), vp.holes_2d.back());
-    }
-    vp.area2 = r.area2;
-    return vp;
-  };
-  std::vector<VisiblePolygon> polys(regions.size());
-  loop.for_each(regions.size(), 16, [&](std::size_t i) { polys[i] = polygon(regions[i], options.lift); });
-  for (std::size_t i = 0; i < regions.size(); ++i) {
-    auto [b, f] = face_of[regions[i].label];
-    if (out.faces.empty() || out.faces.back().body != b || out.faces.back().face != f) {
-      VisibleFace vf;
-      vf.body = b;
-      vf.face = f;
-      vf.front = prober.front(regions[i].label);
-      out.faces.push_back(std::move(vf));
-    }
-    out.faces.back().polygons.push_back(std::move(polys[i]));
-  }
-  if (!options.face_group.empty()) {
-    std::vector<int> group_label(label.size(), -1);
-    for (std::size_t c = 0; c < label.size(); ++c)
-      if (label[c] >= 0) {
-        auto [b, f] = face_of[label[c]];
-        group_label[c] = options.face_group.at(b).at(f);
-      }
-    std::vector<LabelledRegion> gr = merge_regions(arr, group_label, -1, false);
-    std::vector<VisiblePolygon> gp(gr.size());
-    loop.for_each(gr.size(), 16, [&](std::size_t i) { gp[i] = polygon(gr[i], false); });
-    for (std::size_t i = 0; i < gr.size(); ++i) {
-      if (out.groups.empty() || out.groups.back().group != gr[i].label) out.groups.push_back(VisibleGroup{gr[i].label, {}});
-      out.groups.back().polygons.push_back(std::move(gp[i]));
-    }
-  }
-  out.stats.polygons = regions.size();
+  regions_to_surfaces(arr, label, bodies, pp, [&](int id) { return prober.front(id); }, options, out);
   out.stats.seconds_regions = lap();
   out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+VisibleSurfaces surfaces_from_pieces(const std::vector<SurfacePiece>& pieces, const std::vector<const Polyhedron*>& bodies,
+                                     const Camera& camera, const SurfaceOptions& options) {
+  VisibleSurfaces out;
+  PicturePlane pp(camera);
+  std::vector<int> offset(bodies.size() + 1, 0);
+  for (std::size_t b = 0; b < bodies.size(); ++b) offset[b + 1] = offset[b] + static_cast<int>(bodies[b]->num_faces());
+  std::vector<Exact2> pts;
+  std::vector<std::array<std::uint32_t, 2>> segs;
+  for (const SurfacePiece& p : pieces) {
+    const auto base = static_cast<std::uint32_t>(pts.size());
+    for (std::size_t i = 0; i < p.pts.size(); ++i) {
+      pts.push_back(p.pts[i]);
+      segs.push_back({base + static_cast<std::uint32_t>(i), base + static_cast<std::uint32_t>((i + 1) % p.pts.size())});
+    }
+  }
+  out.stats.segments = segs.size();
+  ArrangementOptions ao;
+  ao.threads = options.threads;
+  PlanarArrangement arr = build_arrangement(std::move(pts), segs, ao);
+  out.stats.edges = arr.num_edges();
+  out.stats.cycles = arr.cycle_edge.size();
+  // Each cell lies in at most one piece: the one holding the point just left of its edge.
+  auto label_of = [&](std::uint32_t h) {
+    const Exact2 &a = arr.points[arr.origin[h]], &b = arr.points[arr.head(h)];
+    Exact2 m{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2}, t{b[0] - a[0], b[1] - a[1]}, n{-(b[1] - a[1]), b[0] - a[0]};
+    for (const SurfacePiece& p : pieces) {
+      bool in = true;
+      for (std::size_t k = 0; k < p.pts.size() && in; ++k) {
+        const Exact2 &u = p.pts[k], &v = p.pts[(k + 1) % p.pts.size()];
+        Rational ex = v[0] - u[0], ey = v[1] - u[1];
+        in = lex_sign(PictureLinear{-(ex * u[1] - ey * u[0]), -ey, ex}, m, n, t) > 0;
+      }
+      if (in) return offset[p.body] + p.face;
+    }
+    return -1;
+  };
+  std::vector<int> label(arr.cycle_edge.size());
+  for (std::size_t c = 0; c < label.size(); ++c) label[c] = label_of(arr.cycle_edge[c]);
+  if (options.check_cycles)
+    for (std::uint32_t h = 0; h < arr.origin.size(); ++h)
+      if (label_of(h) != label[arr.cycle[h]]) ++out.stats.label_mismatches;
+  std::vector<char> front(offset.back(), 1);
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    for (std::size_t f = 0; f < bodies[b]->num_faces(); ++f) {
+      auto r = pp.ray_parameter(bodies[b]->planes()[f]);
+      front[offset[b] + f] = pp.perspective() ? sgn(r[0].c0) < 0 : sgn(r[1].c0) > 0;
+    }
+  regions_to_surfaces(arr, label, bodies, pp, [&](int id) { return front[id] != 0; }, options, out);
   return out;
 }
 

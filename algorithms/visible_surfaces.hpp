@@ -80,4 +80,16 @@ struct VisibleSurfaces {
 VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineDrawing& lines,
                                  const SurfaceOptions& options = {});
 
+/// A convex piece of the picture (counter-clockwise, exact) seen on a face.
+struct SurfacePiece {
+  int body = -1, face = -1;
+  std::vector<Exact2> pts;
+};
+
+/// The same result from pieces that do not overlap and cover the visible part of each face (the
+/// Weiler–Atherton route, weiler_atherton.hpp): merged per face, and per group when asked,
+/// through the same exact arrangement.
+VisibleSurfaces surfaces_from_pieces(const std::vector<SurfacePiece>& pieces, const std::vector<const Polyhedron*>& bodies,
+                                     const Camera& camera, const SurfaceOptions& options = {});
+
 }  // namespace hlr

@@ -1,6 +1,8 @@
 // Polyhedron: exact vertices and planes beside an OpenMesh mesh (see polyhedron.hpp).
 #include "kernel/polyhedron.hpp"
 
+#include <array>
+
 #include "kernel/openmesh_mesh.hpp"
 
 #include <OpenMesh/Core/System/omstream.hh>
@@ -13,6 +15,19 @@ namespace hlr {
 
 Polyhedron::Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces)
     : vertices_(std::move(vertices)), faces_(std::move(faces)) {
+  // GMP compares fractions correctly only in lowest terms: a coordinate built through the API
+  // as mpq_class(836, 1024) is brought to 209/256 here, once, for every route.
+  for (Point3& p : vertices_) {
+    bool canonical = true;
+    for (int k = 0; k < 3; ++k) {
+      const Rational& c = p[k];
+      canonical = canonical && sgn(c.get_den()) > 0 && gcd(c.get_num(), c.get_den()) == 1;
+    }
+    if (canonical) continue;
+    std::array<Rational, 3> c{p.x(), p.y(), p.z()};
+    for (Rational& q : c) q.canonicalize();
+    p = Point3(c[0], c[1], c[2]);
+  }
   const long nv = static_cast<long>(vertices_.size());
   for (std::size_t f = 0; f < faces_.size(); ++f) {
     if (faces_[f].size() < 3)

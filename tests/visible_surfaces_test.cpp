@@ -12,12 +12,14 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <random>
 #include <set>
 
 #include "algorithms/face_occluders.hpp"
 #include "algorithms/face_triangles.hpp"
 #include "algorithms/visible_surfaces.hpp"
+#include "algorithms/weiler_atherton.hpp"
 #include "io/mesh_reader.hpp"
 #include "io/scene.hpp"
 
@@ -456,7 +458,7 @@ TEST(VisibleSurfaces, RandomTrianglesUnionArea) {
     for (int i = 0; i < 25; ++i) {
       int x = c(rng), y = c(rng), z = c(rng);
       auto p = [&](int dx, int dy, int dz) {
-        return Point3(Rational(x + dx, 1024), Rational(y + dy, 1024), Rational(z + dz, 1024));
+        return Point3(rational(x + dx, 1024), rational(y + dy, 1024), rational(z + dz, 1024));
       };
       b.push_back(Polyhedron({p(0, 0, 0), p(e(rng), e(rng), e(rng)), p(e(rng), e(rng), e(rng))}, {{0, 1, 2}}));
     }
@@ -485,4 +487,110 @@ TEST(VisibleSurfaces, InsideOutSolidAndEyeOnASurface) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("in front of the eye"), std::string::npos) << e.what();
   }
+}
+
+// ---- the course's Weiler–Atherton algorithm gives the same visible part of every face
+
+namespace {
+
+// Same faces, same exact area per face, and every convex piece of Weiler–Atherton inside a
+// polygon of the fast route's same face (its centroid, exactly).
+void expect_same_as_fast_route(const std::vector<Polyhedron>& bodies, const Camera& cam, WeilerAthertonResult* out = nullptr) {
+  LineOptions lo;
+  lo.edges = EdgeSelection::All;
+  auto b = ptrs(bodies);
+  LineDrawing lines = face_occluders(b, cam, lo);
+  VisibleSurfaces fast = visible_surfaces(b, cam, lines);
+  WeilerAthertonResult wa = weiler_atherton(b, cam, lines);
+  std::vector<SurfacePiece> pieces;
+  for (const WaPolygon& p : wa.visible) pieces.push_back({p.body, p.face, p.pts});
+  SurfaceOptions so;
+  so.check_cycles = true;
+  VisibleSurfaces slow = surfaces_from_pieces(pieces, b, cam, so);
+  EXPECT_EQ(slow.stats.label_mismatches, 0u);
+  std::map<std::pair<int, int>, Rational> fa, sa;
+  for (const VisibleFace& f : fast.faces)
+    for (const VisiblePolygon& p : f.polygons) fa[{f.body, f.face}] += p.area2;
+  for (const VisibleFace& f : slow.faces)
+    for (const VisiblePolygon& p : f.polygons) sa[{f.body, f.face}] += p.area2;
+  EXPECT_EQ(fa, sa) << "visible area per face differs";
+  for (const WaPolygon& p : wa.visible) {
+    Rational cx = 0, cy = 0;
+    for (const Exact2& q : p.pts) cx += q[0], cy += q[1];
+    Exact2 c{cx / static_cast<long>(p.pts.size()), cy / static_cast<long>(p.pts.size())};
+    int in = 0;
+    for (const VisibleFace& f : fast.faces)
+      if (f.body == p.body && f.face == p.face)
+        for (const VisiblePolygon& vp : f.polygons) in += in_polygon(vp, c) > 0;
+    EXPECT_EQ(in, 1) << "a Weiler-Atherton piece of body " << p.body << " face " << p.face << " is not seen by the fast route";
+  }
+  if (out) *out = std::move(wa);
+}
+
+}  // namespace
+
+TEST(WeilerAtherton, EqualsTheFastRoute) {
+  std::vector<std::vector<Polyhedron>> scenes{
+      {box("0", "0", "0", "4", "4", "1"), box("1", "1", "1", "3", "3", "2")},
+      {box("0", "0", "0", "2", "2", "2"), box("2", "0", "0", "4", "2", "2")},
+      {box("0", "0", "0", "6", "4", "1"), box("0", "0", "1", "6", "1", "3")},
+      {quad(P("0", "0", "0"), P("3", "0", "0"), P("3", "2", "0"), P("0", "2", "0")),
+       quad(P("1", "1", "0"), P("4", "1", "0"), P("4", "3", "0"), P("1", "3", "0")),
+       quad(P("0", "0", "1"), P("2", "0", "1"), P("2", "2", "3"), P("0", "2", "3"))},
+  };
+  for (const auto& s : scenes)
+    for (const Camera& c : views(P("2", "1", "1"))) expect_same_as_fast_route(s, c);
+  Scene demo = load_scene(kData + "/demo.yaml");
+  std::vector<Polyhedron> d;
+  for (const auto& body : demo.bodies) d.push_back(body.body);
+  for (const Camera& c : views(P("3", "2", "1"))) expect_same_as_fast_route(d, c);
+}
+
+TEST(WeilerAtherton, PiercingPolygonsAreSplitAlongTheirIntersection) {
+  std::vector<Polyhedron> b{box("0", "0", "0", "3", "3", "3"), box("1", "1", "-1", "5", "2", "2")};
+  WeilerAthertonResult wa;
+  expect_same_as_fast_route(b, ortho("1", "1.3", "1.7"), &wa);
+  EXPECT_GT(wa.splits, 0u);
+  for (const Camera& c : views(P("2", "2", "1"))) expect_same_as_fast_route(b, c);
+}
+
+TEST(WeilerAtherton, CyclicSticksNeedNoSpecialCase) {
+  std::vector<Polyhedron> b{parallelepiped(P("0", "0", "0"), P("6", "0", "2"), P("0", "1", "0"), P("0", "0", "1/2")),
+                            parallelepiped(P("5", "0", "0"), P("0", "6", "2"), P("1", "0", "0"), P("0", "0", "1/2")),
+                            parallelepiped(P("6", "6", "0"), P("-6", "-6", "5/2"), P("1/2", "-1/2", "0"), P("0", "0", "1/2"))};
+  WeilerAthertonResult wa;
+  expect_same_as_fast_route(b, ortho("0", "0", "1"), &wa);
+  EXPECT_GT(wa.recursions, 0u);
+  for (const Camera& c : views(P("3", "3", "1"))) expect_same_as_fast_route(b, c);
+}
+
+TEST(WeilerAtherton, RandomTriangles) {
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> c(0, 1024), e(-200, 200);
+  std::vector<Polyhedron> b;
+  for (int i = 0; i < 20; ++i) {
+    int x = c(rng), y = c(rng), z = c(rng);
+    auto p = [&](int dx, int dy, int dz) { return Point3(rational(x + dx, 1024), rational(y + dy, 1024), rational(z + dz, 1024)); };
+    b.push_back(Polyhedron({p(0, 0, 0), p(e(rng), e(rng), e(rng)), p(e(rng), e(rng), e(rng))}, {{0, 1, 2}}));
+  }
+  int k = 0;
+  for (const Camera& cam : {ortho("1", "1.3", "1.7"), ortho("0", "0", "1"), persp("3", "2", "4", P("0.5", "0.5", "0.5"))}) {
+    SCOPED_TRACE(k++);
+    expect_same_as_fast_route(b, cam);
+  }
+}
+TEST(VisibleSurfaces, FractionsNotInLowestTermsFromTheApi) {
+  // mpq_class(836, 1024) is not reduced, and GMP compares such values wrongly: a polyhedron
+  // built through the API reduces its coordinates, so equal points stay equal in every route.
+  auto q = [](long n, long d) { return Rational(n, d); };  // deliberately not canonical
+  Polyhedron a({Point3(q(0, 1024), q(0, 1024), q(0, 1024)), Point3(q(836, 1024), q(0, 1024), q(0, 1024)),
+                Point3(q(0, 1024), q(654, 1024), q(0, 1024))},
+               {{0, 1, 2}});
+  EXPECT_EQ(a.vertices()[1].x(), rational(209, 256));
+  EXPECT_EQ(a.vertices()[1].x().get_den(), 256);
+  std::vector<Polyhedron> b{a, Polyhedron({Point3(rational(209, 256), rational(327, 512), rational(-1, 2)),
+                                           Point3(rational(0, 1), rational(0, 1), rational(1, 1)),
+                                           Point3(rational(1, 1), rational(1, 1), rational(1, 1))},
+                                          {{0, 1, 2}})};
+  check_scene(ptrs(b), ortho("0", "0", "1"), 6, true);
 }
