@@ -55,6 +55,8 @@ struct SurfaceStats {
   std::size_t triangles = 0;    // scene triangles that can be seen (not edge-on)
   std::size_t polygons = 0;     // visible polygons out
   std::size_t label_mismatches = 0;  // check_cycles: half-edges whose label differs from their cycle's
+  bool weiler_atherton = false;      // made by the Weiler–Atherton route (surfaces_from_pieces)
+  std::size_t wa_clips = 0, wa_splits = 0, wa_recursions = 0, wa_cycles = 0;
   double seconds = 0;
   // Stages (wall clock): 2D clean-up, exact picture points, arrangement, the scene's triangles
   // in the picture, probes, merge and lift.

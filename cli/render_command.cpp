@@ -39,7 +39,7 @@ Point3 as_point(const Vector3& v) { return Point3(v.x(), v.y(), v.z()); }
 
 RenderOptions render_options(const RenderArgs& a) {
   RenderOptions o;
-  o.method = a.method == "roberts" ? RenderMethod::Roberts : RenderMethod::Faces;
+  o.method = a.method == "roberts" ? RenderMethod::Roberts : a.method == "weiler-atherton" ? RenderMethod::WeilerAtherton : RenderMethod::Faces;
   o.lines.edges = a.edges == "all" ? EdgeSelection::All : EdgeSelection::Feature;
   o.lines.threads = a.threads;
   try {
@@ -166,8 +166,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"all", "feature"}));
   cmd->add_option("--crease", a->crease, "Crease threshold in degrees between face normals (default 30; 0 keeps every edge between non-coplanar faces)");
   cmd->add_option("--method", a->method,
-                  "faces (the default: per-face occluders, any mesh) or roberts (the course's algorithm; non-convex solids are split into convex pieces)")
-      ->check(CLI::IsMember({"faces", "roberts"}));
+                  "faces (the default: per-face occluders, any mesh), roberts (the course's algorithm; non-convex solids are split into "
+                  "convex pieces) or weiler-atherton (the course's visible-surface algorithm, exam-sized scenes; implies --surfaces)")
+      ->check(CLI::IsMember({"faces", "roberts", "weiler-atherton"}));
   cmd->add_flag("--surfaces", a->surfaces,
                 "Also the visible part of every face as exact polygons, flat-shaded by the scene's lights and materials "
                 "(SVG/PDF/PNG fills under the lines; JSON 'surfaces')");

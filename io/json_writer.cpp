@@ -90,6 +90,7 @@ std::string surfaces_text(const SurfacesJson& sj, const Camera& camera) {
     out += std::string(i ? "," : "") + "\n   " + jf.dump();
   }
   Json st;
+  st["method"] = vs.stats.weiler_atherton ? "weiler-atherton" : "arrangement";
   st["faces_seen"] = vs.faces.size();
   st["polygons"] = polygons;
   st["area"] = to_string(total);
@@ -99,6 +100,12 @@ std::string surfaces_text(const SurfacesJson& sj, const Camera& camera) {
   st["crossings"] = vs.stats.crossings;
   st["exact_sign_tests"] = vs.stats.exact_tests;
   st["triangles"] = vs.stats.triangles;
+  if (vs.stats.weiler_atherton) {
+    st["clips"] = vs.stats.wa_clips;
+    st["splits"] = vs.stats.wa_splits;
+    st["recursions"] = vs.stats.wa_recursions;
+    st["cycles"] = vs.stats.wa_cycles;
+  }
   out += "\n  ],\n  \"stats\": " + st.dump() + "\n }";
   return out;
 }

@@ -11,6 +11,7 @@
 #include "algorithms/parallel.hpp"
 #include "algorithms/roberts.hpp"
 #include "algorithms/roberts_pieces.hpp"
+#include "algorithms/weiler_atherton.hpp"
 
 namespace hlr {
 
@@ -104,7 +105,7 @@ void shade_faces(RenderResult& r, const std::vector<Scene>& scenes, const LineDr
 // Surfaces: every edge for the cells, then the selected lines of the same solution drawn.
 void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys, const std::vector<Scene>& scenes,
                     const RenderOptions& o) {
-  if (o.method != RenderMethod::Faces) throw std::invalid_argument("--surfaces works with --method faces");
+  if (o.method == RenderMethod::Roberts) throw std::invalid_argument("--surfaces works with --method faces or weiler-atherton");
   if (o.clip) throw std::invalid_argument("--surfaces does not take --clip (a clipped face is not a surface of the scene)");
   for (const Polyhedron* p : polys) p->planes();  // computed once, before the parallel stages
   if (r.camera.perspective)
@@ -133,7 +134,19 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
       if (fresh) r.group_colours.push_back(c);
       so.face_group[b].push_back(it->second);
     }
-  r.surfaces = visible_surfaces(polys, r.camera, d, so);
+  if (o.method == RenderMethod::WeilerAtherton) {
+    WeilerAthertonResult wa = weiler_atherton(polys, r.camera, d);
+    std::vector<SurfacePiece> pieces;
+    for (WaPolygon& p : wa.visible) pieces.push_back({p.body, p.face, std::move(p.pts)});
+    r.surfaces = surfaces_from_pieces(pieces, polys, r.camera, so);
+    r.surfaces->stats.weiler_atherton = true;
+    r.surfaces->stats.wa_clips = wa.clips;
+    r.surfaces->stats.wa_splits = wa.splits;
+    r.surfaces->stats.wa_recursions = wa.recursions;
+    r.surfaces->stats.wa_cycles = wa.cycles;
+  } else {
+    r.surfaces = visible_surfaces(polys, r.camera, d, so);
+  }
   if (o.lines.edges == EdgeSelection::Feature) {
     std::vector<Segment> kept;
     for (Segment& s : d.segments)
@@ -172,7 +185,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     for (const Polyhedron* p : polys) p->report();  // Roberts' checks belong to loading
   r.camera = choose_camera(o.view, scene_view, polys);
   try {
-    if (o.surfaces)
+    if (o.surfaces || o.method == RenderMethod::WeilerAtherton)
       solve_surfaces(r, polys, *owned, o);
     else
       r.drawing = solve(polys, r.camera, o);
@@ -187,7 +200,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   // Clipping: the near plane (perspective) and the clipping volume, exactly, in world space.
   std::optional<Plane> near;
   if (r.camera.perspective) near = near_plane(r.camera, o.near);
-  if ((near || o.clip) && !o.surfaces)
+  if ((near || o.clip) && !r.surfaces)
     ParallelLoop(o.lines.threads).for_each(r.drawing.segments.size(), 1024, [&](std::size_t i) {
       Segment& s = r.drawing.segments[i];
       if (near) clip_near(s, *near);

@@ -23,7 +23,9 @@ namespace hlr {
 
 /// Which hidden-line route renders. Roberts: the course's algorithm on convex bodies, and
 /// through convex pieces for non-convex solids (Method::RobertsPieces in the stats).
-enum class RenderMethod { Faces, Roberts };
+/// WeilerAtherton: the course's visible-surface algorithm (weiler_atherton.hpp) for the
+/// surfaces, the per-face route for the lines; implies `surfaces`.
+enum class RenderMethod { Faces, Roberts, WeilerAtherton };
 
 struct RenderOptions {
   RenderMethod method = RenderMethod::Faces;
