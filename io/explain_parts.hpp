@@ -5,6 +5,7 @@
 //   explain_clipping.cpp  Cyrus-Beck (21) and midpoint subdivision (22)
 //   explain_bodies.cpp    convexity and decomposition (23), transforms (20)
 //   explain_horizon.cpp   the floating horizon (24)
+//   explain_weiler_atherton.cpp  the Weiler–Atherton algorithm (31)
 //   explain_words.cpp     English and Russian words of the course
 //   explain_render.cpp    Markdown and HTML
 #pragma once
@@ -91,6 +92,7 @@ J convexity_solution(const Problem& pr);
 J decompose_solution(const Problem& pr);
 J transform_solution(const Problem& pr);
 J horizon_solution(const Problem& pr);
+J weiler_atherton_solution(const Problem& pr);
 
 /// The word for `id` in `lang` (the id itself when there is none).
 std::string word(const std::string& id, Lang lang);

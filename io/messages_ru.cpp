@@ -24,10 +24,10 @@ struct Entry {
 const std::vector<Entry>& catalogue() {
   static const std::vector<Entry> c = {
       // ---- the problem reader (io/problem.cpp)
-      {"a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon)",
-       "в файле задачи нужна строка 'problem: ТИП' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon)"},
-      {"unknown problem type '@x' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon)",
-       "неизвестный тип задачи '@1' (известны: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon)"},
+      {"a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton)",
+       "в файле задачи нужна строка 'problem: ТИП' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton)"},
+      {"unknown problem type '@x' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton)",
+       "неизвестный тип задачи '@1' (известны: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton)"},
       {"a horizon problem takes heights, not bodies", "задача horizon принимает высоты (heights), а не тела (bodies)"},
       {"a horizon problem needs 'heights': one list of heights per cut z = const",
        "задаче horizon нужны высоты 'heights': по списку высот для каждого сечения z = const"},
@@ -64,6 +64,12 @@ const std::vector<Entry>& catalogue() {
       {"@w must be a number", "@1: ожидается число"},
       {"@w must be text", "@1: ожидается текст"},
       {"@w must be an integer", "@1: ожидается целое число"},
+      // ---- the Weiler–Atherton algorithm (algorithms/weiler_atherton.cpp)
+      {"Weiler-Atherton is for exam-sized scenes: more than @x polygons (use --method faces)",
+       "алгоритм Вейлера–Азертона — для задач экзаменного размера: больше @1 многоугольников (используйте --method faces)"},
+      {"Weiler-Atherton: body @x reaches the eye's plane or behind it",
+       "алгоритм Вейлера–Азертона: тело @1 доходит до плоскости глаза или заходит за неё"},
+      {"Weiler-Atherton: recursion did not end", "алгоритм Вейлера–Азертона: рекурсия не закончилась"},
       // ---- lights and materials (io/scene_lighting.cpp)
       {"@w must be between @x and @x", "@1: ожидается число от @2 до @3"},
       {"light direction has zero length", "направление источника света имеет нулевую длину"},

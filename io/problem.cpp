@@ -23,7 +23,7 @@ std::vector<Rational> numbers(const P& c, const YAML::Node& n, std::size_t count
 }
 
 Problem::Type parse_type(const P& c, const YAML::Node& n) {
-  if (!n || !n.IsScalar()) c.fail(n, "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon)");
+  if (!n || !n.IsScalar()) c.fail(n, "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton)");
   const std::string t = n.Scalar();
   if (t == "roberts") return Problem::Type::Roberts;
   if (t == "cyrus-beck") return Problem::Type::CyrusBeck;
@@ -32,7 +32,8 @@ Problem::Type parse_type(const P& c, const YAML::Node& n) {
   if (t == "decompose") return Problem::Type::Decompose;
   if (t == "transform") return Problem::Type::Transform;
   if (t == "horizon") return Problem::Type::Horizon;
-  c.fail(n, "unknown problem type '" + t + "' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon)");
+  if (t == "weiler-atherton") return Problem::Type::WeilerAtherton;
+  c.fail(n, "unknown problem type '" + t + "' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton)");
 }
 
 std::string list_text(const std::vector<Rational>& v) {
@@ -82,9 +83,10 @@ const char* to_string(Problem::Type t) {
     case Problem::Type::Convexity: return "convexity";
     case Problem::Type::Decompose: return "decompose";
     case Problem::Type::Transform: return "transform";
-    case Problem::Type::Horizon: break;
+    case Problem::Type::Horizon: return "horizon";
+    case Problem::Type::WeilerAtherton: break;
   }
-  return "horizon";
+  return "weiler-atherton";
 }
 
 Problem load_problem(const std::string& path) { return load_problem_text(read_file_bytes(path), path); }

@@ -1,7 +1,8 @@
 // Problem files for `hlr explain` (issue 6): a scene file (docs/scene-format.md) with a
 // `problem` type and the data of that type. Types: roberts (bodies, view, optional light and
 // edges to analyse), cyrus-beck (a convex clipper and segments), midpoint (a box or frustum,
-// segments, eps), convexity, decompose, transform (one body), horizon (heights on a grid). Every number is exact; unknown
+// segments, eps), convexity, decompose, transform (one body), horizon (heights on a grid),
+// weiler-atherton (polygons or bodies and a view). Every number is exact; unknown
 // keys and wrong types are errors with file and line. Format: docs/problem-format.md.
 #pragma once
 
@@ -17,7 +18,7 @@
 namespace hlr {
 
 struct Problem {
-  enum class Type { Roberts, CyrusBeck, Midpoint, Convexity, Decompose, Transform, Horizon };
+  enum class Type { Roberts, CyrusBeck, Midpoint, Convexity, Decompose, Transform, Horizon, WeilerAtherton };
   Type type = Type::Roberts;
   std::string file;
   std::string title;  // optional `title`
