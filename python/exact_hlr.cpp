@@ -4,6 +4,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cstdio>
+
 #include "algorithms/cyrus_beck.hpp"
 #include "cli/clipper_spec.hpp"
 #include "io/explain.hpp"
@@ -73,13 +75,55 @@ struct Drawing {
     o.stroke_mm = stroke_mm;
     return hlr::to_svg(r->names, r->drawing, r->camera, o);
   }
-  std::string json() const { return hlr::to_json(r->names, r->drawing, r->camera); }
+  std::string json() const {
+    hlr::SurfacesJson sj;
+    if (r->surfaces) sj = hlr::SurfacesJson{&*r->surfaces, &r->face_colours};
+    return hlr::to_json(r->names, r->drawing, r->camera, nullptr, sj);
+  }
+  // The visible surfaces (render(..., surfaces=True)): one dict per face seen.
+  py::object surfaces() const {
+    if (!r->surfaces) return py::none();
+    py::list out;
+    for (const hlr::VisibleFace& f : r->surfaces->faces) {
+      py::dict d;
+      d["body"] = f.body;
+      d["face"] = f.face;
+      d["side"] = f.front ? "front" : "back";
+      auto c = hlr::rgb8(r->face_colours[f.body][f.face]);
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "#%02x%02x%02x", c[0], c[1], c[2]);
+      d["shade"] = std::string(hex);
+      py::list polys;
+      hlr::Rational total = 0;
+      for (const hlr::VisiblePolygon& p : f.polygons) {
+        py::dict pd;
+        py::list outer;
+        for (const hlr::Point3& q : p.outer) outer.append(point(q));
+        py::list holes;
+        for (const auto& h : p.holes) {
+          py::list ring;
+          for (const hlr::Point3& q : h) ring.append(point(q));
+          holes.append(ring);
+        }
+        pd["outer"] = outer;
+        pd["holes"] = holes;
+        pd["area"] = fraction(p.area2 / 2);
+        total += p.area2 / 2;
+        polys.append(pd);
+      }
+      d["area"] = fraction(total);
+      d["polygons"] = polys;
+      out.append(d);
+    }
+    return std::move(out);
+  }
   // The plotting 2D stage: strokes per layer in pen order (drawing coordinates).
   hlr::Plot make(bool hidden) const {
     hlr::PlotOptions po;
     po.hidden = hidden;
     hlr::Plot p = hlr::make_plot(r->drawing, r->camera, po);
-    hlr::order_plot(p, {p.bounds[0], p.bounds[3]});
+    hlr::add_surface_fills(p, *r);
+    if (p.fills.empty()) hlr::order_plot(p, {p.bounds[0], p.bounds[3]});
     return p;
   }
   py::dict strokes(bool hidden) const {
@@ -122,14 +166,18 @@ struct Drawing {
 
 Drawing render(const py::object& input, std::optional<py::sequence> view, std::optional<py::sequence> eye,
                std::optional<py::sequence> target, std::optional<py::sequence> up, const std::string& method,
-               const std::string& edges, const py::object& crease, unsigned threads) {
+               const std::string& edges, const py::object& crease, unsigned threads, bool surfaces) {
   std::vector<std::string> inputs;
   if (py::isinstance<py::str>(input)) inputs.push_back(input.cast<std::string>());
   else inputs = input.cast<std::vector<std::string>>();
   hlr::RenderOptions o;
-  if (method != "faces" && method != "roberts") throw std::invalid_argument("method must be 'faces' or 'roberts'");
+  if (method != "faces" && method != "roberts" && method != "weiler-atherton")
+    throw std::invalid_argument("method must be 'faces', 'roberts' or 'weiler-atherton'");
   if (edges != "feature" && edges != "all") throw std::invalid_argument("edges must be 'feature' or 'all'");
-  o.method = method == "roberts" ? hlr::RenderMethod::Roberts : hlr::RenderMethod::Faces;
+  o.method = method == "roberts" ? hlr::RenderMethod::Roberts
+             : method == "weiler-atherton" ? hlr::RenderMethod::WeilerAtherton
+                                           : hlr::RenderMethod::Faces;
+  o.surfaces = surfaces;
   o.lines.edges = edges == "all" ? hlr::EdgeSelection::All : hlr::EdgeSelection::Feature;
   o.lines.crease_degrees = number(crease);
   o.lines.threads = threads;
@@ -183,6 +231,9 @@ PYBIND11_MODULE(exact_hlr, m) {
       .def_property_readonly("method", [](const Drawing& d) { return std::string(hlr::to_string(d.r->drawing.stats.method)); })
       .def("svg", &Drawing::svg, py::arg("hidden_dashed") = false, py::arg("width_mm") = 150.0, py::arg("stroke_mm") = 0.35)
       .def("json", &Drawing::json, "The exact JSON of `hlr render` (docs/output-format.md)")
+      .def_property_readonly("surfaces", &Drawing::surfaces,
+                             "With surfaces=True: per face seen, its side, shade, exact area and visible polygons (outer, holes: "
+                             "3D points as Fractions in the face's plane); None otherwise")
       .def("strokes", &Drawing::strokes, py::arg("hidden") = false,
            "Strokes per layer ('visible-silhouette', ...) in pen order: lists of (x, y) drawing points")
       .def("plot", &Drawing::plot, py::arg("format") = "svg", py::kw_only(), py::arg("hidden") = false, py::arg("page") = py::none(),
@@ -190,8 +241,9 @@ PYBIND11_MODULE(exact_hlr, m) {
            "The drawing to plot or print (svg, pdf, png or dxf bytes), as `hlr render` writes it");
   m.def("render", &render, py::arg("inputs"), py::kw_only(), py::arg("view") = py::none(), py::arg("eye") = py::none(),
         py::arg("target") = py::none(), py::arg("up") = py::none(), py::arg("method") = "faces", py::arg("edges") = "feature",
-        py::arg("crease") = py::int_(30), py::arg("threads") = 0u,
-        "Renders mesh files and scene files: exact hidden lines (view: orthographic direction; eye: perspective)");
+        py::arg("crease") = py::int_(30), py::arg("threads") = 0u, py::arg("surfaces") = false,
+        "Renders mesh files and scene files: exact hidden lines (view: orthographic direction; eye: perspective); "
+        "surfaces=True also gives the visible part of every face as exact polygons, shaded");
   m.def("explain", &explain, py::arg("problem"), py::kw_only(), py::arg("lang") = "en", py::arg("format") = "md",
         "Solves a problem file step by step (exam mode): Markdown, HTML or JSON text");
   m.def("clip", &clip, py::arg("clipper"), py::arg("segment"),

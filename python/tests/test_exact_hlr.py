@@ -87,3 +87,25 @@ def test_plot_strokes_and_formats():
     assert d.plot("png").startswith(b"\x89PNG")
     assert b"AC1015" in d.plot("dxf")
     assert b'inkscape:label="1 visible-silhouette"' in d.plot("svg", scale="10:1", page="A4")
+
+
+def test_visible_surfaces_exact_and_both_methods_agree():
+    # The cube [-1, 1]^3 seen along (1, 1, 1): three faces seen whole, each a square of exact
+    # corners; in the picture's exact units each has area 8 and together 24. The course's
+    # Weiler-Atherton algorithm gives the same.
+    d = exact_hlr.render([path("cube.off")], view=(1, 1, 1), surfaces=True)
+    faces = d.surfaces
+    assert [(f["body"], f["face"], f["side"]) for f in faces] == [(0, 1, "front"), (0, 3, "front"), (0, 5, "front")]
+    for f in faces:
+        (poly,) = f["polygons"]
+        assert poly["holes"] == [] and poly["area"] == Fraction(8)
+        assert all(isinstance(c, Fraction) for p in poly["outer"] for c in p)
+        assert f["shade"].startswith("#") and len(f["shade"]) == 7
+    assert (1, -1, -1) in faces[0]["polygons"][0]["outer"]
+    wa = exact_hlr.render([path("demo.yaml")], method="weiler-atherton")
+    fast = exact_hlr.render([path("demo.yaml")], surfaces=True)
+    area = lambda dr: {(f["body"], f["face"]): f["area"] for f in dr.surfaces}
+    assert area(wa) == area(fast) and len(area(fast)) == 14
+    assert b'id="surfaces"' in fast.plot("svg")
+    assert json.loads(fast.json())["surfaces"]["stats"]["faces_seen"] == 14
+    assert exact_hlr.render([path("cube.off")]).surfaces is None
