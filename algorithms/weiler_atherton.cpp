@@ -3,6 +3,7 @@
 #include "algorithms/weiler_atherton.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <set>
@@ -118,7 +119,10 @@ class Wa {
 
   void sort_list(std::vector<WaPolygon>& list, int level) {
     std::vector<std::pair<Rational, std::size_t>> key;
-    for (std::size_t i = 0; i < list.size(); ++i) key.emplace_back(nearest(list[i]), i);
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      if (!list[i].nearest) list[i].nearest = nearest(list[i]);
+      key.emplace_back(*list[i].nearest, i);
+    }
     std::stable_sort(key.begin(), key.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     std::vector<WaPolygon> sorted;
     for (auto& k : key) sorted.push_back(list[k.second]);
@@ -197,6 +201,7 @@ class Wa {
           res_.steps.push_back(std::move(s));
         }
         p.pts = std::move(front);
+        p.nearest.reset();
         if (p.pts.empty()) continue;
       }
       trace(WaStep::Kind::Violation, level, p, clipper, vals);
@@ -241,8 +246,25 @@ class Wa {
     res_.steps.push_back(std::move(s));
   }
 
+  // The doubles' box of a polygon, widened far beyond their error: boxes apart mean polygons
+  // apart (a filter that only skips work).
+  static std::array<double, 4> box_of(const WaPolygon& p) {
+    std::array<double, 4> b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (const Exact2& q : p.pts) {
+      double x = q[0].get_d(), y = q[1].get_d();
+      b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x), std::max(b[3], y)};
+    }
+    double pad = 1e-9 * std::max({std::fabs(b[0]), std::fabs(b[1]), std::fabs(b[2]), std::fabs(b[3]), 1e-300});
+    return {b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad};
+  }
+
   // p ∩ clipper into `inside`, p minus clipper as convex pieces into `outside`.
   void split_by(const WaPolygon& p, const WaPolygon& c, std::vector<WaPolygon>& inside, std::vector<WaPolygon>& outside) {
+    const auto pb = box_of(p), cb = box_of(c);
+    if (pb[2] < cb[0] || cb[2] < pb[0] || pb[3] < cb[1] || cb[3] < pb[1]) {
+      outside.push_back(p);  // apart: all of it is outside
+      return;
+    }
     std::vector<Exact2> rest = p.pts;
     const std::size_t n = c.pts.size();
     for (std::size_t k = 0; k < n && !rest.empty(); ++k) {

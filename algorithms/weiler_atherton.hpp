@@ -12,6 +12,7 @@
 // fast route, and the tests check the two give the same visible part of every face.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,8 @@ struct WaPolygon {
   int body = -1, face = -1;
   int piece = 0;  // which convex piece of the face (faces that are not convex are triangulated)
   std::vector<Exact2> pts;
+  /// The preliminary sort's key once computed (a polygon that no clip changed keeps it).
+  std::optional<Rational> nearest;
 };
 
 /// One step of the algorithm, for the exam page (trace on).

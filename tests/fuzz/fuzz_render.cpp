@@ -2,7 +2,9 @@
 // (coordinates in eighths, some thin, touching or interpenetrating) and a view (orthographic
 // along small integer directions, or perspective from an eye anywhere outside the bodies,
 // possibly on a face plane or on a surface); both hidden-line routes run and must agree on
-// every piece of every edge. A disagreement aborts (a finding). Exact throughout.
+// every piece of every edge; the visible surfaces (issue 15) must be consistent in every cell
+// and cover exactly the area the course's Weiler–Atherton algorithm finds. A disagreement
+// aborts (a finding). Exact throughout.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -13,6 +15,8 @@
 #include "algorithms/face_occluders.hpp"
 #include "algorithms/plot.hpp"
 #include "algorithms/roberts.hpp"
+#include "algorithms/visible_surfaces.hpp"
+#include "algorithms/weiler_atherton.hpp"
 
 using namespace hlr;
 
@@ -121,6 +125,34 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   order_plot(plot, {plot.bounds[0], plot.bounds[3]});
   if (plot.stats.pen_up_length > plot.stats.pen_up_greedy * (1 + 1e-12) + 1e-12) {
     std::fprintf(stderr, "fuzz_render: 2-opt lengthened the pen-up travel\n");
+    std::abort();
+  }
+  // Visible surfaces: every cell's probes agree, and the two routes see the same area per face.
+  LineOptions all = o;
+  all.intersections = true;
+  LineDrawing d = face_occluders(ptrs, cam, all);
+  SurfaceOptions so;
+  so.check_cycles = true;
+  VisibleSurfaces vs;
+  try {
+    vs = visible_surfaces(ptrs, cam, d, so);
+  } catch (const std::invalid_argument&) {
+    return 0;  // perspective with a box reaching the eye's plane
+  }
+  WeilerAthertonResult wa = weiler_atherton(ptrs, cam, d);
+  std::vector<SurfacePiece> pieces;
+  for (const WaPolygon& p : wa.visible) pieces.push_back({p.body, p.face, p.pts});
+  VisibleSurfaces ws = surfaces_from_pieces(pieces, ptrs, cam, so);
+  std::map<std::pair<int, int>, Rational> a, w;
+  for (const VisibleFace& f2 : vs.faces)
+    for (const VisiblePolygon& p : f2.polygons) a[{f2.body, f2.face}] += p.area2;
+  for (const VisibleFace& f2 : ws.faces)
+    for (const VisiblePolygon& p : f2.polygons) w[{f2.body, f2.face}] += p.area2;
+  if (vs.stats.label_mismatches || ws.stats.label_mismatches || a != w) {
+    std::fprintf(stderr, "fuzz_render: visible surfaces: mismatched cells %zu / %zu, areas %s\n", vs.stats.label_mismatches,
+                 ws.stats.label_mismatches, a == w ? "equal" : "differ");
+    for (const Polyhedron& p : bodies)
+      std::fprintf(stderr, "  box %s - %s\n", to_string(p.vertices()[0]).c_str(), to_string(p.vertices()[7]).c_str());
     std::abort();
   }
   return 0;
