@@ -58,10 +58,15 @@ class Signs {
   bool filter_;
 };
 
-bool filter_usable(const std::vector<std::array<double, 2>>& a) {
-  for (const auto& p : a)
-    for (double x : p)
+// The doubles may decide only if each is zero exactly when its value is, and the others lie in
+// [2^-400, 2^400] (an underflowed 0 or an overflowed infinity turns every filter off).
+bool filter_usable(const std::vector<Exact2>& pts, const std::vector<std::array<double, 2>>& a) {
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (int k = 0; k < 2; ++k) {
+      double x = a[i][k];
+      if ((x == 0) != (sgn(pts[i][k]) == 0)) return false;
       if (x != 0 && !(std::fabs(x) >= 0x1p-400 && std::fabs(x) <= 0x1p400)) return false;
+    }
   return true;
 }
 
@@ -94,6 +99,14 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> candidate_pairs(const std::
                                                                       const std::vector<std::array<double, 2>>& ap, unsigned threads) {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   if (segs.size() < 2) return pairs;
+  bool finite = true;
+  for (const auto& s : segs)
+    for (std::uint32_t p : s) finite = finite && std::isfinite(ap[p][0]) && std::isfinite(ap[p][1]);
+  if (!finite) {  // coordinates beyond doubles: every pair (such scenes are small)
+    for (std::uint32_t a = 0; a < segs.size(); ++a)
+      for (std::uint32_t b = a + 1; b < segs.size(); ++b) pairs.emplace_back(a, b);
+    return pairs;
+  }
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
   for (const auto& s : segs)
     for (std::uint32_t p : s) {
@@ -173,7 +186,7 @@ PlanarArrangement build_arrangement(std::vector<Exact2> points, const std::vecto
     std::array<std::uint32_t, 2> t{rep[s[0]], rep[s[1]]};
     if (t[0] != t[1]) segs.push_back(t);
   }
-  const bool filter = filter_usable(ap);
+  const bool filter = filter_usable(points, ap);
   std::size_t exact = 0;
 
   // Points inside segments: the ends of other segments, and proper crossings.
@@ -215,7 +228,7 @@ PlanarArrangement build_arrangement(std::vector<Exact2> points, const std::vecto
     std::vector<std::uint32_t> rep2 = join_equal_points(points, ap);
     for (auto& s : splits) s.point = rep2[s.point];
   }
-  const bool filter2 = filter && filter_usable(ap);
+  const bool filter2 = filter && filter_usable(points, ap);
   Signs sg(points, ap, filter2);
 
   // Each segment cut at its inner points in order along it; equal pieces kept once.
@@ -291,6 +304,7 @@ PlanarArrangement build_arrangement(std::vector<Exact2> points, const std::vecto
   }
   out.points = std::move(points);
   out.approx = std::move(ap);
+  out.filters = filter2;
   out.exact_tests = exact;
   return out;
 }
@@ -309,13 +323,12 @@ Rational area2_of(const PlanarArrangement& arr, const std::vector<std::uint32_t>
 // Sign of a ring's area: the doubles' shoelace sum when its error bound (design.md) allows.
 int area_sign(const PlanarArrangement& arr, const std::vector<std::uint32_t>& ring) {
   double sum = 0, mag = 0;
-  bool ok = true;
+  const bool ok = arr.filters;
   for (std::uint32_t h : ring) {
     const auto &a = arr.approx[arr.origin[h]], &b = arr.approx[arr.head(h)];
     double p = a[0] * b[1], q = a[1] * b[0];
     sum += p - q;
     mag += std::fabs(p) + std::fabs(q);
-    for (double x : {a[0], a[1]}) ok = ok && (x == 0 || (std::fabs(x) >= 0x1p-400 && std::fabs(x) <= 0x1p400));
   }
   double bound = (16 + 2 * static_cast<double>(ring.size())) * kU * mag;
   if (ok && sum > bound) return 1;
@@ -400,7 +413,7 @@ std::vector<LabelledRegion> merge_regions(const PlanarArrangement& a, const std:
     auto [lo, hi] = by_label.equal_range(hole.label);
     for (auto it = lo; it != hi; ++it) {
       const auto& b = box[it->second];
-      if (b[0] <= mx && mx <= b[2] && b[1] <= my && my <= b[3]) cand.push_back(it->second);
+      if (!a.filters || (b[0] <= mx && mx <= b[2] && b[1] <= my && my <= b[3])) cand.push_back(it->second);
     }
     // Outers of one label containing the point are nested: the innermost has the least area.
     std::size_t best = SIZE_MAX;

@@ -35,6 +35,7 @@ struct PlanarArrangement {
   std::size_t crossings = 0;                   // proper crossings of input segments
   std::size_t splits = 0;                      // points found inside segments (ends and crossings)
   std::size_t exact_tests = 0;                 // orientation signs the double filter left to rationals
+  bool filters = true;                         // the doubles are trustworthy (design.md): filters may decide
   std::uint32_t head(std::uint32_t h) const { return origin[h ^ 1]; }
   std::size_t num_edges() const { return source.size(); }
 };

@@ -26,14 +26,17 @@ struct PictureTriangle {
   // Filters (decide only when their error bound allows; docs/design.md): the corners' doubles,
   // and for orthographic views the depth s(q) = num(q) / den exactly and in doubles.
   std::array<std::array<double, 2>, 3> pd;
+  bool pd_ok;  // every corner double in [2^-400, 2^400] or zero: the side filter may be used
   PictureLinear depth;
   std::array<double, 3> depth_d;
 };
 
 constexpr double kU = 0x1p-52;  // relative error of mpq_get_d
 
-// Doubles are trusted only in [2^-400, 2^400] (no underflow or overflow in products of two).
+// Doubles are trusted only in [2^-400, 2^400] (no underflow or overflow in products of two),
+// and a zero only when the value is zero.
 bool in_range(double x) { return x == 0 || (std::fabs(x) >= 0x1p-400 && std::fabs(x) <= 0x1p400); }
+bool trusted(double x, const Rational& q) { return x == 0 ? sgn(q) == 0 : std::fabs(x) >= 0x1p-400 && std::fabs(x) <= 0x1p400; }
 
 // Lexicographic sign of f at m + e·n + e²·t.
 int lex_sign(const PictureLinear& f, const Exact2& m, const Exact2& n, const Exact2& t) {
@@ -100,12 +103,14 @@ class Prober {
       }
       const Face& face = p.faces()[f];
       for (const FaceTriangle& t : ft.triangles) {
-        PictureTriangle pt{b, f, id, front, {}, &ray, {}, {}, depth_d};
+        PictureTriangle pt{b, f, id, front, {}, &ray, {}, false, {}, depth_d};
         for (int k = 0; k < 3; ++k) pt.p[k] = &proj_[b][face[t.v[k]]];
         int o = orient2d(*pt.p[0], *pt.p[1], *pt.p[2]);
         if (o == 0) continue;  // edge-on: never the face seen at a point of a cell
         if (o < 0) std::swap(pt.p[1], pt.p[2]);
         for (int k = 0; k < 3; ++k) pt.pd[k] = {(*pt.p[k])[0].get_d(), (*pt.p[k])[1].get_d()};
+        pt.pd_ok = true;
+        for (int k = 0; k < 3; ++k) pt.pd_ok = pt.pd_ok && trusted(pt.pd[k][0], (*pt.p[k])[0]) && trusted(pt.pd[k][1], (*pt.p[k])[1]);
         if (!pp_.perspective()) pt.depth = depth;
         per_face[i].push_back(std::move(pt));
       }
@@ -123,7 +128,10 @@ class Prober {
       double pad = 1e-9 * std::max({std::fabs(r.x0), std::fabs(r.x1), std::fabs(r.y0), std::fabs(r.y1), 1e-300});
       rects.push_back({r.x0 - pad, r.y0 - pad, r.x1 + pad, r.y1 + pad});
     }
-    grid_.build(rects, std::vector<char>(rects.size(), 0), 4.0, 2048);
+    std::vector<char> always(rects.size(), 0);
+    for (std::size_t i = 0; i < rects.size(); ++i)
+      always[i] = !(std::isfinite(rects[i].x0) && std::isfinite(rects[i].x1) && std::isfinite(rects[i].y0) && std::isfinite(rects[i].y1));
+    grid_.build(rects, always, 4.0, 2048);
     rects_ = std::move(rects);
   }
 
@@ -140,14 +148,20 @@ class Prober {
     // |b| per axis, which bounds |m| too.
     Near nr{mx, my, std::max(std::fabs(a[0].get_d()), std::fabs(b[0].get_d())) * (1 + 4 * kU),
             std::max(std::fabs(a[1].get_d()), std::fabs(b[1].get_d())) * (1 + 4 * kU),
-            in_range(mx) && in_range(my) && in_range(a[0].get_d()) && in_range(a[1].get_d()) && in_range(b[0].get_d()) &&
-                in_range(b[1].get_d())};
+            trusted(mx, m[0]) && trusted(my, m[1]) && trusted(a[0].get_d(), a[0]) && trusted(a[1].get_d(), a[1]) &&
+                trusted(b[0].get_d(), b[0]) && trusted(b[1].get_d(), b[1])};
     double pad = 1e-9 * std::max({std::fabs(mx), std::fabs(my), 1e-300});
     scratch.clear();
-    grid_.visit(ScreenRect{mx - pad, my - pad, mx + pad, my + pad}, [&](int i) {
-      const ScreenRect& r = rects_[i];
-      if (r.x0 <= mx && mx <= r.x1 && r.y0 <= my && my <= r.y1) scratch.push_back(i);
-    });
+    if (!nr.ok) {  // doubles not trusted here: every triangle is a candidate
+      for (std::size_t i = 0; i < tris_.size(); ++i) scratch.push_back(static_cast<int>(i));
+    } else {
+      grid_.visit(ScreenRect{mx - pad, my - pad, mx + pad, my + pad}, [&](int i) {
+        const ScreenRect& r = rects_[i];
+        if (!(std::isfinite(r.x0) && std::isfinite(r.x1) && std::isfinite(r.y0) && std::isfinite(r.y1)) ||
+            (r.x0 <= mx && mx <= r.x1 && r.y0 <= my && my <= r.y1))
+          scratch.push_back(i);
+      });
+    }
     std::sort(scratch.begin(), scratch.end());
     scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
     int best = -1;
@@ -166,7 +180,7 @@ class Prober {
   // rounding), then lexicographically in rationals.
   static bool contains(const PictureTriangle& tr, const Exact2& m, const Exact2& n, const Exact2& t, const Near& nr) {
     for (int k = 0; k < 3; ++k) {
-      if (nr.ok) {
+      if (nr.ok && tr.pd_ok) {
         const auto &p = tr.pd[k], &q = tr.pd[(k + 1) % 3];
         double det = (q[0] - p[0]) * (nr.y - p[1]) - (q[1] - p[1]) * (nr.x - p[0]);
         double mx = std::max({std::fabs(p[0]), std::fabs(q[0]), nr.mag_x}), my = std::max({std::fabs(p[1]), std::fabs(q[1]), nr.mag_y});
@@ -192,8 +206,7 @@ class Prober {
     if (!pp_.perspective()) {
       // s = num / den with den constant; larger is nearer: sign(s_x - s_y). Filter: each
       // depth's double at m is within 16·kU·(|c0| + |cx|·|mx| + |cy|·|my|) of its value.
-      if (nr.ok && in_range(x.depth_d[0]) && in_range(x.depth_d[1]) && in_range(x.depth_d[2]) && in_range(y.depth_d[0]) &&
-          in_range(y.depth_d[1]) && in_range(y.depth_d[2])) {
+      if (nr.ok && std::isfinite(x.depth_d[0]) && std::isfinite(y.depth_d[0])) {
         auto val = [&](const std::array<double, 3>& c) { return c[0] + c[1] * nr.x + c[2] * nr.y; };
         auto mag = [&](const std::array<double, 3>& c) { return std::fabs(c[0]) + std::fabs(c[1]) * nr.mag_x + std::fabs(c[2]) * nr.mag_y; };
         double d = val(x.depth_d) - val(y.depth_d), bound = 16 * kU * (mag(x.depth_d) + mag(y.depth_d));

@@ -49,10 +49,13 @@ struct OracleFace {
 };
 
 std::array<double, 4> widen(std::array<double, 4> b) {
+  for (double x : b)
+    if (!std::isfinite(x) || x == 0) return {-INFINITY, -INFINITY, INFINITY, INFINITY};  // doubles lost it: no filter
   double pad = 1e-6 * (std::fabs(b[0]) + std::fabs(b[1]) + std::fabs(b[2]) + std::fabs(b[3]) + 1e-300);
   return {b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad};
 }
 bool in_box(const std::array<double, 4>& b, const std::array<double, 2>& q) {
+  if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || q[0] == 0 || q[1] == 0) return true;
   return b[0] <= q[0] && q[0] <= b[2] && b[1] <= q[1] && q[1] <= b[3];
 }
 std::array<double, 4> box_of(const std::vector<Exact2>& pts) {
@@ -593,4 +596,31 @@ TEST(VisibleSurfaces, FractionsNotInLowestTermsFromTheApi) {
                                            Point3(rational(1, 1), rational(1, 1), rational(1, 1))},
                                           {{0, 1, 2}})};
   check_scene(ptrs(b), ortho("0", "0", "1"), 6, true);
+}
+
+TEST(VisibleSurfaces, NumbersFarOutsideDoubles) {
+  // The same touching scene at 10^-400 and 10^400 (doubles underflow or overflow: every filter
+  // must step aside), and a tiny triangle of size 10^-350 lying on a unit box's top face.
+  auto scaled = [](const std::vector<Polyhedron>& in, const Rational& k) {
+    std::vector<Polyhedron> out;
+    for (const Polyhedron& p : in) {
+      std::vector<Point3> vs;
+      for (const Point3& v : p.vertices()) vs.emplace_back(v.x() * k, v.y() * k, v.z() * k);
+      out.emplace_back(std::move(vs), p.faces());
+    }
+    return out;
+  };
+  std::vector<Polyhedron> b{box("0", "0", "0", "4", "4", "1"), box("1", "1", "1", "3", "3", "2")};
+  for (const char* k : {"1e-400", "1e400"}) {
+    std::vector<Polyhedron> s = scaled(b, Q(k));
+    check_scene(ptrs(s), ortho("1", "1.3", "1.7"), 4, true);
+    check_scene(ptrs(s), ortho("0", "0", "1"), 4, true);
+  }
+  std::vector<Polyhedron> mixed{box("0", "0", "0", "1", "1", "1"),
+                                Polyhedron({P("0.5", "0.5", "1"), P("0.5000000000000001", "0.5", "1"), P("0.5", "0.5", "1.0000000000000000000001")}, {{0, 1, 2}}),
+                                Polyhedron({P("0.25", "0.25", "1"), Point3(Q("0.25") + Q("1e-350"), Q("0.25"), Q("1")),
+                                            Point3(Q("0.25"), Q("0.25") + Q("1e-350"), Q("1") + Q("1e-350"))},
+                                           {{0, 1, 2}})};
+  check_scene(ptrs(mixed), ortho("1", "1.3", "1.7"), 4, true);
+  check_scene(ptrs(mixed), persp("3", "2", "4", P("0.5", "0.5", "0.5")), 4, true);
 }
