@@ -10,19 +10,10 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "algorithms/face_triangles.hpp"
+#include "algorithms/scene_polygons.hpp"
 
 namespace hlr {
 namespace {
-
-Rational area2(const std::vector<Exact2>& p) {
-  Rational s = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Exact2 &a = p[i], &b = p[(i + 1) % p.size()];
-    s += a[0] * b[1] - a[1] * b[0];
-  }
-  return s;
-}
 
 // Sutherland–Hodgman against one half-plane: keeps the points where f >= 0 (sign +1) or
 // f <= 0 (sign -1); crossing points exact.
@@ -44,7 +35,7 @@ std::vector<Exact2> clip_half(const std::vector<Exact2>& p, const PictureLinear&
   for (const Exact2& q : out)
     if (clean.empty() || clean.back() != q) clean.push_back(q);
   while (clean.size() > 1 && clean.front() == clean.back()) clean.pop_back();
-  if (clean.size() < 3 || area2(clean) == 0) return {};
+  if (clean.size() < 3 || picture_area2(clean) == 0) return {};
   return clean;
 }
 
@@ -196,7 +187,7 @@ class Wa {
           s.kind = WaStep::Kind::Split;
           s.level = level;
           s.subject = p;
-          s.polygons = {WaPolygon{p.body, p.face, p.piece, front}, WaPolygon{p.body, p.face, p.piece, back}};
+          s.polygons = {WaPolygon{p.body, p.face, p.piece, front, {}}, WaPolygon{p.body, p.face, p.piece, back, {}}};
           s.depths = vals;
           res_.steps.push_back(std::move(s));
         }
@@ -270,10 +261,10 @@ class Wa {
     for (std::size_t k = 0; k < n && !rest.empty(); ++k) {
       PictureLinear f = left_of(c.pts[k], c.pts[(k + 1) % n]);
       std::vector<Exact2> out = clip_half(rest, f, -1);
-      if (!out.empty()) outside.push_back(WaPolygon{p.body, p.face, p.piece, std::move(out)});
+      if (!out.empty()) outside.push_back(WaPolygon{p.body, p.face, p.piece, std::move(out), {}});
       rest = clip_half(rest, f, 1);
     }
-    if (!rest.empty()) inside.push_back(WaPolygon{p.body, p.face, p.piece, std::move(rest)});
+    if (!rest.empty()) inside.push_back(WaPolygon{p.body, p.face, p.piece, std::move(rest), {}});
   }
 
   const std::vector<const Polyhedron*>& bodies_;
@@ -286,45 +277,6 @@ class Wa {
   WeilerAthertonResult res_;
 };
 
-// The scene's polygons in the picture: convex faces as they are, others as their triangles;
-// edge-on faces and a closed solid's faces turned away are left out.
-std::vector<WaPolygon> scene_polygons(const std::vector<const Polyhedron*>& bodies, const PicturePlane& pp, const LineDrawing& lines) {
-  std::vector<WaPolygon> out;
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    const Polyhedron& p = *bodies[b];
-    for (std::size_t f = 0; f < p.num_faces(); ++f) {
-      if (p.planes()[f].is_degenerate()) continue;
-      if (b < lines.back_faces_unseen.size() && lines.back_faces_unseen[b] && lines.facing[b][f] < 0) continue;
-      std::vector<Exact2> poly;
-      for (int v : p.faces()[f]) poly.push_back(pp.project(p.vertices()[v]));
-      Rational a = area2(poly);
-      if (a == 0) continue;
-      if (a < 0) std::reverse(poly.begin(), poly.end());
-      bool convex = true;
-      for (std::size_t i = 0; i < poly.size() && convex; ++i)
-        convex = orient2d(poly[i], poly[(i + 1) % poly.size()], poly[(i + 2) % poly.size()]) >= 0;
-      if (convex) {
-        std::vector<Exact2> clean;
-        for (std::size_t i = 0; i < poly.size(); ++i)  // drop corners on a straight side
-          if (orient2d(poly[(i + poly.size() - 1) % poly.size()], poly[i], poly[(i + 1) % poly.size()]) != 0) clean.push_back(poly[i]);
-        out.push_back(WaPolygon{static_cast<int>(b), static_cast<int>(f), 0, std::move(clean)});
-        continue;
-      }
-      FaceTriangles ft = face_triangles(p, static_cast<int>(f));
-      int piece = 0;
-      for (const FaceTriangle& t : ft.triangles) {
-        std::vector<Exact2> tri;
-        for (int k = 0; k < 3; ++k) tri.push_back(pp.project(p.vertices()[p.faces()[f][t.v[k]]]));
-        Rational ta = area2(tri);
-        if (ta == 0) continue;
-        if (ta < 0) std::reverse(tri.begin(), tri.end());
-        out.push_back(WaPolygon{static_cast<int>(b), static_cast<int>(f), piece++, std::move(tri)});
-      }
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 WeilerAthertonResult weiler_atherton(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineDrawing& lines,
@@ -336,7 +288,9 @@ WeilerAthertonResult weiler_atherton(const std::vector<const Polyhedron*>& bodie
         if (camera.in_front(v) != Sign::Positive)
           throw std::invalid_argument("Weiler-Atherton: body " + std::to_string(b) + " reaches the eye's plane or behind it");
   Wa wa(bodies, camera, options);
-  return wa.run(scene_polygons(bodies, wa.picture(), lines));
+  std::vector<WaPolygon> polys;
+  for (ScenePolygon& p : scene_polygons(bodies, wa.picture(), lines)) polys.push_back(WaPolygon{p.body, p.face, p.piece, std::move(p.pts), {}});
+  return wa.run(std::move(polys));
 }
 
 Rational wa_nearest_depth(const WaPolygon& p, const std::vector<const Polyhedron*>& bodies, const Camera& camera) {
