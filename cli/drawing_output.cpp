@@ -191,7 +191,8 @@ std::string drawing_text(const std::vector<RenderResult>& results, const std::ve
     }
     const RenderResult& r0 = results[0];
     SurfacesJson sj;
-    if (r0.surfaces) sj = SurfacesJson{&*r0.surfaces, &r0.face_colours};
+    if (r0.surfaces) sj = SurfacesJson{&*r0.surfaces, &r0.face_colours, nullptr};
+    if (r0.priority) sj = SurfacesJson{nullptr, &r0.face_colours, &*r0.priority};
     text = to_json(r0.names, r0.drawing, r0.camera, plot ? &plot->stats : nullptr, sj);
   } else {
     progress("strokes");

@@ -39,7 +39,10 @@ Point3 as_point(const Vector3& v) { return Point3(v.x(), v.y(), v.z()); }
 
 RenderOptions render_options(const RenderArgs& a) {
   RenderOptions o;
-  o.method = a.method == "roberts" ? RenderMethod::Roberts : a.method == "weiler-atherton" ? RenderMethod::WeilerAtherton : RenderMethod::Faces;
+  o.method = a.method == "roberts"           ? RenderMethod::Roberts
+             : a.method == "weiler-atherton" ? RenderMethod::WeilerAtherton
+             : a.method == "priority"        ? RenderMethod::Priority
+                                             : RenderMethod::Faces;
   o.lines.edges = a.edges == "all" ? EdgeSelection::All : EdgeSelection::Feature;
   o.lines.threads = a.threads;
   try {
@@ -140,6 +143,10 @@ int run_render(const RenderArgs& a) {
                 << sf->stats.polygons << ", exact sign tests " << sf->stats.exact_tests << " (clean-up " << sf->stats.seconds_clean
                 << " s, points " << sf->stats.seconds_points << " s, arrangement " << sf->stats.seconds_arrangement << " s, triangles " << sf->stats.seconds_triangles << " s, probes "
                 << sf->stats.seconds_probe << " s, regions " << sf->stats.seconds_regions << " s)\n";
+    if (const auto& pr = results[0].priority)
+      std::cerr << "timings: priority list " << results[0].priority_seconds << " s, polygons " << pr->initial << ", painted "
+                << pr->order.size() << ", pairs " << pr->pairs << ", swaps " << pr->swaps << ", cycles " << pr->cycles << ", cuts "
+                << pr->splits << " (along outlines " << pr->outline_splits << ")\n";
   }
   return 0;
 }
@@ -167,8 +174,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--crease", a->crease, "Crease threshold in degrees between face normals (default 30; 0 keeps every edge between non-coplanar faces)");
   cmd->add_option("--method", a->method,
                   "faces (the default: per-face occluders, any mesh), roberts (the course's algorithm; non-convex solids are split into "
-                  "convex pieces) or weiler-atherton (the course's visible-surface algorithm, exam-sized scenes; implies --surfaces)")
-      ->check(CLI::IsMember({"faces", "roberts", "weiler-atherton"}));
+                  "convex pieces), weiler-atherton (the course's visible-surface algorithm, exam-sized scenes; implies --surfaces) or "
+                  "priority (the course's priority-list painter's algorithm: shaded faces and their cut parts painted back to front)")
+      ->check(CLI::IsMember({"faces", "roberts", "weiler-atherton", "priority"}));
   cmd->add_flag("--surfaces", a->surfaces,
                 "Also the visible part of every face as exact polygons, flat-shaded by the scene's lights and materials "
                 "(SVG/PDF/PNG fills under the lines; JSON 'surfaces')");

@@ -42,6 +42,50 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r
 
 namespace {
 
+std::string hex_colour(const Rgb& colour) {
+  auto c = rgb8(colour);
+  char hex[8];
+  std::snprintf(hex, sizeof hex, "#%02x%02x%02x", c[0], c[1], c[2]);
+  return hex;
+}
+
+std::string priority_text(const SurfacesJson& sj, const Camera& camera) {
+  const PriorityResult& pr = *sj.priority;
+  PicturePlane pp(camera);
+  Json axes;
+  axes["right"] = exact_vector(pp.r());
+  axes["up"] = exact_vector(pp.u());
+  axes["depth"] = exact_vector(pp.d());
+  std::string out = ",\n \"priority\": {\n  \"picture_axes\": " + axes.dump() + ",\n  \"order\": [";
+  for (std::size_t k = 0; k < pr.order.size(); ++k) {
+    const PriorityPolygon& p = pr.polygons[pr.order[k]];
+    Json jp;
+    jp["body"] = p.body;
+    jp["face"] = p.face;
+    jp["piece"] = p.piece;
+    jp["cut"] = pr.order[k] >= static_cast<int>(pr.initial);
+    if (sj.colours) jp["shade"] = hex_colour((*sj.colours)[p.body][p.face]);
+    Json corners = Json::array();
+    for (const Point3& q : p.corners) corners.push_back(exact_point(q));
+    jp["corners"] = corners;
+    jp["area"] = to_string(picture_area2(p.pts) / 2);
+    out += std::string(k ? "," : "") + "\n   " + jp.dump();
+  }
+  Json st;
+  st["polygons"] = pr.initial;
+  st["painted"] = pr.order.size();
+  st["pairs_tested"] = pr.pairs;
+  Json passed = Json::object();
+  for (int t = 1; t <= 5; ++t) passed[std::to_string(t)] = pr.passed[t];
+  st["first_yes_by_test"] = passed;
+  st["swaps"] = pr.swaps;
+  st["cycles"] = pr.cycles;
+  st["cuts"] = pr.splits;
+  st["outline_cuts"] = pr.outline_splits;
+  out += "\n  ],\n  \"stats\": " + st.dump() + "\n }";
+  return out;
+}
+
 std::string surfaces_text(const SurfacesJson& sj, const Camera& camera) {
   const VisibleSurfaces& vs = *sj.surfaces;
   PicturePlane pp(camera);
@@ -58,12 +102,7 @@ std::string surfaces_text(const SurfacesJson& sj, const Camera& camera) {
     jf["body"] = f.body;
     jf["face"] = f.face;
     jf["side"] = f.front ? "front" : "back";
-    if (sj.colours) {
-      auto c = rgb8((*sj.colours)[f.body][f.face]);
-      char hex[8];
-      std::snprintf(hex, sizeof hex, "#%02x%02x%02x", c[0], c[1], c[2]);
-      jf["shade"] = hex;
-    }
+    if (sj.colours) jf["shade"] = hex_colour((*sj.colours)[f.body][f.face]);
     Rational area = 0;
     Json polys = Json::array();
     for (const VisiblePolygon& p : f.polygons) {
@@ -183,6 +222,7 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r
     out += ",\n \"plot\": " + pj.dump();
   }
   if (surfaces.surfaces) out += surfaces_text(surfaces, camera);
+  if (surfaces.priority) out += priority_text(surfaces, camera);
   out += "\n}\n";
   return out;
 }

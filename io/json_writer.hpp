@@ -10,6 +10,7 @@
 #include "algorithms/camera.hpp"
 #include "algorithms/lighting.hpp"
 #include "algorithms/plot.hpp"
+#include "algorithms/priority_list.hpp"
 #include "algorithms/visible_surfaces.hpp"
 #include "io/svg_writer.hpp"
 
@@ -23,9 +24,13 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& d
 /// The visible surfaces of a render (issue 15): a "surfaces" object after "stats" with the
 /// picture's exact axes, one face per line with its side, shade, exact area and visible
 /// polygons (exact 3D corners in the face's plane), and the route's counters.
+/// The painter's list of a priority render: a "priority" object with one polygon per line in
+/// the order painted (its face, whether it is a cut part, exact 3D corners, shade) and the
+/// algorithm's counters.
 struct SurfacesJson {
   const VisibleSurfaces* surfaces = nullptr;
   const std::vector<std::vector<Rgb>>* colours = nullptr;
+  const PriorityResult* priority = nullptr;
 };
 std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
                     const PlotStats* plot, const SurfacesJson& surfaces);

@@ -1,6 +1,7 @@
 // The render pipeline (see render.hpp).
 #include "io/render.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <map>
 
@@ -11,6 +12,7 @@
 #include "algorithms/parallel.hpp"
 #include "algorithms/roberts.hpp"
 #include "algorithms/roberts_pieces.hpp"
+#include "algorithms/priority_list.hpp"
 #include "algorithms/weiler_atherton.hpp"
 
 namespace hlr {
@@ -105,7 +107,7 @@ void shade_faces(RenderResult& r, const std::vector<Scene>& scenes, const LineDr
 // Surfaces: every edge for the cells, then the selected lines of the same solution drawn.
 void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys, const std::vector<Scene>& scenes,
                     const RenderOptions& o) {
-  if (o.method == RenderMethod::Roberts) throw std::invalid_argument("--surfaces works with --method faces or weiler-atherton");
+  if (o.method == RenderMethod::Roberts) throw std::invalid_argument("--surfaces works with --method faces, weiler-atherton or priority");
   if (o.clip) throw std::invalid_argument("--surfaces does not take --clip (a clipped face is not a surface of the scene)");
   for (const Polyhedron* p : polys) p->planes();  // computed once, before the parallel stages
   if (r.camera.perspective)
@@ -144,6 +146,10 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
     r.surfaces->stats.wa_splits = wa.splits;
     r.surfaces->stats.wa_recursions = wa.recursions;
     r.surfaces->stats.wa_cycles = wa.cycles;
+  } else if (o.method == RenderMethod::Priority) {
+    auto t0 = std::chrono::steady_clock::now();
+    r.priority = priority_list(polys, r.camera, d);
+    r.priority_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   } else {
     r.surfaces = visible_surfaces(polys, r.camera, d, so);
   }
@@ -185,7 +191,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     for (const Polyhedron* p : polys) p->report();  // Roberts' checks belong to loading
   r.camera = choose_camera(o.view, scene_view, polys);
   try {
-    if (o.surfaces || o.method == RenderMethod::WeilerAtherton)
+    if (o.surfaces || o.method == RenderMethod::WeilerAtherton || o.method == RenderMethod::Priority)
       solve_surfaces(r, polys, *owned, o);
     else
       r.drawing = solve(polys, r.camera, o);
@@ -200,7 +206,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   // Clipping: the near plane (perspective) and the clipping volume, exactly, in world space.
   std::optional<Plane> near;
   if (r.camera.perspective) near = near_plane(r.camera, o.near);
-  if ((near || o.clip) && !r.surfaces)
+  if ((near || o.clip) && !r.surfaces && !r.priority)
     ParallelLoop(o.lines.threads).for_each(r.drawing.segments.size(), 1024, [&](std::size_t i) {
       Segment& s = r.drawing.segments[i];
       if (near) clip_near(s, *near);
@@ -210,27 +216,37 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
 }
 
 void add_surface_fills(Plot& plot, const RenderResult& r) {
-  if (!r.surfaces) return;
+  if (!r.surfaces && !r.priority) return;
   Projector proj = drawing_projector(r.drawing, r.camera);
   PictureToDrawing to_drawing(PicturePlane(r.camera), proj.frame());
   bool had = !plot.empty();
+  auto ring = [&](PlotFill& f, const std::vector<Exact2>& pts) {
+    std::vector<Point2> out;
+    for (const Exact2& q : pts) {
+      auto xy = to_drawing(q);
+      out.push_back({xy[0], xy[1]});
+      if (!had) plot.bounds = {xy[0], xy[1], xy[0], xy[1]}, had = true;
+      plot.bounds = {std::min(plot.bounds[0], xy[0]), std::min(plot.bounds[1], xy[1]), std::max(plot.bounds[2], xy[0]),
+                     std::max(plot.bounds[3], xy[1])};
+    }
+    f.rings.push_back(std::move(out));
+  };
+  if (r.priority) {  // the painter's order: later fills cover earlier ones
+    for (int i : r.priority->order) {
+      const PriorityPolygon& p = r.priority->polygons[i];
+      PlotFill f;
+      f.colour = r.face_colours[p.body][p.face];
+      ring(f, p.pts);
+      plot.fills.push_back(std::move(f));
+    }
+    return;
+  }
   for (const VisibleGroup& g : r.surfaces->groups)
     for (const VisiblePolygon& p : g.polygons) {
       PlotFill f;
       f.colour = r.group_colours[g.group];
-      auto ring = [&](const std::vector<Exact2>& pts) {
-        std::vector<Point2> out;
-        for (const Exact2& q : pts) {
-          auto xy = to_drawing(q);
-          out.push_back({xy[0], xy[1]});
-          if (!had) plot.bounds = {xy[0], xy[1], xy[0], xy[1]}, had = true;
-          plot.bounds = {std::min(plot.bounds[0], xy[0]), std::min(plot.bounds[1], xy[1]), std::max(plot.bounds[2], xy[0]),
-                         std::max(plot.bounds[3], xy[1])};
-        }
-        f.rings.push_back(std::move(out));
-      };
-      ring(p.outer_2d);
-      for (const auto& h : p.holes_2d) ring(h);
+      ring(f, p.outer_2d);
+      for (const auto& h : p.holes_2d) ring(f, h);
       plot.fills.push_back(std::move(f));
     }
 }

@@ -14,6 +14,7 @@
 #include "algorithms/lighting.hpp"
 #include "algorithms/line_drawing.hpp"
 #include "algorithms/plot.hpp"
+#include "algorithms/priority_list.hpp"
 #include "algorithms/visible_surfaces.hpp"
 #include "io/scene.hpp"
 #include "io/svg_writer.hpp"
@@ -24,8 +25,10 @@ namespace hlr {
 /// Which hidden-line route renders. Roberts: the course's algorithm on convex bodies, and
 /// through convex pieces for non-convex solids (Method::RobertsPieces in the stats).
 /// WeilerAtherton: the course's visible-surface algorithm (weiler_atherton.hpp) for the
-/// surfaces, the per-face route for the lines; implies `surfaces`.
-enum class RenderMethod { Faces, Roberts, WeilerAtherton };
+/// surfaces, the per-face route for the lines; implies `surfaces`. Priority: the course's
+/// priority-list (painter's) algorithm (priority_list.hpp): the faces and their cut parts
+/// painted back to front under the per-face route's lines.
+enum class RenderMethod { Faces, Roberts, WeilerAtherton, Priority };
 
 struct RenderOptions {
   RenderMethod method = RenderMethod::Faces;
@@ -54,6 +57,10 @@ struct RenderResult {
   std::optional<VisibleSurfaces> surfaces;
   std::vector<std::vector<Rgb>> face_colours;
   std::vector<Rgb> group_colours;
+  /// With RenderMethod::Priority: the painter's list (polygons painted back to front) and the
+  /// seconds it took.
+  std::optional<PriorityResult> priority;
+  double priority_seconds = 0;
   /// Remarks for the user ("file: body 'name' is open ...: drawn as a surface", eye in a face plane).
   std::vector<std::string> notes;
 };
@@ -77,7 +84,8 @@ class RenderBodyError : public std::runtime_error {
 RenderResult render(std::vector<Scene> scenes, const RenderOptions& options = {});
 
 /// The shaded regions of a surfaces render in the 2D stage's drawing coordinates (the same
-/// projector as the lines), one fill per region of one colour; also widens the plot's bounds.
+/// projector as the lines), one fill per region of one colour (a priority render: one fill per
+/// polygon of the list, in the order painted); also widens the plot's bounds.
 void add_surface_fills(Plot& plot, const RenderResult& result);
 
 /// Loads mesh files (.off .obj .stl .ply) and scene files (.yaml .yml .json), then renders.

@@ -77,8 +77,31 @@ struct Drawing {
   }
   std::string json() const {
     hlr::SurfacesJson sj;
-    if (r->surfaces) sj = hlr::SurfacesJson{&*r->surfaces, &r->face_colours};
+    if (r->surfaces) sj = hlr::SurfacesJson{&*r->surfaces, &r->face_colours, nullptr};
+    if (r->priority) sj = hlr::SurfacesJson{nullptr, &r->face_colours, &*r->priority};
     return hlr::to_json(r->names, r->drawing, r->camera, nullptr, sj);
+  }
+  // The painter's list (render(..., method='priority')): one dict per polygon, back to front.
+  py::object priority() const {
+    if (!r->priority) return py::none();
+    py::list out;
+    for (int i : r->priority->order) {
+      const hlr::PriorityPolygon& p = r->priority->polygons[i];
+      py::dict d;
+      d["body"] = p.body;
+      d["face"] = p.face;
+      d["piece"] = p.piece;
+      d["cut"] = i >= static_cast<int>(r->priority->initial);
+      auto c = hlr::rgb8(r->face_colours[p.body][p.face]);
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "#%02x%02x%02x", c[0], c[1], c[2]);
+      d["shade"] = std::string(hex);
+      py::list corners;
+      for (const hlr::Point3& q : p.corners) corners.append(point(q));
+      d["corners"] = corners;
+      out.append(d);
+    }
+    return out;
   }
   // The visible surfaces (render(..., surfaces=True)): one dict per face seen.
   py::object surfaces() const {
@@ -171,11 +194,12 @@ Drawing render(const py::object& input, std::optional<py::sequence> view, std::o
   if (py::isinstance<py::str>(input)) inputs.push_back(input.cast<std::string>());
   else inputs = input.cast<std::vector<std::string>>();
   hlr::RenderOptions o;
-  if (method != "faces" && method != "roberts" && method != "weiler-atherton")
-    throw std::invalid_argument("method must be 'faces', 'roberts' or 'weiler-atherton'");
+  if (method != "faces" && method != "roberts" && method != "weiler-atherton" && method != "priority")
+    throw std::invalid_argument("method must be 'faces', 'roberts', 'weiler-atherton' or 'priority'");
   if (edges != "feature" && edges != "all") throw std::invalid_argument("edges must be 'feature' or 'all'");
   o.method = method == "roberts" ? hlr::RenderMethod::Roberts
              : method == "weiler-atherton" ? hlr::RenderMethod::WeilerAtherton
+             : method == "priority"        ? hlr::RenderMethod::Priority
                                            : hlr::RenderMethod::Faces;
   o.surfaces = surfaces;
   o.lines.edges = edges == "all" ? hlr::EdgeSelection::All : hlr::EdgeSelection::Feature;
@@ -234,6 +258,9 @@ PYBIND11_MODULE(exact_hlr, m) {
       .def_property_readonly("surfaces", &Drawing::surfaces,
                              "With surfaces=True: per face seen, its side, shade, exact area and visible polygons (outer, holes: "
                              "3D points as Fractions in the face's plane); None otherwise")
+      .def_property_readonly("priority", &Drawing::priority,
+                             "With method='priority': the painter's list back to front, one dict per polygon (body, face, piece, "
+                             "cut, shade, corners: 3D points as Fractions); None otherwise")
       .def("strokes", &Drawing::strokes, py::arg("hidden") = false,
            "Strokes per layer ('visible-silhouette', ...) in pen order: lists of (x, y) drawing points")
       .def("plot", &Drawing::plot, py::arg("format") = "svg", py::kw_only(), py::arg("hidden") = false, py::arg("page") = py::none(),
