@@ -24,10 +24,10 @@ struct Entry {
 const std::vector<Entry>& catalogue() {
   static const std::vector<Entry> c = {
       // ---- the problem reader (io/problem.cpp)
-      {"a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton)",
-       "в файле задачи нужна строка 'problem: ТИП' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton)"},
-      {"unknown problem type '@x' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton)",
-       "неизвестный тип задачи '@1' (известны: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton)"},
+      {"a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority)",
+       "в файле задачи нужна строка 'problem: ТИП' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority)"},
+      {"unknown problem type '@x' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority)",
+       "неизвестный тип задачи '@1' (известны: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority)"},
       {"a horizon problem takes heights, not bodies", "задача horizon принимает высоты (heights), а не тела (bodies)"},
       {"a horizon problem needs 'heights': one list of heights per cut z = const",
        "задаче horizon нужны высоты 'heights': по списку высот для каждого сечения z = const"},

@@ -23,7 +23,7 @@ std::vector<Rational> numbers(const P& c, const YAML::Node& n, std::size_t count
 }
 
 Problem::Type parse_type(const P& c, const YAML::Node& n) {
-  if (!n || !n.IsScalar()) c.fail(n, "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton)");
+  if (!n || !n.IsScalar()) c.fail(n, "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority)");
   const std::string t = n.Scalar();
   if (t == "roberts") return Problem::Type::Roberts;
   if (t == "cyrus-beck") return Problem::Type::CyrusBeck;
@@ -33,7 +33,8 @@ Problem::Type parse_type(const P& c, const YAML::Node& n) {
   if (t == "transform") return Problem::Type::Transform;
   if (t == "horizon") return Problem::Type::Horizon;
   if (t == "weiler-atherton") return Problem::Type::WeilerAtherton;
-  c.fail(n, "unknown problem type '" + t + "' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton)");
+  if (t == "priority") return Problem::Type::Priority;
+  c.fail(n, "unknown problem type '" + t + "' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority)");
 }
 
 std::string list_text(const std::vector<Rational>& v) {
@@ -84,9 +85,10 @@ const char* to_string(Problem::Type t) {
     case Problem::Type::Decompose: return "decompose";
     case Problem::Type::Transform: return "transform";
     case Problem::Type::Horizon: return "horizon";
-    case Problem::Type::WeilerAtherton: break;
+    case Problem::Type::WeilerAtherton: return "weiler-atherton";
+    case Problem::Type::Priority: break;
   }
-  return "weiler-atherton";
+  return "priority";
 }
 
 Problem load_problem(const std::string& path) { return load_problem_text(read_file_bytes(path), path); }

@@ -18,7 +18,7 @@
 namespace hlr {
 
 struct Problem {
-  enum class Type { Roberts, CyrusBeck, Midpoint, Convexity, Decompose, Transform, Horizon, WeilerAtherton };
+  enum class Type { Roberts, CyrusBeck, Midpoint, Convexity, Decompose, Transform, Horizon, WeilerAtherton, Priority };
   Type type = Type::Roberts;
   std::string file;
   std::string title;  // optional `title`

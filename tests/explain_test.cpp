@@ -52,11 +52,11 @@ const SolutionJson& values(const SolutionJson& s, const std::string& section, in
 }
 }  // namespace
 
-TEST(Explain, AtLeastEightProblemsCoveringEveryType) {
+TEST(Explain, AtLeastEightProblemsCoveringAllNineTypes) {
   std::set<std::string> types;
   for (const auto& p : problems()) types.insert(to_string(load_problem(p).type));
   EXPECT_GE(problems().size(), 8u);
-  EXPECT_EQ(types.size(), 8u);
+  EXPECT_EQ(types.size(), 9u);
 }
 
 TEST(Explain, GoldenMarkdownAndJson) {
@@ -330,7 +330,7 @@ TEST(Explain, InequalitiesReadLikeTheNotes) {
 // The Russian page is Russian (issue 12): apart from the problem's own title and body names
 // (the author's text) and formula symbols, no Latin word; and it uses the course's words.
 TEST(Explain, RussianPageHasNoEnglishOutsideFormulas) {
-  const std::set<std::string> formulas = {"VT", "eps", "h_j", "light", "t_max", "t_min", "f_", "z_"};  // f_п, z_б: the notes' symbols
+  const std::set<std::string> formulas = {"VT", "eps", "h_j", "light", "t_max", "t_min", "f_", "z_", "z_min", "z_max"};  // f_п, z_б, z_min: the notes' symbols
   bool saw_nonfacing = false, saw_hidden_edges = false, saw_piercing = false;
   for (const std::string& file : problems()) {
     Problem pr = load_problem(file);
@@ -558,4 +558,53 @@ TEST(Explain, WeilerAthertonPagesAddUp) {
   EXPECT_EQ(pages, 3);
   EXPECT_TRUE(saw_split);
   EXPECT_TRUE(saw_violation);
+}
+
+// The priority-list pages (issue 19): the swap example moves P to the head and paints it
+// first; the notes' cyclic overlap of two polygons cuts Q by P's plane z = 1 at exactly
+// (3, 1, 1) and (3, 2, 1) and paints the part behind, P, then the part in front; every page's
+// order is the algorithm's, and each answer table stops at the first yes.
+TEST(Explain, PriorityPagesShowTheTestsSwapsAndCuts) {
+  auto order = [](const SolutionJson& s) {
+    std::vector<std::string> out;
+    for (const auto& o : s["result"]["order"]) out.push_back(o["polygon"].get<std::string>());
+    return out;
+  };
+  SolutionJson sw = explain(load_problem(kData + "/problems/priority_swap.yaml"));
+  EXPECT_EQ(order(sw), (std::vector<std::string>{"P/0", "Q/0"}));
+  int swaps = 0;
+  for (const auto& sec : sw["sections"])
+    if (sec["title"] == "pl_swap") {
+      ++swaps;
+      EXPECT_EQ(sec["subject"], "P/0");
+    }
+  EXPECT_EQ(swaps, 1);
+
+  SolutionJson pi = explain(load_problem(kData + "/problems/priority_pierce.yaml"));
+  EXPECT_EQ(order(pi), (std::vector<std::string>{"Q/0.2", "P/0", "Q/0.1"}));
+  int cuts = 0;
+  for (const auto& sec : pi["sections"]) {
+    if (sec["title"] == "pl_tests") {
+      // Answers: "no" up to the first "yes", then "-".
+      bool yes = false;
+      for (const auto& row : sec["tables"][0]["rows"]) {
+        std::string a = row[2].get<std::string>();
+        if (row[0] == "3'" || row[0] == "4'") continue;
+        EXPECT_EQ(a, yes ? "-" : a == "yes" ? "yes" : "no");
+        yes = yes || a == "yes";
+      }
+    }
+    if (sec["title"] != "pl_split") continue;
+    ++cuts;
+    EXPECT_EQ(sec["subject"], "Q/0");
+    EXPECT_EQ(sec["values"]["cut_plane"], "f = z − 1");
+    for (const auto& row : sec["tables"][0]["rows"]) EXPECT_EQ(row[2], "(3, 1, 1), (3, 2, 1)");
+  }
+  EXPECT_EQ(cuts, 1);
+
+  SolutionJson cy = explain(load_problem(kData + "/problems/priority_cycle.yaml"));
+  int cy_cuts = 0;
+  for (const auto& sec : cy["sections"]) cy_cuts += sec["title"] == "pl_split";
+  EXPECT_GE(cy_cuts, 1);
+  EXPECT_GE(order(cy).size(), 4u);
 }
