@@ -9,6 +9,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "kernel/predicates.hpp"
+
 namespace hlr {
 namespace {
 
@@ -58,11 +60,13 @@ class Painter {
   const PicturePlane& picture() const { return pp_; }
 
   PriorityResult run(std::vector<ScenePolygon> first) {
+    res_.polygons.reserve(first.size() + first.size() / 4 + 16);  // parts rarely need more: few copies of exact corners
     for (ScenePolygon& p : first) {
       PriorityPolygon q{p.body, p.face, p.piece, static_cast<int>(res_.polygons.size()), std::move(p.corners), std::move(p.pts), {}, {}};
       add(std::move(q));
     }
     res_.initial = res_.polygons.size();
+    if (!opt_.trace && res_.initial > 64) build_grid();
     Order cmp{&res_.polygons};
     std::set<int, Order> rest(cmp);
     for (std::size_t i = 0; i < res_.polygons.size(); ++i) rest.insert(static_cast<int>(i));
@@ -81,6 +85,7 @@ class Painter {
           front.pop_back();
         else
           rest.erase(a);
+        state_[a] = kGone;
         res_.order.push_back(a);
         if (opt_.trace) trace_pair(PriorityStep::Kind::Paint, a, -1);
       } else if (o.kind == Outcome::Swap) {
@@ -89,6 +94,7 @@ class Painter {
         rest.erase(o.b);
         marked_[o.b] = 1;
         front.push_back(o.b);
+        state_[o.b] = kFront;
       } else {
         split(o, front, rest);
       }
@@ -138,17 +144,28 @@ class Painter {
     exact_box_.push_back(std::move(ex));
     box_.push_back(box_of(p.pts));
     marked_.push_back(0);
+    state_.push_back(kRest);
     res_.polygons.push_back(std::move(p));
     return static_cast<int>(res_.polygons.size()) - 1;
   }
 
-  Sides sides(const Plane& h, int eye_sign, const std::vector<Point3>& c, std::vector<Rational>* values) const {
+  // The sides of polygon x's corners against the plane of polygon y.
+  Sides sides(int x, int y, std::vector<Rational>* values) const {
+    const Plane& h = plane(y);
+    const int eye_sign = eye(y);
+    const auto& on_plane = res_.polygons[y].corners;
     Sides s;
-    for (const Point3& v : c) {
-      Rational f = h.value(v);
-      int k = sgn(f) * eye_sign;
+    for (const Point3& v : res_.polygons[x].corners) {
+      int k;
+      if (values) {  // the exam page shows the values
+        values->push_back(h.value(v));
+        k = sgn(values->back()) * eye_sign;
+      } else if (std::find(on_plane.begin(), on_plane.end(), v) != on_plane.end()) {
+        k = 0;  // a corner of y (a shared vertex of a mesh): on its plane, no arithmetic
+      } else {
+        k = static_cast<int>(side_of_plane(h, v)) * eye_sign;  // filtered, exact
+      }
       (k > 0 ? s.near : k < 0 ? s.far : s.on)++;
-      if (values) values->push_back(std::move(f));
     }
     return s;
   }
@@ -201,15 +218,15 @@ class Painter {
     if (apart(a, b, 0)) first = 1;
     else if (apart(a, b, 1)) first = 2;
     bool have_a = false, have_b = false;
-    if (!first || all) sa = sides(plane(b), eye(b), res_.polygons[a].corners, va), have_a = true;
+    if (!first || all) sa = sides(a, b, va), have_a = true;
     if (!first && (sa.in_plane() ? wins_tie(b, a) : sa.near == 0)) first = 3;
-    if (!first || all) sb = sides(plane(a), eye(a), res_.polygons[b].corners, vb), have_b = true;
+    if (!first || all) sb = sides(b, a, vb), have_b = true;
     if (!first && (sb.in_plane() ? wins_tie(b, a) : sb.far == 0)) first = 4;
     if (!first && disjoint(a, b)) first = 5;
     if (first) ++res_.passed[first];
     if (!first || all) {
-      if (!have_a) sa = sides(plane(b), eye(b), res_.polygons[a].corners, nullptr);
-      if (!have_b) sb = sides(plane(a), eye(a), res_.polygons[b].corners, nullptr);
+      if (!have_a) sa = sides(a, b, nullptr);
+      if (!have_b) sb = sides(b, a, nullptr);
       if (sb.in_plane() ? wins_tie(a, b) : sb.near == 0) swapped = 3;
       else if (sa.in_plane() ? wins_tie(a, b) : sa.far == 0) swapped = 4;
     }
@@ -244,6 +261,21 @@ class Painter {
       return true;
     };
     Outcome o;
+    if (grid_.on) {
+      // Only the polygons whose boxes share a cell with A's: for the others test 1 or 2 says
+      // yes. Put to the tests in the same order as the full scan, so the outcome is the same.
+      std::vector<int> cand = grid_candidates(a, top);
+      auto rank = [&](int id) { return state_[id] == kFront ? static_cast<long>(front.rend() - std::find(front.rbegin(), front.rend(), id)) : 0L; };
+      std::sort(cand.begin(), cand.end(), [&](int x, int y) {
+        long rx = rank(x), ry = rank(y);
+        if ((rx > 0) != (ry > 0)) return rx > 0;
+        if (rx > 0) return rx > ry;
+        return Order{&res_.polygons}(x, y);
+      });
+      for (int b : cand)
+        if (check(b, o)) return o;
+      return o;
+    }
     for (auto it = front.rbegin(); it != front.rend(); ++it)
       if (check(*it, o)) return o;
     for (int b : rest) {
@@ -251,6 +283,55 @@ class Painter {
       if (check(b, o)) return o;
     }
     return o;
+  }
+
+  // A uniform grid over the picture boxes (doubles, widened): two polygons that share no cell
+  // have boxes apart (the cell of a point is monotone in the point, so boxes that meet share
+  // the cell of a common point), which is test 1 or 2 answering yes.
+  void build_grid() {
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (const Box& b : box_) {
+      if (!b.ok) return;
+      for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], b.lo[k]), hi[k] = std::max(hi[k], b.hi[k]);
+    }
+    const int n = static_cast<int>(std::min<double>(2048, std::ceil(std::sqrt(static_cast<double>(box_.size())))));
+    grid_.nx = grid_.ny = std::max(n, 1);
+    grid_.x0 = lo[0], grid_.y0 = lo[1];
+    grid_.cw = (hi[0] - lo[0]) / grid_.nx, grid_.ch = (hi[1] - lo[1]) / grid_.ny;
+    if (!(grid_.cw > 0) || !(grid_.ch > 0) || !std::isfinite(grid_.cw) || !std::isfinite(grid_.ch)) return;
+    grid_.cells.assign(static_cast<std::size_t>(grid_.nx) * grid_.ny, {});
+    grid_.on = true;
+    for (std::size_t i = 0; i < box_.size(); ++i) grid_insert(static_cast<int>(i));
+  }
+  std::array<int, 4> grid_range(const Box& b) const {
+    auto cell = [](double v, double o, double w, int n) { return std::clamp(static_cast<int>(std::floor((v - o) / w)), 0, n - 1); };
+    return {cell(b.lo[0], grid_.x0, grid_.cw, grid_.nx), cell(b.lo[1], grid_.y0, grid_.ch, grid_.ny),
+            cell(b.hi[0], grid_.x0, grid_.cw, grid_.nx), cell(b.hi[1], grid_.y0, grid_.ch, grid_.ny)};
+  }
+  void grid_insert(int id) {
+    if (!grid_.on) return;
+    if (!box_[id].ok) {  // doubles lost this part: no grid from here on
+      grid_.on = false;
+      return;
+    }
+    auto r = grid_range(box_[id]);
+    for (int y = r[1]; y <= r[3]; ++y)
+      for (int x = r[0]; x <= r[2]; ++x) grid_.cells[static_cast<std::size_t>(y) * grid_.nx + x].push_back(id);
+  }
+  std::vector<int> grid_candidates(int a, const Rational& top) {
+    ++stamp_;
+    if (seen_.size() < res_.polygons.size()) seen_.resize(res_.polygons.size(), 0);
+    std::vector<int> out;
+    auto r = grid_range(box_[a]);
+    for (int y = r[1]; y <= r[3]; ++y)
+      for (int x = r[0]; x <= r[2]; ++x)
+        for (int id : grid_.cells[static_cast<std::size_t>(y) * grid_.nx + x]) {
+          if (seen_[id] == stamp_) continue;
+          seen_[id] = stamp_;
+          if (id == a || state_[id] == kGone || res_.polygons[id].zmin > top) continue;
+          out.push_back(id);
+        }
+    return out;
   }
 
   // Sutherland–Hodgman in space: the part of polygon i where sign·h >= 0, cut exactly where the
@@ -326,8 +407,8 @@ class Painter {
     // A's plane; where neither crosses the other's plane (the cycle runs through other
     // polygons): A along B's outline, or B along A's.
     std::vector<Rational> fa, fb;
-    Sides sa = sides(plane(b), eye(b), res_.polygons[a].corners, nullptr);
-    Sides sb = sides(plane(a), eye(a), res_.polygons[b].corners, nullptr);
+    Sides sa = sides(a, b, nullptr);
+    Sides sb = sides(b, a, nullptr);
     int victim = a, cutter = b;
     std::vector<PriorityPolygon> parts;
     std::vector<Rational> values;
@@ -351,12 +432,14 @@ class Painter {
       front.erase(pos);
     else
       rest.erase(victim);
+    state_[victim] = kGone;
     PriorityStep st;
     st.kind = PriorityStep::Kind::Split;
     st.a = victim, st.b = cutter, st.values = std::move(values), st.along_outline = outline;
     for (PriorityPolygon& p : parts) {
       int id = add(std::move(p));
       rest.insert(id);
+      grid_insert(id);
       st.parts.push_back(id);
     }
     if (opt_.trace) res_.steps.push_back(std::move(st));
@@ -378,6 +461,16 @@ class Painter {
   std::vector<std::array<Rational, 4>> exact_box_;
   std::vector<Box> box_;
   std::vector<char> marked_;
+  enum : char { kRest, kFront, kGone };
+  std::vector<char> state_;  // where each polygon is: in the sorted rest, moved to the head, or painted or cut
+  struct Grid {
+    bool on = false;
+    double x0 = 0, y0 = 0, cw = 0, ch = 0;
+    int nx = 0, ny = 0;
+    std::vector<std::vector<int>> cells;
+  } grid_;
+  std::vector<unsigned> seen_;
+  unsigned stamp_ = 0;
   PriorityResult res_;
 };
 

@@ -43,16 +43,23 @@ std::vector<ScenePolygon> scene_polygons(const std::vector<const Polyhedron*>& b
   std::vector<ScenePolygon> out;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const Polyhedron& p = *bodies[b];
+    std::vector<Exact2> pic;  // every vertex projected once
+    pic.reserve(p.num_vertices());
+    for (const Point3& v : p.vertices()) pic.push_back(pp.project(v));
     for (std::size_t f = 0; f < p.num_faces(); ++f) {
       if (p.planes()[f].is_degenerate()) continue;
       if (b < lines.back_faces_unseen.size() && lines.back_faces_unseen[b] && lines.facing[b][f] < 0) continue;
       ScenePolygon whole{static_cast<int>(b), static_cast<int>(f), 0, {}, {}};
-      for (int v : p.faces()[f]) whole.corners.push_back(p.vertices()[v]), whole.pts.push_back(pp.project(p.vertices()[v]));
+      for (int v : p.faces()[f]) whole.corners.push_back(p.vertices()[v]), whole.pts.push_back(pic[v]);
       Rational a = picture_area2(whole.pts);
       if (a == 0) continue;
       if (a < 0) {
         std::reverse(whole.pts.begin(), whole.pts.end());
         std::reverse(whole.corners.begin(), whole.corners.end());
+      }
+      if (whole.pts.size() == 3) {  // a triangle with an area: convex, no corner on a straight side
+        out.push_back(std::move(whole));
+        continue;
       }
       if (is_convex(whole.pts)) {
         ScenePolygon clean{whole.body, whole.face, 0, {}, {}};
@@ -68,9 +75,9 @@ std::vector<ScenePolygon> scene_polygons(const std::vector<const Polyhedron*>& b
       for (const FaceTriangle& t : ft.triangles) {
         ScenePolygon tri{whole.body, whole.face, piece, {}, {}};
         for (int k = 0; k < 3; ++k) {
-          const Point3& v = p.vertices()[p.faces()[f][t.v[k]]];
-          tri.corners.push_back(v);
-          tri.pts.push_back(pp.project(v));
+          const int v = p.faces()[f][t.v[k]];
+          tri.corners.push_back(p.vertices()[v]);
+          tri.pts.push_back(pic[v]);
         }
         if (add(out, std::move(tri))) ++piece;
       }
