@@ -70,6 +70,12 @@ const std::vector<Entry>& catalogue() {
       {"Weiler-Atherton: body @x reaches the eye's plane or behind it",
        "алгоритм Вейлера–Азертона: тело @1 доходит до плоскости глаза или заходит за неё"},
       {"Weiler-Atherton: recursion did not end", "алгоритм Вейлера–Азертона: рекурсия не закончилась"},
+      // ---- the priority list (algorithms/priority_list.cpp)
+      {"priority list: more than @x polygons after the cuts", "список приоритетов: после разбиений больше @1 многоугольников"},
+      {"priority list: body @x reaches the eye's plane or behind it",
+       "список приоритетов: тело @1 доходит до плоскости глаза или заходит за неё"},
+      {"priority list: a cyclic overlap that no cut breaks", "список приоритетов: циклическое экранирование, которое не разрешает ни одно разбиение"},
+      {"priority list: a cut that made no parts", "список приоритетов: разбиение не дало частей"},
       // ---- lights and materials (io/scene_lighting.cpp)
       {"@w must be between @x and @x", "@1: ожидается число от @2 до @3"},
       {"light direction has zero length", "направление источника света имеет нулевую длину"},

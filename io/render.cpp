@@ -115,7 +115,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
       for (const Point3& v : polys[b]->vertices())
         if (r.camera.in_front(v) != Sign::Positive)
           throw std::invalid_argument(r.names[b].source + ": body '" + r.names[b].name +
-                                      "' reaches the eye's plane or behind it: --surfaces needs every body in front of the eye");
+                                      "' reaches the eye's plane or behind it: filled faces (--surfaces, --method weiler-atherton or priority) need every body in front of the eye");
   LineOptions all = o.lines;
   all.edges = EdgeSelection::All;
   all.classify_all = true;

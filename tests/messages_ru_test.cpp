@@ -34,7 +34,7 @@ bool allowed_latin(const std::string& w) {
       "ZFAR", "x1", "y1", "z1", "x2", "y2", "z2", "YAML", "JSON", "NaN", "hlr", "off", "obj", "stl", "ply", "GiB", "yaml",
       "material", "lighting", "lights", "ambient", "specular", "phong", "blinn", "colour", "color", "ka", "kd", "ks", "shininess",
       "type", "directional", "point", "spot", "position", "intensity", "attenuation", "cone", "exponent", "rrggbb", "a0", "a1",
-      "a2", "r", "g", "b", "weiler", "atherton", "faces", "method"};
+      "a2", "r", "g", "b", "weiler", "atherton", "faces", "method", "priority"};
   return keys.count(w) > 0;
 }
 
@@ -226,7 +226,8 @@ TEST(MessagesRu, EveryMessageInTheSourcesHasAnEntry) {
       "io/problem.cpp", "io/scene.cpp", "io/yaml_context.hpp", "io/mesh_reader.cpp", "kernel/body_matrix.cpp",
       "kernel/number.cpp", "kernel/rotation.cpp", "kernel/polyhedron.cpp", "kernel/transform.cpp", "kernel/mesh_checks.cpp",
       "algorithms/roberts.cpp", "algorithms/roberts_pieces.cpp", "algorithms/cyrus_beck.cpp", "algorithms/midpoint_clip.cpp",
-      "algorithms/convex_decomposition.cpp", "algorithms/convexity.cpp", "io/view_choice.cpp", "io/scene_lighting.cpp", "algorithms/weiler_atherton.cpp"};
+      "algorithms/convex_decomposition.cpp", "algorithms/convexity.cpp", "io/view_choice.cpp", "io/scene_lighting.cpp", "algorithms/weiler_atherton.cpp",
+      "algorithms/priority_list.cpp"};
   std::string all;
   for (const std::string& t : message_ru_templates()) all += t + "\n";
   std::regex statement(R"re((throw |fail\(|return "|push_back\(\{face, ")[^;]*;)re");

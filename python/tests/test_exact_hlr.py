@@ -109,3 +109,16 @@ def test_visible_surfaces_exact_and_both_methods_agree():
     assert b'id="surfaces"' in fast.plot("svg")
     assert json.loads(fast.json())["surfaces"]["stats"]["faces_seen"] == 14
     assert exact_hlr.render([path("cube.off")]).surfaces is None
+
+
+def test_priority_list_paints_back_to_front():
+    # The painter's list of the demo scene: 14 faces, 7 cuts: 10 faces painted whole and 11 parts,
+    # every polygon an exact list of 3D corners; the JSON carries the same order.
+    d = exact_hlr.render([path("demo.yaml")], method="priority")
+    order = d.priority
+    assert len(order) == 21 and sum(p["cut"] for p in order) == 11
+    assert all(isinstance(c, Fraction) for p in order for q in p["corners"] for c in q)
+    js = json.loads(d.json())["priority"]
+    assert [(o["body"], o["face"]) for o in js["order"]] == [(p["body"], p["face"]) for p in order]
+    assert js["stats"]["cuts"] == 7
+    assert exact_hlr.render([path("cube.off")]).priority is None
