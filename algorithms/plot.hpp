@@ -44,6 +44,9 @@ struct PlotStats {
 struct PlotFill {
   std::vector<std::vector<Point2>> rings;
   std::array<double, 3> colour{1, 1, 1};
+  /// Edged in its own colour this wide (page mm), against antialiasing seams; a painter's
+  /// fill is edged wider: its cut parts meet inside one face with nothing drawn over the cut.
+  double edge_mm = 0.08;
 };
 
 struct Plot {

@@ -143,6 +143,9 @@ class Painter {
       }
     exact_box_.push_back(std::move(ex));
     box_.push_back(box_of(p.pts));
+    std::vector<std::array<double, 2>> d;
+    for (const Exact2& q : p.pts) d.push_back({q[0].get_d(), q[1].get_d()});
+    dpts_.push_back(std::move(d));
     marked_.push_back(0);
     state_.push_back(kRest);
     res_.polygons.push_back(std::move(p));
@@ -188,11 +191,28 @@ class Painter {
 
   // Test 5: the projections' interiors do not meet (convex polygons: some side of one has all
   // of the other on or outside it).
-  static bool separated_by_side(const std::vector<Exact2>& p, const std::vector<Exact2>& q) {
-    for (std::size_t i = 0; i < p.size(); ++i) {
+  // orient2d of picture points, filtered: the doubles (get_d truncates: relative error below
+  // 2^-52 each) give det with |error| <= 32·2^-52·S², S the sum of the six coordinates'
+  // magnitudes (docs/design.md); exact when the doubles cannot hold them or are too close.
+  static int orient_filtered(const Exact2& a, const Exact2& b, const Exact2& c, const std::array<double, 2>& da,
+                             const std::array<double, 2>& db, const std::array<double, 2>& dc) {
+    double s = std::fabs(da[0]) + std::fabs(da[1]) + std::fabs(db[0]) + std::fabs(db[1]) + std::fabs(dc[0]) + std::fabs(dc[1]);
+    if (std::isfinite(s * s) && s > 1e-100) {
+      double det = (db[0] - da[0]) * (dc[1] - da[1]) - (db[1] - da[1]) * (dc[0] - da[0]);
+      double bound = 32 * 0x1p-52 * s * s;
+      if (det > bound) return 1;
+      if (det < -bound) return -1;
+    }
+    return orient2d(a, b, c);
+  }
+  bool separated_by_side(int i, int j) const {
+    const auto &p = res_.polygons[i].pts, &q = res_.polygons[j].pts;
+    const auto &dp = dpts_[i], &dq = dpts_[j];
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      const std::size_t k1 = (k + 1) % p.size();
       bool all_out = true;
-      for (const Exact2& x : q)
-        if (orient2d(p[i], p[(i + 1) % p.size()], x) > 0) {
+      for (std::size_t m = 0; m < q.size(); ++m)
+        if (orient_filtered(p[k], p[k1], q[m], dp[k], dp[k1], dq[m]) > 0) {
           all_out = false;
           break;
         }
@@ -200,10 +220,7 @@ class Painter {
     }
     return false;
   }
-  bool disjoint(int a, int b) const {
-    const auto &p = res_.polygons[a].pts, &q = res_.polygons[b].pts;
-    return separated_by_side(p, q) || separated_by_side(q, p);
-  }
+  bool disjoint(int a, int b) const { return separated_by_side(a, b) || separated_by_side(b, a); }
 
   // The notes' tests for the head A against B. Returns the first yes (1-5) or 0, and in
   // `swapped` whether B may go before A (3: B wholly on the far side of A's plane, 4: A wholly
@@ -460,6 +477,7 @@ class Painter {
   std::vector<int> eye_;  // per face: the sign of its plane's function on the eye's side
   std::vector<std::array<Rational, 4>> exact_box_;
   std::vector<Box> box_;
+  std::vector<std::vector<std::array<double, 2>>> dpts_;  // the pictures in doubles, for the filter
   std::vector<char> marked_;
   enum : char { kRest, kFront, kGone };
   std::vector<char> state_;  // where each polygon is: in the sorted rest, moved to the head, or painted or cut

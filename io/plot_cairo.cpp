@@ -34,6 +34,7 @@ void draw_fills(cairo_t* cr, const Sheet& sheet) {
         cairo_close_path(cr);
       }
       cairo_set_source_rgb(cr, fl.colour[0], fl.colour[1], fl.colour[2]);
+      cairo_set_line_width(cr, fl.edge_mm);
       cairo_fill_preserve(cr);
       cairo_stroke(cr);
     }

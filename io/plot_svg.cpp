@@ -37,7 +37,8 @@ std::string sheet_to_svg(const Sheet& sheet, const PlotStyle& style) {
         auto c = rgb8(fl.colour);
         char hex[8];
         std::snprintf(hex, sizeof hex, "#%02x%02x%02x", c[0], c[1], c[2]);
-        out += "  <path d=\"" + d + "\" fill=\"" + hex + "\" stroke=\"" + hex + "\"/>\n";
+        std::string width = fl.edge_mm != 0.08 ? " stroke-width=\"" + f(fl.edge_mm) + "\"" : "";
+        out += "  <path d=\"" + d + "\" fill=\"" + hex + "\" stroke=\"" + hex + "\"" + width + "/>\n";
       }
     out += "</g>\n";
   }

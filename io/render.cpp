@@ -236,6 +236,7 @@ void add_surface_fills(Plot& plot, const RenderResult& r) {
       const PriorityPolygon& p = r.priority->polygons[i];
       PlotFill f;
       f.colour = r.face_colours[p.body][p.face];
+      f.edge_mm = 0.25;
       ring(f, p.pts);
       plot.fills.push_back(std::move(f));
     }
