@@ -3,7 +3,9 @@
 // along small integer directions, or perspective from an eye anywhere outside the bodies,
 // possibly on a face plane or on a surface); both hidden-line routes run and must agree on
 // every piece of every edge; the visible surfaces (issue 15) must be consistent in every cell
-// and cover exactly the area the course's Weiler–Atherton algorithm finds. A disagreement
+// and cover exactly the area the course's Weiler–Atherton algorithm finds; painting the
+// priority list (issue 19) must show at the centre of every Weiler–Atherton visible piece the
+// face that piece belongs to. A disagreement
 // aborts (a finding). Exact throughout.
 #include <cmath>
 #include <cstdint>
@@ -14,6 +16,7 @@
 
 #include "algorithms/face_occluders.hpp"
 #include "algorithms/plot.hpp"
+#include "algorithms/priority_list.hpp"
 #include "algorithms/roberts.hpp"
 #include "algorithms/visible_surfaces.hpp"
 #include "algorithms/weiler_atherton.hpp"
@@ -154,6 +157,34 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const Polyhedron& p : bodies)
       std::fprintf(stderr, "  box %s - %s\n", to_string(p.vertices()[0]).c_str(), to_string(p.vertices()[7]).c_str());
     std::abort();
+  }
+  // The painter's list: at the centre of each visible convex piece of Weiler–Atherton, the last
+  // polygon painted that contains it (strictly) belongs to the piece's face.
+  PriorityResult pl = priority_list(ptrs, cam, d);
+  for (const WaPolygon& p : wa.visible) {
+    Exact2 c{Rational(0), Rational(0)};
+    for (const Exact2& x : p.pts) c[0] += x[0], c[1] += x[1];
+    Rational n(static_cast<long>(p.pts.size()));
+    c[0] /= n, c[1] /= n;
+    int shown = -1;
+    bool border = false;
+    for (auto it = pl.order.rbegin(); it != pl.order.rend() && shown < 0 && !border; ++it) {
+      const auto& q = pl.polygons[*it].pts;
+      int in = 1;
+      for (std::size_t k = 0; k < q.size() && in >= 0; ++k) {
+        int o = orient2d(q[k], q[(k + 1) % q.size()], c);
+        if (o < 0) in = -1;
+        else if (o == 0) in = 0;
+      }
+      if (in == 0) border = true;
+      if (in > 0) shown = *it;
+    }
+    if (border) continue;
+    if (shown < 0 || pl.polygons[shown].body != p.body || pl.polygons[shown].face != p.face) {
+      std::fprintf(stderr, "fuzz_render: the painter's list shows %s at the centre of a visible piece of body %d face %d\n",
+                   shown < 0 ? "nothing" : "another face", p.body, p.face);
+      std::abort();
+    }
   }
   return 0;
 }
