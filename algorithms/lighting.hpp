@@ -10,6 +10,8 @@
 #include <array>
 #include <vector>
 
+#include "kernel/number.hpp"
+
 namespace hlr {
 
 using Rgb = std::array<double, 3>;  // 0..1 per channel
@@ -30,6 +32,10 @@ struct Light {
   std::array<double, 3> attenuation{1, 0, 0};  // a0, a1, a2 (point and spot)
   double cone_degrees = 30;                     // spot: half-angle of the cone
   double exponent = 2;                          // spot: angular attenuation cos^exponent
+  /// The same direction and position exactly, as the scene file gave them (shadows decide with
+  /// these; unset: the binary values of the doubles above).
+  bool exact = false;
+  std::array<Rational, 3> exact_direction, exact_position;
 };
 
 struct Lighting {

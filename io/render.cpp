@@ -69,6 +69,8 @@ Lighting scene_lighting(const std::vector<Scene>& scenes, const Camera& cam) {
       Lighting l;
       Light d;
       d.direction = unit3(d3(*s.light));
+      d.exact = true;
+      d.exact_direction = {s.light->x(), s.light->y(), s.light->z()};
       l.lights.push_back(d);
       return l;
     }

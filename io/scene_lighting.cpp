@@ -49,6 +49,9 @@ Light parse_light(const YamlContext& c, const YAML::Node& n) {
     c.fail(n, needs_pos ? "a " + type + " light needs a 'position'" : "a directional light has no 'position' (it is at infinity)");
   if (n["direction"]) l.direction = vec(c, n["direction"], "light direction", true);
   if (n["position"]) l.position = vec(c, n["position"], "light position", false);
+  l.exact = true;
+  if (n["direction"]) l.exact_direction = c.triple(n["direction"], "light direction");
+  if (n["position"]) l.exact_position = c.triple(n["position"], "light position");
   if (n["colour"] && n["color"]) c.fail(n, "give 'colour' or 'color', not both");
   if (n["colour"]) l.colour = colour(c, n["colour"], "light colour");
   if (n["color"]) l.colour = colour(c, n["color"], "light colour");

@@ -18,6 +18,7 @@
 #include "algorithms/priority_list.hpp"
 #include "io/mesh_reader.hpp"
 #include "io/scene.hpp"
+#include "face_oracle.hpp"
 
 using namespace hlr;
 
@@ -48,70 +49,13 @@ Polyhedron parallelepiped(const Point3& o, const Point3& e1, const Point3& e2, c
   return Polyhedron(std::move(vs), {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}});
 }
 
-// ---- the oracle
+// ---- the oracle (faces: face_oracle.hpp)
 
-struct OracleFace {
-  int body, face, id;
-  std::vector<Point3> v;
-  std::array<double, 4> box;  // picture box, widened by 1e-6 of its size: only skips far faces
-  Rational a, b, c, d;  // Newell plane
-  int drop;
-};
-
-std::array<double, 4> box_of(const std::vector<Exact2>& pts) {
-  std::array<double, 4> b{INFINITY, INFINITY, -INFINITY, -INFINITY};
-  for (const Exact2& p : pts) {
-    double x = p[0].get_d(), y = p[1].get_d();
-    b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x), std::max(b[3], y)};
-  }
-  for (double x : b)
-    if (!std::isfinite(x) || std::fabs(x) < 1e-280) return {-INFINITY, -INFINITY, INFINITY, INFINITY};  // doubles lost it: no filter
-  double pad = 1e-6 * (std::fabs(b[0]) + std::fabs(b[1]) + std::fabs(b[2]) + std::fabs(b[3]));
-  return {b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad};
-}
-bool in_box(const std::array<double, 4>& b, const std::array<double, 2>& q) {
-  if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || std::fabs(q[0]) < 1e-280 || std::fabs(q[1]) < 1e-280) return true;
-  return b[0] <= q[0] && q[0] <= b[2] && b[1] <= q[1] && q[1] <= b[3];
-}
-
-std::vector<OracleFace> oracle_faces(const std::vector<const Polyhedron*>& bodies, const PicturePlane& pp) {
-  std::vector<OracleFace> out;
-  int id = 0;
-  for (std::size_t bi = 0; bi < bodies.size(); ++bi)
-    for (std::size_t fi = 0; fi < bodies[bi]->num_faces(); ++fi, ++id) {
-      OracleFace of{static_cast<int>(bi), static_cast<int>(fi), id, {}, {}, 0, 0, 0, 0, 0};
-      std::vector<Exact2> pic;
-      for (int i : bodies[bi]->faces()[fi]) of.v.push_back(bodies[bi]->vertices()[i]), pic.push_back(pp.project(of.v.back()));
-      of.box = box_of(pic);
-      for (std::size_t i = 0; i < of.v.size(); ++i) {
-        const Point3 &A = of.v[i], &B = of.v[(i + 1) % of.v.size()];
-        of.a += (A.y() - B.y()) * (A.z() + B.z());
-        of.b += (A.z() - B.z()) * (A.x() + B.x());
-        of.c += (A.x() - B.x()) * (A.y() + B.y());
-      }
-      of.d = -(of.a * of.v[0].x() + of.b * of.v[0].y() + of.c * of.v[0].z());
-      Rational ax = abs(of.a), ay = abs(of.b), az = abs(of.c);
-      of.drop = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;
-      out.push_back(std::move(of));
-    }
-  return out;
-}
-
-// 1 strictly inside, 0 on the border, -1 outside (x in the face's plane).
-int in_face(const OracleFace& f, const std::array<Rational, 3>& x) {
-  int u = f.drop == 0 ? 1 : 0, w = f.drop == 2 ? 1 : 2;
-  bool in = false;
-  for (std::size_t i = 0; i < f.v.size(); ++i) {
-    const Point3 &A = f.v[i], &B = f.v[(i + 1) % f.v.size()];
-    Rational cr = (B[u] - A[u]) * (x[w] - A[w]) - (B[w] - A[w]) * (x[u] - A[u]);
-    if (cr == 0 && std::min(A[u], B[u]) <= x[u] && x[u] <= std::max(A[u], B[u]) && std::min(A[w], B[w]) <= x[w] &&
-        x[w] <= std::max(A[w], B[w]))
-      return 0;
-    bool ua = A[w] > x[w], ub = B[w] > x[w];
-    if (ua != ub && ((cr > 0) == ub)) in = !in;
-  }
-  return in ? 1 : -1;
-}
+using test::box_of;
+using test::in_box;
+using test::in_face;
+using test::oracle_faces;
+using test::OracleFace;
 
 struct Hit {
   int id = -1;  // global face number, -1: nothing

@@ -1,0 +1,193 @@
+// Shadows as exact polygons (course notes section 40, Atherton–Weiler–Greenberg). See
+// shadows.hpp; why the labels are exact: docs/design.md, "Shadows as exact polygons".
+#include "algorithms/shadows.hpp"
+
+#include <chrono>
+#include <map>
+#include <stdexcept>
+
+#include "algorithms/face_occluders.hpp"
+#include "algorithms/parallel.hpp"
+#include "algorithms/picture_plane.hpp"
+
+namespace hlr {
+namespace {
+
+using Ring = std::vector<Exact2>;
+
+// The sign of y(p) - y(q) for q = m + δ·n, δ > 0 infinitely small.
+int above(const Exact2& p, const Exact2& m, const Exact2& n) {
+  int s = sgn(p[1] - m[1]);
+  return s != 0 ? s : -sgn(n[1]);
+}
+
+// The orientation of q = m + δ·n against the line a -> b (never 0 when q is beside an edge of
+// the arrangement that holds a -> b: design.md).
+int orient_offset(const Exact2& a, const Exact2& b, const Exact2& m, const Exact2& n) {
+  int o = orient2d(a, b, m);
+  if (o != 0) return o;
+  return sgn((b[0] - a[0]) * n[1] - (b[1] - a[1]) * n[0]);
+}
+
+// Even-odd inside test of q = m + δ·n against a set of rings (outer boundaries and holes).
+bool inside(const std::vector<Ring>& rings, const Exact2& m, const Exact2& n) {
+  bool in = false;
+  for (const Ring& r : rings)
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const Exact2 &a = r[i], &b = r[(i + 1) % r.size()];
+      bool ua = above(a, m, n) > 0, ub = above(b, m, n) > 0;
+      if (ua != ub && ((orient_offset(a, b, m, n) > 0) == ub)) in = !in;
+    }
+  return in;
+}
+
+void add_rings(const VisiblePolygon& p, std::vector<Ring>& out) {
+  out.push_back(p.outer_2d);
+  for (const auto& h : p.holes_2d) out.push_back(h);
+}
+
+// The lit polygons of a face from the light, carried into the viewer's picture.
+std::vector<Ring> carried(const std::vector<VisiblePolygon>& lit, const PicturePlane& viewer) {
+  std::vector<Ring> out;
+  for (const VisiblePolygon& p : lit) {
+    Ring r;
+    for (const Point3& c : p.outer) r.push_back(viewer.project(c));
+    out.push_back(std::move(r));
+    for (const auto& h : p.holes) {
+      Ring hr;
+      for (const Point3& c : h) hr.push_back(viewer.project(c));
+      out.push_back(std::move(hr));
+    }
+  }
+  return out;
+}
+
+// One visible face cut by the lit sets: the arrangement of all rings, each cycle labelled by
+// the lights whose lit set holds the point beside its first half-edge.
+ShadowFace cut_face(const VisibleFace& vf, const std::vector<std::vector<Ring>>& lit, const PicturePlane& pp, const Plane& plane) {
+  ShadowFace out;
+  out.body = vf.body, out.face = vf.face, out.front = vf.front;
+  std::vector<Ring> seen;
+  for (const VisiblePolygon& p : vf.polygons) add_rings(p, seen);
+  std::vector<Exact2> points;
+  std::vector<std::array<std::uint32_t, 2>> segs;
+  auto put = [&](const std::vector<Ring>& rings) {
+    for (const Ring& r : rings) {
+      const auto base = static_cast<std::uint32_t>(points.size());
+      points.insert(points.end(), r.begin(), r.end());
+      for (std::uint32_t i = 0; i < r.size(); ++i) segs.push_back({base + i, base + (i + 1) % static_cast<std::uint32_t>(r.size())});
+    }
+  };
+  put(seen);
+  for (const auto& l : lit) put(l);
+  ArrangementOptions ao;
+  ao.threads = 1;
+  PlanarArrangement arr = build_arrangement(std::move(points), segs, ao);
+  const std::size_t nc = arr.cycle_edge.size();
+  std::vector<int> label(nc, -1);
+  for (std::size_t c = 0; c < nc; ++c) {
+    const std::uint32_t h = arr.cycle_edge[c];
+    const Exact2 &a = arr.points[arr.origin[h]], &b = arr.points[arr.head(h)];
+    const Exact2 m{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2};
+    const Exact2 n{a[1] - b[1], b[0] - a[0]};  // the left of a -> b
+    if (!inside(seen, m, n)) continue;
+    unsigned mask = 0;
+    for (std::size_t i = 0; i < lit.size(); ++i)
+      if (!lit[i].empty() && inside(lit[i], m, n)) mask |= 1u << i;
+    label[c] = static_cast<int>(mask);
+  }
+  const auto ray = pp.ray_parameter(plane);
+  auto polygon = [&](const LabelledRegion& r) {
+    VisiblePolygon vp;
+    auto ring = [&](const std::vector<std::uint32_t>& hs, std::vector<Point3>& p3, std::vector<Exact2>& p2) {
+      for (std::uint32_t h : hs) {
+        p2.push_back(arr.points[arr.origin[h]]);
+        p3.push_back(pp.lift(p2.back(), ray));
+      }
+    };
+    ring(r.outer, vp.outer, vp.outer_2d);
+    for (const auto& hole : r.holes) {
+      vp.holes.emplace_back();
+      vp.holes_2d.emplace_back();
+      ring(hole, vp.holes.back(), vp.holes_2d.back());
+    }
+    vp.area2 = r.area2;
+    return vp;
+  };
+  out.area2 = 0, out.shadow_area2 = 0;
+  for (const LabelledRegion& r : merge_regions(arr, label, -1)) {
+    out.regions.push_back({static_cast<unsigned>(r.label), polygon(r)});
+    out.area2 += r.area2;
+    if (r.label == 0) out.shadow_area2 += r.area2;
+  }
+  // Per light: its lit part (label 1) and its shadow (label 0) of the visible part.
+  out.by_light.resize(lit.size());
+  for (std::size_t i = 0; i < lit.size(); ++i) {
+    std::vector<int> l(nc, -1);
+    for (std::size_t c = 0; c < nc; ++c)
+      if (label[c] >= 0) l[c] = (static_cast<unsigned>(label[c]) >> i) & 1u ? 0 : 1;
+    for (const LabelledRegion& r : merge_regions(arr, l, -1)) out.by_light[i][r.label].push_back(polygon(r));
+  }
+  return out;
+}
+
+}  // namespace
+
+Camera light_camera(const std::vector<const Polyhedron*>& bodies, const LightPlace& light) {
+  if (light.directional) return make_orthographic(light.toward);
+  bool first = true;
+  std::array<Rational, 3> lo, hi;
+  for (const Polyhedron* p : bodies)
+    for (const Point3& v : p->vertices())
+      for (int k = 0; k < 3; ++k) {
+        if (first || v[k] < lo[k]) lo[k] = v[k];
+        if (first || v[k] > hi[k]) hi[k] = v[k];
+        if (k == 2) first = false;
+      }
+  Point3 centre((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
+  if (centre == light.position) throw std::invalid_argument("shadows: a point light at the centre of the scene (it must see every body in front of it)");
+  Camera cam = make_perspective(light.position, centre);
+  for (const Polyhedron* p : bodies)
+    for (const Point3& v : p->vertices())
+      if (cam.in_front(v) != Sign::Positive)
+        throw std::invalid_argument("shadows: a point light among the bodies (every body must lie in front of it, beyond a plane through the light)");
+  return cam;
+}
+
+Shadows shadows(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const VisibleSurfaces& seen,
+                const std::vector<LightPlace>& lights, const ShadowOptions& options) {
+  auto t0 = std::chrono::steady_clock::now();
+  if (lights.size() > 16) throw std::invalid_argument("shadows: at most 16 lights");
+  Shadows out;
+  // Pass 1: what each light sees, lit polygons lifted to exact 3D corners.
+  std::vector<std::map<std::pair<int, int>, const VisibleFace*>> lit_face(lights.size());
+  for (const LightPlace& l : lights) {
+    Camera lc = light_camera(bodies, l);
+    LineOptions lo;
+    lo.edges = EdgeSelection::All;
+    lo.classify_all = true;
+    lo.threads = options.threads;
+    LineDrawing d = face_occluders(bodies, lc, lo);
+    SurfaceOptions so;
+    so.threads = options.threads;
+    out.from_light.push_back(visible_surfaces(bodies, lc, d, so));
+  }
+  for (std::size_t i = 0; i < lights.size(); ++i)
+    for (const VisibleFace& f : out.from_light[i].faces) lit_face[i][{f.body, f.face}] = &f;
+  // Pass 2: each visible face cut by the lit parts on the side the viewer sees.
+  PicturePlane pp(camera);
+  out.faces.resize(seen.faces.size());
+  ParallelLoop(options.threads).for_each(seen.faces.size(), 4, [&](std::size_t k) {
+    const VisibleFace& vf = seen.faces[k];
+    std::vector<std::vector<Ring>> lit(lights.size());
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+      auto it = lit_face[i].find({vf.body, vf.face});
+      if (it != lit_face[i].end() && it->second->front == vf.front) lit[i] = carried(it->second->polygons, pp);
+    }
+    out.faces[k] = cut_face(vf, lit, pp, bodies[vf.body]->planes()[vf.face]);
+  });
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace hlr

@@ -1,0 +1,235 @@
+// Shadows as exact polygons (algorithms/shadows.*, issue 16), checked by an independent exact
+// oracle (face_oracle.hpp): random points of every lit and every shadow polygon, taken on the
+// face in exact 3D, are cast toward the light (along the direction of a directional light, on
+// the open segment to a point light) against every face polygon of the scene in rationals. A
+// lit point must reach the light from the side of its face the viewer sees; a shadow point
+// must not. Points whose ray grazes a face's border are skipped (a set of no area). Scenes by
+// name: boxes on a ground plane, a pyramid on a box, touching and flush bodies, two lights, a
+// perspective view, a point light.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <set>
+#include <string>
+
+#include "algorithms/face_occluders.hpp"
+#include "algorithms/shadows.hpp"
+#include "face_oracle.hpp"
+
+using namespace hlr;
+using test::in_face;
+using test::oracle_faces;
+using test::OracleFace;
+
+namespace {
+
+Rational Q(const char* s) { return parse_rational(s); }
+Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
+Vector3 V(const char* x, const char* y, const char* z) { return Vector3(Q(x), Q(y), Q(z)); }
+Polyhedron box(const char* x0, const char* y0, const char* z0, const char* x1, const char* y1, const char* z1) {
+  return make_box(P(x0, y0, z0), P(x1, y1, z1));
+}
+std::vector<const Polyhedron*> ptrs(const std::vector<Polyhedron>& v) {
+  std::vector<const Polyhedron*> out;
+  for (const auto& p : v) out.push_back(&p);
+  return out;
+}
+Polyhedron ground(const char* z) {
+  return Polyhedron({P("-6", "-6", z), P("12", "-6", z), P("12", "12", z), P("-6", "12", z)}, {{0, 1, 2, 3}});
+}
+LightPlace directional(const char* x, const char* y, const char* z) { return LightPlace{true, V(x, y, z), Point3()}; }
+LightPlace point(const char* x, const char* y, const char* z) { return LightPlace{false, Vector3(), P(x, y, z)}; }
+
+// 1 inside, 0 on the border, -1 outside a picture polygon with holes.
+int in_ring(const std::vector<Exact2>& r, const Exact2& q) {
+  bool in = false;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Exact2 &a = r[i], &b = r[(i + 1) % r.size()];
+    int o = orient2d(a, b, q);
+    if (o == 0 && std::min(a[0], b[0]) <= q[0] && q[0] <= std::max(a[0], b[0]) && std::min(a[1], b[1]) <= q[1] &&
+        q[1] <= std::max(a[1], b[1]))
+      return 0;
+    bool ua = a[1] > q[1], ub = b[1] > q[1];
+    if (ua != ub && ((o > 0) == ub)) in = !in;
+  }
+  return in ? 1 : -1;
+}
+int in_polygon(const VisiblePolygon& p, const Exact2& q) {
+  int o = in_ring(p.outer_2d, q);
+  if (o <= 0) return o;
+  for (const auto& h : p.holes_2d) {
+    int i = in_ring(h, q);
+    if (i == 0) return 0;
+    if (i > 0) return -1;
+  }
+  return 1;
+}
+
+enum class Reach { Lit, Dark, Unsure };
+
+// Does the light reach point x of face `self` on the side the viewer sees?
+Reach reach(const std::vector<OracleFace>& faces, const OracleFace& self, const Camera& cam, const LightPlace& l,
+            const std::array<Rational, 3>& x) {
+  auto f = [&](const OracleFace& g, const Rational& px, const Rational& py, const Rational& pz) -> Rational { return g.a * px + g.b * py + g.c * pz + g.d; };
+  int viewer = cam.perspective ? sgn(f(self, cam.eye.x(), cam.eye.y(), cam.eye.z()))
+                               : sgn(self.a * cam.direction.x() + self.b * cam.direction.y() + self.c * cam.direction.z());
+  int light = l.directional ? sgn(self.a * l.toward.x() + self.b * l.toward.y() + self.c * l.toward.z())
+                            : sgn(f(self, l.position.x(), l.position.y(), l.position.z()));
+  if (light == 0) return Reach::Unsure;  // grazing
+  if (light != viewer) return Reach::Dark;
+  std::array<Rational, 3> dir;
+  for (int k = 0; k < 3; ++k) dir[k] = l.directional ? l.toward[k] : l.position[k] - x[k];
+  bool unsure = false;
+  for (const OracleFace& g : faces) {
+    if (g.id == self.id) continue;
+    Rational nd = g.a * dir[0] + g.b * dir[1] + g.c * dir[2];
+    if (nd == 0) continue;
+    Rational t = -(g.a * x[0] + g.b * x[1] + g.c * x[2] + g.d) / nd;
+    if (t < 0 || (!l.directional && t > 1)) continue;
+    std::array<Rational, 3> h{x[0] + t * dir[0], x[1] + t * dir[1], x[2] + t * dir[2]};
+    int in = in_face(g, h);
+    if (in < 0) continue;
+    if (t == 0) {  // x on another face's plane (touching bodies): unsure unless that face is beside
+      unsure = true;
+      continue;
+    }
+    if (in > 0) return Reach::Dark;
+    unsure = true;
+  }
+  return unsure ? Reach::Unsure : Reach::Lit;
+}
+
+struct Tally {
+  long lit = 0, dark = 0, skipped = 0;
+};
+
+Tally check_shadows(const std::vector<Polyhedron>& bodies, const Camera& cam, const std::vector<LightPlace>& lights, int samples,
+                    unsigned seed = 1, Shadows* out = nullptr) {
+  auto b = ptrs(bodies);
+  LineOptions lo;
+  lo.edges = EdgeSelection::All;
+  lo.classify_all = true;
+  VisibleSurfaces vs = visible_surfaces(b, cam, face_occluders(b, cam, lo));
+  Shadows sh = shadows(b, cam, vs, lights);
+  PicturePlane pp(cam);
+  auto faces = oracle_faces(b, pp);
+  std::vector<int> offset;
+  for (std::size_t i = 0, n = 0; i < b.size(); n += b[i]->num_faces(), ++i) offset.push_back(static_cast<int>(n));
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> w(1, 997);
+  Tally t;
+  EXPECT_EQ(sh.faces.size(), vs.faces.size());
+  for (const ShadowFace& sf : sh.faces) {
+    const OracleFace& self = faces[offset[sf.body] + sf.face];
+    // The regions cover the visible part exactly.
+    Rational regions = 0;
+    for (const ShadowRegion& r : sf.regions) regions += r.polygon.area2;
+    EXPECT_EQ(regions, sf.area2);
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+      Rational split = 0;
+      for (int part = 0; part < 2; ++part)
+        for (const VisiblePolygon& p : sf.by_light[i][part]) {
+          split += p.area2;
+          for (int s = 0; s < samples; ++s) {
+            std::array<Rational, 3> x{0, 0, 0};
+            Rational sum = 0;
+            for (const Point3& c : p.outer) {
+              Rational k(w(rng));
+              for (int j = 0; j < 3; ++j) x[j] += k * c[j];
+              sum += k;
+            }
+            for (auto& c : x) c /= sum;
+            if (in_polygon(p, pp.project(Point3(x[0], x[1], x[2]))) <= 0) {
+              ++t.skipped;  // outside this (non-convex) polygon, or on its border
+              continue;
+            }
+            Reach r = reach(faces, self, cam, lights[i], x);
+            if (r == Reach::Unsure) {
+              ++t.skipped;
+              continue;
+            }
+            bool lit = r == Reach::Lit;
+            (lit ? t.lit : t.dark)++;
+            EXPECT_EQ(lit, part == 0) << "body " << sf.body << " face " << sf.face << " light " << i << " point (" << x[0] << ", "
+                                      << x[1] << ", " << x[2] << ")";
+          }
+        }
+      EXPECT_EQ(split, sf.area2) << "lit and shadow of light " << i << " cover the visible part";
+    }
+  }
+  if (out) *out = std::move(sh);
+  return t;
+}
+
+Camera ortho(const char* x, const char* y, const char* z, const char* up = "0,0,1") {
+  Rational u[3];
+  std::string t = up;
+  for (int k = 0; k < 3; ++k) {
+    auto c = t.find(',');
+    u[k] = Q(t.substr(0, c).c_str());
+    t = c == std::string::npos ? "" : t.substr(c + 1);
+  }
+  return make_orthographic(V(x, y, z), Vector3(u[0], u[1], u[2]));
+}
+
+}  // namespace
+
+TEST(Shadows, BoxesOnAGroundPlane) {
+  std::vector<Polyhedron> b{ground("0"), box("0", "0", "0", "2", "2", "2"), box("4", "1", "0", "5", "3", "3")};
+  for (const Camera& cam : {ortho("1", "-1.3", "1.7"), ortho("-2", "-1", "3")}) {
+    Tally t = check_shadows(b, cam, {directional("1", "2", "3")}, 8);
+    EXPECT_GT(t.lit, 20);
+    EXPECT_GT(t.dark, 20);
+  }
+}
+
+TEST(Shadows, GroundShadowOfABoxIsExact) {
+  // Light straight above at (1, 1, 1) direction: the unit cube on the ground casts the square
+  // [0,1]² moved by (-1, -1) per unit of height, so the ground's shadow is the hexagon between.
+  std::vector<Polyhedron> b{ground("0"), box("0", "0", "0", "1", "1", "1")};
+  Shadows sh;
+  check_shadows(b, ortho("0", "0", "1", "0,1,0"), {directional("1", "1", "1")}, 4, 1, &sh);
+  Rational shadow = -1;
+  for (const ShadowFace& f : sh.faces)
+    if (f.body == 0) shadow = f.shadow_area2 / 2;
+  // Seen from above the box hides [0,1]²; the shadow seen on the ground is the hexagon minus it:
+  // the union of [0,1]² and [-1,0]² and the two triangles joining them, less [0,1]²: 2.
+  EXPECT_EQ(shadow, 2);
+}
+
+TEST(Shadows, PyramidOnABoxUnderAPointLight) {
+  Polyhedron pyr({P("1", "1", "1"), P("3", "1", "1"), P("3", "3", "1"), P("1", "3", "1"), P("2", "2", "3")},
+                 {{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}});
+  std::vector<Polyhedron> b{box("0", "0", "0", "4", "4", "1"), pyr};
+  Tally t = check_shadows(b, ortho("1", "-1.3", "1.7"), {point("7", "5", "8")}, 10);
+  EXPECT_GT(t.lit, 10);
+  EXPECT_GT(t.dark, 10);
+}
+
+TEST(Shadows, TouchingAndFlushBodies) {
+  std::vector<Polyhedron> b{ground("0"), box("0", "0", "0", "4", "4", "1"), box("1", "1", "1", "3", "3", "2"),
+                            box("0", "0", "1", "4", "1", "3")};
+  Tally t = check_shadows(b, ortho("1", "-1.3", "1.7"), {directional("-1", "-2", "4")}, 8);
+  EXPECT_GT(t.lit, 20);
+  EXPECT_GT(t.dark, 10);
+}
+
+TEST(Shadows, TwoLightsAndAPerspectiveView) {
+  std::vector<Polyhedron> b{ground("0"), box("0", "0", "0", "2", "2", "2"), box("3", "0", "0", "4", "3", "1")};
+  Camera cam = make_perspective(P("9", "-7", "6"), P("2", "1", "1"), V("0", "0", "1"));
+  Shadows sh;
+  Tally t = check_shadows(b, cam, {directional("1", "2", "3"), point("-4", "6", "7")}, 8, 3, &sh);
+  EXPECT_GT(t.lit, 20);
+  EXPECT_GT(t.dark, 20);
+  // Some ground is lit by one light only, some by both, some by none.
+  std::set<unsigned> masks;
+  for (const ShadowFace& f : sh.faces)
+    if (f.body == 0)
+      for (const ShadowRegion& r : f.regions) masks.insert(r.lights);
+  EXPECT_EQ(masks, (std::set<unsigned>{0, 1, 2, 3}));
+}
+
+TEST(Shadows, PointLightAmongTheBodiesIsRefused) {
+  std::vector<Polyhedron> b{box("0", "0", "0", "2", "2", "2"), box("4", "0", "0", "6", "2", "2")};
+  EXPECT_THROW(light_camera(ptrs(b), point("3", "1", "1")), std::invalid_argument);
+}
