@@ -2,7 +2,9 @@
 // shadows.hpp; why the labels are exact: docs/design.md, "Shadows as exact polygons".
 #include "algorithms/shadows.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
 #include <map>
 #include <stdexcept>
 
@@ -62,6 +64,40 @@ std::vector<Ring> carried(const std::vector<VisiblePolygon>& lit, const PictureP
   return out;
 }
 
+// A set of rings in a canonical form: each ring started at its smallest point, the rings sorted.
+std::vector<Ring> canonical(std::vector<Ring> rings) {
+  for (Ring& r : rings) {
+    auto lowest = std::min_element(r.begin(), r.end());
+    std::rotate(r.begin(), lowest, r.end());
+  }
+  std::sort(rings.begin(), rings.end());
+  return rings;
+}
+
+// The common case without an arrangement: each light lights none of the face or exactly the
+// part seen (the same rings). Empty when some light lights a part that differs.
+std::optional<ShadowFace> whole_face(const VisibleFace& vf, const std::vector<Ring>& seen, const std::vector<std::vector<Ring>>& lit) {
+  unsigned mask = 0;
+  std::vector<Ring> key;
+  for (std::size_t i = 0; i < lit.size(); ++i) {
+    if (lit[i].empty()) continue;
+    if (key.empty()) key = canonical(seen);
+    if (canonical(lit[i]) != key) return std::nullopt;
+    mask |= 1u << i;
+  }
+  ShadowFace out;
+  out.body = vf.body, out.face = vf.face, out.front = vf.front, out.whole = true;
+  out.area2 = 0, out.shadow_area2 = 0;
+  out.by_light.resize(lit.size());
+  for (const VisiblePolygon& p : vf.polygons) {
+    out.regions.push_back({mask, p});
+    out.area2 += p.area2;
+    if (mask == 0) out.shadow_area2 += p.area2;
+    for (std::size_t i = 0; i < lit.size(); ++i) out.by_light[i][(mask >> i) & 1u ? 0 : 1].push_back(p);
+  }
+  return out;
+}
+
 // One visible face cut by the lit sets: the arrangement of all rings, each cycle labelled by
 // the lights whose lit set holds the point beside its first half-edge.
 ShadowFace cut_face(const VisibleFace& vf, const std::vector<std::vector<Ring>>& lit, const PicturePlane& pp, const Plane& plane) {
@@ -69,6 +105,7 @@ ShadowFace cut_face(const VisibleFace& vf, const std::vector<std::vector<Ring>>&
   out.body = vf.body, out.face = vf.face, out.front = vf.front;
   std::vector<Ring> seen;
   for (const VisiblePolygon& p : vf.polygons) add_rings(p, seen);
+  if (auto whole = whole_face(vf, seen, lit)) return std::move(*whole);
   std::vector<Exact2> points;
   std::vector<std::array<std::uint32_t, 2>> segs;
   auto put = [&](const std::vector<Ring>& rings) {
@@ -174,6 +211,7 @@ Shadows shadows(const std::vector<const Polyhedron*>& bodies, const Camera& came
   }
   for (std::size_t i = 0; i < lights.size(); ++i)
     for (const VisibleFace& f : out.from_light[i].faces) lit_face[i][{f.body, f.face}] = &f;
+  out.seconds_lights = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // Pass 2: each visible face cut by the lit parts on the side the viewer sees.
   PicturePlane pp(camera);
   out.faces.resize(seen.faces.size());
@@ -186,6 +224,7 @@ Shadows shadows(const std::vector<const Polyhedron*>& bodies, const Camera& came
     }
     out.faces[k] = cut_face(vf, lit, pp, bodies[vf.body]->planes()[vf.face]);
   });
+  for (const ShadowFace& f : out.faces) out.whole_faces += f.whole;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

@@ -37,12 +37,15 @@ struct ShadowFace {
   /// Per light: the visible part it lights and the visible part in its shadow.
   std::vector<std::array<std::vector<VisiblePolygon>, 2>> by_light;  // [0] lit, [1] shadow
   Rational area2, shadow_area2;           // twice the visible area; twice the part no light reaches
+  bool whole = false;                     // every light lights all of it or none (no arrangement)
 };
 
 struct Shadows {
   std::vector<ShadowFace> faces;                // as the viewer's VisibleSurfaces::faces
   std::vector<VisibleSurfaces> from_light;      // what each light sees (its lit polygons)
   double seconds = 0;
+  double seconds_lights = 0;   // pass 1: the views from the lights
+  std::size_t whole_faces = 0; // faces each light lights wholly or not at all (no arrangement)
 };
 
 struct ShadowOptions {

@@ -31,7 +31,7 @@ struct RenderArgs : OutputArgs {
   std::vector<std::string> inputs;
   std::string view, eye, target, up, edges = "feature", clip, near = "1/1000";
   std::string method = "faces", crease = "30";
-  bool timings = false, surfaces = false;
+  bool timings = false, surfaces = false, shadows = false;
   std::string views, up_axis;
 };
 
@@ -70,6 +70,7 @@ RenderOptions render_options(const RenderArgs& a) {
   }
   if (!a.clip.empty()) o.clip = parse_clipper("--clip", a.clip).clipper;
   o.surfaces = a.surfaces;
+  o.shadows = a.shadows;
   return o;
 }
 
@@ -143,6 +144,9 @@ int run_render(const RenderArgs& a) {
                 << sf->stats.polygons << ", exact sign tests " << sf->stats.exact_tests << " (clean-up " << sf->stats.seconds_clean
                 << " s, points " << sf->stats.seconds_points << " s, arrangement " << sf->stats.seconds_arrangement << " s, triangles " << sf->stats.seconds_triangles << " s, probes "
                 << sf->stats.seconds_probe << " s, regions " << sf->stats.seconds_regions << " s)\n";
+    if (const auto& sh = results[0].shadows)
+      std::cerr << "timings: shadows " << sh->seconds << " s (views from the lights " << sh->seconds_lights << " s), lights "
+                << sh->from_light.size() << ", faces " << sh->faces.size() << " (" << sh->whole_faces << " lit wholly or not at all)\n";
     if (const auto& pr = results[0].priority)
       std::cerr << "timings: priority list " << results[0].priority_seconds << " s, polygons " << pr->initial << ", painted "
                 << pr->order.size() << ", pairs " << pr->pairs << ", swaps " << pr->swaps << ", cycles " << pr->cycles << ", cuts "
@@ -180,6 +184,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--surfaces", a->surfaces,
                 "Also the visible part of every face as exact polygons, flat-shaded by the scene's lights and materials "
                 "(SVG/PDF/PNG fills under the lines; JSON 'surfaces')");
+  cmd->add_flag("--shadows", a->shadows,
+                "Shadows of the scene's lights on the visible surfaces, as exact polygons (implies --surfaces; "
+                "each region shaded by the lights that reach it; JSON 'shadows')");
   cmd->add_flag("--timings", a->timings, "Print the time of each stage to standard error");
   cmd->add_option("--clip", a->clip,
                   "Clip the drawing to box:XMIN,XMAX,YMIN,YMAX,ZMIN,ZMAX, frustum:XL,XR,YB,YT,ZNEAR,ZFAR,ZCP or a convex mesh file");

@@ -86,6 +86,71 @@ std::string priority_text(const SurfacesJson& sj, const Camera& camera) {
   return out;
 }
 
+Json polygon_json(const VisiblePolygon& p) {
+  Json jp;
+  Json outer = Json::array();
+  for (const Point3& q : p.outer) outer.push_back(exact_point(q));
+  jp["outer"] = outer;
+  Json holes = Json::array();
+  for (const auto& h : p.holes) {
+    Json ring = Json::array();
+    for (const Point3& q : h) ring.push_back(exact_point(q));
+    holes.push_back(ring);
+  }
+  jp["holes"] = holes;
+  jp["area"] = to_string(p.area2 / 2);
+  return jp;
+}
+
+std::string shadows_text(const SurfacesJson& sj) {
+  const Shadows& sh = *sj.shadows;
+  std::string out = ",\n \"shadows\": {\n  \"lights\": " + std::to_string(sh.from_light.size()) + ",\n  \"faces\": [";
+  Rational total = 0, dark = 0;
+  for (std::size_t k = 0; k < sh.faces.size(); ++k) {
+    const ShadowFace& f = sh.faces[k];
+    Json jf;
+    jf["body"] = f.body;
+    jf["face"] = f.face;
+    jf["side"] = f.front ? "front" : "back";
+    jf["area"] = to_string(f.area2 / 2);
+    jf["shadow_area"] = to_string(f.shadow_area2 / 2);
+    jf["shadow_fraction"] = f.area2 == 0 ? "0" : to_string(f.shadow_area2 / f.area2);
+    Json regions = Json::array();
+    for (std::size_t j = 0; j < f.regions.size(); ++j) {
+      Json jr = polygon_json(f.regions[j].polygon);
+      Json lights = Json::array();
+      for (std::size_t i = 0; i < sh.from_light.size(); ++i)
+        if ((f.regions[j].lights >> i) & 1u) lights.push_back(i);
+      jr["lights"] = lights;
+      if (sj.shadow_colours) jr["shade"] = hex_colour((*sj.shadow_colours)[k][j]);
+      regions.push_back(jr);
+    }
+    jf["regions"] = regions;
+    Json by = Json::array();
+    for (std::size_t i = 0; i < f.by_light.size(); ++i) {
+      Json jl;
+      jl["light"] = i;
+      Rational lit = 0;
+      Json a = Json::array(), b = Json::array();
+      for (const VisiblePolygon& p : f.by_light[i][0]) a.push_back(polygon_json(p)), lit += p.area2 / 2;
+      for (const VisiblePolygon& p : f.by_light[i][1]) b.push_back(polygon_json(p));
+      jl["lit_area"] = to_string(lit);
+      jl["lit"] = a;
+      jl["shadow"] = b;
+      by.push_back(jl);
+    }
+    jf["by_light"] = by;
+    total += f.area2 / 2, dark += f.shadow_area2 / 2;
+    out += std::string(k ? "," : "") + "\n   " + jf.dump();
+  }
+  Json st;
+  st["faces"] = sh.faces.size();
+  st["area"] = to_string(total);
+  st["shadow_area"] = to_string(dark);
+  out += "\n  ],\n  \"stats\": " + st.dump() + "\n }";
+  return out;
+}
+
 std::string surfaces_text(const SurfacesJson& sj, const Camera& camera) {
   const VisibleSurfaces& vs = *sj.surfaces;
   PicturePlane pp(camera);
@@ -223,6 +288,7 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r
   }
   if (surfaces.surfaces) out += surfaces_text(surfaces, camera);
   if (surfaces.priority) out += priority_text(surfaces, camera);
+  if (surfaces.shadows) out += shadows_text(surfaces);
   out += "\n}\n";
   return out;
 }

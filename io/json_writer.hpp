@@ -11,6 +11,7 @@
 #include "algorithms/lighting.hpp"
 #include "algorithms/plot.hpp"
 #include "algorithms/priority_list.hpp"
+#include "algorithms/shadows.hpp"
 #include "algorithms/visible_surfaces.hpp"
 #include "io/svg_writer.hpp"
 
@@ -31,6 +32,10 @@ struct SurfacesJson {
   const VisibleSurfaces* surfaces = nullptr;
   const std::vector<std::vector<Rgb>>* colours = nullptr;
   const PriorityResult* priority = nullptr;
+  /// Shadows (--shadows): a "shadows" object, one visible face per line with its regions (the
+  /// lights that reach each, its shade) and per light the lit and the shadow polygons.
+  const Shadows* shadows = nullptr;
+  const std::vector<std::vector<Rgb>>* shadow_colours = nullptr;
 };
 std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
                     const PlotStats* plot, const SurfacesJson& surfaces);

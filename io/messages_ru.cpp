@@ -70,6 +70,10 @@ const std::vector<Entry>& catalogue() {
       {"Weiler-Atherton: body @x reaches the eye's plane or behind it",
        "алгоритм Вейлера–Азертона: тело @1 доходит до плоскости глаза или заходит за неё"},
       {"Weiler-Atherton: recursion did not end", "алгоритм Вейлера–Азертона: рекурсия не закончилась"},
+      // ---- the ground plane (io/scene.cpp)
+      {"ground needs a 'plane' (x = C, y = C or z = C)", "для ground нужна плоскость 'plane' (x = C, y = C или z = C)"},
+      {"ground must be a plane x = C, y = C or z = C", "ground должна быть плоскостью x = C, y = C или z = C"},
+      {"ground needs bodies to lie under", "для ground нужны тела, которые на ней стоят"},
       // ---- the priority list (algorithms/priority_list.cpp)
       {"priority list: more than @x polygons after the cuts", "список приоритетов: после разбиений больше @1 многоугольников"},
       {"priority list: body @x reaches the eye's plane or behind it",

@@ -13,6 +13,7 @@
 #include "algorithms/roberts.hpp"
 #include "algorithms/roberts_pieces.hpp"
 #include "algorithms/priority_list.hpp"
+#include "algorithms/shadows.hpp"
 #include "algorithms/weiler_atherton.hpp"
 
 namespace hlr {
@@ -76,7 +77,36 @@ Lighting scene_lighting(const std::vector<Scene>& scenes, const Camera& cam) {
     }
   auto v = unit3(cam.perspective ? d3(Vector3(cam.eye - cam.target)) : d3(cam.direction));
   auto right = unit3(cross3(d3(cam.up), v)), up = cross3(v, right);
-  return default_lighting(v, up, right);
+  Lighting l = default_lighting(v, up, right);
+  // Shadows decide with exact light directions: snap the default lights to sixty-fourths (a
+  // change of under a degree), small numbers that keep the exact arithmetic fast.
+  for (Light& x : l.lights) {
+    x.exact = true;
+    for (int k = 0; k < 3; ++k) x.exact_direction[k] = rational(std::lround(x.direction[k] * 64), 64);
+    x.direction = unit3({to_double(x.exact_direction[0]), to_double(x.exact_direction[1]), to_double(x.exact_direction[2])});
+    for (int k = 0; k < 3; ++k) x.exact_position[k] = rational_from_double(x.position[k]);
+  }
+  return l;
+}
+
+// The flat colour of face f of body b under `light`, for the side the viewer sees (facing -1:
+// the back side).
+Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Lighting& light, bool back) {
+  const Polyhedron& p = r.bodies[b]->body;
+  Material m;
+  m.colour = palette_colour(static_cast<int>(b));
+  if (r.bodies[b]->material) m = *r.bodies[b]->material;
+  const std::array<double, 3> eye = d3(r.camera.eye), view = unit3(d3(r.camera.direction));
+  const Plane& h = p.planes()[f];
+  std::array<double, 3> n = unit3({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))});
+  if (back) n = {-n[0], -n[1], -n[2]};
+  std::array<double, 3> c{0, 0, 0};
+  for (int v : p.faces()[f]) {
+    auto q = d3(p.vertices()[v]);
+    for (int k = 0; k < 3; ++k) c[k] += q[k] / static_cast<double>(p.faces()[f].size());
+  }
+  std::array<double, 3> to_viewer = r.camera.perspective ? unit3({eye[0] - c[0], eye[1] - c[1], eye[2] - c[2]}) : view;
+  return shade(m, light, c, n, to_viewer);
 }
 
 // Flat colour of every face, for the side the viewer sees (facing: 1 front, -1 back, 0 edge-on).
@@ -85,25 +115,52 @@ void shade_faces(RenderResult& r, const std::vector<Scene>& scenes, const LineDr
   r.face_colours.resize(r.bodies.size());
   for (std::size_t b = 0; b < r.bodies.size(); ++b) {
     const Polyhedron& p = r.bodies[b]->body;
-    Material m;
-    m.colour = palette_colour(static_cast<int>(b));
-    if (r.bodies[b]->material) m = *r.bodies[b]->material;
     r.face_colours[b].resize(p.num_faces());
-    const std::array<double, 3> eye = d3(r.camera.eye), view = unit3(d3(r.camera.direction));
     ParallelLoop().for_each(p.num_faces(), 256, [&](std::size_t f) {
-      const Plane& h = p.planes()[f];
-      std::array<double, 3> n = unit3({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))});
-      if (b < all.facing.size() && f < all.facing[b].size() && all.facing[b][f] < 0) n = {-n[0], -n[1], -n[2]};
-      std::array<double, 3> c{0, 0, 0};
-      for (int v : p.faces()[f]) {
-        auto q = d3(p.vertices()[v]);
-        for (int k = 0; k < 3; ++k) c[k] += q[k] / static_cast<double>(p.faces()[f].size());
-      }
-      std::array<double, 3> to_viewer =
-          r.camera.perspective ? unit3({eye[0] - c[0], eye[1] - c[1], eye[2] - c[2]}) : view;
-      r.face_colours[b][f] = shade(m, light, c, n, to_viewer);
+      bool back = b < all.facing.size() && f < all.facing[b].size() && all.facing[b][f] < 0;
+      r.face_colours[b][f] = face_colour(r, b, f, light, back);
     });
   }
+}
+
+// Where each light is, exactly: the scene file's numbers, else the doubles' binary values.
+std::vector<LightPlace> light_places(const Lighting& l) {
+  std::vector<LightPlace> out;
+  for (const Light& x : l.lights) {
+    LightPlace p;
+    p.directional = x.type == Light::Type::Directional;
+    std::array<Rational, 3> d, q;
+    for (int k = 0; k < 3; ++k) {
+      d[k] = x.exact ? x.exact_direction[k] : rational_from_double(x.direction[k]);
+      q[k] = x.exact ? x.exact_position[k] : rational_from_double(x.position[k]);
+    }
+    p.toward = Vector3(d[0], d[1], d[2]);
+    p.position = Point3(q[0], q[1], q[2]);
+    out.push_back(p);
+  }
+  return out;
+}
+
+// Shadows (issue 16): each light's lit parts laid over the visible surfaces; every region
+// shaded by the lights that reach it (the ambient term alone where none does).
+void solve_shadows(RenderResult& r, const std::vector<const Polyhedron*>& polys, const std::vector<Scene>& scenes, const RenderOptions& o,
+                   const LineDrawing& all) {
+  const Lighting light = scene_lighting(scenes, r.camera);
+  ShadowOptions so;
+  so.threads = o.lines.threads;
+  r.shadows = shadows(polys, r.camera, *r.surfaces, light_places(light), so);
+  r.shadow_colours.resize(r.shadows->faces.size());
+  ParallelLoop(o.lines.threads).for_each(r.shadows->faces.size(), 4, [&](std::size_t k) {
+    const ShadowFace& f = r.shadows->faces[k];
+    bool back = static_cast<std::size_t>(f.body) < all.facing.size() && all.facing[f.body][f.face] < 0;
+    for (const ShadowRegion& reg : f.regions) {
+      Lighting some = light;
+      some.lights.clear();
+      for (std::size_t i = 0; i < light.lights.size(); ++i)
+        if ((reg.lights >> i) & 1u) some.lights.push_back(light.lights[i]);
+      r.shadow_colours[k].push_back(face_colour(r, f.body, f.face, some, back));
+    }
+  });
 }
 
 // Surfaces: every edge for the cells, then the selected lines of the same solution drawn.
@@ -111,6 +168,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
                     const RenderOptions& o) {
   if (o.method == RenderMethod::Roberts) throw std::invalid_argument("--surfaces works with --method faces, weiler-atherton or priority");
   if (o.clip) throw std::invalid_argument("--surfaces does not take --clip (a clipped face is not a surface of the scene)");
+  if (o.shadows && o.method != RenderMethod::Faces) throw std::invalid_argument("--shadows works with --method faces");
   for (const Polyhedron* p : polys) p->planes();  // computed once, before the parallel stages
   if (r.camera.perspective)
     for (std::size_t b = 0; b < polys.size(); ++b)
@@ -154,6 +212,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
     r.priority_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   } else {
     r.surfaces = visible_surfaces(polys, r.camera, d, so);
+    if (o.shadows) solve_shadows(r, polys, scenes, o, d);
   }
   if (o.lines.edges == EdgeSelection::Feature) {
     std::vector<Segment> kept;
@@ -193,7 +252,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     for (const Polyhedron* p : polys) p->report();  // Roberts' checks belong to loading
   r.camera = choose_camera(o.view, scene_view, polys);
   try {
-    if (o.surfaces || o.method == RenderMethod::WeilerAtherton || o.method == RenderMethod::Priority)
+    if (o.surfaces || o.shadows || o.method == RenderMethod::WeilerAtherton || o.method == RenderMethod::Priority)
       solve_surfaces(r, polys, *owned, o);
     else
       r.drawing = solve(polys, r.camera, o);
@@ -233,6 +292,19 @@ void add_surface_fills(Plot& plot, const RenderResult& r) {
     }
     f.rings.push_back(std::move(out));
   };
+  if (r.shadows) {  // every region of every face in its own colour: lit, in shadow, lit by some lights
+    for (std::size_t k = 0; k < r.shadows->faces.size(); ++k)
+      for (std::size_t j = 0; j < r.shadows->faces[k].regions.size(); ++j) {
+        const VisiblePolygon& p = r.shadows->faces[k].regions[j].polygon;
+        PlotFill f;
+        f.colour = r.shadow_colours[k][j];
+        f.edge_mm = 0.2;  // regions are per face, not merged per colour: a wider edge hides the seams
+        ring(f, p.outer_2d);
+        for (const auto& h : p.holes_2d) ring(f, h);
+        plot.fills.push_back(std::move(f));
+      }
+    return;
+  }
   if (r.priority) {  // the painter's order: later fills cover earlier ones
     for (int i : r.priority->order) {
       const PriorityPolygon& p = r.priority->polygons[i];

@@ -15,6 +15,7 @@
 #include "algorithms/line_drawing.hpp"
 #include "algorithms/plot.hpp"
 #include "algorithms/priority_list.hpp"
+#include "algorithms/shadows.hpp"
 #include "algorithms/visible_surfaces.hpp"
 #include "io/scene.hpp"
 #include "io/svg_writer.hpp"
@@ -44,6 +45,9 @@ struct RenderOptions {
   /// With surfaces: lift every visible polygon to exact 3D corners (the JSON needs them; the
   /// fills of SVG, PDF and PNG do not).
   bool surface_corners = true;
+  /// Shadows of the scene's lights on the visible surfaces, as exact polygons (shadows.hpp);
+  /// implies `surfaces` (the per-face route).
+  bool shadows = false;
 };
 
 struct RenderResult {
@@ -60,6 +64,10 @@ struct RenderResult {
   /// With RenderMethod::Priority: the painter's list (polygons painted back to front) and the
   /// seconds it took.
   std::optional<PriorityResult> priority;
+  /// With RenderOptions::shadows: every visible face cut by the lights' shadows, and the colour
+  /// of each region (per shadow face, per region).
+  std::optional<Shadows> shadows;
+  std::vector<std::vector<Rgb>> shadow_colours;
   double priority_seconds = 0;
   /// Remarks for the user ("file: body 'name' is open ...: drawn as a surface", eye in a face plane).
   std::vector<std::string> notes;

@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <set>
 
@@ -203,6 +204,61 @@ Scene scene_from_mesh(const std::string& path) {
   return s;
 }
 
+// `ground: z = 0` (or x, y; a map {plane: "z = 0", material: {...}} for its colour): a square
+// open surface in that plane under the whole scene, 2.5 times the scene's largest extent wide
+// (centred under it), its front toward the bodies (shadows fall on it).
+void add_ground(const YamlContext& c, const YAML::Node& n, Scene& s) {
+  YAML::Node plane = n;
+  if (n.IsMap()) {
+    c.check_keys(n, "ground", {"plane", "material"});
+    if (!n["plane"]) c.fail(n, "ground needs a 'plane' (x = C, y = C or z = C)");
+    plane = n["plane"];
+  }
+  const std::string text = plane.IsScalar() ? plane.Scalar() : "";
+  const auto eq = text.find('=');
+  std::string axis = eq == std::string::npos ? "" : text.substr(0, eq), value = eq == std::string::npos ? "" : text.substr(eq + 1);
+  auto trim = [](std::string& t) {
+    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.front()))) t.erase(t.begin());
+    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back()))) t.pop_back();
+  };
+  trim(axis), trim(value);
+  if (axis != "x" && axis != "y" && axis != "z") c.fail(plane, "ground must be a plane x = C, y = C or z = C");
+  Rational at;
+  try {
+    at = parse_rational(value);
+  } catch (const NumberError&) {
+    c.fail(plane, "ground must be a plane x = C, y = C or z = C");
+  }
+  if (s.bodies.empty()) c.fail(n, "ground needs bodies to lie under");
+  const int k = axis[0] - 'x', u = (k + 1) % 3, w = (k + 2) % 3;
+  std::array<Rational, 3> lo, hi;
+  bool first = true;
+  for (const SceneBody& b : s.bodies)
+    for (const Point3& v : b.body.vertices())
+      for (int i = 0; i < 3; ++i) {
+        if (first || v[i] < lo[i]) lo[i] = v[i];
+        if (first || v[i] > hi[i]) hi[i] = v[i];
+        if (i == 2) first = false;
+      }
+  Rational size = 1;
+  for (int i = 0; i < 3; ++i) size = std::max(size, Rational(hi[i] - lo[i]));
+  const Rational cu = (lo[u] + hi[u]) / 2, cw = (lo[w] + hi[w]) / 2, half = size + size / 4;
+  auto corner = [&](const Rational& a, const Rational& b) {
+    std::array<Rational, 3> p;
+    p[k] = at, p[u] = a, p[w] = b;
+    return Point3(p[0], p[1], p[2]);
+  };
+  std::vector<Point3> vs{corner(cu - half, cw - half), corner(cu + half, cw - half), corner(cu + half, cw + half), corner(cu - half, cw + half)};
+  Face f{0, 1, 2, 3};
+  if (hi[k] <= at) f = {3, 2, 1, 0};  // the bodies below: the front faces down
+  SceneBody g{"ground", s.file, Polyhedron(std::move(vs), {f}), identity_transform(), {}, {}, {}, std::nullopt};
+  Material m;
+  m.colour = {0.86, 0.86, 0.84};
+  m.ks = 0;
+  g.material = n.IsMap() && n["material"] ? parse_material(c, n["material"], static_cast<int>(s.bodies.size())) : m;
+  s.bodies.push_back(std::move(g));
+}
+
 Scene load_scene(const std::string& path) { return load_scene_text(read_file_bytes(path), path); }
 
 Scene load_scene_text(const std::string& bytes, const std::string& path) { return load_scene_text(bytes, path, {}, true); }
@@ -218,7 +274,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
   }
   if (!root || root.IsNull()) throw InputError(path, 0, "empty scene file");
   if (depth(root) > kMaxNesting) throw InputError(path, 0, "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
-  std::vector<std::string> known = {"bodies", "view", "light", "lighting"};
+  std::vector<std::string> known = {"bodies", "view", "light", "lighting", "ground"};
   known.insert(known.end(), extra_keys.begin(), extra_keys.end());
   // A problem file (docs/problem-format.md) is a scene too: `hlr render` draws its bodies.
   if (extra_keys.empty() && root.IsMap() && root["problem"])
@@ -286,6 +342,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
     if (s.light->is_zero()) c.fail(root["light"], "light vector has zero length");
   }
   if (root["lighting"]) s.lighting = parse_lighting(c, root["lighting"]);
+  if (root["ground"]) add_ground(c, root["ground"], s);
   return s;
 }
 
