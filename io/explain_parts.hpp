@@ -33,6 +33,20 @@ inline std::string row4(const Rational& a, const Rational& b, const Rational& c,
   return "[" + q(a) + " " + q(b) + " " + q(c) + " " + q(d) + "]";
 }
 
+/// "−2·y + z − 4": a linear form with zero terms left out and signs between the terms.
+inline std::string linear_text(const Rational& a, const Rational& b, const Rational& c, const Rational& d) {
+  std::string out;
+  const Rational* k[4] = {&a, &b, &c, &d};
+  const char* var[4] = {"x", "y", "z", ""};
+  for (int i = 0; i < 4; ++i) {
+    if (*k[i] == 0) continue;
+    Rational m = abs(*k[i]);
+    std::string term = i < 3 && m == 1 ? var[i] : q(m) + (i < 3 ? std::string("·") + var[i] : "");
+    out += out.empty() ? (*k[i] < 0 ? "−" + term : term) : (*k[i] < 0 ? " − " : " + ") + term;
+  }
+  return out.empty() ? "0" : out;
+}
+
 // A section: a title id, optional notes (id -> value), tables (caption id, column ids, rows).
 struct Section {
   J j;

@@ -27,19 +27,7 @@ std::string values_text(const std::vector<Rational>& v) {
   return out;
 }
 
-// "f = x + 2·z − 6": zero terms left out, signs between the terms.
-std::string plane_text(const Plane& h) {
-  std::string out;
-  const char* var[4] = {"x", "y", "z", ""};
-  for (int k = 0; k < 4; ++k) {
-    const Rational& c = h[k];
-    if (c == 0) continue;
-    Rational m = abs(c);
-    std::string term = k < 3 && m == 1 ? var[k] : q(m) + (k < 3 ? std::string("·") + var[k] : "");
-    out += out.empty() ? (c < 0 ? "−" + term : term) : (c < 0 ? " − " : " + ") + term;
-  }
-  return "f = " + (out.empty() ? "0" : out);
-}
+std::string plane_text(const Plane& h) { return "f = " + linear_text(h.a(), h.b(), h.c(), h.d()); }
 
 std::string sign_text(int s) { return s > 0 ? "+" : s < 0 ? "−" : "0"; }
 

@@ -182,6 +182,62 @@ J edge_body_table(const Point3& p1, const Point3& p2, const BodyMatrixData& V, c
 
 }  // namespace
 
+namespace {
+
+// The cast shadow of a convex body on the ground plane (axis k = value): each vertex V moved
+// away from the light along the light vector L to the plane, S = V − s·L with
+// s = (V_k − value) / L_k, and the shadow's outline, the convex hull of the S (exact).
+void cast_shadow_section(const SceneBody& body, const std::pair<int, Rational>& ground, const Vector3& L, J& out) {
+  const int k = ground.first, u = (k + 1) % 3, w = (k + 2) % 3;
+  const char* axis[3] = {"x", "y", "z"};
+  Section sec("cast_shadow", body.name);
+  sec.value("ground", std::string(axis[k]) + " = " + q(ground.second));
+  if (L[k] <= 0) {
+    sec.value("no_cast_shadow", "the light is not above the ground (L_" + std::string(axis[k]) + " ≤ 0): no shadow falls on it",
+              "источник не над землёй (L_" + std::string(axis[k]) + " ≤ 0): тень на неё не падает");
+    out["sections"].push_back(sec.j);
+    return;
+  }
+  J& t = sec.table("shadow_vertices", {"vertex", "V_point", "s", "S"});
+  std::vector<Exact2> pts;
+  std::vector<Point3> shadow;
+  for (std::size_t v = 0; v < body.body.num_vertices(); ++v) {
+    const Point3& p = body.body.vertices()[v];
+    Rational s = (p[k] - ground.second) / L[k];
+    Point3 S(p.x() - s * L.x(), p.y() - s * L.y(), p.z() - s * L.z());
+    t.push_back({ix(static_cast<long>(v)), pt(p), q(s), pt(S)});
+    pts.push_back({S[u], S[w]});
+    shadow.push_back(S);
+  }
+  // Monotone chain, counter-clockwise seen from the light's side of the ground.
+  std::vector<std::size_t> idx(pts.size());
+  for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+  std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return pts[a] < pts[b]; });
+  idx.erase(std::unique(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return pts[a] == pts[b]; }), idx.end());
+  std::vector<std::size_t> hull;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t start = hull.size();
+    for (std::size_t n = 0; n < idx.size(); ++n) {
+      std::size_t i = pass == 0 ? idx[n] : idx[idx.size() - 1 - n];
+      while (hull.size() >= start + 2 && orient2d(pts[hull[hull.size() - 2]], pts[hull.back()], pts[i]) <= 0) hull.pop_back();
+      hull.push_back(i);
+    }
+    hull.pop_back();
+  }
+  std::string corners;
+  Rational area2 = 0;
+  for (std::size_t n = 0; n < hull.size(); ++n) {
+    corners += (corners.empty() ? "" : ", ") + pt(shadow[hull[n]]);
+    const Exact2 &a = pts[hull[n]], &b = pts[hull[(n + 1) % hull.size()]];
+    area2 += a[0] * b[1] - a[1] * b[0];
+  }
+  sec.value("shadow_outline", corners);
+  sec.value("shadow_area", q(area2 / 2));
+  out["sections"].push_back(sec.j);
+}
+
+}  // namespace
+
 J roberts_solution(const Problem& pr) {
   J out;
   out["sections"] = J::array();
@@ -244,6 +300,8 @@ J roberts_solution(const Problem& pr) {
     }
     out["sections"].push_back(sec.j);
     Section fac("facing", pr.scene.bodies[i].name);
+    J cast;  // the cast shadow on the ground, after the facing
+    cast["sections"] = J::array();
     fac.value("E", cam.perspective ? "[" + q(-cam.eye.x()) + " " + q(-cam.eye.y()) + " " + q(-cam.eye.z()) + " -1]"
                                    : "[" + q(-cam.direction.x()) + " " + q(-cam.direction.y()) + " " + q(-cam.direction.z()) + " 0]");
     RowVector4 E;
@@ -268,13 +326,23 @@ J roberts_solution(const Problem& pr) {
       J& lt = fac.table("light_table", {"face", "LV", "self_shadowed", "visible_shadow"});
       RowVector4 toward_light;  // facing from the light: the same test as from the viewer
       toward_light << L.x(), L.y(), L.z(), 0;
+      std::vector<std::size_t> visible_shadow;
       for (std::size_t f = 0; f < lv.size(); ++f) {
         const int j = static_cast<int>(f);
         bool shadowed = facing_sign(Plane(-bm.V(0, j), -bm.V(1, j), -bm.V(2, j), -bm.V(3, j)), toward_light) < 0;
         lt.push_back({ix(static_cast<long>(f)), q(lv[f]), shadowed ? "yes" : "no", shadowed && r.facing[i][f] > 0 ? "yes" : "no"});
+        if (shadowed && r.facing[i][f] > 0) visible_shadow.push_back(f);
       }
+      // The notes' answer: each visible shadow face with its plane (the column of [VT]).
+      J& vp = fac.table("visible_shadow_planes", {"face", "plane_equation"});
+      for (std::size_t f : visible_shadow) {
+        const int c = static_cast<int>(f);
+        vp.push_back({ix(static_cast<long>(f)), linear_text(shown[i](0, c), shown[i](1, c), shown[i](2, c), shown[i](3, c)) + " = 0"});
+      }
+      if (pr.scene.ground) cast_shadow_section(pr.scene.bodies[i], *pr.scene.ground, L, cast);
     }
     out["sections"].push_back(fac.j);
+    for (const auto& c : cast["sections"]) out["sections"].push_back(c);
   }
   // Every edge (or the ones asked for) against every other body.
   for (const Segment& s : r.segments) {

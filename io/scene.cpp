@@ -207,7 +207,7 @@ Scene scene_from_mesh(const std::string& path) {
 // `ground: z = 0` (or x, y; a map {plane: "z = 0", material: {...}} for its colour): a square
 // open surface in that plane under the whole scene, 2.5 times the scene's largest extent wide
 // (centred under it), its front toward the bodies (shadows fall on it).
-void add_ground(const YamlContext& c, const YAML::Node& n, Scene& s) {
+void add_ground(const YamlContext& c, const YAML::Node& n, Scene& s, bool body) {
   YAML::Node plane = n;
   if (n.IsMap()) {
     c.check_keys(n, "ground", {"plane", "material"});
@@ -231,6 +231,8 @@ void add_ground(const YamlContext& c, const YAML::Node& n, Scene& s) {
   }
   if (s.bodies.empty()) c.fail(n, "ground needs bodies to lie under");
   const int k = axis[0] - 'x', u = (k + 1) % 3, w = (k + 2) % 3;
+  s.ground = std::make_pair(k, at);
+  if (!body) return;
   std::array<Rational, 3> lo, hi;
   bool first = true;
   for (const SceneBody& b : s.bodies)
@@ -342,7 +344,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
     if (s.light->is_zero()) c.fail(root["light"], "light vector has zero length");
   }
   if (root["lighting"]) s.lighting = parse_lighting(c, root["lighting"]);
-  if (root["ground"]) add_ground(c, root["ground"], s);
+  if (root["ground"]) add_ground(c, root["ground"], s, extra_keys.empty());
   return s;
 }
 

@@ -49,6 +49,9 @@ struct Scene {
   std::optional<Vector3> light;
   /// Lights for shaded surfaces (`lighting:`); unset: `light` as a directional light, else the default.
   std::optional<Lighting> lighting;
+  /// `ground: z = 0`: the axis (0 x, 1 y, 2 z) and the value; a scene gets a ground body too,
+  /// a problem keeps the plane only (the cast shadow on it).
+  std::optional<std::pair<int, Rational>> ground;
 };
 
 /// True for .yaml, .yml and .json files.

@@ -193,6 +193,7 @@ TEST(Explain, RobertsSegmentsEqualRendersOnEveryProblem) {
     if (pr.type != Problem::Type::Roberts) continue;
     SolutionJson s = explain(pr);
     Scene scene = load_scene(p);  // the problem file read as a scene, as render reads it
+    if (scene.ground) scene.bodies.pop_back();  // render's ground body: an open surface, not for Roberts
     std::vector<const Polyhedron*> polys;
     std::vector<DrawingBody> names;
     for (const auto& b : scene.bodies) {
@@ -607,4 +608,33 @@ TEST(Explain, PriorityPagesShowTheTestsSwapsAndCuts) {
   for (const auto& sec : cy["sections"]) cy_cuts += sec["title"] == "pl_split";
   EXPECT_GE(cy_cuts, 1);
   EXPECT_GE(order(cy).size(), 4u);
+}
+
+// Shadows in exam mode (issue 16), against the hand solution written in the problem file: the
+// self-shadowed faces (base and front), the visible shadow face (the front) with its plane,
+// and the cast shadow on the ground: the apex moves s = 2/3 to (1/3, -1/3, 0), the outline's
+// area is 13/3; the same on the Russian page.
+TEST(Explain, ShadowOnTheGroundMatchesTheHandSolution) {
+  Problem pr = load_problem(kData + "/problems/roberts_shadow_ground.yaml");
+  ASSERT_TRUE(pr.scene.ground);
+  EXPECT_EQ(pr.scene.bodies.size(), 1u);  // a problem keeps the ground as a plane, not a body
+  SolutionJson s = explain(pr);
+  std::vector<std::string> shadowed;
+  for (const auto& row : table(s, "facing", "light_table"))
+    if (row[2] == "yes") shadowed.push_back(row[0].get<std::string>());
+  EXPECT_EQ(shadowed, (std::vector<std::string>{"0", "1"}));
+  const auto& planes = table(s, "facing", "visible_shadow_planes");
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0][0], "1");
+  EXPECT_EQ(planes[0][1], "2·y − z = 0");  // the front face, -2y + z = 0
+  const auto& verts = table(s, "cast_shadow", "shadow_vertices");
+  ASSERT_EQ(verts.size(), 5u);
+  EXPECT_EQ(verts[4][2], "2/3");
+  EXPECT_EQ(verts[4][3], "(1/3, -1/3, 0)");
+  EXPECT_EQ(values(s, "cast_shadow")["shadow_area"], "13/3");
+  EXPECT_EQ(values(s, "cast_shadow")["shadow_outline"], "(0, 0, 0), (1/3, -1/3, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0)");
+  std::string ru = explain_markdown(s, Lang::Ru);
+  EXPECT_NE(ru.find("Падающая тень на земле"), std::string::npos);
+  EXPECT_NE(ru.find("| 4 | (1, 1, 2) | 2/3 | (1/3, -1/3, 0) |"), std::string::npos);
+  EXPECT_NE(ru.find("| 1 | 2·y − z = 0 |"), std::string::npos);
 }
