@@ -182,13 +182,25 @@ Camera light_camera(const std::vector<const Polyhedron*>& bodies, const LightPla
         if (k == 2) first = false;
       }
   Point3 centre((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
-  if (centre == light.position) throw std::invalid_argument("shadows: a point light at the centre of the scene (it must see every body in front of it)");
-  Camera cam = make_perspective(light.position, centre);
-  for (const Polyhedron* p : bodies)
-    for (const Point3& v : p->vertices())
-      if (cam.in_front(v) != Sign::Positive)
-        throw std::invalid_argument("shadows: a point light among the bodies (every body must lie in front of it, beyond a plane through the light)");
-  return cam;
+  // Look at the scene's centre, else along an axis (a light above a ground plane looks down):
+  // the first view with every vertex in front of the light.
+  std::vector<Vector3> looks;
+  if (!(centre == light.position)) looks.push_back(centre - light.position);
+  for (int k = 0; k < 3; ++k)
+    for (int sgn_k : {-1, 1}) {
+      std::array<Rational, 3> d{0, 0, 0};
+      d[k] = sgn_k;
+      looks.emplace_back(d[0], d[1], d[2]);
+    }
+  for (const Vector3& look : looks) {
+    Camera cam = make_perspective(light.position, light.position + look);
+    bool all = true;
+    for (const Polyhedron* p : bodies)
+      for (const Point3& v : p->vertices())
+        if (all && cam.in_front(v) != Sign::Positive) all = false;
+    if (all) return cam;
+  }
+  throw std::invalid_argument("shadows: a point light among the bodies (every body must lie in front of it, beyond a plane through the light)");
 }
 
 Shadows shadows(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const VisibleSurfaces& seen,

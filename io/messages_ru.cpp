@@ -74,6 +74,7 @@ const std::vector<Entry>& catalogue() {
       {"ground needs a 'plane' (x = C, y = C or z = C)", "для ground нужна плоскость 'plane' (x = C, y = C или z = C)"},
       {"ground must be a plane x = C, y = C or z = C", "ground должна быть плоскостью x = C, y = C или z = C"},
       {"ground needs bodies to lie under", "для ground нужны тела, которые на ней стоят"},
+      {"ground size must be positive", "размер ground должен быть положительным"},
       // ---- the priority list (algorithms/priority_list.cpp)
       {"priority list: more than @x polygons after the cuts", "список приоритетов: после разбиений больше @1 многоугольников"},
       {"priority list: body @x reaches the eye's plane or behind it",

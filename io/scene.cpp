@@ -204,16 +204,15 @@ Scene scene_from_mesh(const std::string& path) {
   return s;
 }
 
-// `ground: z = 0` (or x, y; a map {plane: "z = 0", material: {...}} for its colour): a square
-// open surface in that plane under the whole scene, 2.5 times the scene's largest extent wide
-// (centred under it), its front toward the bodies (shadows fall on it).
+// `ground: z = 0` (or x, y; a map {plane: "z = 0", size: S, material: {...}}): a square open
+// surface in that plane centred under the scene, S wide (default four times the scene's
+// largest extent), its front toward the bodies (shadows fall on it).
 void add_ground(const YamlContext& c, const YAML::Node& n, Scene& s, bool body) {
-  YAML::Node plane = n;
   if (n.IsMap()) {
-    c.check_keys(n, "ground", {"plane", "material"});
+    c.check_keys(n, "ground", {"plane", "material", "size"});
     if (!n["plane"]) c.fail(n, "ground needs a 'plane' (x = C, y = C or z = C)");
-    plane = n["plane"];
   }
+  const YAML::Node plane = n.IsMap() ? n["plane"] : n;  // (a YAML::Node assigned to would change n itself)
   const std::string text = plane.IsScalar() ? plane.Scalar() : "";
   const auto eq = text.find('=');
   std::string axis = eq == std::string::npos ? "" : text.substr(0, eq), value = eq == std::string::npos ? "" : text.substr(eq + 1);
@@ -244,7 +243,12 @@ void add_ground(const YamlContext& c, const YAML::Node& n, Scene& s, bool body) 
       }
   Rational size = 1;
   for (int i = 0; i < 3; ++i) size = std::max(size, Rational(hi[i] - lo[i]));
-  const Rational cu = (lo[u] + hi[u]) / 2, cw = (lo[w] + hi[w]) / 2, half = size + size / 4;
+  Rational half = 2 * size;
+  if (n.IsMap() && n["size"]) {
+    half = c.number(n["size"], "ground size") / 2;
+    if (half <= 0) c.fail(n["size"], "ground size must be positive");
+  }
+  const Rational cu = (lo[u] + hi[u]) / 2, cw = (lo[w] + hi[w]) / 2;
   auto corner = [&](const Rational& a, const Rational& b) {
     std::array<Rational, 3> p;
     p[k] = at, p[u] = a, p[w] = b;

@@ -79,6 +79,7 @@ struct Drawing {
     hlr::SurfacesJson sj;
     if (r->surfaces) sj = hlr::SurfacesJson{&*r->surfaces, &r->face_colours, nullptr};
     if (r->priority) sj = hlr::SurfacesJson{nullptr, &r->face_colours, &*r->priority};
+    if (r->shadows) sj.shadows = &*r->shadows, sj.shadow_colours = &r->shadow_colours;
     return hlr::to_json(r->names, r->drawing, r->camera, nullptr, sj);
   }
   // The painter's list (render(..., method='priority')): one dict per polygon, back to front.
@@ -189,7 +190,7 @@ struct Drawing {
 
 Drawing render(const py::object& input, std::optional<py::sequence> view, std::optional<py::sequence> eye,
                std::optional<py::sequence> target, std::optional<py::sequence> up, const std::string& method,
-               const std::string& edges, const py::object& crease, unsigned threads, bool surfaces) {
+               const std::string& edges, const py::object& crease, unsigned threads, bool surfaces, bool shadows) {
   std::vector<std::string> inputs;
   if (py::isinstance<py::str>(input)) inputs.push_back(input.cast<std::string>());
   else inputs = input.cast<std::vector<std::string>>();
@@ -202,6 +203,7 @@ Drawing render(const py::object& input, std::optional<py::sequence> view, std::o
              : method == "priority"        ? hlr::RenderMethod::Priority
                                            : hlr::RenderMethod::Faces;
   o.surfaces = surfaces;
+  o.shadows = shadows;
   o.lines.edges = edges == "all" ? hlr::EdgeSelection::All : hlr::EdgeSelection::Feature;
   o.lines.crease_degrees = number(crease);
   o.lines.threads = threads;
@@ -268,9 +270,10 @@ PYBIND11_MODULE(exact_hlr, m) {
            "The drawing to plot or print (svg, pdf, png or dxf bytes), as `hlr render` writes it");
   m.def("render", &render, py::arg("inputs"), py::kw_only(), py::arg("view") = py::none(), py::arg("eye") = py::none(),
         py::arg("target") = py::none(), py::arg("up") = py::none(), py::arg("method") = "faces", py::arg("edges") = "feature",
-        py::arg("crease") = py::int_(30), py::arg("threads") = 0u, py::arg("surfaces") = false,
+        py::arg("crease") = py::int_(30), py::arg("threads") = 0u, py::arg("surfaces") = false, py::arg("shadows") = false,
         "Renders mesh files and scene files: exact hidden lines (view: orthographic direction; eye: perspective); "
-        "surfaces=True also gives the visible part of every face as exact polygons, shaded");
+        "surfaces=True also gives the visible part of every face as exact polygons, shaded; shadows=True cuts them by "
+        "the lights' shadows (json()['shadows'])");
   m.def("explain", &explain, py::arg("problem"), py::kw_only(), py::arg("lang") = "en", py::arg("format") = "md",
         "Solves a problem file step by step (exam mode): Markdown, HTML or JSON text");
   m.def("clip", &clip, py::arg("clipper"), py::arg("segment"),

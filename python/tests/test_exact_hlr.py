@@ -122,3 +122,18 @@ def test_priority_list_paints_back_to_front():
     assert [(o["body"], o["face"]) for o in js["order"]] == [(p["body"], p["face"]) for p in order]
     assert js["stats"]["cuts"] == 7
     assert exact_hlr.render([path("cube.off")]).priority is None
+
+
+def test_shadows_on_the_ground():
+    # The unit cube on the ground under a light toward (1, 1, 1), seen from above: the shadow
+    # seen on the ground is the hull of the two squares less the cube's own footprint, area 2.
+    import os, tempfile
+    with tempfile.TemporaryDirectory() as d:
+        scene = os.path.join(d, "s.yaml")
+        with open(scene, "w") as f:
+            f.write("bodies:\n  - box: {min: [0, 0, 0], max: [1, 1, 1]}\nground: z = 0\n"
+                    "view: {direction: [0, 0, 1], up: [0, 1, 0]}\nlight: [1, 1, 1]\n")
+        dr = exact_hlr.render([scene], shadows=True)
+        sh = json.loads(dr.json())["shadows"]
+        ground = [f for f in sh["faces"] if f["body"] == 1]
+        assert len(ground) == 1 and Fraction(ground[0]["shadow_area"]) == 2
