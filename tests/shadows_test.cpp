@@ -8,6 +8,7 @@
 // perspective view, a point light.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <random>
 #include <set>
 #include <string>
@@ -232,4 +233,30 @@ TEST(Shadows, TwoLightsAndAPerspectiveView) {
 TEST(Shadows, PointLightAmongTheBodiesIsRefused) {
   std::vector<Polyhedron> b{box("0", "0", "0", "2", "2", "2"), box("4", "0", "0", "6", "2", "2")};
   EXPECT_THROW(light_camera(ptrs(b), point("3", "1", "1")), std::invalid_argument);
+}
+
+TEST(Shadows, RandomBoxesAndLights) {
+  // Random boxes (sixteenths, some touching or interpenetrating) on the ground, a random
+  // directional light and a random point light above them, random views.
+  std::mt19937 rng(23);
+  std::uniform_int_distribution<int> c(0, 48), e(4, 24), d(-6, 6), up(2, 8);
+  long lit = 0, dark = 0;
+  const int rounds = std::getenv("HLR_SHADOW_ROUNDS") ? std::atoi(std::getenv("HLR_SHADOW_ROUNDS")) : 4;
+  for (int round = 0; round < rounds; ++round) {
+    std::vector<Polyhedron> b{ground("0")};
+    for (int i = 0; i < 4; ++i) {
+      int x = c(rng), y = c(rng), z = i == 0 ? 0 : c(rng) / 4;
+      b.push_back(make_box(Point3(rational(x, 16), rational(y, 16), rational(z, 16)),
+                           Point3(rational(x + e(rng), 16), rational(y + e(rng), 16), rational(z + e(rng), 16))));
+    }
+    LightPlace sun{true, Vector3(Rational(d(rng)), Rational(d(rng)), Rational(up(rng))), Point3()};
+    LightPlace lamp{false, Vector3(), Point3(Rational(d(rng)), Rational(d(rng)), Rational(8 + up(rng)))};
+    Camera cam = round % 2 ? make_orthographic(Vector3(Rational(d(rng)) + rational(1, 3), Rational(-7), Rational(up(rng))), Vector3(Rational(0), Rational(0), Rational(1)))
+                           : make_perspective(Point3(Rational(9), Rational(-8), Rational(7)), Point3(Rational(2), Rational(2), Rational(0)),
+                                              Vector3(Rational(0), Rational(0), Rational(1)));
+    Tally t = check_shadows(b, cam, {sun, lamp}, 4, static_cast<unsigned>(round));
+    lit += t.lit, dark += t.dark;
+  }
+  EXPECT_GT(lit, 50);
+  EXPECT_GT(dark, 50);
 }
