@@ -260,3 +260,14 @@ TEST(Shadows, RandomBoxesAndLights) {
   EXPECT_GT(lit, 50);
   EXPECT_GT(dark, 50);
 }
+
+TEST(Shadows, PointLightAboveAWideGroundLooksDown) {
+  // The ground reaches behind the light's view toward the scene's centre; looking straight
+  // down, the light has every vertex in front of it, and the shadows are checked as ever.
+  std::vector<Polyhedron> b{ground("0"), box("0", "0", "0", "1", "1", "1")};
+  Camera lc = light_camera(ptrs(b), point("6", "6", "2"));
+  EXPECT_EQ(lc.target.z(), lc.eye.z() - 1);  // along -z
+  Tally t = check_shadows(b, ortho("1", "-1.3", "1.7"), {point("6", "6", "2")}, 10);
+  EXPECT_GT(t.lit, 10);
+  EXPECT_GT(t.dark, 5);
+}
