@@ -53,14 +53,21 @@ BoxPairs overlapping_box_pairs(const std::vector<Box3>& bb, const ParallelLoop& 
     for (int k = 0; k < 3; ++k) g.lo[k] = std::min(g.lo[k], b[k]), hi[k] = std::max(hi[k], b[k + 3]);
   }
   g.cell = std::max(2 * mean / static_cast<double>(n), 1e-300);
-  for (int k = 0; k < 3; ++k) g.dims[k] = g.key(k, hi[k]) + 1;
+  // Doubles that lost the scene (coordinates beyond their range: infinities, NaN) or cells too
+  // many to index: one coarse list. Checked before any cell index is formed.
+  bool coarse = !std::isfinite(g.cell) || !std::isfinite(mean);
+  for (const Box3& b : bb)
+    for (double x : b) coarse = coarse || !std::isfinite(x);
+  for (int k = 0; k < 3 && !coarse; ++k) {
+    const double d = std::floor((hi[k] - g.lo[k]) / g.cell);
+    if (!(d < (1 << 20))) coarse = true;
+    else g.dims[k] = static_cast<std::int64_t>(d) + 1;
+  }
   std::vector<Entry> entries;
   entries.reserve(n * 2);
   // A box that spans more than 64 cells (a huge triangle among small ones) stays out of the
   // cells and is tested against every box instead: a few such boxes cost a few linear passes.
   std::vector<std::uint32_t> big;
-  bool coarse = !std::isfinite(g.cell) || !std::isfinite(mean) || g.dims[0] >= (1 << 20) || g.dims[1] >= (1 << 20) ||
-                g.dims[2] >= (1 << 20);
   for (std::size_t i = 0; i < n && !coarse; ++i) {
     std::int64_t c0[3], c1[3];
     for (int k = 0; k < 3; ++k) c0[k] = g.key(k, bb[i][k]), c1[k] = g.key(k, bb[i][k + 3]);
