@@ -423,7 +423,6 @@ class Painter {
     // The notes: A is cut by B's plane. A cyclic pair where A does not cross B's plane: B by
     // A's plane; where neither crosses the other's plane (the cycle runs through other
     // polygons): A along B's outline, or B along A's.
-    std::vector<Rational> fa, fb;
     Sides sa = sides(a, b, nullptr);
     Sides sb = sides(b, a, nullptr);
     int victim = a, cutter = b;
