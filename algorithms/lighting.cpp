@@ -76,4 +76,17 @@ std::array<int, 3> rgb8(const Rgb& c) {
   return out;
 }
 
+double transparency_at(const Material& m, double abs_cos) {
+  const double c = std::min(1.0, std::max(0.0, abs_cos));
+  switch (m.transparency_model) {
+    case Material::TransparencyModel::Linear: return m.transparency;
+    case Material::TransparencyModel::Kay:
+      return m.transparency_min + (m.transparency - m.transparency_min) * (1 - std::pow(1 - c, m.transparency_power));
+    case Material::TransparencyModel::PathLength:
+      if (c == 0) return 0;  // seen edge-on: an infinitely long path
+      return std::pow(m.transparency, 1 / c);  // opacity 1 − (1 − a)^(1/|cos φ|), a = 1 − τ
+  }
+  return m.transparency;
+}
+
 }  // namespace hlr

@@ -20,7 +20,19 @@ using Vec3d = std::array<double, 3>;
 struct Material {
   Rgb colour{0.78, 0.80, 0.84};
   double ka = 0.3, kd = 0.7, ks = 0.15, shininess = 20;
+  /// Transparency (course notes section 41, seeds 000 and 001): the fraction of the light from
+  /// behind that passes, 0 opaque (the default) to 1 clear. Linear: I = (1 − τ)·I1 + τ·I2
+  /// (the notes' t is 1 − τ); Kay: τ = τmin + (τ − τmin)·(1 − (1 − |n_z|)^p) with n_z the
+  /// normal's component toward the viewer; path length: opacity 1 − (1 − a)^(1/|cos φ|) with
+  /// a = 1 − τ the opacity at normal incidence and φ the angle between normal and view.
+  enum class TransparencyModel { Linear, Kay, PathLength };
+  double transparency = 0, transparency_min = 0, transparency_power = 2;
+  TransparencyModel transparency_model = TransparencyModel::Linear;
 };
+
+/// The transparency τ of a face of material m whose unit normal makes |cos φ| = abs_cos with
+/// the direction to the viewer (linear: m.transparency itself).
+double transparency_at(const Material& m, double abs_cos);
 
 struct Light {
   enum class Type { Directional, Point, Spot };

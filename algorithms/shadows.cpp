@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "algorithms/face_occluders.hpp"
+#include "algorithms/offset_point.hpp"
 #include "algorithms/parallel.hpp"
 #include "algorithms/picture_plane.hpp"
 
@@ -17,31 +18,7 @@ namespace {
 
 using Ring = std::vector<Exact2>;
 
-// The sign of y(p) - y(q) for q = m + δ·n, δ > 0 infinitely small.
-int above(const Exact2& p, const Exact2& m, const Exact2& n) {
-  int s = sgn(p[1] - m[1]);
-  return s != 0 ? s : -sgn(n[1]);
-}
-
-// The orientation of q = m + δ·n against the line a -> b (never 0 when q is beside an edge of
-// the arrangement that holds a -> b: design.md).
-int orient_offset(const Exact2& a, const Exact2& b, const Exact2& m, const Exact2& n) {
-  int o = orient2d(a, b, m);
-  if (o != 0) return o;
-  return sgn((b[0] - a[0]) * n[1] - (b[1] - a[1]) * n[0]);
-}
-
-// Even-odd inside test of q = m + δ·n against a set of rings (outer boundaries and holes).
-bool inside(const std::vector<Ring>& rings, const Exact2& m, const Exact2& n) {
-  bool in = false;
-  for (const Ring& r : rings)
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      const Exact2 &a = r[i], &b = r[(i + 1) % r.size()];
-      bool ua = above(a, m, n) > 0, ub = above(b, m, n) > 0;
-      if (ua != ub && ((orient_offset(a, b, m, n) > 0) == ub)) in = !in;
-    }
-  return in;
-}
+bool inside(const std::vector<Ring>& rings, const Exact2& m, const Exact2& n) { return offset_inside(rings, m, n); }
 
 void add_rings(const VisiblePolygon& p, std::vector<Ring>& out) {
   out.push_back(p.outer_2d);

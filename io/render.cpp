@@ -14,6 +14,7 @@
 #include "algorithms/roberts_pieces.hpp"
 #include "algorithms/priority_list.hpp"
 #include "algorithms/shadows.hpp"
+#include "algorithms/transparency.hpp"
 #include "algorithms/weiler_atherton.hpp"
 
 namespace hlr {
@@ -141,6 +142,42 @@ std::vector<LightPlace> light_places(const Lighting& l) {
   return out;
 }
 
+// The material of body b (its own, else the palette's default).
+Material material_of(const RenderResult& r, std::size_t b) {
+  Material m;
+  m.colour = palette_colour(static_cast<int>(b));
+  if (r.bodies[b]->material) m = *r.bodies[b]->material;
+  return m;
+}
+
+// Transparency (issue 16): the regions of equal face lists, each composited back to front,
+// I = (1 − τ)·I_face + τ·I_behind, from white paper behind everything.
+void solve_transparency(RenderResult& r, const std::vector<const Polyhedron*>& polys, const LineDrawing& all) {
+  std::vector<char> see(polys.size(), 0);
+  bool any = false;
+  for (std::size_t b = 0; b < polys.size(); ++b) any = any || (see[b] = material_of(r, b).transparency > 0);
+  if (!any) return;
+  r.transparent = transparent_regions(polys, r.camera, all, see);
+  const std::array<double, 3> eye = d3(r.camera.eye), view = unit3(d3(r.camera.direction));
+  for (const TransparentRegion& reg : r.transparent->regions) {
+    Rgb c{1, 1, 1};
+    for (auto [b, f] : reg.faces) {
+      const Polyhedron& p = *polys[b];
+      const Plane& h = p.planes()[f];
+      std::array<double, 3> n = unit3({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))}), ctr{0, 0, 0};
+      for (int v : p.faces()[f]) {
+        auto q = d3(p.vertices()[v]);
+        for (int k = 0; k < 3; ++k) ctr[k] += q[k] / static_cast<double>(p.faces()[f].size());
+      }
+      std::array<double, 3> to_viewer = r.camera.perspective ? unit3({eye[0] - ctr[0], eye[1] - ctr[1], eye[2] - ctr[2]}) : view;
+      const double tau = see[b] ? transparency_at(material_of(r, b), std::fabs(n[0] * to_viewer[0] + n[1] * to_viewer[1] + n[2] * to_viewer[2])) : 0;
+      const Rgb& own = r.face_colours[b][f];
+      for (int k = 0; k < 3; ++k) c[k] = (1 - tau) * own[k] + tau * c[k];
+    }
+    r.transparent_colours.push_back(c);
+  }
+}
+
 // Shadows (issue 16): each light's lit parts laid over the visible surfaces; every region
 // shaded by the lights that reach it (the ambient term alone where none does).
 void solve_shadows(RenderResult& r, const std::vector<const Polyhedron*>& polys, const std::vector<Scene>& scenes, const RenderOptions& o,
@@ -213,6 +250,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
   } else {
     r.surfaces = visible_surfaces(polys, r.camera, d, so);
     if (o.shadows) solve_shadows(r, polys, scenes, o, d);
+    if (!o.shadows) solve_transparency(r, polys, d);
   }
   if (o.lines.edges == EdgeSelection::Feature) {
     std::vector<Segment> kept;
@@ -277,7 +315,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
 }
 
 void add_surface_fills(Plot& plot, const RenderResult& r) {
-  if (!r.surfaces && !r.priority) return;
+  if (!r.surfaces && !r.priority && !r.transparent) return;
   Projector proj = drawing_projector(r.drawing, r.camera);
   PictureToDrawing to_drawing(PicturePlane(r.camera), proj.frame());
   bool had = !plot.empty();
@@ -292,6 +330,17 @@ void add_surface_fills(Plot& plot, const RenderResult& r) {
     }
     f.rings.push_back(std::move(out));
   };
+  if (r.transparent) {  // regions of equal face lists, composited
+    for (std::size_t k = 0; k < r.transparent->regions.size(); ++k) {
+      const VisiblePolygon& p = r.transparent->regions[k].polygon;
+      PlotFill f;
+      f.colour = r.transparent_colours[k];
+      ring(f, p.outer_2d);
+      for (const auto& h : p.holes_2d) ring(f, h);
+      plot.fills.push_back(std::move(f));
+    }
+    return;
+  }
   if (r.shadows) {  // every region of every face in its own colour: lit, in shadow, lit by some lights
     for (std::size_t k = 0; k < r.shadows->faces.size(); ++k)
       for (std::size_t j = 0; j < r.shadows->faces[k].regions.size(); ++j) {

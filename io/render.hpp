@@ -16,6 +16,7 @@
 #include "algorithms/plot.hpp"
 #include "algorithms/priority_list.hpp"
 #include "algorithms/shadows.hpp"
+#include "algorithms/transparency.hpp"
 #include "algorithms/visible_surfaces.hpp"
 #include "io/scene.hpp"
 #include "io/svg_writer.hpp"
@@ -68,6 +69,10 @@ struct RenderResult {
   /// of each region (per shadow face, per region).
   std::optional<Shadows> shadows;
   std::vector<std::vector<Rgb>> shadow_colours;
+  /// With surfaces and a body whose material has a transparency: the regions of equal ordered
+  /// face lists and the final colour of each (transparency.hpp).
+  std::optional<TransparentPicture> transparent;
+  std::vector<Rgb> transparent_colours;
   double priority_seconds = 0;
   /// Remarks for the user ("file: body 'name' is open ...: drawn as a surface", eye in a face plane).
   std::vector<std::string> notes;

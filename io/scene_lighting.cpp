@@ -87,7 +87,8 @@ Lighting parse_lighting(const YamlContext& c, const YAML::Node& n) {
 }
 
 Material parse_material(const YamlContext& c, const YAML::Node& n, int body) {
-  c.check_keys(n, "a material", {"colour", "color", "ka", "kd", "ks", "shininess"});
+  c.check_keys(n, "a material", {"colour", "color", "ka", "kd", "ks", "shininess", "transparency", "transparency_model",
+                                 "transparency_min", "transparency_power"});
   Material m;
   m.colour = palette_colour(body);
   if (n["colour"] && n["color"]) c.fail(n, "give 'colour' or 'color', not both");
@@ -97,6 +98,16 @@ Material parse_material(const YamlContext& c, const YAML::Node& n, int body) {
   if (n["kd"]) m.kd = real(c, n["kd"], "kd", 0, 1);
   if (n["ks"]) m.ks = real(c, n["ks"], "ks", 0, 1);
   if (n["shininess"]) m.shininess = real(c, n["shininess"], "shininess", 0, 1e4);
+  if (n["transparency"]) m.transparency = real(c, n["transparency"], "transparency", 0, 1);
+  if (n["transparency_min"]) m.transparency_min = real(c, n["transparency_min"], "transparency_min", 0, 1);
+  if (n["transparency_power"]) m.transparency_power = real(c, n["transparency_power"], "transparency_power", 0, 100);
+  if (n["transparency_model"]) {
+    const std::string t = c.text(n["transparency_model"], "transparency_model");
+    if (t == "linear") m.transparency_model = Material::TransparencyModel::Linear;
+    else if (t == "kay") m.transparency_model = Material::TransparencyModel::Kay;
+    else if (t == "path") m.transparency_model = Material::TransparencyModel::PathLength;
+    else c.fail(n["transparency_model"], "transparency_model must be linear, kay or path");
+  }
   return m;
 }
 
