@@ -194,6 +194,7 @@ std::string drawing_text(const std::vector<RenderResult>& results, const std::ve
     if (r0.surfaces) sj = SurfacesJson{&*r0.surfaces, &r0.face_colours, nullptr};
     if (r0.priority) sj = SurfacesJson{nullptr, &r0.face_colours, &*r0.priority};
     if (r0.shadows) sj.shadows = &*r0.shadows, sj.shadow_colours = &r0.shadow_colours;
+    if (r0.transparent) sj.transparent = &*r0.transparent, sj.transparent_colours = &r0.transparent_colours;
     text = to_json(r0.names, r0.drawing, r0.camera, plot ? &plot->stats : nullptr, sj);
   } else {
     progress("strokes");

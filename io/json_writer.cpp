@@ -151,6 +151,36 @@ std::string shadows_text(const SurfacesJson& sj) {
   return out;
 }
 
+std::string transparency_text(const SurfacesJson& sj) {
+  const TransparentPicture& tp = *sj.transparent;
+  std::string out = ",\n \"transparency\": {\n  \"regions\": [";
+  for (std::size_t k = 0; k < tp.regions.size(); ++k) {
+    const TransparentRegion& r = tp.regions[k];
+    Json jr;
+    Json faces = Json::array();
+    for (auto [b, f] : r.faces) faces.push_back(Json::array({b, f}));
+    jr["faces"] = faces;
+    if (sj.transparent_colours) jr["colour"] = hex_colour((*sj.transparent_colours)[k]);
+    auto ring = [](const std::vector<Exact2>& pts) {
+      Json a = Json::array();
+      for (const Exact2& q : pts) a.push_back(Json::array({to_string(q[0]), to_string(q[1])}));
+      return a;
+    };
+    jr["outer"] = ring(r.polygon.outer_2d);
+    Json holes = Json::array();
+    for (const auto& h : r.polygon.holes_2d) holes.push_back(ring(h));
+    jr["holes"] = holes;
+    jr["area"] = to_string(r.polygon.area2 / 2);
+    out += std::string(k ? "," : "") + "\n   " + jr.dump();
+  }
+  Json st;
+  st["regions"] = tp.regions.size();
+  st["painted"] = tp.painted;
+  st["cuts"] = tp.cuts;
+  out += "\n  ],\n  \"stats\": " + st.dump() + "\n }";
+  return out;
+}
+
 std::string surfaces_text(const SurfacesJson& sj, const Camera& camera) {
   const VisibleSurfaces& vs = *sj.surfaces;
   PicturePlane pp(camera);
@@ -289,6 +319,7 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r
   if (surfaces.surfaces) out += surfaces_text(surfaces, camera);
   if (surfaces.priority) out += priority_text(surfaces, camera);
   if (surfaces.shadows) out += shadows_text(surfaces);
+  if (surfaces.transparent) out += transparency_text(surfaces);
   out += "\n}\n";
   return out;
 }

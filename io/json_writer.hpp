@@ -12,6 +12,7 @@
 #include "algorithms/plot.hpp"
 #include "algorithms/priority_list.hpp"
 #include "algorithms/shadows.hpp"
+#include "algorithms/transparency.hpp"
 #include "algorithms/visible_surfaces.hpp"
 #include "io/svg_writer.hpp"
 
@@ -36,6 +37,10 @@ struct SurfacesJson {
   /// lights that reach each, its shade) and per light the lit and the shadow polygons.
   const Shadows* shadows = nullptr;
   const std::vector<std::vector<Rgb>>* shadow_colours = nullptr;
+  /// Transparency: a "transparency" object, one region per line: the faces seen one behind the
+  /// other (back to front), the final colour, the exact picture polygon and its area.
+  const TransparentPicture* transparent = nullptr;
+  const std::vector<Rgb>* transparent_colours = nullptr;
 };
 std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
                     const PlotStats* plot, const SurfacesJson& surfaces);

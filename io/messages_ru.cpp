@@ -88,6 +88,7 @@ const std::vector<Entry>& catalogue() {
       {"@w must be [r, g, b] from 0 to 1 or #rrggbb", "@1: ожидается цвет [r, g, b] от 0 до 1 или #rrggbb"},
       {"a light needs a 'type' (directional, point or spot)", "источнику света нужен тип 'type' (directional, point или spot)"},
       {"light type must be directional, point or spot", "тип источника света type: directional, point или spot"},
+      {"transparency_model must be linear, kay or path", "transparency_model: linear, kay или path"},
       {"a @x light needs a 'direction'", "источнику света @1 нужно направление 'direction'"},
       {"a point light has no 'direction'", "у точечного источника point нет направления 'direction'"},
       {"a @x light needs a 'position'", "источнику света @1 нужно положение 'position'"},

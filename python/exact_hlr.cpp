@@ -80,6 +80,7 @@ struct Drawing {
     if (r->surfaces) sj = hlr::SurfacesJson{&*r->surfaces, &r->face_colours, nullptr};
     if (r->priority) sj = hlr::SurfacesJson{nullptr, &r->face_colours, &*r->priority};
     if (r->shadows) sj.shadows = &*r->shadows, sj.shadow_colours = &r->shadow_colours;
+    if (r->transparent) sj.transparent = &*r->transparent, sj.transparent_colours = &r->transparent_colours;
     return hlr::to_json(r->names, r->drawing, r->camera, nullptr, sj);
   }
   // The painter's list (render(..., method='priority')): one dict per polygon, back to front.
