@@ -9,6 +9,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "algorithms/picture_box.hpp"
 #include "kernel/predicates.hpp"
 
 namespace hlr {
@@ -21,27 +22,7 @@ struct Sides {
   bool in_plane() const { return near == 0 && far == 0; }
 };
 
-// The doubles' box of a picture polygon, widened far beyond their error: boxes apart mean
-// polygons apart (a filter that only says yes when the exact test would).
-struct Box {
-  double lo[2], hi[2];
-  bool ok = false;
-};
-
-Box box_of(const std::vector<Exact2>& pts) {
-  Box b{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}, true};
-  double big = 0;
-  for (const Exact2& q : pts)
-    for (int k = 0; k < 2; ++k) {
-      double x = q[k].get_d();
-      if (!std::isfinite(x)) b.ok = false;
-      b.lo[k] = std::min(b.lo[k], x), b.hi[k] = std::max(b.hi[k], x);
-      big = std::max(big, std::fabs(x));
-    }
-  double pad = 1e-9 * std::max(big, 1e-300);  // > 2^-52 relative (get_d truncates) and > the subnormal step
-  for (int k = 0; k < 2; ++k) b.lo[k] -= pad, b.hi[k] += pad;
-  return b;
-}
+using Box = PictureBox;
 
 class Painter {
  public:
@@ -142,7 +123,7 @@ class Painter {
         if (q[k] > ex[k + 2]) ex[k + 2] = q[k];
       }
     exact_box_.push_back(std::move(ex));
-    box_.push_back(box_of(p.pts));
+    box_.push_back(picture_box(p.pts));
     std::vector<std::array<double, 2>> d;
     for (const Exact2& q : p.pts) d.push_back({q[0].get_d(), q[1].get_d()});
     dpts_.push_back(std::move(d));

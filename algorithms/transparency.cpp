@@ -6,31 +6,12 @@
 #include <map>
 
 #include "algorithms/offset_point.hpp"
+#include "algorithms/picture_box.hpp"
 
 namespace hlr {
 namespace {
 
-// The doubles' box of a picture polygon, widened beyond their error (a filter that only skips
-// polygons far from a point; off where the doubles cannot hold the picture).
-struct Box {
-  double lo[2], hi[2];
-  bool ok = true;
-};
-
-Box box_of(const std::vector<Exact2>& pts) {
-  Box b{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}, true};
-  double big = 0;
-  for (const Exact2& q : pts)
-    for (int k = 0; k < 2; ++k) {
-      double x = q[k].get_d();
-      if (!std::isfinite(x)) b.ok = false;
-      b.lo[k] = std::min(b.lo[k], x), b.hi[k] = std::max(b.hi[k], x);
-      big = std::max(big, std::fabs(x));
-    }
-  double pad = 1e-9 * std::max(big, 1e-300);
-  for (int k = 0; k < 2; ++k) b.lo[k] -= pad, b.hi[k] += pad;
-  return b;
-}
+using Box = PictureBox;
 
 bool may_hold(const Box& b, const std::array<double, 2>& m) {
   if (!b.ok || !std::isfinite(m[0]) || !std::isfinite(m[1])) return true;
@@ -60,7 +41,7 @@ TransparentPicture transparent_regions(const std::vector<const Polyhedron*>& bod
     const auto base = static_cast<std::uint32_t>(points.size());
     points.insert(points.end(), p.begin(), p.end());
     for (std::uint32_t k = 0; k < p.size(); ++k) segs.push_back({base + k, base + (k + 1) % static_cast<std::uint32_t>(p.size())});
-    boxes.push_back(box_of(p));
+    boxes.push_back(picture_box(p));
   }
   PlanarArrangement arr = build_arrangement(std::move(points), segs);
   // Each cycle: the painted polygons over the point beside its first half-edge, back to front,

@@ -201,21 +201,8 @@ std::string surfaces_text(const SurfacesJson& sj, const Camera& camera) {
     Rational area = 0;
     Json polys = Json::array();
     for (const VisiblePolygon& p : f.polygons) {
-      Json jp;
-      Json outer = Json::array();
-      for (const Point3& q : p.outer) outer.push_back(exact_point(q));
-      jp["outer"] = outer;
-      Json holes = Json::array();
-      for (const auto& h : p.holes) {
-        Json ring = Json::array();
-        for (const Point3& q : h) ring.push_back(exact_point(q));
-        holes.push_back(ring);
-      }
-      jp["holes"] = holes;
-      Rational a = p.area2 / 2;
-      jp["area"] = to_string(a);
-      area += a;
-      polys.push_back(jp);
+      polys.push_back(polygon_json(p));
+      area += p.area2 / 2;
       ++polygons;
     }
     jf["area"] = to_string(area);

@@ -76,4 +76,32 @@ inline int in_face(const OracleFace& f, const std::array<Rational, 3>& x) {
   return in ? 1 : -1;
 }
 
+
+/// 1 inside, 0 on the border, -1 outside a picture ring (even-odd; either orientation).
+inline int in_ring(const std::vector<Exact2>& r, const Exact2& q) {
+  bool in = false;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Exact2 &a = r[i], &b = r[(i + 1) % r.size()];
+    int o = orient2d(a, b, q);
+    if (o == 0 && std::min(a[0], b[0]) <= q[0] && q[0] <= std::max(a[0], b[0]) && std::min(a[1], b[1]) <= q[1] &&
+        q[1] <= std::max(a[1], b[1]))
+      return 0;
+    bool ua = a[1] > q[1], ub = b[1] > q[1];
+    if (ua != ub && ((o > 0) == ub)) in = !in;
+  }
+  return in ? 1 : -1;
+}
+
+/// The same for a polygon with holes (outer ring, hole rings).
+inline int in_rings(const std::vector<Exact2>& outer, const std::vector<std::vector<Exact2>>& holes, const Exact2& q) {
+  int o = in_ring(outer, q);
+  if (o <= 0) return o;
+  for (const auto& h : holes) {
+    int i = in_ring(h, q);
+    if (i == 0) return 0;
+    if (i > 0) return -1;
+  }
+  return 1;
+}
+
 }  // namespace hlr::test

@@ -133,20 +133,6 @@ TEST(Transparency, GlassBoxShowsItsBackFacesAndWhatIsBehind) {
 
 namespace {
 
-int in_ring(const std::vector<Exact2>& r, const Exact2& q) {
-  bool in = false;
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    const Exact2 &a = r[i], &b = r[(i + 1) % r.size()];
-    int o = orient2d(a, b, q);
-    if (o == 0 && std::min(a[0], b[0]) <= q[0] && q[0] <= std::max(a[0], b[0]) && std::min(a[1], b[1]) <= q[1] &&
-        q[1] <= std::max(a[1], b[1]))
-      return 0;
-    bool ua = a[1] > q[1], ub = b[1] > q[1];
-    if (ua != ub && ((o > 0) == ub)) in = !in;
-  }
-  return in ? 1 : -1;
-}
-
 long check_regions(const std::vector<Polyhedron>& bodies, const Camera& cam, const std::vector<char>& see, unsigned seed) {
   std::vector<const Polyhedron*> ptrs;
   for (const auto& p : bodies) ptrs.push_back(&p);
@@ -167,10 +153,7 @@ long check_regions(const std::vector<Polyhedron>& bodies, const Camera& cam, con
         sx += k * c[0], sy += k * c[1], sw += k;
       }
       Exact2 q{sx / sw, sy / sw};
-      if (in_ring(reg.polygon.outer_2d, q) <= 0) continue;
-      bool out = false;
-      for (const auto& h : reg.polygon.holes_2d) out = out || in_ring(h, q) >= 0;
-      if (out) continue;
+      if (test::in_rings(reg.polygon.outer_2d, reg.polygon.holes_2d, q) <= 0) continue;
       // The sight ray through q (as the priority test builds it), every face it meets.
       std::array<Rational, 3> base, dir;
       for (int k = 0; k < 3; ++k) {
