@@ -22,6 +22,7 @@
 #include "algorithms/weiler_atherton.hpp"
 #include "io/mesh_reader.hpp"
 #include "io/scene.hpp"
+#include "face_oracle.hpp"
 
 using namespace hlr;
 
@@ -142,30 +143,8 @@ Seen cast(const std::vector<std::vector<OracleFace>>& faces, const Camera& cam, 
   return unsure ? Seen::Unsure : tie ? Seen::Tie : Seen::Clear;
 }
 
-// 1 inside, 0 on the boundary, -1 outside: a picture polygon with holes.
-int in_ring(const std::vector<Exact2>& r, const Exact2& q) {
-  bool in = false;
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    const Exact2 &a = r[i], &b = r[(i + 1) % r.size()];
-    int o = orient2d(a, b, q);
-    if (o == 0 && std::min(a[0], b[0]) <= q[0] && q[0] <= std::max(a[0], b[0]) && std::min(a[1], b[1]) <= q[1] &&
-        q[1] <= std::max(a[1], b[1]))
-      return 0;
-    bool ua = a[1] > q[1], ub = b[1] > q[1];
-    if (ua != ub && ((o > 0) == ub)) in = !in;
-  }
-  return in ? 1 : -1;
-}
-int in_polygon(const VisiblePolygon& p, const Exact2& q) {
-  int o = in_ring(p.outer_2d, q);
-  if (o <= 0) return o;
-  for (const auto& h : p.holes_2d) {
-    int i = in_ring(h, q);
-    if (i == 0) return 0;
-    if (i > 0) return -1;
-  }
-  return 1;
-}
+// 1 inside, 0 on the boundary, -1 outside: a picture polygon with holes (face_oracle.hpp).
+int in_polygon(const VisiblePolygon& p, const Exact2& q) { return test::in_rings(p.outer_2d, p.holes_2d, q); }
 
 // Twice the area of the union of the projected faces: slabs between all x of corners and
 // crossings; in a slab the covered length is linear in x, so its value at the middle times
