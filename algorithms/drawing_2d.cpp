@@ -85,7 +85,7 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
     const Segment& s = r.segments[si];
     for (std::size_t pi = 0; pi < s.pieces.size(); ++pi) {
       const Piece& p = s.pieces[pi];
-      if (p.behind_eye || p.clipped || (!p.visible && !opt.hidden)) continue;
+      if (p.behind_eye || p.clipped || (!p.visible && !(p.through ? opt.through : opt.hidden))) continue;
       std::array<double, 4> l;
       bool pulled = false;
       if (!piece_line(s, p, proj, camera.perspective, near, l, pulled)) continue;
@@ -95,6 +95,7 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
       pl.first_edge = static_cast<std::uint32_t>(d.sources.size());
       pl.kind = s.line;
       pl.visible = p.visible;
+      pl.through = p.through;
       pl.intersection = s.kind == Segment::Kind::Intersection;
       pl.body = s.body;
       pl.body2 = s.body2;

@@ -28,6 +28,7 @@ struct Polyline2D {
   std::uint32_t first = 0, count = 0, first_edge = 0;
   LineKind kind = LineKind::Edge;
   bool visible = true;
+  bool through = false;       // hidden only by see-through faces (Piece::through)
   bool intersection = false;  // an intersection line of bodies `body` and `body2`
   bool pulled = false;        // perspective: an end pulled to the drawing's near depth (not the exact projection)
   int body = -1, body2 = -1;
@@ -49,6 +50,7 @@ struct Drawing2D {
 
 struct Project2DOptions {
   bool hidden = true;  // include hidden pieces
+  bool through = true; // include pieces seen through transparent faces (Piece::through)
   /// Label every vertex that ends a drawn edge with its number (plus `label_base`: 1 for the
   /// notes' numbering from 1), in front of the eye.
   bool vertex_labels = false;

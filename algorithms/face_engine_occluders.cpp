@@ -107,6 +107,7 @@ void Engine<P>::build_occluders() {
     const Tri& t0 = tris_[i];
     int fs = facing_[t0.body][t0.face];
     if (fs == 0) continue;                       // edge-on: sight rays graze it
+    if (static_cast<std::size_t>(t0.body) < opt_.see_through.size() && opt_.see_through[t0.body]) continue;  // hides nothing
     if (solid_[t0.body] && fs < 0 && !eye_on_[t0.body]) continue;  // a closed solid is hidden by its front faces
     // No point strictly in front of the eye: its sight cone lies behind the eye, where nothing
     // is drawn (docs/design.md, "Occluders that reach behind the eye").

@@ -81,7 +81,8 @@ void Engine<P>::candidates(const Box& seg, Work& wk) const {
 
 template <class P>
 void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk) const {
-  if (s.self_hidden) {
+  const bool hides = static_cast<std::size_t>(s.body) >= opt_.see_through.size() || !opt_.see_through[s.body];
+  if (s.self_hidden && hides) {  // its own front faces hide it
     const bool front = gv[0] >= 0 && vfront_[gv[0]] && vfront_[gv[1]];
     s.pieces = pieces_from_hidden({{Rational(0), Rational(1)}}, front ? std::nullopt : depth_of(s));
     return;

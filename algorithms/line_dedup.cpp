@@ -240,7 +240,7 @@ class Dedup {
 
   CleanEdge edge(std::uint32_t k, std::uint32_t p, std::uint32_t q) const {
     const Polyline2D& l = d_.lines[k];
-    return CleanEdge{p, q, d_.sources[l.first_edge], l.kind, l.visible, l.body};
+    return CleanEdge{p, q, d_.sources[l.first_edge], l.kind, l.visible, l.through, l.body};
   }
 
   // Pieces on one line of the picture: cut at every end (exact order along the line), draw
@@ -284,6 +284,7 @@ class Dedup {
 
   static bool wins(const Polyline2D& a, const Polyline2D& b) {
     if (a.visible != b.visible) return a.visible;
+    if (a.through != b.through) return a.through;
     return kind_priority(a.kind) > kind_priority(b.kind);
   }
 

@@ -24,6 +24,7 @@ struct CleanEdge {
   PieceRef source;
   LineKind kind = LineKind::Edge;
   bool visible = true;
+  bool through = false;  // seen through transparent faces (Piece::through)
   int body = -1;
 };
 
@@ -41,7 +42,7 @@ struct CleanDrawing {
 };
 
 struct DedupOptions {
-  /// Resolve overlaps (collinear pieces drawn once: visible over hidden, then the stronger
+  /// Resolve overlaps (collinear pieces drawn once: visible over seen-through over hidden, then the stronger
   /// kind: silhouette, boundary, crease, intersection, edge). Off: only points and end-on.
   bool overlaps = true;
   unsigned threads = 0;  // 0: all cores

@@ -23,8 +23,9 @@ struct Piece {
   bool visible = true;
   bool behind_eye = false;  // perspective: behind the eye, never drawn
   bool clipped = false;     // outside the clipping volume or nearer than the near plane
+  bool through = false;     // hidden only by see-through (transparent) faces: seen through them
   bool same_kind(const Piece& o) const {
-    return visible == o.visible && behind_eye == o.behind_eye && clipped == o.clipped;
+    return visible == o.visible && behind_eye == o.behind_eye && clipped == o.clipped && through == o.through;
   }
 };
 
@@ -44,6 +45,9 @@ struct LineOptions {
   bool intersections = true;                      // per-face route: intersection lines (and self)
   bool classify_all = false;                      // All: still name silhouettes, boundaries, creases
   bool prefilter = true;                          // Roberts: spatial pre-filter of (edge, body) pairs
+  /// Per-face route: per body, 1 when its faces hide nothing (see-through; its own lines are
+  /// still drawn). Empty: every body hides. see_through_lines.hpp uses it.
+  std::vector<char> see_through;
   unsigned threads = 0;                           // 0: all cores
 };
 

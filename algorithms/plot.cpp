@@ -45,7 +45,7 @@ std::vector<Stroke> layer_strokes(const CleanDrawing& c, const std::vector<std::
 
 }  // namespace
 
-std::string PlotLayer::name() const { return std::string(visible ? "visible-" : "hidden-") + to_string(kind); }
+std::string PlotLayer::name() const { return std::string(visible ? "visible-" : through ? "through-" : "hidden-") + to_string(kind); }
 
 bool Plot::empty() const {
   if (!fills.empty()) return false;
@@ -80,7 +80,7 @@ Plot make_plot(const LineDrawing& lines, const Camera& camera, const PlotOptions
       auto p = static_cast<std::uint32_t>(c.points.size());
       c.points.push_back(d.point(l, 0));
       c.points.push_back(d.point(l, 1));
-      c.edges.push_back(CleanEdge{p, p + 1, d.sources[l.first_edge], l.kind, l.visible, l.body});
+      c.edges.push_back(CleanEdge{p, p + 1, d.sources[l.first_edge], l.kind, l.visible, l.through, l.body});
     }
   }
   Plot plot;
@@ -94,14 +94,16 @@ Plot make_plot(const LineDrawing& lines, const Camera& camera, const PlotOptions
   plot.stats.exact_point_tests = c.exact_point_tests;
   plot.stats.exact_line_tests = c.exact_line_tests;
   auto t1 = std::chrono::steady_clock::now();
-  for (bool visible : {true, false})
+  for (int seen : {0, 1, 2})  // visible, through, hidden
     for (LineKind k : kKinds) {
+      const bool visible = seen == 0, through = seen == 1;
       std::vector<std::uint32_t> ids;
       for (std::uint32_t e = 0; e < c.edges.size(); ++e)
-        if (c.edges[e].visible == visible && c.edges[e].kind == k) ids.push_back(e);
+        if (c.edges[e].visible == visible && c.edges[e].through == through && c.edges[e].kind == k) ids.push_back(e);
       if (ids.empty()) continue;
       PlotLayer layer;
       layer.visible = visible;
+      layer.through = through;
       layer.kind = k;
       layer.strokes = layer_strokes(c, ids, opt.chain, plot.stats.min_path_count);
       plot.stats.path_count += layer.strokes.size();

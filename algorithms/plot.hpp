@@ -18,9 +18,10 @@ namespace hlr {
 
 struct PlotLayer {
   bool visible = true;
+  bool through = false;         // seen through transparent faces (not visible, not hidden)
   LineKind kind = LineKind::Edge;
   std::vector<Stroke> strokes;  // in pen order once ordered, each in drawing direction
-  std::string name() const;     // "visible-silhouette", "hidden-crease", ...
+  std::string name() const;     // "visible-silhouette", "through-edge", "hidden-crease", ...
 };
 
 /// What the 2D stage did, in vpype's terms where they exist (lengths in drawing units; the
@@ -51,7 +52,7 @@ struct PlotFill {
 
 struct Plot {
   std::vector<PlotFill> fills;    // drawn first, under the lines (none for a line drawing)
-  std::vector<PlotLayer> layers;  // visible layers first, then hidden; only non-empty ones
+  std::vector<PlotLayer> layers;  // visible layers first, then seen-through, then hidden; only non-empty ones
   PlotStats stats;
   std::array<double, 4> bounds{0, 0, 0, 0};  // x0, y0, x1, y1 of everything drawn
   bool empty() const;

@@ -67,16 +67,18 @@ void select_layers(const std::string& list, std::vector<Plot>& plots) {
       if (n >= 1 && n <= names.size()) keep.insert(names[n - 1]);
       continue;
     }
-    if (item == "visible" || item == "hidden") {
+    if (item == "visible" || item == "through" || item == "hidden") {
       for (const std::string& n : names)
         if (n.rfind(item + "-", 0) == 0) keep.insert(n);
       continue;
     }
     static const std::set<std::string> known = {"visible-silhouette", "visible-boundary", "visible-crease", "visible-intersection",
                                                 "visible-edge", "hidden-silhouette", "hidden-boundary", "hidden-crease",
-                                                "hidden-intersection", "hidden-edge"};
+                                                "hidden-intersection", "hidden-edge", "through-silhouette", "through-boundary",
+                                                "through-crease", "through-intersection", "through-edge"};
     if (!known.count(item))
-      throw std::invalid_argument("--layers: unknown layer '" + item + "' (visible, hidden, visible-silhouette, hidden-crease, ... or numbers)");
+      throw std::invalid_argument("--layers: unknown layer '" + item +
+                                  "' (visible, through, hidden, visible-silhouette, hidden-crease, ... or numbers)");
     keep.insert(item);
   }
   for (Plot& p : plots) {
@@ -152,7 +154,7 @@ void add_output_options(CLI::App* cmd, OutputArgs& a, bool sheets) {
   cmd->add_option("--width", a.width, "Drawing width in millimetres without --page (default 150)");
   cmd->add_option("--stroke", a.stroke, "Width of visible edges in millimetres (default 0.35; outlines 0.5 and hidden 0.25 in proportion)");
   cmd->add_option("--weights", a.weights, "Line widths per kind in mm, e.g. silhouette=0.7,crease=0.35,hidden=0.18");
-  cmd->add_option("--layers", a.layers, "Layers to write: visible, hidden, visible-silhouette, hidden-crease, ... or their numbers");
+  cmd->add_option("--layers", a.layers, "Layers to write: visible, through, hidden, visible-silhouette, through-edge, hidden-crease, ... or their numbers");
   cmd->add_option("--min-length", a.min_length, "Drop strokes shorter than this many millimetres on the page (specks)");
   cmd->add_option("--dpi", a.dpi, "PNG resolution (default 150)");
   cmd->add_flag("--raw", a.raw, "One line per exact piece: no clean-up, chaining or pen order");

@@ -31,7 +31,7 @@ struct RenderArgs : OutputArgs {
   std::vector<std::string> inputs;
   std::string view, eye, target, up, edges = "feature", clip, near = "1/1000";
   std::string method = "faces", crease = "30";
-  bool timings = false, surfaces = false, shadows = false;
+  bool timings = false, surfaces = false, shadows = false, no_through = false;
   std::string views, up_axis;
 };
 
@@ -71,6 +71,7 @@ RenderOptions render_options(const RenderArgs& a) {
   if (!a.clip.empty()) o.clip = parse_clipper("--clip", a.clip).clipper;
   o.surfaces = a.surfaces;
   o.shadows = a.shadows;
+  o.through_lines = !a.no_through;
   return o;
 }
 
@@ -187,6 +188,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--shadows", a->shadows,
                 "Shadows of the scene's lights on the visible surfaces, as exact polygons (implies --surfaces; "
                 "each region shaded by the lights that reach it; JSON 'shadows')");
+  cmd->add_flag("--no-through", a->no_through,
+                "Lines behind transparent bodies (material transparency > 0) count as hidden; by default they are their own "
+                "class, seen through (thin grey layers 'through-*', JSON pieces with \"through\": true)");
   cmd->add_flag("--timings", a->timings, "Print the time of each stage to standard error");
   cmd->add_option("--clip", a->clip,
                   "Clip the drawing to box:XMIN,XMAX,YMIN,YMAX,ZMIN,ZMAX, frustum:XL,XR,YB,YT,ZNEAR,ZFAR,ZCP or a convex mesh file");

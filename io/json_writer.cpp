@@ -31,6 +31,7 @@ nlohmann::ordered_json piece_json(const Segment& s, const Piece& p) {
   o["to"] = exact_point(s.at(p.t1));
   o["t"] = Json::array({to_string(p.t0), to_string(p.t1)});
   if (s.self_hidden) o["self_hidden"] = true;
+  if (p.through) o["through"] = true;
   if (p.behind_eye) o["behind_eye"] = true;
   if (p.clipped) o["clipped"] = true;
   return o;

@@ -142,7 +142,7 @@ Sheet layout_views(const std::vector<const Plot*>& plots, const std::vector<std:
 }
 
 double PlotStyle::weight(const PlotLayer& l) const {
-  auto it = weights.find(l.visible ? to_string(l.kind) : "hidden");
+  auto it = weights.find(l.visible ? to_string(l.kind) : l.through ? "through" : "hidden");
   return it != weights.end() ? it->second : 0.35;
 }
 
@@ -160,7 +160,7 @@ void parse_weights(const std::string& text, PlotStyle& style) {
     auto eq = item.find('=');
     std::string key = lower(item.substr(0, eq));
     if (eq == std::string::npos || !style.weights.count(key))
-      throw std::invalid_argument("--weights: '" + item + "' is not KIND=MM (kinds: silhouette, boundary, crease, intersection, edge, hidden)");
+      throw std::invalid_argument("--weights: '" + item + "' is not KIND=MM (kinds: silhouette, boundary, crease, intersection, edge, hidden, through)");
     style.weights[key] = positive_number(item.substr(eq + 1), "--weights");
   }
 }
@@ -169,7 +169,7 @@ std::vector<std::vector<Point2>> page_strokes(const SheetView& view, const PlotL
                                               std::vector<char>* closed) {
   std::vector<std::vector<Point2>> out;
   if (closed) closed->clear();
-  const bool cut = !layer.visible && style.hidden_dashed && style.dashes == DashMode::Geometry;
+  const bool cut = !layer.visible && !layer.through && style.hidden_dashed && style.dashes == DashMode::Geometry;
   auto pattern = style.dash_pattern(layer);
   for (const Stroke& s : layer.strokes) {
     std::vector<Point2> pts;
@@ -190,14 +190,14 @@ std::vector<std::vector<Point2>> page_strokes(const SheetView& view, const PlotL
 
 std::vector<std::string> sheet_layer_names(const Sheet& sheet) {
   std::vector<std::string> names;
-  for (bool visible : {true, false})
+  for (int seen : {0, 1, 2})  // visible, through, hidden
     for (LineKind k : {LineKind::Silhouette, LineKind::Boundary, LineKind::Crease, LineKind::Intersection, LineKind::Edge})
       for (const SheetView& v : sheet.views) {
         bool found = false;
         for (const PlotLayer& l : v.plot->layers)
-          if (l.visible == visible && l.kind == k && !l.strokes.empty()) found = true;
+          if (l.visible == (seen == 0) && l.through == (seen == 1) && l.kind == k && !l.strokes.empty()) found = true;
         if (found) {
-          names.push_back(std::string(visible ? "visible-" : "hidden-") + to_string(k));
+          names.push_back(std::string(seen == 0 ? "visible-" : seen == 1 ? "through-" : "hidden-") + to_string(k));
           break;
         }
       }

@@ -51,7 +51,9 @@ void draw_sheet(cairo_t* cr, const Sheet& sheet, const PlotStyle& style) {
         if (l.name() != name) continue;
         cairo_set_line_width(cr, style.weight(l));
         auto pat = style.dash_pattern(l);
-        const bool dashed = !l.visible && style.hidden_dashed && style.dashes == DashMode::Pattern;
+        if (l.through) cairo_set_source_rgb(cr, 0.5, 0.5, 0.5);  // seen through transparent faces: grey
+        else cairo_set_source_rgb(cr, 0, 0, 0);
+        const bool dashed = !l.visible && !l.through && style.hidden_dashed && style.dashes == DashMode::Pattern;
         cairo_set_dash(cr, pat.data(), dashed ? 2 : 0, 0);
         std::vector<char> closed;
         auto strokes = page_strokes(v, l, style, &closed);

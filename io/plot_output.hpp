@@ -57,11 +57,15 @@ Sheet layout_views(const std::vector<const Plot*>& plots, const std::vector<std:
 
 enum class DashMode { Pattern, Geometry };
 
+/// The colour of lines seen through transparent faces (PlotLayer::through): a second pen.
+inline constexpr const char* kThroughGrey = "#808080";
+
 struct PlotStyle {
   /// Width in mm per layer key: "silhouette", "boundary", "crease", "intersection", "edge",
-  /// "hidden" (all hidden layers).
+  /// "hidden" (all hidden layers), "through" (all layers seen through transparent faces).
   std::map<std::string, double> weights = {{"silhouette", 0.5}, {"boundary", 0.5}, {"crease", 0.35},
-                                           {"intersection", 0.35}, {"edge", 0.35}, {"hidden", 0.25}};
+                                           {"intersection", 0.35}, {"edge", 0.35}, {"hidden", 0.25},
+                                           {"through", 0.25}};
   DashMode dashes = DashMode::Pattern;
   bool hidden_dashed = true;     // false: hidden lines solid (thin)
   bool numbered_layers = true;   // AxiDraw-style "1 visible-silhouette"

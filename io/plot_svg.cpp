@@ -48,11 +48,11 @@ std::string sheet_to_svg(const Sheet& sheet, const PlotStyle& style) {
     for (const SheetView& v : sheet.views)
       for (const PlotLayer& l : v.plot->layers)
         if (l.name() == names[n]) any = &l;
-    const bool dashed = !any->visible && style.hidden_dashed && style.dashes == DashMode::Pattern;
+    const bool dashed = !any->visible && !any->through && style.hidden_dashed && style.dashes == DashMode::Pattern;
     auto pat = style.dash_pattern(*any);
     std::string label = style.numbered_layers ? std::to_string(n + 1) + " " + names[n] : names[n];
     out += "<g inkscape:groupmode=\"layer\" inkscape:label=\"" + label + "\" id=\"" + names[n] +
-           "\" fill=\"none\" stroke=\"#000\" stroke-width=\"" + f(style.weight(*any)) +
+           "\" fill=\"none\" stroke=\"" + std::string(any->through ? kThroughGrey : "#000") + "\" stroke-width=\"" + f(style.weight(*any)) +
            "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"" +
            (dashed ? " stroke-dasharray=\"" + f(pat[0]) + " " + f(pat[1]) + "\"" : std::string()) + ">\n";
     for (const SheetView& v : sheet.views)

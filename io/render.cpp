@@ -1,6 +1,7 @@
 // The render pipeline (see render.hpp).
 #include "io/render.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -13,6 +14,7 @@
 #include "algorithms/roberts.hpp"
 #include "algorithms/roberts_pieces.hpp"
 #include "algorithms/priority_list.hpp"
+#include "algorithms/see_through_lines.hpp"
 #include "algorithms/shadows.hpp"
 #include "algorithms/transparency.hpp"
 #include "algorithms/weiler_atherton.hpp"
@@ -150,6 +152,13 @@ Material material_of(const RenderResult& r, std::size_t b) {
   return m;
 }
 
+// Per body: its material lets light through (transparency > 0): it hides no line.
+std::vector<char> see_through_bodies(const RenderResult& r) {
+  std::vector<char> see(r.bodies.size(), 0);
+  for (std::size_t b = 0; b < r.bodies.size(); ++b) see[b] = material_of(r, b).transparency > 0;
+  return see;
+}
+
 // Transparency (issue 16): the regions of equal face lists, each composited back to front,
 // I = (1 − τ)·I_face + τ·I_behind, from white paper behind everything.
 void solve_transparency(RenderResult& r, const std::vector<const Polyhedron*>& polys, const LineDrawing& all) {
@@ -221,6 +230,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
     Plane near = near_plane(r.camera, o.near);
     for (Segment& s : d.segments) clip_near(s, near);
   }
+  if (o.through_lines) r.through_pieces = mark_see_through(d, polys, r.camera, all, see_through_bodies(r));
   shade_faces(r, scenes, d);
   SurfaceOptions so;
   so.threads = o.lines.threads;
@@ -292,8 +302,14 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   try {
     if (o.surfaces || o.shadows || o.method == RenderMethod::WeilerAtherton || o.method == RenderMethod::Priority)
       solve_surfaces(r, polys, *owned, o);
-    else
+    else {
       r.drawing = solve(polys, r.camera, o);
+      const std::vector<char> see = see_through_bodies(r);
+      if (o.method == RenderMethod::Faces && o.through_lines)
+        r.through_pieces = mark_see_through(r.drawing, polys, r.camera, o.lines, see);
+      else if (o.method == RenderMethod::Roberts && std::find(see.begin(), see.end(), 1) != see.end())
+        repairs.push_back("transparent bodies hide the lines behind them with --method roberts (the per-face route draws those lines as seen through)");
+    }
   } catch (const BodyError& e) {
     const SceneBody& b = *r.bodies[e.body()];
     throw RenderBodyError(e.body(), b.name, b.source, e.reason());

@@ -49,6 +49,9 @@ struct RenderOptions {
   /// Shadows of the scene's lights on the visible surfaces, as exact polygons (shadows.hpp);
   /// implies `surfaces` (the per-face route).
   bool shadows = false;
+  /// Lines behind transparent bodies (a material with transparency > 0) as their own class,
+  /// seen through (see_through_lines.hpp; the per-face route). Off: they are hidden lines.
+  bool through_lines = true;
 };
 
 struct RenderResult {
@@ -74,6 +77,8 @@ struct RenderResult {
   std::optional<TransparentPicture> transparent;
   std::vector<Rgb> transparent_colours;
   double priority_seconds = 0;
+  /// Pieces of lines seen through transparent faces (RenderOptions::through_lines).
+  std::size_t through_pieces = 0;
   /// Remarks for the user ("file: body 'name' is open ...: drawn as a surface", eye in a face plane).
   std::vector<std::string> notes;
 };

@@ -50,16 +50,18 @@ std::string fmt(double v) { return svg_number(v); }
 }  // namespace
 
 std::string to_svg(const std::vector<DrawingBody>& bodies, const Drawing2D& d, const SvgOptions& opt) {
-  // Group key: (visible, line kind, body or -1 - body for intersections, second body).
+  // Group key: (visible 0, through 1 or hidden 2, line kind, body or -1 - body for
+  // intersections, second body).
   std::map<std::tuple<int, int, int, int>, std::vector<const Polyline2D*>> groups;
+  auto drawn = [&](const Polyline2D& l) { return l.visible || l.through || opt.hidden_dashed; };
   for (const Polyline2D& l : d.lines) {
-    if (!l.visible && !opt.hidden_dashed) continue;
-    groups[{l.visible ? 0 : 1, static_cast<int>(l.kind), l.intersection ? -1 - l.body : l.body, l.intersection ? l.body2 : -1}]
+    if (!drawn(l)) continue;
+    groups[{l.visible ? 0 : l.through ? 1 : 2, static_cast<int>(l.kind), l.intersection ? -1 - l.body : l.body, l.intersection ? l.body2 : -1}]
         .push_back(&l);
   }
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
   for (const Polyline2D& l : d.lines) {
-    if (!l.visible && !opt.hidden_dashed) continue;
+    if (!drawn(l)) continue;
     for (std::uint32_t k = 0; k < l.count; ++k) {
       const auto& p = d.point(l, k);
       x0 = std::min(x0, p[0]);
@@ -81,12 +83,13 @@ std::string to_svg(const std::vector<DrawingBody>& bodies, const Drawing2D& d, c
   auto X = [&](double x) { return fmt((x - x0 + m) * k); };
   auto Y = [&](double y) { return fmt((y1 - y + m) * k); };
   auto escape = svg_escape;
-  for (int vis = 0; vis < 2; ++vis) {
-    if (vis == 1 && !opt.hidden_dashed) break;
-    const char* id = vis == 0 ? "visible" : "hidden";
-    out += std::string("<g id=\"") + id + "\" fill=\"none\" stroke=\"#000\" stroke-width=\"" +
+  for (int vis = 0; vis < 3; ++vis) {
+    if (vis == 2 && !opt.hidden_dashed) break;
+    if (vis == 1 && std::none_of(groups.begin(), groups.end(), [](const auto& g) { return std::get<0>(g.first) == 1; })) continue;
+    const char* id = vis == 0 ? "visible" : vis == 1 ? "through" : "hidden";
+    out += std::string("<g id=\"") + id + "\" fill=\"none\" stroke=\"" + (vis == 1 ? "#808080" : "#000") + "\" stroke-width=\"" +
            fmt(vis == 0 ? opt.stroke_mm : opt.stroke_mm / 2) + "\" stroke-linecap=\"round\"" +
-           (vis == 1 ? " stroke-dasharray=\"" + fmt(opt.stroke_mm * 4) + " " + fmt(opt.stroke_mm * 3) + "\"" : std::string()) +
+           (vis == 2 ? " stroke-dasharray=\"" + fmt(opt.stroke_mm * 4) + " " + fmt(opt.stroke_mm * 3) + "\"" : std::string()) +
            ">\n";
     int open_kind = -1;
     for (const auto& [key, lines] : groups) {

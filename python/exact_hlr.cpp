@@ -191,7 +191,7 @@ struct Drawing {
 
 Drawing render(const py::object& input, std::optional<py::sequence> view, std::optional<py::sequence> eye,
                std::optional<py::sequence> target, std::optional<py::sequence> up, const std::string& method,
-               const std::string& edges, const py::object& crease, unsigned threads, bool surfaces, bool shadows) {
+               const std::string& edges, const py::object& crease, unsigned threads, bool surfaces, bool shadows, bool through) {
   std::vector<std::string> inputs;
   if (py::isinstance<py::str>(input)) inputs.push_back(input.cast<std::string>());
   else inputs = input.cast<std::vector<std::string>>();
@@ -205,6 +205,7 @@ Drawing render(const py::object& input, std::optional<py::sequence> view, std::o
                                            : hlr::RenderMethod::Faces;
   o.surfaces = surfaces;
   o.shadows = shadows;
+  o.through_lines = through;
   o.lines.edges = edges == "all" ? hlr::EdgeSelection::All : hlr::EdgeSelection::Feature;
   o.lines.crease_degrees = number(crease);
   o.lines.threads = threads;
@@ -272,9 +273,11 @@ PYBIND11_MODULE(exact_hlr, m) {
   m.def("render", &render, py::arg("inputs"), py::kw_only(), py::arg("view") = py::none(), py::arg("eye") = py::none(),
         py::arg("target") = py::none(), py::arg("up") = py::none(), py::arg("method") = "faces", py::arg("edges") = "feature",
         py::arg("crease") = py::int_(30), py::arg("threads") = 0u, py::arg("surfaces") = false, py::arg("shadows") = false,
+        py::arg("through") = true,
         "Renders mesh files and scene files: exact hidden lines (view: orthographic direction; eye: perspective); "
         "surfaces=True also gives the visible part of every face as exact polygons, shaded; shadows=True cuts them by "
-        "the lights' shadows (json()['shadows'])");
+        "the lights' shadows (json()['shadows']); through=False counts lines behind transparent bodies as hidden (by "
+        "default they are their own class: 'through-*' layers, pieces with 'through': true)");
   m.def("explain", &explain, py::arg("problem"), py::kw_only(), py::arg("lang") = "en", py::arg("format") = "md",
         "Solves a problem file step by step (exam mode): Markdown, HTML or JSON text");
   m.def("clip", &clip, py::arg("clipper"), py::arg("segment"),

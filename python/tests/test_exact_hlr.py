@@ -137,3 +137,15 @@ def test_shadows_on_the_ground():
         sh = json.loads(dr.json())["shadows"]
         ground = [f for f in sh["faces"] if f["body"] == 1]
         assert len(ground) == 1 and Fraction(ground[0]["shadow_area"]) == 2
+
+
+def test_lines_seen_through_glass():
+    # The demo's glass box shows its back edges and the block behind it as a class of their own.
+    dr = exact_hlr.render([path("transparency_demo.yaml")])
+    pieces = json.loads(dr.json())["segments"]
+    through = [p for p in pieces if p.get("through")]
+    assert through and all(not p["visible"] for p in through)
+    assert {p["body"] for p in through} == {0, 1, 2}
+    assert any(name.startswith("through-") for name in dr.strokes())
+    hidden = exact_hlr.render([path("transparency_demo.yaml")], through=False)
+    assert not any(p.get("through") for p in json.loads(hidden.json())["segments"])
