@@ -1,0 +1,113 @@
+// The exact image-space model shared by the raster algorithms (course notes sections 29-35:
+// Warnock, z-buffer, scan-line, ray casting; section 25 for image space against object space).
+// A grid of pixel centres at exact dyadic picture points; the scene's convex picture polygons
+// (scene_polygons.hpp) with the exact depth of their planes along each sight ray; and the one
+// rule of which face is seen at a pixel centre: among the polygons whose closed picture
+// contains the centre, the nearest; a depth tie (touching planes, an edge shared by two faces)
+// goes to the face toward the viewer, then to the lower face number, as for the visible-surface
+// polygons (visible_surfaces.hpp). The order is total, so any algorithm that offers every
+// covering polygon to `nearer` gets the same face at every pixel. Every decision is the sign of
+// an exact number, first tried with certified interval doubles (docs/design.md, "Raster").
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/line_drawing.hpp"
+#include "algorithms/picture_plane.hpp"
+#include "algorithms/scene_polygons.hpp"
+#include "kernel/polyhedron.hpp"
+
+namespace hlr {
+
+/// A closed interval of doubles that contains an exact value.
+struct Interval {
+  double lo = 0, hi = 0;
+};
+
+/// The pixel grid: the centre of pixel (i, j) (column i from the left, row j from the top) is
+/// the picture point (x0 + (i + 1/2)·step, y1 - (j + 1/2)·step), exact. step, x0 and y1 are
+/// dyadic with short numerators, so every centre is also an exact double.
+struct RasterGrid {
+  int width = 0, height = 0;
+  Rational x0, y1, step;
+  double dx0 = 0, dy1 = 0, dstep = 0;
+  double cx(int i) const { return dx0 + (i + 0.5) * dstep; }
+  double cy(int j) const { return dy1 - (j + 0.5) * dstep; }
+  Exact2 centre(int i, int j) const { return {Rational(cx(i)), Rational(cy(j))}; }
+  /// The columns (rows) whose centres may lie in [lo, hi] (a superset: callers test exactly).
+  std::array<int, 2> columns(double lo, double hi) const;
+  std::array<int, 2> rows(double lo, double hi) const;
+};
+
+/// A grid of `width` x `height` square pixels holding the picture of `polygons` with a margin.
+RasterGrid raster_grid(const std::vector<ScenePolygon>& polygons, int width, int height);
+
+/// A convex picture polygon ready for pixel tests.
+struct RasterPolygon {
+  int body = -1, face = -1;
+  int id = -1;    // global face number: faces of earlier bodies first
+  int rank = 0;   // 0: the face is toward the viewer; 1: turned away or an open surface's back
+  int poly = -1;  // index into RasterScene::source
+  /// Side k: A + B·x + C·y >= 0 inside (from corner k to k + 1), as intervals.
+  std::vector<std::array<Interval, 3>> sides;
+  std::array<double, 4> box{};  // x0, y0, x1, y1 of the picture polygon, certified outward
+  /// Depth along the sight ray, smaller nearer: z = (n0 + nx·x + ny·y) / (d0 + dx·x + dy·y).
+  std::array<Rational, 6> z;
+  std::array<Interval, 6> zi;
+};
+
+/// Counters of exact fallbacks (the interval filter could not decide).
+struct RasterCounters {
+  std::atomic<std::uint64_t> inside_tests{0}, inside_exact{0}, depth_tests{0}, depth_exact{0};
+  RasterCounters() = default;
+  RasterCounters(const RasterCounters& o)
+      : inside_tests(o.inside_tests.load()), inside_exact(o.inside_exact.load()), depth_tests(o.depth_tests.load()),
+        depth_exact(o.depth_exact.load()) {}
+  RasterCounters& operator=(const RasterCounters& o) {
+    inside_tests = o.inside_tests.load(), inside_exact = o.inside_exact.load();
+    depth_tests = o.depth_tests.load(), depth_exact = o.depth_exact.load();
+    return *this;
+  }
+};
+
+struct RasterScene {
+  Camera camera;
+  RasterGrid grid;
+  std::vector<ScenePolygon> source;
+  std::vector<RasterPolygon> polygons;
+  std::vector<std::array<int, 2>> faces;  // global face number -> (body, face)
+  mutable RasterCounters counters;
+
+  /// Whether the closed picture of polygon p contains the centre of pixel (i, j).
+  bool covers(const RasterPolygon& p, int i, int j) const;
+  /// The sign of a's side-k function at the picture point (x, y) (an exact double pair).
+  int side_sign(const RasterPolygon& p, std::size_t k, double x, double y) const;
+  /// The sign of z_a - z_b at the exact picture point (x, y): negative when a is nearer.
+  int depth_order(const RasterPolygon& a, const RasterPolygon& b, double x, double y) const;
+  /// The seen-over order at (x, y): true when a is seen over b (nearer; on a tie, rank, then id).
+  bool nearer(const RasterPolygon& a, const RasterPolygon& b, double x, double y) const;
+};
+
+/// The raster scene of `bodies` under `camera`: every face that can be seen (LineDrawing's
+/// facing and back_faces_unseen, as the vector routes) as convex picture polygons, on a grid of
+/// width x height pixels. Perspective: every body must lie in front of the eye (the caller checks).
+RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineDrawing& lines,
+                         int width, int height);
+
+/// The face seen at each pixel centre, row by row from the top: the global face number
+/// (RasterScene::faces) or -1 for the background.
+struct FaceIdBuffer {
+  int width = 0, height = 0;
+  std::vector<std::int32_t> ids;
+  std::int32_t& at(int i, int j) { return ids[static_cast<std::size_t>(j) * width + i]; }
+  std::int32_t at(int i, int j) const { return ids[static_cast<std::size_t>(j) * width + i]; }
+};
+
+/// The seen polygon at pixel (i, j) among `candidates` (polygon indices), -1 when none covers
+/// it: the reference every algorithm must equal (ray casting uses it directly).
+int seen_among(const RasterScene& s, const std::vector<int>& candidates, int i, int j);
+
+}  // namespace hlr

@@ -1,0 +1,199 @@
+// The image-space algorithms (issue 17; course notes 29-35): z-buffer, scan-line, Warnock and
+// ray casting give the same face at every pixel centre, that face is the one an independent
+// exact ray cast finds (every face of the scene, its own planes and point-in-polygon:
+// face_oracle.hpp; nearest, then toward the viewer, then the lower face number), and the vector
+// route's visible polygons of that face contain the centre. Scenes with the hard places:
+// touching and flush boxes, interpenetrating boxes, coplanar overlapping quads, an open surface
+// seen from both sides, views along faces (centres exactly on edges), perspective with the eye
+// close to a face, and fandisk.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+
+#include "algorithms/face_occluders.hpp"
+#include "algorithms/ray_casting.hpp"
+#include "algorithms/raster_scene.hpp"
+#include "algorithms/scanline.hpp"
+#include "algorithms/visible_surfaces.hpp"
+#include "algorithms/warnock.hpp"
+#include "algorithms/zbuffer.hpp"
+#include "face_oracle.hpp"
+#include "io/mesh_reader.hpp"
+
+using namespace hlr;
+
+namespace {
+
+Rational Q(const char* s) { return parse_rational(s); }
+Point3 P(const Rational& x, const Rational& y, const Rational& z) { return Point3(x, y, z); }
+Polyhedron box(int x0, int y0, int z0, int x1, int y1, int z1) { return make_box(P(x0, y0, z0), P(x1, y1, z1)); }
+Polyhedron quad(const Point3& a, const Point3& b, const Point3& c, const Point3& d) { return Polyhedron({a, b, c, d}, {{0, 1, 2, 3}}); }
+
+struct Frames {
+  RasterScene scene;
+  FaceIdBuffer z, s, w, r;
+};
+
+Frames run_all(const std::vector<const Polyhedron*>& bodies, const Camera& cam, int w, int h) {
+  LineDrawing lines = face_occluders(bodies, cam, {EdgeSelection::Feature});
+  Frames r{raster_scene(bodies, cam, lines, w, h), {}, {}, {}, {}};
+  r.z = zbuffer(r.scene);
+  r.s = scanline(r.scene);
+  r.w = warnock(r.scene);
+  r.r = ray_cast(r.scene);
+  return r;
+}
+
+void expect_same(const Frames& r) {
+  std::size_t bad_s = 0, bad_w = 0, bad_r = 0;
+  for (std::size_t k = 0; k < r.z.ids.size(); ++k) {
+    bad_s += r.s.ids[k] != r.z.ids[k];
+    bad_w += r.w.ids[k] != r.z.ids[k];
+    bad_r += r.r.ids[k] != r.z.ids[k];
+  }
+  EXPECT_EQ(bad_s, 0u) << "scan-line differs from the z-buffer";
+  EXPECT_EQ(bad_w, 0u) << "Warnock differs from the z-buffer";
+  EXPECT_EQ(bad_r, 0u) << "ray casting differs from the z-buffer";
+}
+
+// The independent oracle: the face seen at the centre of pixel (i, j).
+int oracle_face(const std::vector<test::OracleFace>& faces, const Camera& cam, const PicturePlane& pp, const Exact2& q) {
+  const Vector3 &r = pp.r(), &u = pp.u(), &d = pp.d();
+  const Rational rr = dot(r, r), uu = dot(u, u), dd = dot(d, d);
+  std::array<Rational, 3> base, dir;
+  for (int k = 0; k < 3; ++k) {
+    if (cam.perspective) base[k] = cam.eye[k], dir[k] = q[0] * dd / rr * r[k] + q[1] * dd / uu * u[k] + d[k];
+    else base[k] = q[0] / rr * r[k] + q[1] / uu * u[k], dir[k] = cam.direction[k];
+  }
+  int best = -1, best_rank = 0;
+  Rational best_near;
+  for (const test::OracleFace& f : faces) {
+    Rational nd = f.a * dir[0] + f.b * dir[1] + f.c * dir[2];
+    if (nd == 0) continue;
+    Rational t = -(f.a * base[0] + f.b * base[1] + f.c * base[2] + f.d) / nd;
+    if (cam.perspective && t <= 0) continue;
+    if (test::in_face(f, {base[0] + t * dir[0], base[1] + t * dir[1], base[2] + t * dir[2]}) < 0) continue;
+    Rational nearness = cam.perspective ? Rational(-t) : t;
+    // Toward the viewer: the face's normal against the ray's direction back to the viewer.
+    Rational toward = cam.perspective ? -(f.a * dir[0] + f.b * dir[1] + f.c * dir[2]) : nd;
+    int rank = toward > 0 ? 0 : 1;
+    if (best < 0 || nearness > best_near || (nearness == best_near && (rank < best_rank || (rank == best_rank && f.id < best)))) {
+      best = f.id, best_near = nearness, best_rank = rank;
+    }
+  }
+  return best;
+}
+
+long check_oracle(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const Frames& r, int stride) {
+  PicturePlane pp(cam);
+  auto faces = test::oracle_faces(bodies, pp);
+  long checked = 0;
+  for (int j = 0; j < r.z.height; j += stride)
+    for (int i = 0; i < r.z.width; i += stride) {
+      int want = oracle_face(faces, cam, pp, r.scene.grid.centre(i, j));
+      ++checked;
+      if (r.z.at(i, j) != want) {
+        ADD_FAILURE() << "pixel (" << i << ", " << j << "): face " << r.z.at(i, j) << ", the oracle sees " << want;
+        return checked;
+      }
+    }
+  return checked;
+}
+
+// The vector route's visible polygons of the face seen at a centre contain it (closed).
+long check_vector(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const Frames& r, int stride) {
+  LineDrawing all = face_occluders(bodies, cam, {EdgeSelection::All, 30, true, true});
+  VisibleSurfaces vs = visible_surfaces(bodies, cam, all);
+  std::map<std::pair<int, int>, const VisibleFace*> of;
+  for (const VisibleFace& f : vs.faces) of[{f.body, f.face}] = &f;
+  long checked = 0;
+  for (int j = 0; j < r.z.height; j += stride)
+    for (int i = 0; i < r.z.width; i += stride) {
+      int id = r.z.at(i, j);
+      if (id < 0) continue;
+      auto [b, f] = r.scene.faces[id];
+      auto it = of.find({b, f});
+      if (it == of.end()) {
+        ADD_FAILURE() << "face (" << b << ", " << f << ") seen at pixel (" << i << ", " << j << ") has no visible polygon";
+        return checked;
+      }
+      Exact2 q = r.scene.grid.centre(i, j);
+      bool in = false;
+      for (const VisiblePolygon& p : it->second->polygons) in = in || test::in_rings(p.outer_2d, p.holes_2d, q) >= 0;
+      ++checked;
+      if (!in) {
+        ADD_FAILURE() << "pixel (" << i << ", " << j << ") of face (" << b << ", " << f << ") outside its visible polygons";
+        return checked;
+      }
+    }
+  return checked;
+}
+
+std::vector<Camera> cameras() {
+  return {make_orthographic(Vector3(Q("1.2"), Q("-2"), Q("1.5")), Vector3(0, 0, 1)),
+          make_orthographic(Vector3(0, -1, 0), Vector3(0, 0, 1)),  // along faces: centres on edges
+          make_orthographic(Vector3(1, -1, 1), Vector3(0, 0, 1)),
+          make_perspective(P(9, -7, 6), P(2, 2, 1), Vector3(0, 0, 1)),
+          make_perspective(P(Q("5/2"), Q("-101/100"), 1), P(2, 2, 1), Vector3(0, 0, 1))};  // close to a face
+}
+
+bool all_in_front(const std::vector<const Polyhedron*>& bodies, const Camera& cam) {
+  for (const Polyhedron* p : bodies)
+    for (const Point3& v : p->vertices())
+      if (cam.perspective && cam.in_front(v) != Sign::Positive) return false;
+  return true;
+}
+
+void check_scene(const std::vector<Polyhedron>& b, int size = 48) {
+  std::vector<const Polyhedron*> ptrs;
+  for (const auto& p : b) ptrs.push_back(&p);
+  for (const Camera& cam : cameras()) {
+    if (!all_in_front(ptrs, cam)) continue;
+    Frames r = run_all(ptrs, cam, size, size * 3 / 4);
+    expect_same(r);
+    EXPECT_GT(check_oracle(ptrs, cam, r, 1), 0);
+    check_vector(ptrs, cam, r, 1);
+    if (::testing::Test::HasFailure()) return;
+  }
+}
+
+TEST(Raster, GridCentresAreExactDyadicPoints) {
+  std::vector<Polyhedron> b{box(0, 0, 0, 3, 2, 1)};
+  std::vector<const Polyhedron*> ptrs{&b[0]};
+  Camera cam = make_orthographic(Vector3(0, 0, 1), Vector3(0, 1, 0));
+  RasterScene s = raster_scene(ptrs, cam, face_occluders(ptrs, cam), 300, 200);
+  const RasterGrid& g = s.grid;
+  EXPECT_EQ(g.centre(0, 0)[0], g.x0 + g.step / 2);
+  EXPECT_EQ(g.centre(7, 5)[1], g.y1 - Rational(11, 2) * g.step);
+  EXPECT_EQ(Rational(g.dstep), g.step);
+  mpz_class den = g.step.get_den();
+  EXPECT_EQ(den & (den - 1), 0) << "the step is dyadic";
+}
+
+TEST(Raster, TouchingFlushAndInterpenetratingBoxes) {
+  check_scene({box(0, 2, 0, 3, 4, 2), box(1, 0, 0, 4, 2, 3), box(3, 2, 0, 4, 3, 1)});  // touching, flush
+  check_scene({box(0, 2, 0, 3, 4, 2), box(1, 1, 1, 4, 3, 3)});                         // interpenetrating
+}
+
+TEST(Raster, CoplanarOverlappingQuadsAndAnOpenSurface) {
+  check_scene({quad(P(0, 0, 0), P(3, 0, 0), P(3, 3, 0), P(0, 3, 0)), quad(P(1, 1, 0), P(4, 1, 0), P(4, 4, 0), P(1, 4, 0)),
+               box(1, 1, 0, 2, 2, 2)});
+  check_scene({quad(P(Q("5/2"), -2, -1), P(Q("5/2"), 6, -1), P(Q("5/2"), 6, 4), P(Q("5/2"), -2, 4)), box(0, 0, 0, 4, 4, 3)});
+}
+
+TEST(Raster, CgalMeshesFourAlgorithmsAgreeWithTheVectorRoute) {
+  for (const char* name : {"/fandisk.off", "/bunny00.off"}) {  // CGAL's meshes, when extracted
+    const std::string file = std::string(HLR_CORPUS_DIR) + name;
+    if (!std::filesystem::exists(file)) GTEST_SKIP() << "scripts/extract_corpus.sh has not run";
+    Polyhedron m = load_mesh(file);
+    std::vector<const Polyhedron*> ptrs{&m};
+    for (const Camera& cam : {make_orthographic(Vector3(1, Q("1.3"), Q("1.7"))), make_perspective(P(3, 4, 5), P(0, 0, 0))}) {
+      Frames r = run_all(ptrs, cam, 256, 256);
+      expect_same(r);
+      EXPECT_GT(check_vector(ptrs, cam, r, 3), 300) << name;
+    }
+  }
+}
+
+}  // namespace
