@@ -39,19 +39,51 @@ bool divide(Interval a, Interval b, Interval& out) {
   return finite(out);
 }
 
+FilteredLinear filtered(Interval c0, Interval cx, Interval cy) {
+  FilteredLinear f;
+  const Interval c[3] = {c0, cx, cy};
+  for (int k = 0; k < 3; ++k) f.m[k] = c[k].lo, f.r[k] = up(c[k].hi - c[k].lo);
+  return f;
+}
+
 }  // namespace
 
+int FilteredLinear::sign(double x, double y) const {
+  // |exact - (m0 + m1·x + m2·y)| <= r0 + r1·|x| + r2·|y|; evaluating the three terms in doubles
+  // errs by at most γ3 = 3u/(1 - 3u) < 4u of the sum of their magnitudes; the bound's own
+  // rounding (a sum of non-negative terms, 8 operations) is covered by the factor 1 + 2^-40,
+  // underflow by 2^-1000. Not finite: undecided.
+  const double ax = std::fabs(x), ay = std::fabs(y);
+  const double v = m[0] + m[1] * x + m[2] * y;
+  const double e = ((r[0] + r[1] * ax + r[2] * ay) + 0x1p-50 * (std::fabs(m[0]) + std::fabs(m[1]) * ax + std::fabs(m[2]) * ay)) *
+                       (1 + 0x1p-40) + 0x1p-1000;
+  if (!(e < INFINITY)) return 2;
+  if (v > e) return 1;
+  if (v < -e) return -1;
+  return 2;
+}
+
 std::array<int, 2> RasterGrid::columns(double lo, double hi) const {
-  double a = std::floor((lo - dx0) / dstep - 0.5) - 1, b = std::ceil((hi - dx0) / dstep - 0.5) + 1;
+  double a = std::floor((lo - dx0) / dxstep - 0.5) - 1, b = std::ceil((hi - dx0) / dxstep - 0.5) + 1;
   return {static_cast<int>(std::clamp(a, 0.0, static_cast<double>(width))), static_cast<int>(std::clamp(b + 1, 0.0, static_cast<double>(width)))};
 }
 
 std::array<int, 2> RasterGrid::rows(double lo, double hi) const {
-  double a = std::floor((dy1 - hi) / dstep - 0.5) - 1, b = std::ceil((dy1 - lo) / dstep - 0.5) + 1;
+  double a = std::floor((dy1 - hi) / dystep - 0.5) - 1, b = std::ceil((dy1 - lo) / dystep - 0.5) + 1;
   return {static_cast<int>(std::clamp(a, 0.0, static_cast<double>(height))), static_cast<int>(std::clamp(b + 1, 0.0, static_cast<double>(height)))};
 }
 
-RasterGrid raster_grid(const std::vector<ScenePolygon>& polygons, int width, int height) {
+namespace {
+
+// A short dyadic number m·2^k >= raw (2^19 <= m < 2^20) and its k.
+double dyadic_up(double raw, int& k) {
+  k = static_cast<int>(std::floor(std::log2(raw))) - 19;
+  return std::ldexp(std::ceil(std::ldexp(raw, -k)), k);
+}
+
+}  // namespace
+
+RasterGrid raster_grid(const std::vector<ScenePolygon>& polygons, int width, int height, double x_unit, double y_unit) {
   if (width < 1 || height < 1 || width > 65536 || height > 65536)
     throw std::invalid_argument("--size: the image must be 1 to 65536 pixels each way");
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
@@ -65,19 +97,20 @@ RasterGrid raster_grid(const std::vector<ScenePolygon>& polygons, int width, int
   for (double v : {x0, x1, y0, y1})
     if (!std::isfinite(v) || std::fabs(v) > big)
       throw std::invalid_argument("raster: the picture's coordinates lie beyond 2^500 (scale the scene: the pixel grid is exact in doubles)");
-  double raw = std::max((x1 - x0) / width, (y1 - y0) / height) * 1.04;
-  if (!(raw > small)) raw = std::max({std::fabs(x0), std::fabs(y0), 1e-300}) * 1e-3 / std::max(width, height);
-  if (!(raw > small)) throw std::invalid_argument("raster: the picture is smaller than 2^-500 (scale the scene)");
-  // step = m·2^k with 512 <= m < 1024: a short dyadic number; x0 and y1 on multiples of 2^k.
-  int k = static_cast<int>(std::floor(std::log2(raw))) - 9;
-  double m = std::ceil(std::ldexp(raw, -k));
+  // The pixel's true size, then its steps in picture units along x and y.
+  double size = std::max((x1 - x0) * x_unit / width, (y1 - y0) * y_unit / height) * 1.04;
+  if (!(size > 0)) size = std::max({std::fabs(x0) * x_unit, std::fabs(y0) * y_unit, 1e-300}) * 1e-3 / std::max(width, height);
+  const double rx = size / x_unit, ry = size / y_unit;
+  if (!(rx > small && ry > small && std::isfinite(rx) && std::isfinite(ry)))
+    throw std::invalid_argument("raster: the picture is smaller than 2^-500 (scale the scene)");
   RasterGrid g;
   g.width = width, g.height = height;
-  g.dstep = std::ldexp(m, k);
-  const double unit = std::ldexp(1.0, k);
-  g.dx0 = std::floor(((x0 + x1) / 2 - width * g.dstep / 2) / unit) * unit;
-  g.dy1 = std::ceil(((y0 + y1) / 2 + height * g.dstep / 2) / unit) * unit;
-  g.x0 = Rational(g.dx0), g.y1 = Rational(g.dy1), g.step = Rational(g.dstep);
+  int kx = 0, ky = 0;
+  g.dxstep = dyadic_up(rx, kx), g.dystep = dyadic_up(ry, ky);
+  const double ux = std::ldexp(1.0, kx), uy = std::ldexp(1.0, ky);  // x0 and y1 on multiples of these
+  g.dx0 = std::floor(((x0 + x1) / 2 - width * g.dxstep / 2) / ux) * ux;
+  g.dy1 = std::ceil(((y0 + y1) / 2 + height * g.dystep / 2) / uy) * uy;
+  g.x0 = Rational(g.dx0), g.y1 = Rational(g.dy1), g.xstep = Rational(g.dxstep), g.ystep = Rational(g.dystep);
   return g;
 }
 
@@ -90,11 +123,8 @@ bool RasterScene::covers(const RasterPolygon& p, int i, int j) const {
 }
 
 int RasterScene::side_sign(const RasterPolygon& p, std::size_t k, double x, double y) const {
-  counters.inside_tests.fetch_add(1, std::memory_order_relaxed);
-  const auto& s = p.sides[k];
-  Interval v = linear(s[0], s[1], s[2], x, y);
-  if (finite(v) && v.lo > 0) return 1;
-  if (finite(v) && v.hi < 0) return -1;
+  const int sg = p.sides[k].sign(x, y);
+  if (sg != 2) return sg;
   counters.inside_exact.fetch_add(1, std::memory_order_relaxed);
   const std::vector<Exact2>& pts = source[p.poly].pts;
   return orient2d(pts[k], pts[(k + 1) % pts.size()], Exact2{Rational(x), Rational(y)});
@@ -102,9 +132,19 @@ int RasterScene::side_sign(const RasterPolygon& p, std::size_t k, double x, doub
 
 int RasterScene::depth_order(const RasterPolygon& a, const RasterPolygon& b, double x, double y) const {
   if (a.id == b.id) return 0;  // pieces of one face: one plane
-  counters.depth_tests.fetch_add(1, std::memory_order_relaxed);
   Interval za, zb;
-  if (divide(linear(a.zi[0], a.zi[1], a.zi[2], x, y), linear(a.zi[3], a.zi[4], a.zi[5], x, y), za) &&
+  if (!camera.perspective) {  // linear depths: the filter on each, then the difference
+    const double va = a.zlin.m[0] + a.zlin.m[1] * x + a.zlin.m[2] * y, vb = b.zlin.m[0] + b.zlin.m[1] * x + b.zlin.m[2] * y;
+    const double ax = std::fabs(x), ay = std::fabs(y);
+    auto err = [&](const FilteredLinear& f) {
+      return (f.r[0] + f.r[1] * ax + f.r[2] * ay) + 0x1p-50 * (std::fabs(f.m[0]) + std::fabs(f.m[1]) * ax + std::fabs(f.m[2]) * ay);
+    };
+    // The difference's own rounding: at most u·|va - vb| <= u·(|va| + |vb|).
+    const double e = (err(a.zlin) + err(b.zlin) + 0x1p-52 * (std::fabs(va) + std::fabs(vb))) * (1 + 0x1p-40) + 0x1p-1000;
+    const double d = va - vb;
+    if (e < INFINITY && d < -e) return -1;
+    if (e < INFINITY && d > e) return 1;
+  } else if (divide(linear(a.zi[0], a.zi[1], a.zi[2], x, y), linear(a.zi[3], a.zi[4], a.zi[5], x, y), za) &&
       divide(linear(b.zi[0], b.zi[1], b.zi[2], x, y), linear(b.zi[3], b.zi[4], b.zi[5], x, y), zb)) {
     if (za.hi < zb.lo) return -1;
     if (za.lo > zb.hi) return 1;
@@ -136,7 +176,9 @@ RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Cam
   s.camera = camera;
   PicturePlane pp(camera);
   s.source = scene_polygons(bodies, pp, lines);
-  s.grid = raster_grid(s.source, width, height);
+  const double rr = to_double(dot(pp.r(), pp.r())), uu = to_double(dot(pp.u(), pp.u())), dd = to_double(dot(pp.d(), pp.d()));
+  const double k = camera.perspective ? std::sqrt(dd) : 1.0;  // perspective: the picture at the target's distance
+  s.grid = raster_grid(s.source, width, height, k / std::sqrt(rr), k / std::sqrt(uu));
   std::vector<int> offset(bodies.size() + 1, 0);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     offset[b + 1] = offset[b] + static_cast<int>(bodies[b]->num_faces());
@@ -163,6 +205,7 @@ RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Cam
     }
     p.z = it->second;
     for (int k = 0; k < 6; ++k) p.zi[k] = of(p.z[k]);
+    p.zlin = filtered(p.zi[0], p.zi[1], p.zi[2]);
     const std::size_t n = sp.pts.size();
     p.box = {INFINITY, INFINITY, -INFINITY, -INFINITY};
     std::vector<std::array<Interval, 2>> c(n);
@@ -176,7 +219,7 @@ RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Cam
       const auto &a = c[k], &b = c[(k + 1) % n];
       Interval dx = sub(b[0], a[0]), dy = sub(b[1], a[1]);
       // orient(a, b, q) = dx·(qy - ay) - dy·(qx - ax) = (dy·ax - dx·ay) - dy·qx + dx·qy
-      p.sides[k] = {sub(mul(dy, a[0]), mul(dx, a[1])), Interval{-dy.hi, -dy.lo}, dx};
+      p.sides[k] = filtered(sub(mul(dy, a[0]), mul(dx, a[1])), Interval{-dy.hi, -dy.lo}, dx);
     }
   }
   return s;

@@ -27,23 +27,35 @@ struct Interval {
   double lo = 0, hi = 0;
 };
 
+/// A linear function c0 + cx·x + cy·y of the picture point with certified double coefficients:
+/// each exact coefficient lies within r of its double m (m = the interval's low end, r its
+/// width rounded up), so a value in doubles decides a sign with a proven bound (eval_sign).
+struct FilteredLinear {
+  double m[3] = {0, 0, 0}, r[3] = {0, 0, 0};
+  /// The sign of the exact function at the exact double point (x, y), or 2 when the doubles
+  /// cannot tell (docs/design.md, "Raster": the bound).
+  int sign(double x, double y) const;
+};
+
 /// The pixel grid: the centre of pixel (i, j) (column i from the left, row j from the top) is
-/// the picture point (x0 + (i + 1/2)·step, y1 - (j + 1/2)·step), exact. step, x0 and y1 are
-/// dyadic with short numerators, so every centre is also an exact double.
+/// the picture point (x0 + (i + 1/2)·xstep, y1 - (j + 1/2)·ystep), exact. The steps, x0 and y1
+/// are dyadic with numerators of 20 bits, so every centre is also an exact double; the steps
+/// make the pixels square in true lengths to 2^-19 (the picture axes have different lengths).
 struct RasterGrid {
   int width = 0, height = 0;
-  Rational x0, y1, step;
-  double dx0 = 0, dy1 = 0, dstep = 0;
-  double cx(int i) const { return dx0 + (i + 0.5) * dstep; }
-  double cy(int j) const { return dy1 - (j + 0.5) * dstep; }
+  Rational x0, y1, xstep, ystep;
+  double dx0 = 0, dy1 = 0, dxstep = 0, dystep = 0;
+  double cx(int i) const { return dx0 + (i + 0.5) * dxstep; }
+  double cy(int j) const { return dy1 - (j + 0.5) * dystep; }
   Exact2 centre(int i, int j) const { return {Rational(cx(i)), Rational(cy(j))}; }
   /// The columns (rows) whose centres may lie in [lo, hi] (a superset: callers test exactly).
   std::array<int, 2> columns(double lo, double hi) const;
   std::array<int, 2> rows(double lo, double hi) const;
 };
 
-/// A grid of `width` x `height` square pixels holding the picture of `polygons` with a margin.
-RasterGrid raster_grid(const std::vector<ScenePolygon>& polygons, int width, int height);
+/// A grid of `width` x `height` square pixels holding the picture of `polygons` with a margin;
+/// `x_unit`, `y_unit`: the true length of one picture unit along x and y (picture_plane.hpp).
+RasterGrid raster_grid(const std::vector<ScenePolygon>& polygons, int width, int height, double x_unit, double y_unit);
 
 /// A convex picture polygon ready for pixel tests.
 struct RasterPolygon {
@@ -51,24 +63,23 @@ struct RasterPolygon {
   int id = -1;    // global face number: faces of earlier bodies first
   int rank = 0;   // 0: the face is toward the viewer; 1: turned away or an open surface's back
   int poly = -1;  // index into RasterScene::source
-  /// Side k: A + B·x + C·y >= 0 inside (from corner k to k + 1), as intervals.
-  std::vector<std::array<Interval, 3>> sides;
+  /// Side k: A + B·x + C·y >= 0 inside (from corner k to k + 1), certified doubles.
+  std::vector<FilteredLinear> sides;
   std::array<double, 4> box{};  // x0, y0, x1, y1 of the picture polygon, certified outward
-  /// Depth along the sight ray, smaller nearer: z = (n0 + nx·x + ny·y) / (d0 + dx·x + dy·y).
+  /// Depth along the sight ray, smaller nearer: z = (n0 + nx·x + ny·y) / (d0 + dx·x + dy·y)
+  /// (orthographic: the denominator is 1; perspective: the numerator is constant).
   std::array<Rational, 6> z;
   std::array<Interval, 6> zi;
+  FilteredLinear zlin;  // orthographic: the depth itself, for differences of two depths
 };
 
-/// Counters of exact fallbacks (the interval filter could not decide).
+/// Counters of exact fallbacks (the double filter could not decide).
 struct RasterCounters {
-  std::atomic<std::uint64_t> inside_tests{0}, inside_exact{0}, depth_tests{0}, depth_exact{0};
+  std::atomic<std::uint64_t> inside_exact{0}, depth_exact{0};
   RasterCounters() = default;
-  RasterCounters(const RasterCounters& o)
-      : inside_tests(o.inside_tests.load()), inside_exact(o.inside_exact.load()), depth_tests(o.depth_tests.load()),
-        depth_exact(o.depth_exact.load()) {}
+  RasterCounters(const RasterCounters& o) : inside_exact(o.inside_exact.load()), depth_exact(o.depth_exact.load()) {}
   RasterCounters& operator=(const RasterCounters& o) {
-    inside_tests = o.inside_tests.load(), inside_exact = o.inside_exact.load();
-    depth_tests = o.depth_tests.load(), depth_exact = o.depth_exact.load();
+    inside_exact = o.inside_exact.load(), depth_exact = o.depth_exact.load();
     return *this;
   }
 };
@@ -102,6 +113,7 @@ RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Cam
 struct FaceIdBuffer {
   int width = 0, height = 0;
   std::vector<std::int32_t> ids;
+  std::vector<std::int32_t> polygons;  // the polygon seen (RasterScene::polygons), -1: none
   std::int32_t& at(int i, int j) { return ids[static_cast<std::size_t>(j) * width + i]; }
   std::int32_t at(int i, int j) const { return ids[static_cast<std::size_t>(j) * width + i]; }
 };

@@ -21,8 +21,8 @@ double up(double v) { return std::nextafter(v, kInf); }
 // certain sign (a nearly horizontal side): the caller tests centres one by one.
 bool span(const RasterPolygon& p, double y, Interval& L, Interval& R) {
   L = {-kInf, -kInf}, R = {kInf, kInf};
-  for (const auto& s : p.sides) {  // A + B·x + C·y >= 0
-    const Interval &A = s[0], &B = s[1], &C = s[2];
+  for (const FilteredLinear& s : p.sides) {  // A + B·x + C·y >= 0, each within [m, m + r]
+    const Interval A{s.m[0], up(s.m[0] + s.r[0])}, B{s.m[1], up(s.m[1] + s.r[1])}, C{s.m[2], up(s.m[2] + s.r[2])};
     const double c0 = C.lo * y, c1 = C.hi * y;
     const Interval cy{down(std::min(c0, c1)), up(std::max(c0, c1))};
     const Interval sum{down(A.lo + cy.lo), up(A.hi + cy.hi)};

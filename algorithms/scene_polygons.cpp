@@ -31,6 +31,7 @@ bool add(std::vector<ScenePolygon>& out, ScenePolygon p) {
   if (a < 0) {
     std::reverse(p.pts.begin(), p.pts.end());
     std::reverse(p.corners.begin(), p.corners.end());
+    std::reverse(p.verts.begin(), p.verts.end());
   }
   out.push_back(std::move(p));
   return true;
@@ -50,12 +51,13 @@ std::vector<ScenePolygon> scene_polygons(const std::vector<const Polyhedron*>& b
       if (p.planes()[f].is_degenerate()) continue;
       if (b < lines.back_faces_unseen.size() && lines.back_faces_unseen[b] && lines.facing[b][f] < 0) continue;
       ScenePolygon whole{static_cast<int>(b), static_cast<int>(f), 0, {}, {}};
-      for (int v : p.faces()[f]) whole.corners.push_back(p.vertices()[v]), whole.pts.push_back(pic[v]);
+      for (int v : p.faces()[f]) whole.corners.push_back(p.vertices()[v]), whole.pts.push_back(pic[v]), whole.verts.push_back(v);
       Rational a = picture_area2(whole.pts);
       if (a == 0) continue;
       if (a < 0) {
         std::reverse(whole.pts.begin(), whole.pts.end());
         std::reverse(whole.corners.begin(), whole.corners.end());
+        std::reverse(whole.verts.begin(), whole.verts.end());
       }
       if (whole.pts.size() == 3) {  // a triangle with an area: convex, no corner on a straight side
         out.push_back(std::move(whole));
@@ -66,7 +68,7 @@ std::vector<ScenePolygon> scene_polygons(const std::vector<const Polyhedron*>& b
         const std::size_t n = whole.pts.size();
         for (std::size_t i = 0; i < n; ++i)  // drop corners on a straight side
           if (orient2d(whole.pts[(i + n - 1) % n], whole.pts[i], whole.pts[(i + 1) % n]) != 0)
-            clean.pts.push_back(whole.pts[i]), clean.corners.push_back(whole.corners[i]);
+            clean.pts.push_back(whole.pts[i]), clean.corners.push_back(whole.corners[i]), clean.verts.push_back(whole.verts[i]);
         out.push_back(std::move(clean));
         continue;
       }
@@ -78,6 +80,7 @@ std::vector<ScenePolygon> scene_polygons(const std::vector<const Polyhedron*>& b
           const int v = p.faces()[f][t.v[k]];
           tri.corners.push_back(p.vertices()[v]);
           tri.pts.push_back(pic[v]);
+          tri.verts.push_back(v);
         }
         if (add(out, std::move(tri))) ++piece;
       }

@@ -19,6 +19,7 @@ struct ScenePolygon {
   int piece = 0;                 // which convex piece of the face (0 for a convex face)
   std::vector<Point3> corners;   // exact, on the face
   std::vector<Exact2> pts;       // their picture points, counter-clockwise
+  std::vector<int> verts;        // their vertex numbers in the body
 };
 
 /// The polygons of every body; `lines` gives the facing of each face and whether a body's

@@ -12,6 +12,7 @@ FaceIdBuffer face_ids(const RasterScene& s, const std::vector<int>& at) {
   out.width = s.grid.width, out.height = s.grid.height;
   out.ids.resize(at.size());
   for (std::size_t k = 0; k < at.size(); ++k) out.ids[k] = at[k] < 0 ? -1 : s.polygons[at[k]].id;
+  out.polygons.assign(at.begin(), at.end());
   return out;
 }
 

@@ -20,6 +20,9 @@ void add_explain_command(CLI::App& app, int& exit_code);
 /// Registers `hlr clip`.
 void add_clip_command(CLI::App& app, int& exit_code);
 
+/// `hlr raster`: the image-space algorithms to PNG.
+void add_raster_command(CLI::App& app, int& exit_code);
+
 /// `hlr horizon`: the exact floating horizon of a surface y = f(x, z).
 void add_horizon_command(CLI::App& app, int& exit_code);
 

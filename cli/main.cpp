@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   hlr::cli::add_decompose_command(app, exit_code);
   hlr::cli::add_explain_command(app, exit_code);
   hlr::cli::add_horizon_command(app, exit_code);
+  hlr::cli::add_raster_command(app, exit_code);
   // A mistyped command: name the nearest one.
   if (argc > 1 && argv[1][0] != '-') {
     std::string given = argv[1], best;
@@ -46,7 +47,7 @@ int main(int argc, char** argv) {
     if (!known) {
       std::cerr << "hlr: unknown command '" << given << "'";
       if (best_d <= 3) std::cerr << "; did you mean '" << best << "'?";
-      std::cerr << " (commands: info, render, clip, decompose, explain, horizon; hlr --help)\n";
+      std::cerr << " (commands: info, render, raster, clip, decompose, explain, horizon; hlr --help)\n";
       return 2;
     }
   }

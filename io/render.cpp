@@ -330,6 +330,23 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   return r;
 }
 
+Lighting render_lighting(const RenderResult& r) { return scene_lighting(*r.scenes, r.camera); }
+
+Material body_material(const RenderResult& r, std::size_t b) { return material_of(r, b); }
+
+std::vector<std::vector<Rgb>> flat_face_colours(const RenderResult& r) {
+  const Lighting light = render_lighting(r);
+  std::vector<std::vector<Rgb>> out(r.bodies.size());
+  for (std::size_t b = 0; b < r.bodies.size(); ++b) {
+    out[b].resize(r.bodies[b]->body.num_faces());
+    ParallelLoop().for_each(out[b].size(), 256, [&](std::size_t f) {
+      const bool back = b < r.drawing.facing.size() && f < r.drawing.facing[b].size() && r.drawing.facing[b][f] < 0;
+      out[b][f] = face_colour(r, b, f, light, back);
+    });
+  }
+  return out;
+}
+
 void add_surface_fills(Plot& plot, const RenderResult& r) {
   if (!r.surfaces && !r.priority && !r.transparent) return;
   Projector proj = drawing_projector(r.drawing, r.camera);

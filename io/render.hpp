@@ -106,6 +106,17 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& options = {}
 /// polygon of the list, in the order painted); also widens the plot's bounds.
 void add_surface_fills(Plot& plot, const RenderResult& result);
 
+/// The lights a render shades with: the scene's `lighting:`, else its `light:` as one
+/// directional light, else the default lights for the camera.
+Lighting render_lighting(const RenderResult& result);
+
+/// The material of body b (its own, else the palette's default colour).
+Material body_material(const RenderResult& result, std::size_t body);
+
+/// Every face's flat colour (per body, per face) for the side the viewer sees (facing from
+/// result.drawing; -1: the back side).
+std::vector<std::vector<Rgb>> flat_face_colours(const RenderResult& result);
+
 /// Loads mesh files (.off .obj .stl .ply) and scene files (.yaml .yml .json), then renders.
 /// Also throws InputError (file and line) for bad input.
 RenderResult render_files(const std::vector<std::string>& inputs, const RenderOptions& options = {});

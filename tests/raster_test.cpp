@@ -8,6 +8,7 @@
 // close to a face, and fandisk.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -164,11 +165,20 @@ TEST(Raster, GridCentresAreExactDyadicPoints) {
   Camera cam = make_orthographic(Vector3(0, 0, 1), Vector3(0, 1, 0));
   RasterScene s = raster_scene(ptrs, cam, face_occluders(ptrs, cam), 300, 200);
   const RasterGrid& g = s.grid;
-  EXPECT_EQ(g.centre(0, 0)[0], g.x0 + g.step / 2);
-  EXPECT_EQ(g.centre(7, 5)[1], g.y1 - Rational(11, 2) * g.step);
-  EXPECT_EQ(Rational(g.dstep), g.step);
-  mpz_class den = g.step.get_den();
-  EXPECT_EQ(den & (den - 1), 0) << "the step is dyadic";
+  EXPECT_EQ(g.centre(0, 0)[0], g.x0 + g.xstep / 2);
+  EXPECT_EQ(g.centre(7, 5)[1], g.y1 - Rational(11, 2) * g.ystep);
+  EXPECT_EQ(Rational(g.dxstep), g.xstep);
+  for (const Rational& step : {g.xstep, g.ystep}) {
+    mpz_class den = step.get_den();
+    EXPECT_EQ(den & (den - 1), 0) << "the step is dyadic";
+  }
+  // Square pixels in true lengths although the picture axes differ in length.
+  Camera slant = make_orthographic(Vector3(Q("1.2"), Q("-2"), Q("1.5")), Vector3(0, 0, 1));
+  RasterScene t = raster_scene(ptrs, slant, face_occluders(ptrs, slant), 300, 200);
+  PicturePlane pp(slant);
+  const double wx = t.grid.dxstep / std::sqrt(to_double(dot(pp.r(), pp.r()))), wy = t.grid.dystep / std::sqrt(to_double(dot(pp.u(), pp.u())));
+  EXPECT_NE(dot(pp.r(), pp.r()), dot(pp.u(), pp.u()));
+  EXPECT_NEAR(wx / wy, 1.0, 1e-5);
 }
 
 TEST(Raster, TouchingFlushAndInterpenetratingBoxes) {
