@@ -1,6 +1,7 @@
 // The picture plane in exact numbers (course notes section 20). See picture_plane.hpp.
 #include "algorithms/picture_plane.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hlr {
@@ -13,6 +14,25 @@ Rational dot3(const Rational& x, const Rational& y, const Rational& z, const Vec
 }  // namespace
 
 int orient2d(const Exact2& a, const Exact2& b, const Exact2& c) {
+  // The double filter of docs/design.md ("Orientation of three points"): with every non-zero
+  // coordinate's double (mpq_get_d, relative error below u = 2^-52) in [2^-400, 2^400], the
+  // doubles' determinant is within 64·u·Mx·My of the exact one.
+  double v[6];
+  const Rational* q[6] = {&a[0], &a[1], &b[0], &b[1], &c[0], &c[1]};
+  bool ok = true;
+  for (int k = 0; k < 6; ++k) {
+    v[k] = q[k]->get_d();
+    const double m = std::fabs(v[k]);
+    ok = ok && (m == 0 ? sgn(*q[k]) == 0 : (m >= 0x1p-400 && m <= 0x1p400));
+  }
+  if (ok) {
+    const double det = (v[2] - v[0]) * (v[5] - v[1]) - (v[3] - v[1]) * (v[4] - v[0]);
+    const double mx = std::max({std::fabs(v[0]), std::fabs(v[2]), std::fabs(v[4])});
+    const double my = std::max({std::fabs(v[1]), std::fabs(v[3]), std::fabs(v[5])});
+    const double bound = 64 * 0x1p-52 * mx * my;
+    if (det > bound) return 1;
+    if (det < -bound) return -1;
+  }
   Rational det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
   return sgn(det);
 }

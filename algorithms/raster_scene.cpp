@@ -8,6 +8,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "algorithms/parallel.hpp"
+
 namespace hlr {
 namespace {
 
@@ -171,7 +173,7 @@ int seen_among(const RasterScene& s, const std::vector<int>& candidates, int i, 
 }
 
 RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineDrawing& lines,
-                         int width, int height) {
+                         int width, int height, unsigned threads) {
   RasterScene s;
   s.camera = camera;
   PicturePlane pp(camera);
@@ -184,26 +186,28 @@ RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Cam
     offset[b + 1] = offset[b] + static_cast<int>(bodies[b]->num_faces());
     for (std::size_t f = 0; f < bodies[b]->num_faces(); ++f) s.faces.push_back({static_cast<int>(b), static_cast<int>(f)});
   }
-  std::map<int, std::array<Rational, 6>> depth;  // per face
+  for (const Polyhedron* b : bodies) b->planes();  // computed once, before the parallel loops
+  // Each face's depth function, once per face seen (on all cores).
+  std::vector<std::array<Rational, 6>> depth(s.faces.size());
+  std::vector<char> used(s.faces.size(), 0);
+  for (const ScenePolygon& sp : s.source) used[offset[sp.body] + sp.face] = 1;
+  ParallelLoop(threads).for_each(s.faces.size(), 256, [&](std::size_t id) {
+    if (!used[id]) return;
+    auto [b, f] = s.faces[id];
+    auto [num, den] = pp.ray_parameter(bodies[b]->planes()[f]);
+    if (!camera.perspective)  // z = -s = -num / den, den constant
+      depth[id] = {-num.c0 / den.c0, -num.cx / den.c0, -num.cy / den.c0, Rational(1), Rational(0), Rational(0)};
+    else  // z = l = num / den, num constant
+      depth[id] = {num.c0, num.cx, num.cy, den.c0, den.cx, den.cy};
+  });
   s.polygons.resize(s.source.size());
-  for (std::size_t i = 0; i < s.source.size(); ++i) {
+  ParallelLoop(threads).for_each(s.source.size(), 256, [&](std::size_t i) {
     const ScenePolygon& sp = s.source[i];
     RasterPolygon& p = s.polygons[i];
     p.body = sp.body, p.face = sp.face, p.poly = static_cast<int>(i);
     p.id = offset[sp.body] + sp.face;
     p.rank = lines.facing[sp.body][sp.face] > 0 ? 0 : 1;
-    auto it = depth.find(p.id);
-    if (it == depth.end()) {
-      auto [num, den] = pp.ray_parameter(bodies[sp.body]->planes()[sp.face]);
-      std::array<Rational, 6> z;
-      if (!camera.perspective) {  // z = -s = -num / den, den constant
-        z = {-num.c0 / den.c0, -num.cx / den.c0, -num.cy / den.c0, Rational(1), Rational(0), Rational(0)};
-      } else {  // z = l = num / den, num constant
-        z = {num.c0, num.cx, num.cy, den.c0, den.cx, den.cy};
-      }
-      it = depth.emplace(p.id, z).first;
-    }
-    p.z = it->second;
+    p.z = depth[p.id];
     for (int k = 0; k < 6; ++k) p.zi[k] = of(p.z[k]);
     p.zlin = filtered(p.zi[0], p.zi[1], p.zi[2]);
     const std::size_t n = sp.pts.size();
@@ -221,7 +225,7 @@ RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Cam
       // orient(a, b, q) = dx·(qy - ay) - dy·(qx - ax) = (dy·ax - dx·ay) - dy·qx + dx·qy
       p.sides[k] = filtered(sub(mul(dy, a[0]), mul(dx, a[1])), Interval{-dy.hi, -dy.lo}, dx);
     }
-  }
+  });
   return s;
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "algorithms/face_triangles.hpp"
+#include "algorithms/parallel.hpp"
 
 namespace hlr {
 
@@ -44,15 +45,14 @@ std::vector<ScenePolygon> scene_polygons(const std::vector<const Polyhedron*>& b
   std::vector<ScenePolygon> out;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const Polyhedron& p = *bodies[b];
-    std::vector<Exact2> pic;  // every vertex projected once
-    pic.reserve(p.num_vertices());
-    for (const Point3& v : p.vertices()) pic.push_back(pp.project(v));
+    std::vector<Exact2> pic(p.num_vertices());  // every vertex projected once, on all cores
+    ParallelLoop().for_each(pic.size(), 1024, [&](std::size_t i) { pic[i] = pp.project(p.vertices()[i]); });
     for (std::size_t f = 0; f < p.num_faces(); ++f) {
       if (p.planes()[f].is_degenerate()) continue;
       if (b < lines.back_faces_unseen.size() && lines.back_faces_unseen[b] && lines.facing[b][f] < 0) continue;
       ScenePolygon whole{static_cast<int>(b), static_cast<int>(f), 0, {}, {}};
       for (int v : p.faces()[f]) whole.corners.push_back(p.vertices()[v]), whole.pts.push_back(pic[v]), whole.verts.push_back(v);
-      Rational a = picture_area2(whole.pts);
+      const int a = whole.pts.size() == 3 ? orient2d(whole.pts[0], whole.pts[1], whole.pts[2]) : sgn(picture_area2(whole.pts));
       if (a == 0) continue;
       if (a < 0) {
         std::reverse(whole.pts.begin(), whole.pts.end());

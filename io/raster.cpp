@@ -246,7 +246,7 @@ RasterResult raster(std::vector<Scene> scenes, const RasterOptions& o) {
   r.seconds.setup = since(t0);
   t0 = Clock::now();
   r.width = o.width, r.height = o.height;
-  r.scene = raster_scene(polys, cam, r.render.drawing, o.width * o.samples, o.height * o.samples);
+  r.scene = raster_scene(polys, cam, r.render.drawing, o.width * o.samples, o.height * o.samples, o.threads);
   r.seconds.scene = since(t0);
   t0 = Clock::now();
   switch (o.algorithm) {
