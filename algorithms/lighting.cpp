@@ -89,4 +89,13 @@ double transparency_at(const Material& m, double abs_cos) {
   return m.transparency;
 }
 
+Rgb surface_colour(const Material& m, const Vec3d& p, const Vec3d& n) {
+  if (!(m.checker > 0)) return m.colour;
+  const int drop = std::fabs(n[0]) >= std::fabs(n[1]) && std::fabs(n[0]) >= std::fabs(n[2]) ? 0 : std::fabs(n[1]) >= std::fabs(n[2]) ? 1 : 2;
+  long parity = 0;
+  for (int c = 0; c < 3; ++c)
+    if (c != drop) parity += static_cast<long>(std::floor(p[c] / m.checker));
+  return (parity & 1) ? m.colour2 : m.colour;
+}
+
 }  // namespace hlr

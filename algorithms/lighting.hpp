@@ -28,6 +28,16 @@ struct Material {
   enum class TransparencyModel { Linear, Kay, PathLength };
   double transparency = 0, transparency_min = 0, transparency_power = 2;
   TransparencyModel transparency_model = TransparencyModel::Linear;
+  /// Ray tracing (course notes 43-45, `hlr raster --bounces`): the fraction of light mirrored
+  /// (k_r), and the refractive index for the light that passes (the transparency, k_t), exact
+  /// as the scene gave it (total internal reflection at the first surface is decided with it).
+  double reflection = 0;
+  double ior = 1.5;
+  Rational ior_exact = Rational(3, 2);
+  /// A solid checker texture (notes 42: a procedural texture): cells of this size alternate
+  /// between the colour and colour2 by the parity of floor(x/s) + floor(y/s) + floor(z/s).
+  double checker = 0;
+  Rgb colour2{0.1, 0.1, 0.1};
 };
 
 /// The transparency τ of a face of material m whose unit normal makes |cos φ| = abs_cos with
@@ -66,6 +76,11 @@ Lighting default_lighting(const Vec3d& toward_viewer, const Vec3d& up, const Vec
 
 /// Default material colours per body (a muted palette, repeating).
 Rgb palette_colour(int body);
+
+/// The material's colour at point p of a face with normal n: its checker texture's cell
+/// colour (the two coordinates across the normal's dominant axis, so that a face lying in a
+/// cell boundary plane does not flicker), else its colour.
+Rgb surface_colour(const Material& m, const Vec3d& p, const Vec3d& n);
 
 /// "#rrggbb" of a colour (rounded to 8 bits per channel).
 std::array<int, 3> rgb8(const Rgb& c);

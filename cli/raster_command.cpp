@@ -20,7 +20,7 @@ struct RasterArgs {
   std::string output, algorithm = "zbuffer", size = "512x512", view, eye, target, up, up_axis = "y";
   std::string shading = "flat", filter = "box", ids, camera, background = "#ffffff";
   double smooth = 40;
-  int samples = 1;
+  int samples = 1, bounces = 0;
   unsigned threads = 0;
   bool timings = false;
 };
@@ -65,6 +65,8 @@ RasterOptions raster_options(const RasterArgs& a) {
   if (!(a.smooth >= 0 && a.smooth <= 180)) throw std::invalid_argument("--smooth must be an angle from 0 to 180 degrees");
   o.smooth_degrees = a.smooth;
   o.samples = a.samples;
+  if (a.bounces < 0 || a.bounces > 32) throw std::invalid_argument("--bounces must be 0 to 32");
+  o.bounces = a.bounces;
   o.filter = a.filter == "tent" ? RasterFilter::Tent : RasterFilter::Box;
   o.threads = a.threads;
   const std::string& b = a.background;
@@ -134,6 +136,9 @@ void add_raster_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--smooth", a->smooth, "Gouraud and Phong: faces within this angle share vertex normals (default 40 degrees)");
   cmd->add_option("--samples", a->samples, "Antialiasing: N x N samples per pixel (default 1, at most 16)");
   cmd->add_option("--filter", a->filter, "How samples combine: box (default) or tent")->check(CLI::IsMember({"box", "tent"}));
+  cmd->add_option("--bounces", a->bounces,
+                  "Whitted ray tracing from the exact first hit: levels of reflected and refracted rays, with shadow rays "
+                  "(default 0: local shading only; materials: reflection, transparency, ior)");
   cmd->add_option("--background", a->background, "Background colour #rrggbb (default #ffffff)");
   cmd->add_option("--ids", a->ids, "Also write the face seen at every sample centre: .png (16-bit, face + 1; legend in FILE.json) or .json");
   cmd->add_option("--camera", a->camera, "Also write the exact sample grid as JSON (origin, right and down steps: check any pixel exactly)");

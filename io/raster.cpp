@@ -5,12 +5,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "algorithms/parallel.hpp"
 #include "algorithms/ray_casting.hpp"
+#include "algorithms/ray_tracing.hpp"
 #include "algorithms/scanline.hpp"
 #include "algorithms/warnock.hpp"
 #include "algorithms/zbuffer.hpp"
@@ -121,6 +123,20 @@ class Shader {
  public:
   Shader(const RasterResult& r, const RasterOptions& o) : r_(r), o_(o), lift_(r.render.camera), light_(render_lighting(r.render)) {
     flat_ = flat_face_colours(r.render);
+    for (std::size_t b = 0; b < r.render.bodies.size(); ++b) materials_.push_back(body_material(r.render, b));
+    if (o.bounces > 0) {
+      std::vector<const Polyhedron*> polys;
+      std::vector<Material> materials;
+      for (std::size_t b = 0; b < r.render.bodies.size(); ++b) {
+        polys.push_back(&r.render.bodies[b]->body);
+        materials.push_back(body_material(r.render, b));
+      }
+      WhittedOptions wo;
+      wo.depth = o.bounces;
+      wo.background = o.background;
+      whitted_ = std::make_unique<WhittedScene>(polys, std::move(materials), light_, wo);
+      return;
+    }
     if (o.shading == RasterShading::Flat) return;
     const double cs = std::cos(o.smooth_degrees * M_PI / 180);
     for (std::size_t b = 0; b < r.render.bodies.size(); ++b) normals_.push_back(body_normals(r.render.bodies[b]->body));
@@ -135,7 +151,8 @@ class Shader {
       const ScenePolygon& sp = polys[p];
       const BodyNormals& n = normals_[sp.body];
       const bool back = r.render.drawing.facing[sp.body][sp.face] < 0;
-      const Material m = body_material(r.render, sp.body);
+      Material m = body_material(r.render, sp.body);
+      if (m.checker > 0) m.colour = {1, 1, 1};  // Gouraud: the texture modulates the interpolated light
       Corners& c = corners_[p];
       const Plane& h = r.render.bodies[sp.body]->body.planes()[sp.face];
       c.n = {to_double(h.normal().x()), to_double(h.normal().y()), to_double(h.normal().z())};
@@ -155,7 +172,19 @@ class Shader {
     const int p = r_.ids.polygons[sample];
     if (p < 0) return o_.background;
     const ScenePolygon& sp = r_.scene.source[p];
-    if (o_.shading == RasterShading::Flat) return flat_[sp.body][sp.face];
+    if (whitted_) return traced(sp, x, y);
+    const Material& mat = materials_[sp.body];
+    if (o_.shading == RasterShading::Flat && !(mat.checker > 0)) return flat_[sp.body][sp.face];
+    if (o_.shading == RasterShading::Flat) {  // a textured face: its colour at the point, lit as the face
+      const Plane& h = r_.render.bodies[sp.body]->body.planes()[sp.face];
+      const Vec3d n{to_double(h.normal().x()), to_double(h.normal().y()), to_double(h.normal().z())};
+      const Vec3d at = lift_.at(x, y, n, to_double(h.d()));
+      Material m = mat;
+      m.colour = surface_colour(mat, at, n);
+      Vec3d un = unit(n);
+      if (r_.render.drawing.facing[sp.body][sp.face] < 0) un = {-un[0], -un[1], -un[2]};
+      return shade(m, light_, at, un, lift_.to_viewer(at));
+    }
     const Corners& c = corners_[p];
     Vec3d at = lift_.at(x, y, c.n, c.offset);
     double w[3];
@@ -165,16 +194,41 @@ class Shader {
       Rgb out{0, 0, 0};
       for (int t = 0; t < 3; ++t)
         for (int ch = 0; ch < 3; ++ch) out[ch] += w[t] * c.colour[idx[t]][ch];
+      if (mat.checker > 0) {
+        const Rgb t = surface_colour(mat, at, c.n);
+        for (int ch = 0; ch < 3; ++ch) out[ch] *= t[ch];
+      }
       for (double& ch : out) ch = std::clamp(ch, 0.0, 1.0);
       return out;
     }
     Vec3d nn{0, 0, 0};
     for (int t = 0; t < 3; ++t)
       for (int ch = 0; ch < 3; ++ch) nn[ch] += w[t] * c.normal[idx[t]][ch];
-    return shade(c.material, light_, at, unit(nn), lift_.to_viewer(at));
+    Material m = c.material;
+    m.colour = surface_colour(mat, at, c.n);
+    return shade(m, light_, at, unit(nn), lift_.to_viewer(at));
   }
 
  private:
+  // Whitted: the exact first hit in doubles, the ray's direction, and total internal reflection
+  // there decided exactly when the material could reflect totally on entering (ior < 1).
+  Rgb traced(const ScenePolygon& sp, double x, double y) const {
+    const Plane& h = r_.render.bodies[sp.body]->body.planes()[sp.face];
+    const Vec3d n{to_double(h.normal().x()), to_double(h.normal().y()), to_double(h.normal().z())};
+    const Vec3d at = lift_.at(x, y, n, to_double(h.d()));
+    const Vec3d dir = lift_.persp ? unit(minus(at, lift_.e)) : Vec3d{-lift_.v[0], -lift_.v[1], -lift_.v[2]};
+    const Material m = body_material(r_.render, sp.body);
+    bool tir = false;
+    if (m.transparency > 0 && m.ior_exact < 1) {
+      const Camera& cam = r_.render.camera;
+      const Point3 X = PicturePlane(cam).lift(Exact2{Rational(x), Rational(y)}, h);
+      std::array<Rational, 3> d;
+      for (int k = 0; k < 3; ++k) d[k] = cam.perspective ? X[k] - cam.eye[k] : Rational(-cam.direction[k]);
+      tir = exact_total_internal_reflection(d, {h.normal().x(), h.normal().y(), h.normal().z()}, 1 / m.ior_exact);
+    }
+    return whitted_->shade_first(sp.body, sp.face, at, unit(dir), tir);
+  }
+
   struct Corners {
     std::vector<Vec3d> at, normal;
     std::vector<Rgb> colour;
@@ -189,6 +243,8 @@ class Shader {
   std::vector<std::vector<Rgb>> flat_;
   std::vector<BodyNormals> normals_;
   std::vector<Corners> corners_;
+  std::unique_ptr<WhittedScene> whitted_;
+  std::vector<Material> materials_;
 };
 
 // The image from the samples: each pixel the filter's weighted mean of its samples (box: its

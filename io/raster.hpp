@@ -35,6 +35,9 @@ struct RasterOptions {
   int samples = 1;
   RasterFilter filter = RasterFilter::Box;
   Rgb background{1, 1, 1};
+  /// Whitted ray tracing (notes 43-45, ray_tracing.hpp) from the exact first hit: levels of
+  /// reflected and refracted rays, with shadow rays (0: the local shading alone).
+  int bounces = 0;
 };
 
 struct RasterTimes {

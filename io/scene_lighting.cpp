@@ -88,7 +88,7 @@ Lighting parse_lighting(const YamlContext& c, const YAML::Node& n) {
 
 Material parse_material(const YamlContext& c, const YAML::Node& n, int body) {
   c.check_keys(n, "a material", {"colour", "color", "ka", "kd", "ks", "shininess", "transparency", "transparency_model",
-                                 "transparency_min", "transparency_power"});
+                                 "transparency_min", "transparency_power", "reflection", "ior", "checker", "colour2", "color2"});
   Material m;
   m.colour = palette_colour(body);
   if (n["colour"] && n["color"]) c.fail(n, "give 'colour' or 'color', not both");
@@ -101,6 +101,17 @@ Material parse_material(const YamlContext& c, const YAML::Node& n, int body) {
   if (n["transparency"]) m.transparency = real(c, n["transparency"], "transparency", 0, 1);
   if (n["transparency_min"]) m.transparency_min = real(c, n["transparency_min"], "transparency_min", 0, 1);
   if (n["transparency_power"]) m.transparency_power = real(c, n["transparency_power"], "transparency_power", 0, 100);
+  if (n["reflection"]) m.reflection = real(c, n["reflection"], "reflection", 0, 1);
+  if (n["ior"]) {
+    m.ior_exact = c.number(n["ior"], "ior");
+    m.ior = to_double(m.ior_exact);
+    if (!(m.ior >= 0.1 && m.ior <= 10)) c.fail(n["ior"], "ior must be between 1/10 and 10");
+  }
+  if (m.reflection + m.transparency > 1) c.fail(n, "reflection + transparency must not exceed 1");
+  if (n["checker"]) m.checker = real(c, n["checker"], "checker", 0, 1e300);
+  if (n["colour2"] && n["color2"]) c.fail(n, "give 'colour2' or 'color2', not both");
+  if (n["colour2"]) m.colour2 = colour(c, n["colour2"], "colour2");
+  if (n["color2"]) m.colour2 = colour(c, n["color2"], "colour2");
   if (n["transparency_model"]) {
     const std::string t = c.text(n["transparency_model"], "transparency_model");
     if (t == "linear") m.transparency_model = Material::TransparencyModel::Linear;
