@@ -11,6 +11,7 @@
 #include "io/explain.hpp"
 #include "io/json_writer.hpp"
 #include "io/problem.hpp"
+#include "io/raster.hpp"
 #include "io/plot_output.hpp"
 #include "io/render.hpp"
 #include "io/svg_writer.hpp"
@@ -217,6 +218,64 @@ Drawing render(const py::object& input, std::optional<py::sequence> view, std::o
   return Drawing{std::make_shared<hlr::RenderResult>(hlr::render_files(inputs, o))};
 }
 
+// `raster(...)`: the image-space algorithms (io/raster.hpp).
+struct Image {
+  std::shared_ptr<hlr::RasterResult> r;
+  py::bytes png() const { return py::bytes(hlr::png_rgb(r->width, r->height, r->rgb)); }
+  // The face seen at every sample, row by row from the top: (body, face) or None.
+  py::list faces() const {
+    py::list rows;
+    for (int j = 0; j < r->ids.height; ++j) {
+      py::list row;
+      for (int i = 0; i < r->ids.width; ++i) {
+        int id = r->ids.at(i, j);
+        if (id < 0) row.append(py::none());
+        else row.append(py::make_tuple(r->scene.faces[id][0], r->scene.faces[id][1]));
+      }
+      rows.append(row);
+    }
+    return rows;
+  }
+  // The exact centre of sample (i, j) in world coordinates (Fractions).
+  py::tuple centre(int i, int j) const {
+    if (i < 0 || j < 0 || i >= r->ids.width || j >= r->ids.height) throw std::invalid_argument("sample outside the grid");
+    const hlr::PicturePlane pp(r->render.camera);
+    const hlr::Exact2 q = r->scene.grid.centre(i, j);
+    const hlr::Rational rr = hlr::dot(pp.r(), pp.r()), uu = hlr::dot(pp.u(), pp.u()), dd = hlr::dot(pp.d(), pp.d());
+    std::array<hlr::Rational, 3> c;
+    for (int k = 0; k < 3; ++k)
+      c[k] = r->render.camera.perspective
+                 ? hlr::Rational(r->render.camera.eye[k] + pp.d()[k] + q[0] * dd / rr * pp.r()[k] + q[1] * dd / uu * pp.u()[k])
+                 : hlr::Rational(q[0] / rr * pp.r()[k] + q[1] / uu * pp.u()[k]);
+    return py::make_tuple(fraction(c[0]), fraction(c[1]), fraction(c[2]));
+  }
+  std::string camera() const { return hlr::raster_camera_json(*r); }
+};
+
+Image raster(const py::object& input, std::optional<py::sequence> view, std::optional<py::sequence> eye,
+             std::optional<py::sequence> target, std::optional<py::sequence> up, const std::string& algorithm, int width,
+             int height, const std::string& shading, int samples, int bounces, unsigned threads) {
+  std::vector<std::string> inputs;
+  if (py::isinstance<py::str>(input)) inputs.push_back(input.cast<std::string>());
+  else inputs = input.cast<std::vector<std::string>>();
+  hlr::RasterOptions o;
+  if (algorithm != "zbuffer" && algorithm != "scanline" && algorithm != "warnock" && algorithm != "raytrace")
+    throw std::invalid_argument("algorithm must be 'zbuffer', 'scanline', 'warnock' or 'raytrace'");
+  if (shading != "flat" && shading != "gouraud" && shading != "phong") throw std::invalid_argument("shading must be 'flat', 'gouraud' or 'phong'");
+  o.algorithm = algorithm == "scanline" ? hlr::RasterAlgorithm::Scanline
+                : algorithm == "warnock" ? hlr::RasterAlgorithm::Warnock
+                : algorithm == "raytrace" ? hlr::RasterAlgorithm::RayCast
+                                          : hlr::RasterAlgorithm::ZBuffer;
+  o.shading = shading == "gouraud" ? hlr::RasterShading::Gouraud : shading == "phong" ? hlr::RasterShading::Phong : hlr::RasterShading::Flat;
+  o.width = width, o.height = height, o.samples = samples, o.bounces = bounces, o.threads = threads;
+  o.view.direction = vector3(view);
+  o.view.eye = point3(eye);
+  o.view.target = point3(target);
+  o.view.up = vector3(up);
+  py::gil_scoped_release release;
+  return Image{std::make_shared<hlr::RasterResult>(hlr::raster_files(inputs, o))};
+}
+
 std::string explain(const std::string& problem, const std::string& lang, const std::string& format) {
   hlr::SolutionJson s = hlr::explain(hlr::load_problem(problem));
   hlr::Lang l = lang == "ru" ? hlr::Lang::Ru : hlr::Lang::En;
@@ -278,6 +337,18 @@ PYBIND11_MODULE(exact_hlr, m) {
         "surfaces=True also gives the visible part of every face as exact polygons, shaded; shadows=True cuts them by "
         "the lights' shadows (json()['shadows']); through=False counts lines behind transparent bodies as hidden (by "
         "default they are their own class: 'through-*' layers, pieces with 'through': true)");
+  py::class_<Image>(m, "Image", "A raster image with the exact face seen at every sample centre")
+      .def_property_readonly("width", [](const Image& i) { return i.r->width; })
+      .def_property_readonly("height", [](const Image& i) { return i.r->height; })
+      .def("png", &Image::png, "The image as PNG bytes")
+      .def("faces", &Image::faces, "The face seen at every sample, rows from the top: (body, face) or None")
+      .def("centre", &Image::centre, py::arg("i"), py::arg("j"), "The exact world point of sample (i, j)'s centre (Fractions)")
+      .def("camera", &Image::camera, "The exact sample grid as JSON text");
+  m.def("raster", &raster, py::arg("inputs"), py::kw_only(), py::arg("view") = py::none(), py::arg("eye") = py::none(),
+        py::arg("target") = py::none(), py::arg("up") = py::none(), py::arg("algorithm") = "zbuffer", py::arg("width") = 256,
+        py::arg("height") = 256, py::arg("shading") = "flat", py::arg("samples") = 1, py::arg("bounces") = 0, py::arg("threads") = 0u,
+        "The course's image-space algorithms (zbuffer, scanline, warnock, raytrace): the same exact face at every pixel "
+        "centre; flat, Gouraud or Phong shading; samples x samples antialiasing; Whitted ray tracing with bounces > 0");
   m.def("explain", &explain, py::arg("problem"), py::kw_only(), py::arg("lang") = "en", py::arg("format") = "md",
         "Solves a problem file step by step (exam mode): Markdown, HTML or JSON text");
   m.def("clip", &clip, py::arg("clipper"), py::arg("segment"),

@@ -149,3 +149,18 @@ def test_lines_seen_through_glass():
     assert any(name.startswith("through-") for name in dr.strokes())
     hidden = exact_hlr.render([path("transparency_demo.yaml")], through=False)
     assert not any(p.get("through") for p in json.loads(hidden.json())["segments"])
+
+
+def test_raster_algorithms_agree_and_centres_are_exact():
+    images = [exact_hlr.raster(path("demo.yaml"), algorithm=a, width=64, height=40)
+              for a in ("zbuffer", "scanline", "warnock", "raytrace")]
+    faces = images[0].faces()
+    assert len(faces) == 40 and len(faces[0]) == 64
+    assert all(im.faces() == faces for im in images[1:])
+    assert sum(f is not None for row in faces for f in row) > 500
+    assert images[0].png()[:8] == b"\x89PNG\r\n\x1a\n"
+    c = images[0].centre(10, 7)
+    assert all(isinstance(x, Fraction) for x in c)
+    cam = json.loads(images[0].camera())
+    o, r, d = ([Fraction(v) for v in cam[k]] for k in ("origin", "right", "down"))
+    assert tuple(o[k] + Fraction(21, 2) * r[k] + Fraction(15, 2) * d[k] for k in range(3)) == c
