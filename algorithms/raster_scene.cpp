@@ -173,14 +173,14 @@ int seen_among(const RasterScene& s, const std::vector<int>& candidates, int i, 
 }
 
 RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineDrawing& lines,
-                         int width, int height, unsigned threads) {
+                         int width, int height, unsigned threads, const RasterGrid* grid) {
   RasterScene s;
   s.camera = camera;
   PicturePlane pp(camera);
   s.source = scene_polygons(bodies, pp, lines);
   const double rr = to_double(dot(pp.r(), pp.r())), uu = to_double(dot(pp.u(), pp.u())), dd = to_double(dot(pp.d(), pp.d()));
   const double k = camera.perspective ? std::sqrt(dd) : 1.0;  // perspective: the picture at the target's distance
-  s.grid = raster_grid(s.source, width, height, k / std::sqrt(rr), k / std::sqrt(uu));
+  s.grid = grid ? *grid : raster_grid(s.source, width, height, k / std::sqrt(rr), k / std::sqrt(uu));
   std::vector<int> offset(bodies.size() + 1, 0);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     offset[b + 1] = offset[b] + static_cast<int>(bodies[b]->num_faces());

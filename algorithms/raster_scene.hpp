@@ -104,9 +104,10 @@ struct RasterScene {
 
 /// The raster scene of `bodies` under `camera`: every face that can be seen (LineDrawing's
 /// facing and back_faces_unseen, as the vector routes) as convex picture polygons, on a grid of
-/// width x height pixels. Perspective: every body must lie in front of the eye (the caller checks).
+/// width x height pixels (or on `grid` when given: the exam's own grid). Perspective: every body
+/// must lie in front of the eye (the caller checks).
 RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineDrawing& lines,
-                         int width, int height, unsigned threads = 0);
+                         int width, int height, unsigned threads = 0, const RasterGrid* grid = nullptr);
 
 /// The face seen at each pixel centre, row by row from the top: the global face number
 /// (RasterScene::faces) or -1 for the background.

@@ -39,6 +39,28 @@ bool span(const RasterPolygon& p, double y, Interval& L, Interval& R) {
 
 }  // namespace
 
+std::optional<ExactSpan> exact_span(const RasterScene& s, const RasterPolygon& p, const Rational& y) {
+  const std::vector<Exact2>& pts = s.source[p.poly].pts;
+  ExactSpan out;
+  bool has_l = false, has_r = false;
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    const Exact2 &a = pts[k], &b = pts[(k + 1) % pts.size()];
+    // orient(a, b, q) = A + B·x + C·y >= 0 inside.
+    const Rational B = a[1] - b[1], C = b[0] - a[0];
+    const Rational A = (b[1] - a[1]) * a[0] - (b[0] - a[0]) * a[1];
+    const Rational rest = A + C * y;
+    if (B == 0) {
+      if (rest < 0) return std::nullopt;  // the row lies outside this side
+      continue;
+    }
+    const Rational x = -rest / B;
+    if (B > 0 && (!has_l || x > out.xl)) out.xl = x, out.left = static_cast<int>(k), has_l = true;
+    if (B < 0 && (!has_r || x < out.xr)) out.xr = x, out.right = static_cast<int>(k), has_r = true;
+  }
+  if (!has_l || !has_r || out.xl > out.xr) return std::nullopt;
+  return out;
+}
+
 FaceIdBuffer scanline(const RasterScene& s, const ScanlineOptions& o, ScanlineStats* stats) {
   const RasterGrid& g = s.grid;
   std::vector<int> frame(static_cast<std::size_t>(g.width) * g.height, -1);

@@ -7,6 +7,8 @@
 // (raster_scene.hpp). The same face at every pixel as the full-frame z-buffer.
 #pragma once
 
+#include <optional>
+
 #include "algorithms/raster_scene.hpp"
 
 namespace hlr {
@@ -20,6 +22,14 @@ struct ScanlineStats {
   std::size_t spans = 0;          // (row, polygon) spans found from the sides' crossings
   std::size_t spans_by_test = 0;  // a nearly horizontal side: the span's centres tested one by one
 };
+
+/// The exact span of polygon p on the row at picture height y: X_L <= x <= X_R, and the sides
+/// that bound it (side k runs from corner k to k + 1; -1: none). Empty when the row misses it.
+struct ExactSpan {
+  Rational xl, xr;
+  int left = -1, right = -1;
+};
+std::optional<ExactSpan> exact_span(const RasterScene& scene, const RasterPolygon& p, const Rational& y);
 
 /// The face seen at every pixel centre of `scene`'s grid.
 FaceIdBuffer scanline(const RasterScene& scene, const ScanlineOptions& options = {}, ScanlineStats* stats = nullptr);

@@ -18,11 +18,18 @@ struct Window {
 
 class Subdivision {
  public:
-  Subdivision(const RasterScene& s, std::vector<int>& frame) : s_(s), g_(s.grid), frame_(frame) {}
+  Subdivision(const RasterScene& s, std::vector<int>& frame, std::vector<WarnockWindow>* trace)
+      : s_(s), g_(s.grid), frame_(frame), trace_(trace) {}
   WarnockStats stats;
 
-  void run(const Window& w, const std::vector<int>& parent) {
+  void run(const Window& w, const std::vector<int>& parent, int level = 0) {
     ++stats.windows;
+    // The trace's entry by index: the recursion below grows the vector.
+    const std::size_t tw = trace_ ? trace_->size() : 0;
+    if (trace_) trace_->push_back(WarnockWindow{w.i0, w.j0, w.i1, w.j1, level, {}, WarnockWindow::Decision::Split, -1});
+    auto decide = [&](WarnockWindow::Decision d, int p) {
+      if (trace_) (*trace_)[tw].decision = d, (*trace_)[tw].polygon = p;
+    };
     const int ci[2] = {w.i0, w.i1 - 1}, cj[2] = {w.j0, w.j1 - 1};
     std::vector<int> meet;  // polygons not disjoint from the window
     std::vector<int> surrounding;
@@ -31,25 +38,30 @@ class Subdivision {
       if (k == Kind::Disjoint) continue;
       meet.push_back(p);
       if (k == Kind::Surrounding) surrounding.push_back(p);
+      if (trace_) (*trace_)[tw].polygons.push_back({p, k == Kind::Surrounding});
     }
     if (meet.empty()) {  // background (the frame starts as background)
       ++stats.empty;
+      decide(WarnockWindow::Decision::Empty, -1);
       return;
     }
     if (w.i1 - w.i0 == 1 && w.j1 - w.j0 == 1) {
       ++stats.pixels;
       frame_[index(w.i0, w.j0)] = seen_among(s_, meet, w.i0, w.j0);
+      decide(WarnockWindow::Decision::Pixel, frame_[index(w.i0, w.j0)]);
       return;
     }
     for (int sp : surrounding)
       if (in_front_of_all(sp, meet, ci, cj)) {
         ++stats.surrounded;
+        decide(WarnockWindow::Decision::Surrounded, sp);
         for (int j = w.j0; j < w.j1; ++j)
           for (int i = w.i0; i < w.i1; ++i) frame_[index(i, j)] = sp;
         return;
       }
     if (meet.size() == 1) {  // one polygon, contained or intersecting: scan-converted
       ++stats.single;
+      decide(WarnockWindow::Decision::Single, meet[0]);
       for (int j = w.j0; j < w.j1; ++j)
         for (int i = w.i0; i < w.i1; ++i)
           if (s_.covers(s_.polygons[meet[0]], i, j)) frame_[index(i, j)] = meet[0];
@@ -58,7 +70,7 @@ class Subdivision {
     const int im = (w.i0 + w.i1 + 1) / 2, jm = (w.j0 + w.j1 + 1) / 2;
     for (const Window& q : {Window{w.i0, w.j0, im, jm}, Window{im, w.j0, w.i1, jm}, Window{w.i0, jm, im, w.j1},
                             Window{im, jm, w.i1, w.j1}})
-      if (q.i0 < q.i1 && q.j0 < q.j1) run(q, meet);
+      if (q.i0 < q.i1 && q.j0 < q.j1) run(q, meet, level + 1);
   }
 
  private:
@@ -116,6 +128,7 @@ class Subdivision {
   const RasterScene& s_;
   const RasterGrid& g_;
   std::vector<int>& frame_;
+  std::vector<WarnockWindow>* trace_;
 };
 
 }  // namespace
@@ -136,9 +149,9 @@ FaceIdBuffer warnock(const RasterScene& s, const WarnockOptions& o, WarnockStats
   }
   std::mutex m;
   WarnockStats total;
-  ParallelLoop(o.threads).for_each(in_tile.size(), 1, [&](std::size_t t) {
+  ParallelLoop(o.trace ? 1 : o.threads).for_each(in_tile.size(), 1, [&](std::size_t t) {
     const int a = static_cast<int>(t % tx), b = static_cast<int>(t / tx);
-    Subdivision sub(s, frame);
+    Subdivision sub(s, frame, o.trace);
     sub.run(Window{a * kTile, b * kTile, std::min(g.width, (a + 1) * kTile), std::min(g.height, (b + 1) * kTile)}, in_tile[t]);
     std::lock_guard<std::mutex> lock(m);
     total.windows += sub.stats.windows, total.empty += sub.stats.empty, total.surrounded += sub.stats.surrounded;

@@ -11,13 +11,26 @@
 #pragma once
 
 #include <cstddef>
+#include <utility>
+#include <vector>
 
 #include "algorithms/raster_scene.hpp"
 
 namespace hlr {
 
+/// One window of the subdivision, as the exam page shows it.
+struct WarnockWindow {
+  int i0, j0, i1, j1;                           // pixels [i0, i1) x [j0, j1)
+  int level = 0;                                // 0: a tile of the frame
+  std::vector<std::pair<int, bool>> polygons;   // the polygons not disjoint from it; true: surrounding
+  enum class Decision { Empty, Surrounded, Single, Pixel, Split } decision = Decision::Split;
+  int polygon = -1;                             // Surrounded, Single, Pixel: the polygon (Pixel: -1 background)
+};
+
 struct WarnockOptions {
   unsigned threads = 0;  // 0: all cores (tiles of 64 x 64 pixels, each subdivided on its own)
+  /// When set: every window in the order visited (the run is then sequential).
+  std::vector<WarnockWindow>* trace = nullptr;
 };
 
 /// The subdivision's counters (docs: the notes' window types).

@@ -23,7 +23,7 @@ std::vector<Rational> numbers(const P& c, const YAML::Node& n, std::size_t count
 }
 
 Problem::Type parse_type(const P& c, const YAML::Node& n) {
-  if (!n || !n.IsScalar()) c.fail(n, "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority)");
+  if (!n || !n.IsScalar()) c.fail(n, "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster)");
   const std::string t = n.Scalar();
   if (t == "roberts") return Problem::Type::Roberts;
   if (t == "cyrus-beck") return Problem::Type::CyrusBeck;
@@ -34,7 +34,8 @@ Problem::Type parse_type(const P& c, const YAML::Node& n) {
   if (t == "horizon") return Problem::Type::Horizon;
   if (t == "weiler-atherton") return Problem::Type::WeilerAtherton;
   if (t == "priority") return Problem::Type::Priority;
-  c.fail(n, "unknown problem type '" + t + "' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority)");
+  if (t == "raster") return Problem::Type::Raster;
+  c.fail(n, "unknown problem type '" + t + "' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster)");
 }
 
 std::string list_text(const std::vector<Rational>& v) {
@@ -86,9 +87,10 @@ const char* to_string(Problem::Type t) {
     case Problem::Type::Transform: return "transform";
     case Problem::Type::Horizon: return "horizon";
     case Problem::Type::WeilerAtherton: return "weiler-atherton";
-    case Problem::Type::Priority: break;
+    case Problem::Type::Priority: return "priority";
+    case Problem::Type::Raster: break;
   }
-  return "priority";
+  return "raster";
 }
 
 Problem load_problem(const std::string& path) { return load_problem_text(read_file_bytes(path), path); }
@@ -112,6 +114,8 @@ Problem load_problem_text(const std::string& text, const std::string& path) {
   if (clipping) extra.insert(extra.end(), {"clipper", "segments"});
   if (pr.type == Problem::Type::Midpoint) extra.push_back("eps");
   if (horizon) extra.insert(extra.end(), {"heights", "x", "z"});
+  const bool raster = pr.type == Problem::Type::Raster;
+  if (raster) extra.insert(extra.end(), {"size", "window", "trace"});
   pr.scene = load_scene_text(text, path, extra, !clipping && !horizon);
   if (root["title"]) {
     if (!root["title"].IsScalar()) c.fail(root["title"], "title must be text");
@@ -173,6 +177,41 @@ Problem load_problem_text(const std::string& text, const std::string& path) {
     };
     axis("x", nx, pr.grid.xs);
     axis("z", nz, pr.grid.zs);
+  }
+  if (raster) {
+    if (pr.scene.view.type == View::Type::Perspective) c.fail(root["view"], "a raster problem takes an orthographic view (the notes' depth is linear across the picture)");
+    if (root["size"]) {
+      const YAML::Node n = root["size"];
+      if (!n.IsSequence() || n.size() != 2) c.fail(n, "size must be [width, height] in pixels");
+      pr.raster_width = static_cast<int>(c.integer(n[0], "width"));
+      pr.raster_height = static_cast<int>(c.integer(n[1], "height"));
+      if (pr.raster_width < 1 || pr.raster_width > 32 || pr.raster_height < 1 || pr.raster_height > 32)
+        c.fail(n, "size: a problem's grid is 1 to 32 pixels each way");
+      pr.raster_window = {Rational(0), Rational(pr.raster_width), Rational(0), Rational(pr.raster_height)};
+    }
+    if (root["window"]) {
+      auto w = numbers(c, root["window"], 4, "window [x0, x1, y0, y1]");
+      if (!(w[0] < w[1] && w[2] < w[3])) c.fail(root["window"], "window: x0 < x1 and y0 < y1");
+      pr.raster_window = {w[0], w[1], w[2], w[3]};
+    }
+    // Every centre must be an exact double (the grid of raster_scene.hpp): binary fractions.
+    const Rational xs = (pr.raster_window[1] - pr.raster_window[0]) / pr.raster_width;
+    const Rational ys = (pr.raster_window[3] - pr.raster_window[2]) / pr.raster_height;
+    for (int i = 0; i < pr.raster_width; ++i)
+      for (int j = 0; j < pr.raster_height; ++j)
+        for (const Rational& v : {Rational(pr.raster_window[0] + rational(2 * i + 1, 2) * xs), Rational(pr.raster_window[3] - rational(2 * j + 1, 2) * ys)})
+          if (Rational(to_double(v)) != v)
+            c.fail(root["window"] ? root["window"] : root["size"], "window: every pixel centre must be a binary fraction (halves, quarters, ...)");
+    if (root["trace"]) {
+      const YAML::Node t = root["trace"];
+      if (!t.IsSequence()) c.fail(t, "trace must be a list of pixels [column, row]");
+      for (const YAML::Node& x : t) {
+        if (!x.IsSequence() || x.size() != 2) c.fail(x, "a traced pixel is [column, row]");
+        std::array<int, 2> ij{static_cast<int>(c.integer(x[0], "column")), static_cast<int>(c.integer(x[1], "row"))};
+        if (ij[0] < 0 || ij[0] >= pr.raster_width || ij[1] < 0 || ij[1] >= pr.raster_height) c.fail(x, "the pixel is outside the grid");
+        pr.raster_trace.push_back(ij);
+      }
+    }
   }
   if (root["eps"]) {
     pr.eps = c.number(root["eps"], "eps");

@@ -6,6 +6,7 @@
 // keys and wrong types are errors with file and line. Format: docs/problem-format.md.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,7 +19,7 @@
 namespace hlr {
 
 struct Problem {
-  enum class Type { Roberts, CyrusBeck, Midpoint, Convexity, Decompose, Transform, Horizon, WeilerAtherton, Priority };
+  enum class Type { Roberts, CyrusBeck, Midpoint, Convexity, Decompose, Transform, Horizon, WeilerAtherton, Priority, Raster };
   Type type = Type::Roberts;
   std::string file;
   std::string title;  // optional `title`
@@ -33,6 +34,10 @@ struct Problem {
   Rational eps = rational(1, 100);
   // horizon: the heights (row j: the cut z = zs[j]) on x from..to and z from..to
   HeightGrid grid;
+  // raster: the pixel grid (size, and the picture window it covers) and the z-buffer's traced pixels
+  int raster_width = 8, raster_height = 6;
+  std::array<Rational, 4> raster_window{Rational(0), Rational(8), Rational(0), Rational(6)};  // x0, x1, y0, y1
+  std::vector<std::array<int, 2>> raster_trace;
   /// The page numbers faces, vertices and columns from this (0, or 1 as the notes do); the
   /// problem file's own indices and the JSON `result` stay 0-based.
   int index_base = 0;

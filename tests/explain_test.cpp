@@ -52,11 +52,11 @@ const SolutionJson& values(const SolutionJson& s, const std::string& section, in
 }
 }  // namespace
 
-TEST(Explain, AtLeastEightProblemsCoveringAllNineTypes) {
+TEST(Explain, AtLeastEightProblemsCoveringAllTenTypes) {
   std::set<std::string> types;
   for (const auto& p : problems()) types.insert(to_string(load_problem(p).type));
   EXPECT_GE(problems().size(), 8u);
-  EXPECT_EQ(types.size(), 9u);
+  EXPECT_EQ(types.size(), 10u);
 }
 
 TEST(Explain, GoldenMarkdownAndJson) {
@@ -331,7 +331,8 @@ TEST(Explain, InequalitiesReadLikeTheNotes) {
 // The Russian page is Russian (issue 12): apart from the problem's own title and body names
 // (the author's text) and formula symbols, no Latin word; and it uses the course's words.
 TEST(Explain, RussianPageHasNoEnglishOutsideFormulas) {
-  const std::set<std::string> formulas = {"VT", "eps", "h_j", "light", "t_max", "t_min", "f_", "z_", "z_min", "z_max"};  // f_п, z_б, z_min: the notes' symbols
+  const std::set<std::string> formulas = {"VT", "eps", "h_j", "light", "t_max", "t_min", "f_", "z_", "z_min", "z_max",
+                                          "X_L", "X_R", "Z_L", "Z_x", "Z_y"};  // f_п, z_б, z_min: the notes' symbols
   bool saw_nonfacing = false, saw_hidden_edges = false, saw_piercing = false;
   for (const std::string& file : problems()) {
     Problem pr = load_problem(file);
@@ -637,4 +638,54 @@ TEST(Explain, ShadowOnTheGroundMatchesTheHandSolution) {
   EXPECT_NE(ru.find("Падающая тень на земле"), std::string::npos);
   EXPECT_NE(ru.find("| 4 | (1, 1, 2) | 2/3 | (1/3, -1/3, 0) |"), std::string::npos);
   EXPECT_NE(ru.find("| 1 | 2·y − z = 0 |"), std::string::npos);
+}
+
+// The raster page (issue 17), worked by hand: Q's depth s = 2/5·x − 6/5 meets P's s = 1 at
+// x = 11/2, the centres of column 5: the z-buffer keeps P there by the tie rule; the scan-line
+// spans of Q on row 2 (y = 7/2) run from X_L = 3 to X_R = 43/6 (the upper right side
+// x = 8 − 5(y − 3)/3), ΔX_R = 5/3 per row down, ΔZ_x = 2/5; the frame as drawn by hand.
+TEST(Explain, RasterPageByHand) {
+  SolutionJson s = explain(load_problem(kData + "/problems/raster_pierce.yaml"));
+  const auto& zt = table(s, "rs_zbuffer", "rs_trace");
+  ASSERT_EQ(zt.size(), 6u);
+  EXPECT_EQ(zt[3][4], "1");  // Q's s at (11/2, 7/2)
+  EXPECT_EQ(zt[3][6]["en"], "no (a tie: the rule)");
+  EXPECT_EQ(zt[5][4], "7/5");  // Q at (13/2, 7/2)
+  EXPECT_EQ(zt[5][6], "yes");
+  bool row2 = false;
+  for (const auto& r : table(s, "rs_scanline", "rs_spans"))
+    if (r[0] == "2" && r[1] == "B") {
+      row2 = true;
+      EXPECT_EQ(r[2], "3");
+      EXPECT_EQ(r[3], "43/6");
+      EXPECT_EQ(r[5], "5/3");
+      EXPECT_EQ(r[6], "0");
+      EXPECT_EQ(r[7], "2/5");
+      EXPECT_EQ(r[9], "3 4 5 6");
+    }
+  EXPECT_TRUE(row2);
+  const auto& frame = table(s, "rs_result", "rs_frame");
+  const char* want[6] = {". . . B . . . .", ". A A A A A . .", ". A A A A A B .", ". A A A A A B .", ". A A A A A . .", ". . . B . . . ."};
+  ASSERT_EQ(frame.size(), 6u);
+  for (int j = 0; j < 6; ++j) EXPECT_EQ(frame[j][1], want[j]) << "row " << j;
+  bool filled = false;
+  for (const auto& r : table(s, "rs_warnock", "rs_windows"))
+    filled = filled || r[3]["en"].get<std::string>().rfind("filled with A", 0) == 0;
+  EXPECT_TRUE(filled) << "a window filled at once by the surrounding square";
+}
+
+TEST(Explain, RasterProblemErrors) {
+  auto fails = [](const std::string& text, const std::string& what) {
+    try {
+      load_problem_text(text, "p.yaml");
+      ADD_FAILURE() << "accepted: " << what;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  const std::string body = "bodies:\n  - vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n    faces: [[0, 1, 2]]\n";
+  fails("problem: raster\n" + body + "size: [40, 3]\n", "1 to 32 pixels");
+  fails("problem: raster\n" + body + "size: [3, 3]\nwindow: [0, 1, 0, 1]\n", "binary fraction");
+  fails("problem: raster\n" + body + "view: {eye: [0, 0, 5]}\n", "orthographic");
+  fails("problem: raster\n" + body + "trace: [[9, 0]]\n", "outside the grid");
 }
