@@ -37,6 +37,10 @@ LineDrawing Engine<P>::run() {
   auto t0 = Clock::now();
   offsets();
   for (std::size_t b = 0; b < bodies_.size(); ++b) prepare_body(static_cast<int>(b), res);
+  if (opt_.facing_only) {
+    res.stats.setup_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return res;
+  }
   build_occluders();
   res.stats.faces->occluders = occ_.size();
   std::size_t total = 0;

@@ -98,4 +98,27 @@ Rgb surface_colour(const Material& m, const Vec3d& p, const Vec3d& n) {
   return (parity & 1) ? m.colour2 : m.colour;
 }
 
+Vec3d bumped_normal(const Material& m, const Vec3d& p, const Vec3d& n) {
+  if (!(m.bump > 0) || !(m.bump_size > 0)) return n;
+  // Q_u: the world axis least along n, made orthogonal to n; Q_w = n × Q_u (|n| = 1).
+  int a = 0;
+  for (int c = 1; c < 3; ++c)
+    if (std::fabs(n[c]) < std::fabs(n[a])) a = c;
+  Vec3d qu{0, 0, 0};
+  qu[a] = 1;
+  const double d = qu[0] * n[0] + qu[1] * n[1] + qu[2] * n[2];
+  for (int c = 0; c < 3; ++c) qu[c] -= d * n[c];
+  const double lu = std::sqrt(qu[0] * qu[0] + qu[1] * qu[1] + qu[2] * qu[2]);
+  for (double& c : qu) c /= lu;
+  const Vec3d qw{n[1] * qu[2] - n[2] * qu[1], n[2] * qu[0] - n[0] * qu[2], n[0] * qu[1] - n[1] * qu[0]};
+  const double u = p[0] * qu[0] + p[1] * qu[1] + p[2] * qu[2], w = p[0] * qw[0] + p[1] * qw[1] + p[2] * qw[2];
+  const double k = 2 * M_PI / m.bump_size;
+  const double pu = m.bump * k * std::cos(k * u) * std::sin(k * w), pw = m.bump * k * std::sin(k * u) * std::cos(k * w);
+  // n × Q_w = −Q_u and Q_u × n = −Q_w for the unit frame (Q_u, Q_w, n).
+  Vec3d out{n[0] - pu * qu[0] - pw * qw[0], n[1] - pu * qu[1] - pw * qw[1], n[2] - pu * qu[2] - pw * qw[2]};
+  const double l = std::sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
+  for (double& c : out) c /= l;
+  return out;
+}
+
 }  // namespace hlr

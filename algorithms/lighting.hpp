@@ -38,6 +38,9 @@ struct Material {
   /// between the colour and colour2 by the parity of floor(x/s) + floor(y/s) + floor(z/s).
   double checker = 0;
   Rgb colour2{0.1, 0.1, 0.1};
+  /// Blinn's bump map (notes 42): the perturbation P(u, w) = bump·sin(2πu/s)·sin(2πw/s) along
+  /// the normal over the face's own coordinates (s = bump_size); 0: none.
+  double bump = 0, bump_size = 1;
 };
 
 /// The transparency τ of a face of material m whose unit normal makes |cos φ| = abs_cos with
@@ -81,6 +84,11 @@ Rgb palette_colour(int body);
 /// colour (the two coordinates across the normal's dominant axis, so that a face lying in a
 /// cell boundary plane does not flicker), else its colour.
 Rgb surface_colour(const Material& m, const Vec3d& p, const Vec3d& n);
+
+/// The notes' perturbed normal n' = n + P_u·(n × Q_w)/|n| + P_w·(Q_u × n)/|n| of the material's
+/// bump map at point p of a face with unit normal n (Q_u, Q_w: unit axes in the face's plane,
+/// the first across the normal's dominant axis), made unit; n itself without a bump map.
+Vec3d bumped_normal(const Material& m, const Vec3d& p, const Vec3d& n);
 
 /// "#rrggbb" of a colour (rounded to 8 bits per channel).
 std::array<int, 3> rgb8(const Rgb& c);

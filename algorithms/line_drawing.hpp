@@ -48,6 +48,9 @@ struct LineOptions {
   /// Per-face route: per body, 1 when its faces hide nothing (see-through; its own lines are
   /// still drawn). Empty: every body hides. see_through_lines.hpp uses it.
   std::vector<char> see_through;
+  /// Per-face route: only each face's facing and which closed solids hide their back faces
+  /// (LineDrawing::facing, back_faces_unseen, notes), no lines: what the raster algorithms need.
+  bool facing_only = false;
   unsigned threads = 0;                           // 0: all cores
 };
 

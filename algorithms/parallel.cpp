@@ -2,6 +2,8 @@
 // blocked range with the caller's grain does the chunking.
 #include "algorithms/parallel.hpp"
 
+#include "kernel/polyhedron.hpp"
+
 #include <algorithm>
 
 #include <tbb/blocked_range.h>
@@ -43,6 +45,11 @@ void ParallelLoop::for_each(std::size_t n, std::size_t grain, const std::functio
   run(n, grain, [&](unsigned, std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) body(i);
   });
+}
+
+void plane_all_faces(const Polyhedron& p, unsigned threads) {
+  ParallelLoop loop(threads);
+  p.compute_planes([&](std::size_t n, const std::function<void(std::size_t)>& body) { loop.for_each(n, 256, body); });
 }
 
 }  // namespace hlr

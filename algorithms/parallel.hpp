@@ -33,4 +33,10 @@ class ParallelLoop {
   std::unique_ptr<Arena> arena_;
 };
 
+class Polyhedron;
+
+/// Every face plane of `p` computed once, on `threads` cores (0: all); before parallel stages
+/// that read Polyhedron::planes().
+void plane_all_faces(const Polyhedron& p, unsigned threads = 0);
+
 }  // namespace hlr

@@ -3,6 +3,8 @@
 // "The priority list, exact".
 #include "algorithms/priority_list.hpp"
 
+#include "algorithms/parallel.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -476,7 +478,7 @@ class Painter {
 
 PriorityResult priority_list(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineDrawing& lines,
                              const PriorityOptions& options) {
-  for (const Polyhedron* p : bodies) p->planes();
+  for (const Polyhedron* p : bodies) plane_all_faces(*p);
   if (camera.perspective)
     for (std::size_t b = 0; b < bodies.size(); ++b)
       for (const Point3& v : bodies[b]->vertices())

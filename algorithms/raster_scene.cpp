@@ -177,6 +177,7 @@ RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Cam
   RasterScene s;
   s.camera = camera;
   PicturePlane pp(camera);
+  for (const Polyhedron* b : bodies) plane_all_faces(*b, threads);  // computed once, before the parallel loops
   s.source = scene_polygons(bodies, pp, lines);
   const double rr = to_double(dot(pp.r(), pp.r())), uu = to_double(dot(pp.u(), pp.u())), dd = to_double(dot(pp.d(), pp.d()));
   const double k = camera.perspective ? std::sqrt(dd) : 1.0;  // perspective: the picture at the target's distance
@@ -186,7 +187,6 @@ RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Cam
     offset[b + 1] = offset[b] + static_cast<int>(bodies[b]->num_faces());
     for (std::size_t f = 0; f < bodies[b]->num_faces(); ++f) s.faces.push_back({static_cast<int>(b), static_cast<int>(f)});
   }
-  for (const Polyhedron* b : bodies) b->planes();  // computed once, before the parallel loops
   // Each face's depth function, once per face seen (on all cores).
   std::vector<std::array<Rational, 6>> depth(s.faces.size());
   std::vector<char> used(s.faces.size(), 0);

@@ -198,7 +198,7 @@ Rgb WhittedScene::shade(int body, int face, const Vec3d& at, const Vec3d& dir, i
   Material mat = m.materials[body];
   const Vec3d& out = m.normals[body][face];
   const bool front = dot(dir, out) < 0;  // entering the body (its outward side faces the ray)
-  const Vec3d n = front ? out : Vec3d{-out[0], -out[1], -out[2]};
+  const Vec3d n = bumped_normal(mat, at, front ? out : Vec3d{-out[0], -out[1], -out[2]});
   mat.colour = surface_colour(mat, at, out);
   // The local part: each light scaled by what its shadow ray lets through (transparent faces
   // pass their transparency, opaque ones nothing).

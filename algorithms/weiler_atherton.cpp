@@ -2,6 +2,8 @@
 // weiler_atherton.hpp.
 #include "algorithms/weiler_atherton.hpp"
 
+#include "algorithms/parallel.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -281,7 +283,7 @@ class Wa {
 
 WeilerAthertonResult weiler_atherton(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineDrawing& lines,
                                      const WeilerAthertonOptions& options) {
-  for (const Polyhedron* p : bodies) p->planes();
+  for (const Polyhedron* p : bodies) plane_all_faces(*p);
   if (camera.perspective)
     for (std::size_t b = 0; b < bodies.size(); ++b)
       for (const Point3& v : bodies[b]->vertices())

@@ -4,6 +4,7 @@
 #include <png.h>
 
 #include <algorithm>
+#include <csetjmp>
 #include <chrono>
 #include <memory>
 #include <cmath>
@@ -174,8 +175,9 @@ class Shader {
     const ScenePolygon& sp = r_.scene.source[p];
     if (whitted_) return traced(sp, x, y);
     const Material& mat = materials_[sp.body];
-    if (o_.shading == RasterShading::Flat && !(mat.checker > 0)) return flat_[sp.body][sp.face];
-    if (o_.shading == RasterShading::Flat) {  // a textured face: its colour at the point, lit as the face
+    const bool textured = mat.checker > 0 || mat.bump > 0;
+    if (o_.shading == RasterShading::Flat && !textured) return flat_[sp.body][sp.face];
+    if (o_.shading == RasterShading::Flat) {  // a textured face: its colour and bumped normal at the point
       const Plane& h = r_.render.bodies[sp.body]->body.planes()[sp.face];
       const Vec3d n{to_double(h.normal().x()), to_double(h.normal().y()), to_double(h.normal().z())};
       const Vec3d at = lift_.at(x, y, n, to_double(h.d()));
@@ -183,7 +185,7 @@ class Shader {
       m.colour = surface_colour(mat, at, n);
       Vec3d un = unit(n);
       if (r_.render.drawing.facing[sp.body][sp.face] < 0) un = {-un[0], -un[1], -un[2]};
-      return shade(m, light_, at, un, lift_.to_viewer(at));
+      return shade(m, light_, at, bumped_normal(mat, at, un), lift_.to_viewer(at));
     }
     const Corners& c = corners_[p];
     Vec3d at = lift_.at(x, y, c.n, c.offset);
@@ -206,7 +208,7 @@ class Shader {
       for (int ch = 0; ch < 3; ++ch) nn[ch] += w[t] * c.normal[idx[t]][ch];
     Material m = c.material;
     m.colour = surface_colour(mat, at, c.n);
-    return shade(m, light_, at, unit(nn), lift_.to_viewer(at));
+    return shade(m, light_, at, bumped_normal(mat, at, unit(nn)), lift_.to_viewer(at));
   }
 
  private:
@@ -287,6 +289,7 @@ RasterResult raster(std::vector<Scene> scenes, const RasterOptions& o) {
   ro.view = o.view;
   ro.lines.edges = EdgeSelection::Feature;
   ro.lines.intersections = false;
+  ro.lines.facing_only = true;  // no lines: the facing of every face is all the raster needs
   ro.lines.threads = o.threads;
   ro.through_lines = false;
   r.render = render(std::move(scenes), ro);
@@ -346,16 +349,35 @@ std::string png_bytes(png_image& image, const void* data, std::ptrdiff_t stride)
   return out;
 }
 
+// 8-bit RGB through libpng's full API, to choose fast compression (an image of flat regions
+// compresses well at level 1; the simplified API always uses the default level).
+void append_bytes(png_structp png, png_bytep data, png_size_t n) {
+  static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<const char*>(data), n);
+}
+
+std::string png_rgb_fast(int width, int height, const std::vector<std::uint8_t>& rgb) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  if (!png) throw std::runtime_error("PNG: out of memory");
+  png_infop info = png_create_info_struct(png);
+  std::string out;
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    throw std::runtime_error("PNG: could not encode the image");
+  }
+  png_set_write_fn(png, &out, append_bytes, nullptr);
+  png_set_compression_level(png, 1);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  for (int j = 0; j < height; ++j) png_write_row(png, const_cast<png_bytep>(&rgb[static_cast<std::size_t>(j) * width * 3]));
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return out;
+}
+
 }  // namespace
 
-std::string png_rgb(int width, int height, const std::vector<std::uint8_t>& rgb) {
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  image.width = static_cast<png_uint_32>(width);
-  image.height = static_cast<png_uint_32>(height);
-  image.format = PNG_FORMAT_RGB;
-  return png_bytes(image, rgb.data(), 0);
-}
+std::string png_rgb(int width, int height, const std::vector<std::uint8_t>& rgb) { return png_rgb_fast(width, height, rgb); }
 
 std::string ids_png(const FaceIdBuffer& ids) {
   std::vector<std::uint16_t> v(ids.ids.size());

@@ -215,7 +215,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
   if (o.method == RenderMethod::Roberts) throw std::invalid_argument("--surfaces works with --method faces, weiler-atherton or priority");
   if (o.clip) throw std::invalid_argument("--surfaces does not take --clip (a clipped face is not a surface of the scene)");
   if (o.shadows && o.method != RenderMethod::Faces) throw std::invalid_argument("--shadows works with --method faces");
-  for (const Polyhedron* p : polys) p->planes();  // computed once, before the parallel stages
+  for (const Polyhedron* p : polys) plane_all_faces(*p, o.lines.threads);  // computed once, before the parallel stages
   if (r.camera.perspective)
     for (std::size_t b = 0; b < polys.size(); ++b)
       for (const Point3& v : polys[b]->vertices())

@@ -88,7 +88,7 @@ Lighting parse_lighting(const YamlContext& c, const YAML::Node& n) {
 
 Material parse_material(const YamlContext& c, const YAML::Node& n, int body) {
   c.check_keys(n, "a material", {"colour", "color", "ka", "kd", "ks", "shininess", "transparency", "transparency_model",
-                                 "transparency_min", "transparency_power", "reflection", "ior", "checker", "colour2", "color2"});
+                                 "transparency_min", "transparency_power", "reflection", "ior", "checker", "colour2", "color2", "bump", "bump_size"});
   Material m;
   m.colour = palette_colour(body);
   if (n["colour"] && n["color"]) c.fail(n, "give 'colour' or 'color', not both");
@@ -108,6 +108,8 @@ Material parse_material(const YamlContext& c, const YAML::Node& n, int body) {
     if (!(m.ior >= 0.1 && m.ior <= 10)) c.fail(n["ior"], "ior must be between 1/10 and 10");
   }
   if (m.reflection + m.transparency > 1) c.fail(n, "reflection + transparency must not exceed 1");
+  if (n["bump"]) m.bump = real(c, n["bump"], "bump", 0, 1e300);
+  if (n["bump_size"]) m.bump_size = real(c, n["bump_size"], "bump_size", 1e-300, 1e300);
   if (n["checker"]) m.checker = real(c, n["checker"], "checker", 0, 1e300);
   if (n["colour2"] && n["color2"]) c.fail(n, "give 'colour2' or 'color2', not both");
   if (n["colour2"]) m.colour2 = colour(c, n["colour2"], "colour2");

@@ -86,6 +86,18 @@ void Polyhedron::build_mesh() const {
   if (was_enabled) omerr().enable();
 }
 
+void Polyhedron::compute_planes(const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop) const {
+  if (planes_done_) return;
+  std::vector<Plane> out(faces_.size());
+  loop(faces_.size(), [&](std::size_t f) {
+    std::vector<const Point3*> pts;
+    for (int v : faces_[f]) pts.push_back(&vertices_[v]);
+    out[f] = primitive_plane_of_polygon(pts.data(), pts.size());
+  });
+  planes_ = std::move(out);
+  planes_done_ = true;
+}
+
 const std::vector<Plane>& Polyhedron::planes() const {
   if (!planes_done_) {
     planes_.reserve(faces_.size());

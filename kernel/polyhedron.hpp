@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <functional>
 #include <vector>
 
 #include "kernel/geometry.hpp"
@@ -55,6 +56,9 @@ class Polyhedron {
   /// listed counter-clockwise seen from outside gets an outward normal). Degenerate (zero
   /// normal) for zero-area faces. Scaled to primitive integer coefficients (primitive_plane).
   const std::vector<Plane>& planes() const;
+  /// Computes the planes (once) with `loop(n, body)` calling body(i) for every i < n, e.g. on
+  /// all cores (algorithms/parallel.hpp: plane_all_faces); planes() then returns them.
+  void compute_planes(const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop) const;
 
   /// The checks of mesh_checks.hpp, computed once.
   const MeshReport& report() const;

@@ -67,6 +67,19 @@ Sign orientation(const Point3& p, const Point3& q, const Point3& r, const Point3
 }
 
 bool collinear(const Point3& p, const Point3& q, const Point3& r) {
+  ++predicate_stats().evaluations;
+  {
+    // Collinear iff every component of (q − p) × (r − p) is zero: one certainly non-zero
+    // component settles it (almost every triangle of a mesh).
+    CGAL::Protect_FPU_rounding<true> guard;
+    I ax = iv(q.approx(0)) - iv(p.approx(0)), ay = iv(q.approx(1)) - iv(p.approx(1)), az = iv(q.approx(2)) - iv(p.approx(2));
+    I bx = iv(r.approx(0)) - iv(p.approx(0)), by = iv(r.approx(1)) - iv(p.approx(1)), bz = iv(r.approx(2)) - iv(p.approx(2));
+    for (const I& c : {ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx}) {
+      Sign s;
+      if (certain_sign(c, s) && s != Sign::Zero) return false;
+    }
+  }
+  ++predicate_stats().exact_fallbacks;
   return cross(q - p, r - p).is_zero();
 }
 

@@ -151,3 +151,34 @@ TEST(RasterPipeline, BadSizesAndBodiesBehindTheEyeAreClearErrors) {
 }
 
 }  // namespace
+
+namespace {
+
+// Blinn's perturbed normal (notes 42) worked by hand on the face z = 0: Q_u = x, Q_w = y,
+// P = b·sin(2πu/s)·sin(2πw/s). At (0, s/4): P_u = b·2π/s, P_w = 0, so n' ∝ n − P_u·Q_u.
+TEST(Texture, BumpMapPerturbsTheNormalAsTheNotesSay) {
+  Material m;
+  const Vec3d n{0, 0, 1};
+  EXPECT_EQ(bumped_normal(m, {0.3, 0.7, 0}, n), n);  // no bump map
+  m.bump = 0.05, m.bump_size = 2;
+  const double pu = 0.05 * 2 * M_PI / 2;
+  Vec3d b = bumped_normal(m, {0, 0.5, 0}, n);
+  const double l = std::sqrt(1 + pu * pu);
+  EXPECT_NEAR(b[0], -pu / l, 1e-15);
+  EXPECT_NEAR(b[1], 0, 1e-15);
+  EXPECT_NEAR(b[2], 1 / l, 1e-15);
+  Vec3d flat = bumped_normal(m, {0, 0, 0}, n);  // P_u = P_w = 0 at the origin
+  EXPECT_NEAR(flat[2], 1, 1e-15);
+}
+
+TEST(Texture, CheckerCellsAlternateAcrossTheFace) {
+  Material m;
+  m.colour = {1, 1, 1}, m.colour2 = {0, 0, 0}, m.checker = 1;
+  const Vec3d up{0, 0, 1};
+  EXPECT_EQ(surface_colour(m, {0.5, 0.5, -1e-17}, up), m.colour);  // z is across the face: ignored
+  EXPECT_EQ(surface_colour(m, {1.5, 0.5, 1e-17}, up), m.colour2);
+  EXPECT_EQ(surface_colour(m, {1.5, 1.5, 0}, up), m.colour);
+  EXPECT_EQ(surface_colour(m, {-0.5, 0.5, 0}, up), m.colour2);
+}
+
+}  // namespace

@@ -5,7 +5,8 @@
 // every piece of every edge; the visible surfaces (issue 15) must be consistent in every cell
 // and cover exactly the area the course's Weiler–Atherton algorithm finds; painting the
 // priority list (issue 19) must show at the centre of every Weiler–Atherton visible piece the
-// face that piece belongs to. A disagreement
+// face that piece belongs to; the four raster algorithms (issue 17) must give the same face at
+// every pixel centre, inside that face's visible polygons. A disagreement
 // aborts (a finding). Exact throughout.
 #include <cmath>
 #include <cstdint>
@@ -17,6 +18,11 @@
 #include "algorithms/face_occluders.hpp"
 #include "algorithms/plot.hpp"
 #include "algorithms/priority_list.hpp"
+#include "algorithms/ray_casting.hpp"
+#include "algorithms/raster_scene.hpp"
+#include "algorithms/scanline.hpp"
+#include "algorithms/warnock.hpp"
+#include "algorithms/zbuffer.hpp"
 #include "algorithms/roberts.hpp"
 #include "algorithms/visible_surfaces.hpp"
 #include "algorithms/weiler_atherton.hpp"
@@ -186,5 +192,52 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       std::abort();
     }
   }
+  // The raster algorithms (issue 17): the same face at every pixel centre, and that face's
+  // visible polygons contain the centre.
+  RasterScene rs = raster_scene(ptrs, cam, d, 24, 18, 1);
+  const FaceIdBuffer rz = zbuffer(rs, {1}), rl = scanline(rs, {1}), rw = warnock(rs, {1}), rr = ray_cast(rs, {1});
+  if (rz.ids != rl.ids || rz.ids != rw.ids || rz.ids != rr.ids) {
+    std::fprintf(stderr, "fuzz_render: the raster algorithms disagree\n");
+    std::abort();
+  }
+  std::map<std::pair<int, int>, const VisibleFace*> of;
+  for (const VisibleFace& f2 : vs.faces) of[{f2.body, f2.face}] = &f2;
+  for (int j = 0; j < 18; ++j)
+    for (int i = 0; i < 24; ++i) {
+      const int id = rz.at(i, j);
+      if (id < 0) continue;
+      auto it = of.find({rs.faces[id][0], rs.faces[id][1]});
+      bool in = false;
+      const Exact2 c = rs.grid.centre(i, j);
+      // 1 inside, 0 on the border, -1 outside a ring (even-odd).
+      auto side = [&](const std::vector<Exact2>& ring) {
+        bool odd = false;
+        for (std::size_t k = 0; k < ring.size(); ++k) {
+          const Exact2 &a2 = ring[k], &b2 = ring[(k + 1) % ring.size()];
+          const int s2 = orient2d(a2, b2, c);
+          if (s2 == 0 && std::min(a2[0], b2[0]) <= c[0] && c[0] <= std::max(a2[0], b2[0]) && std::min(a2[1], b2[1]) <= c[1] &&
+              c[1] <= std::max(a2[1], b2[1]))
+            return 0;
+          if ((a2[1] > c[1]) != (b2[1] > c[1]) && ((s2 > 0) == (b2[1] > c[1]))) odd = !odd;
+        }
+        return odd ? 1 : -1;
+      };
+      if (it != of.end())
+        for (const VisiblePolygon& p : it->second->polygons) {
+          const int o = side(p.outer_2d);
+          if (o < 0) continue;
+          bool here = true;
+          for (const auto& h : p.holes_2d) {
+            const int hs = side(h);
+            if (hs > 0) here = false;  // strictly inside a hole (its border belongs to the closed piece)
+          }
+          in = in || o == 0 || here;
+        }
+      if (!in) {
+        std::fprintf(stderr, "fuzz_render: pixel (%d, %d) shows body %d face %d outside its visible polygons\n", i, j, rs.faces[id][0],
+                     rs.faces[id][1]);
+        std::abort();
+      }
+    }
   return 0;
 }
