@@ -1,6 +1,8 @@
 // Exact option values and negative numbers after a space (see arguments.hpp).
 #include "cli/arguments.hpp"
 
+#include "io/standard_views.hpp"
+
 #include <unistd.h>
 
 #include <iostream>
@@ -56,6 +58,24 @@ Vector3 parse_vector3(const std::string& option, const std::string& text) {
     }
   }
   return Vector3(c[0], c[1], c[2]);
+}
+
+ViewRequest parse_view_request(const std::string& view, const std::string& eye, const std::string& target,
+                               const std::string& up, const std::string& up_axis) {
+  ViewRequest v;
+  auto point = [](const Vector3& x) { return Point3(x.x(), x.y(), x.z()); };
+  if (!view.empty()) {
+    if (auto named = standard_view(view, up_axis == "z")) {
+      v.direction = named->direction;
+      if (up.empty()) v.up = named->up;
+    } else {
+      v.direction = parse_vector3("--view", view);
+    }
+  }
+  if (!eye.empty()) v.eye = point(parse_vector3("--eye", eye));
+  if (!target.empty()) v.target = point(parse_vector3("--target", target));
+  if (!up.empty()) v.up = parse_vector3("--up", up);
+  return v;
 }
 
 std::string output_format(const std::string& format, const std::string& output,

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/view_choice.hpp"
 #include "kernel/geometry.hpp"
 
 namespace hlr::cli {
@@ -18,6 +19,11 @@ std::vector<std::string> join_negative_values(int argc, char** argv);
 
 /// Parses "X,Y,Z" exactly; throws std::invalid_argument naming the option and the bad part.
 Vector3 parse_vector3(const std::string& option, const std::string& text);
+
+/// The view of `--view` (a standard view name, with `up_axis` "y" or "z", or a direction),
+/// `--eye`, `--target` and `--up` (empty: not given), exactly; shared by render and raster.
+ViewRequest parse_view_request(const std::string& view, const std::string& eye, const std::string& target,
+                               const std::string& up, const std::string& up_axis);
 
 /// The output format: `format` when given, else from the output file's extension (case does
 /// not matter) looked up in `by_extension` ({".json", "json"}, ...), else `fallback` when there

@@ -25,8 +25,6 @@ struct RasterArgs {
   bool timings = false;
 };
 
-Point3 as_point(const Vector3& v) { return Point3(v.x(), v.y(), v.z()); }
-
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
@@ -50,17 +48,7 @@ RasterOptions raster_options(const RasterArgs& a) {
   }
   if (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384)
     throw std::invalid_argument("--size: each side must be 1 to 16384 pixels");
-  if (!a.view.empty()) {
-    if (auto named = standard_view(a.view, a.up_axis == "z")) {
-      o.view.direction = named->direction;
-      if (a.up.empty()) o.view.up = named->up;
-    } else {
-      o.view.direction = parse_vector3("--view", a.view);
-    }
-  }
-  if (!a.eye.empty()) o.view.eye = as_point(parse_vector3("--eye", a.eye));
-  if (!a.target.empty()) o.view.target = as_point(parse_vector3("--target", a.target));
-  if (!a.up.empty()) o.view.up = parse_vector3("--up", a.up);
+  o.view = parse_view_request(a.view, a.eye, a.target, a.up, a.up_axis);
   o.shading = a.shading == "gouraud" ? RasterShading::Gouraud : a.shading == "phong" ? RasterShading::Phong : RasterShading::Flat;
   if (!(a.smooth >= 0 && a.smooth <= 180)) throw std::invalid_argument("--smooth must be an angle from 0 to 180 degrees");
   o.smooth_degrees = a.smooth;

@@ -35,7 +35,6 @@ struct RenderArgs : OutputArgs {
   std::string views, up_axis;
 };
 
-Point3 as_point(const Vector3& v) { return Point3(v.x(), v.y(), v.z()); }
 
 RenderOptions render_options(const RenderArgs& a) {
   RenderOptions o;
@@ -52,17 +51,7 @@ RenderOptions render_options(const RenderArgs& a) {
   }
   if (o.lines.crease_degrees < 0 || o.lines.crease_degrees > 180)
     throw std::invalid_argument("--crease must be an angle in degrees from 0 to 180");
-  if (!a.view.empty()) {
-    if (auto named = standard_view(a.view, a.up_axis == "z")) {
-      o.view.direction = named->direction;
-      if (a.up.empty()) o.view.up = named->up;
-    } else {
-      o.view.direction = parse_vector3("--view", a.view);
-    }
-  }
-  if (!a.eye.empty()) o.view.eye = as_point(parse_vector3("--eye", a.eye));
-  if (!a.target.empty()) o.view.target = as_point(parse_vector3("--target", a.target));
-  if (!a.up.empty()) o.view.up = parse_vector3("--up", a.up);
+  o.view = parse_view_request(a.view, a.eye, a.target, a.up, a.up_axis);
   try {
     o.near = parse_rational(a.near);
   } catch (const NumberError& e) {

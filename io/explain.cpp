@@ -4,10 +4,20 @@
 #include <filesystem>
 
 #include "io/explain_parts.hpp"
+#include "io/svg_writer.hpp"
 
 namespace hlr {
 
 using namespace explain_parts;
+
+std::string explain_parts::problem_drawing_svg(const Problem& pr, const LineDrawing& lines, const Camera& camera) {
+  std::vector<DrawingBody> names;
+  for (const SceneBody& b : pr.scene.bodies) names.push_back({b.name, b.source});
+  SvgOptions so;
+  so.hidden_dashed = true;
+  so.width_mm = 120;
+  return to_svg(names, lines, camera, so);
+}
 
 SolutionJson explain(const Problem& pr) {
   struct Base {  // the page's numbering for this call only

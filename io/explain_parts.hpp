@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/camera.hpp"
+#include "algorithms/line_drawing.hpp"
 #include "io/explain.hpp"
 #include "io/scene.hpp"
 
@@ -100,6 +102,9 @@ inline void input_section(const Scene& s, J& out) {
   }
 }
 
+
+/// The page's line drawing of the problem's bodies (hidden lines dashed, 120 mm wide).
+std::string problem_drawing_svg(const Problem& pr, const LineDrawing& lines, const Camera& camera);
 
 J roberts_solution(const Problem& pr);
 J cyrus_beck_solution(const Problem& pr);

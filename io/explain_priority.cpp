@@ -163,12 +163,7 @@ J priority_solution(const Problem& pr) {
                            std::to_string(res.splits));
   out["sections"].push_back(r.j);
   out["result"]["order"] = order;
-  std::vector<DrawingBody> bnames;
-  for (const SceneBody& b : pr.scene.bodies) bnames.push_back({b.name, b.source});
-  SvgOptions so;
-  so.hidden_dashed = true;
-  so.width_mm = 120;
-  out["drawing_svg"] = to_svg(bnames, lines, cam, so);
+  out["drawing_svg"] = problem_drawing_svg(pr, lines, cam);
   return out;
 }
 

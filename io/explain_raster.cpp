@@ -224,12 +224,7 @@ J raster_solution(const Problem& pr) {
             "z-буфер, построчный z-буфер и алгоритм Варнока дают один и тот же кадр (проверено по каждому пикселу)");
   out["sections"].push_back(res.j);
   out["result"]["frame"] = result_rows;
-  std::vector<DrawingBody> bnames;
-  for (const SceneBody& b : pr.scene.bodies) bnames.push_back({b.name, b.source});
-  SvgOptions so;
-  so.hidden_dashed = true;
-  so.width_mm = 120;
-  out["drawing_svg"] = to_svg(bnames, lines, cam, so);
+  out["drawing_svg"] = problem_drawing_svg(pr, lines, cam);
   return out;
 }
 

@@ -131,12 +131,7 @@ J weiler_atherton_solution(const Problem& pr) {
                           std::to_string(wa.cycles));
   out["sections"].push_back(res.j);
   out["result"]["visible"] = visible;
-  std::vector<DrawingBody> names;
-  for (const SceneBody& b : pr.scene.bodies) names.push_back({b.name, b.source});
-  SvgOptions so;
-  so.hidden_dashed = true;
-  so.width_mm = 120;
-  out["drawing_svg"] = to_svg(names, lines, cam, so);
+  out["drawing_svg"] = problem_drawing_svg(pr, lines, cam);
   return out;
 }
 
