@@ -10,7 +10,7 @@
 #include "cli/commands.hpp"
 #include "io/atomic_file.hpp"
 #include "io/raster.hpp"
-#include "io/standard_views.hpp"
+#include "algorithms/progress.hpp"
 
 namespace hlr::cli {
 namespace {
@@ -22,7 +22,7 @@ struct RasterArgs {
   double smooth = 40;
   int samples = 1, bounces = 0;
   unsigned threads = 0;
-  bool timings = false;
+  bool timings = false, progress = false, quiet = false;
 };
 
 bool ends_with(const std::string& s, const std::string& tail) {
@@ -70,6 +70,7 @@ int run_raster(const RasterArgs& a) {
   if (!a.ids.empty() && !ends_with(a.ids, ".png") && !ends_with(a.ids, ".json"))
     throw std::invalid_argument("--ids must name a .png (16-bit, with a FILE.json legend) or a .json file");
   RasterOptions o = raster_options(a);
+  ProgressLine progress_line("raster", a.progress, a.quiet);
   RasterResult r;
   try {
     r = raster_files(a.inputs, o);
@@ -85,6 +86,7 @@ int run_raster(const RasterArgs& a) {
     else ids = ids_json(r);
   }
   if (!a.camera.empty()) camera = raster_camera_json(r);
+  progress("writing");
   write_file_atomically(a.output, image);
   if (!a.ids.empty()) write_file_atomically(a.ids, ids);
   if (!legend.empty()) write_file_atomically(a.ids + ".json", legend);
@@ -132,6 +134,8 @@ void add_raster_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--camera", a->camera, "Also write the exact sample grid as JSON (origin, right and down steps: check any pixel exactly)");
   cmd->add_option("--threads", a->threads, "Threads (default 0: all cores)");
   cmd->add_flag("--timings", a->timings, "Print the time of each stage to standard error");
+  cmd->add_flag("--progress", a->progress, "Say what it is doing on standard error (default: when it is a terminal)");
+  cmd->add_flag("--quiet", a->quiet, "No progress messages");
   cmd->callback([a, &exit_code] { exit_code = run_raster(*a); });
 }
 

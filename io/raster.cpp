@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "algorithms/parallel.hpp"
+#include "algorithms/progress.hpp"
 #include "algorithms/ray_casting.hpp"
 #include "algorithms/ray_tracing.hpp"
 #include "algorithms/scanline.hpp"
@@ -285,6 +286,7 @@ RasterResult raster(std::vector<Scene> scenes, const RasterOptions& o) {
     throw std::invalid_argument("--size times --samples must stay within 65536 pixels each way");
   RasterResult r;
   auto t0 = Clock::now();
+  progress("facing");
   RenderOptions ro;
   ro.view = o.view;
   ro.lines.edges = EdgeSelection::Feature;
@@ -305,9 +307,11 @@ RasterResult raster(std::vector<Scene> scenes, const RasterOptions& o) {
   r.seconds.setup = since(t0);
   t0 = Clock::now();
   r.width = o.width, r.height = o.height;
+  progress("exact scene: " + std::to_string(polys.size()) + " bodies");
   r.scene = raster_scene(polys, cam, r.render.drawing, o.width * o.samples, o.height * o.samples, o.threads);
   r.seconds.scene = since(t0);
   t0 = Clock::now();
+  progress(std::string(to_string(o.algorithm)) + ", " + std::to_string(o.width * o.samples) + " x " + std::to_string(o.height * o.samples) + " samples");
   switch (o.algorithm) {
     case RasterAlgorithm::ZBuffer: r.ids = zbuffer(r.scene, {o.threads}); break;
     case RasterAlgorithm::Scanline: r.ids = scanline(r.scene, {o.threads}); break;
@@ -316,6 +320,7 @@ RasterResult raster(std::vector<Scene> scenes, const RasterOptions& o) {
   }
   r.seconds.visibility = since(t0);
   t0 = Clock::now();
+  progress(o.bounces > 0 ? "Whitted ray tracing" : "shading");
   Shader shader(r, o);
   std::vector<Rgb> samples(r.ids.ids.size());
   const RasterGrid& g = r.scene.grid;
