@@ -121,4 +121,21 @@ Vec3d bumped_normal(const Material& m, const Vec3d& p, const Vec3d& n) {
   return out;
 }
 
+Rgb TextureImage::at(double u, double v) const {
+  if (width <= 0 || height <= 0 || !std::isfinite(u) || !std::isfinite(v)) return {1, 1, 1};
+  // Texel (i, j) has its centre at ((i + 1/2)/w, 1 − (j + 1/2)/h); repeat outside [0, 1].
+  const double x = (u - std::floor(u)) * width - 0.5, y = (1 - (v - std::floor(v))) * height - 0.5;
+  const double fx = std::floor(x), fy = std::floor(y), ax = x - fx, ay = y - fy;
+  auto texel = [&](long i, long j) {
+    i = ((i % width) + width) % width, j = ((j % height) + height) % height;
+    const std::uint8_t* p = &rgb[(static_cast<std::size_t>(j) * width + i) * 3];
+    return Rgb{p[0] / 255.0, p[1] / 255.0, p[2] / 255.0};
+  };
+  const long i = static_cast<long>(fx), j = static_cast<long>(fy);
+  const Rgb a = texel(i, j), b = texel(i + 1, j), c = texel(i, j + 1), d = texel(i + 1, j + 1);
+  Rgb out;
+  for (int k = 0; k < 3; ++k) out[k] = (1 - ay) * ((1 - ax) * a[k] + ax * b[k]) + ay * ((1 - ax) * c[k] + ax * d[k]);
+  return out;
+}
+
 }  // namespace hlr

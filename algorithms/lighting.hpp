@@ -8,6 +8,8 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "kernel/number.hpp"
@@ -16,6 +18,16 @@ namespace hlr {
 
 using Rgb = std::array<double, 3>;  // 0..1 per channel
 using Vec3d = std::array<double, 3>;
+
+/// An image texture (notes 42: the pattern in texture space (u, w), mapped onto a face by its
+/// corners' coordinates): 8-bit RGB rows from the top; (u, v) = (0, 0) is the bottom-left
+/// corner, repeating outside [0, 1].
+struct TextureImage {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;
+  /// The colour at (u, v), bilinear between the texel centres.
+  Rgb at(double u, double v) const;
+};
 
 struct Material {
   Rgb colour{0.78, 0.80, 0.84};
@@ -41,6 +53,9 @@ struct Material {
   /// Blinn's bump map (notes 42): the perturbation P(u, w) = bump·sin(2πu/s)·sin(2πw/s) along
   /// the normal over the face's own coordinates (s = bump_size); 0: none.
   double bump = 0, bump_size = 1;
+  /// An image texture (a body whose mesh has texture coordinates): its colour replaces the
+  /// material's colour at each pixel (hlr raster).
+  std::shared_ptr<const TextureImage> texture;
 };
 
 /// The transparency τ of a face of material m whose unit normal makes |cos φ| = abs_cos with

@@ -5,6 +5,7 @@
 // float, which is why the coordinates are read here.
 #pragma once
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,6 +21,10 @@ struct MeshData {
   std::vector<Point3> vertices;
   std::vector<Face> faces;
   std::vector<int> face_lines;
+  /// OBJ `vt` texture coordinates (u, v; shading data, doubles) and, per face, the index of
+  /// each corner's (aligned with the face's vertices; empty: the face has none).
+  std::vector<std::array<double, 2>> texcoords;
+  std::vector<std::vector<int>> face_texcoords;
 };
 
 /// Most vertices a single face may have.

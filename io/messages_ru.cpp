@@ -106,6 +106,7 @@ const std::vector<Entry>& catalogue() {
        "у направленного источника directional нет положения 'position' (он в бесконечности)"},
       {"give 'colour' or 'color', not both", "задайте 'colour' или 'color', но не оба"},
       {"give 'colour2' or 'color2', not both", "задайте 'colour2' или 'color2', но не оба"},
+      {"texture '@x' cannot be read as PNG", "текстуру '@1' не удаётся прочитать как PNG"},
       {"ior must be between 1/10 and 10", "показатель преломления ior: ожидается число от 1/10 до 10"},
       {"reflection + transparency must not exceed 1", "сумма reflection + transparency не может быть больше 1"},
       {"a directional light has no attenuation (it is at infinity)",

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <csetjmp>
 #include <chrono>
+#include <map>
 #include <memory>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -126,6 +127,25 @@ class Shader {
   Shader(const RasterResult& r, const RasterOptions& o) : r_(r), o_(o), lift_(r.render.camera), light_(render_lighting(r.render)) {
     flat_ = flat_face_colours(r.render);
     for (std::size_t b = 0; b < r.render.bodies.size(); ++b) materials_.push_back(body_material(r.render, b));
+    // Textured polygons seen: their corners with the texture coordinates of the mesh.
+    std::vector<char> seen_poly(r.scene.source.size(), 0);
+    for (int p : r.ids.polygons)
+      if (p >= 0) seen_poly[p] = 1;
+    for (std::size_t p = 0; p < r.scene.source.size(); ++p) {
+      const ScenePolygon& sp = r.scene.source[p];
+      const SceneBody& body = *r.render.bodies[sp.body];
+      if (!seen_poly[p] || !materials_[sp.body].texture || body.face_texcoords.size() <= static_cast<std::size_t>(sp.face) ||
+          body.face_texcoords[sp.face].empty())
+        continue;
+      const Face& face = body.body.faces()[sp.face];
+      Mapped mp;
+      for (std::size_t k = 0; k < sp.corners.size(); ++k) {
+        mp.at.push_back(d3(sp.corners[k]));
+        const std::size_t q = std::find(face.begin(), face.end(), sp.verts[k]) - face.begin();
+        mp.uv.push_back(body.texcoords[body.face_texcoords[sp.face][q]]);
+      }
+      mapped_.emplace(static_cast<int>(p), std::move(mp));
+    }
     if (o.bounces > 0) {
       std::vector<const Polyhedron*> polys;
       std::vector<Material> materials;
@@ -154,7 +174,7 @@ class Shader {
       const BodyNormals& n = normals_[sp.body];
       const bool back = r.render.drawing.facing[sp.body][sp.face] < 0;
       Material m = body_material(r.render, sp.body);
-      if (m.checker > 0) m.colour = {1, 1, 1};  // Gouraud: the texture modulates the interpolated light
+      if (m.checker > 0 || m.texture) m.colour = {1, 1, 1};  // Gouraud: the texture modulates the interpolated light
       Corners& c = corners_[p];
       const Plane& h = r.render.bodies[sp.body]->body.planes()[sp.face];
       c.n = {to_double(h.normal().x()), to_double(h.normal().y()), to_double(h.normal().z())};
@@ -176,14 +196,14 @@ class Shader {
     const ScenePolygon& sp = r_.scene.source[p];
     if (whitted_) return traced(sp, x, y);
     const Material& mat = materials_[sp.body];
-    const bool textured = mat.checker > 0 || mat.bump > 0;
+    const bool textured = mat.checker > 0 || mat.bump > 0 || mapped_.count(p);
     if (o_.shading == RasterShading::Flat && !textured) return flat_[sp.body][sp.face];
     if (o_.shading == RasterShading::Flat) {  // a textured face: its colour and bumped normal at the point
       const Plane& h = r_.render.bodies[sp.body]->body.planes()[sp.face];
       const Vec3d n{to_double(h.normal().x()), to_double(h.normal().y()), to_double(h.normal().z())};
       const Vec3d at = lift_.at(x, y, n, to_double(h.d()));
       Material m = mat;
-      m.colour = surface_colour(mat, at, n);
+      m.colour = colour_at(p, mat, at, n);
       Vec3d un = unit(n);
       if (r_.render.drawing.facing[sp.body][sp.face] < 0) un = {-un[0], -un[1], -un[2]};
       return shade(m, light_, at, bumped_normal(mat, at, un), lift_.to_viewer(at));
@@ -198,7 +218,7 @@ class Shader {
       for (int t = 0; t < 3; ++t)
         for (int ch = 0; ch < 3; ++ch) out[ch] += w[t] * c.colour[idx[t]][ch];
       if (mat.checker > 0) {
-        const Rgb t = surface_colour(mat, at, c.n);
+        const Rgb t = colour_at(p, mat, at, c.n);
         for (int ch = 0; ch < 3; ++ch) out[ch] *= t[ch];
       }
       for (double& ch : out) ch = std::clamp(ch, 0.0, 1.0);
@@ -208,11 +228,26 @@ class Shader {
     for (int t = 0; t < 3; ++t)
       for (int ch = 0; ch < 3; ++ch) nn[ch] += w[t] * c.normal[idx[t]][ch];
     Material m = c.material;
-    m.colour = surface_colour(mat, at, c.n);
+    m.colour = colour_at(p, mat, at, c.n);
     return shade(m, light_, at, bumped_normal(mat, at, unit(nn)), lift_.to_viewer(at));
   }
 
  private:
+  // The colour of the material at a point of polygon p: its image texture through the corners'
+  // texture coordinates (interpolated over the fan triangles, notes 42's linear map), else its
+  // checker or plain colour.
+  Rgb colour_at(int p, const Material& mat, const Vec3d& at, const Vec3d& n) const {
+    auto it = mapped_.find(p);
+    if (it == mapped_.end() || !mat.texture) return surface_colour(mat, at, n);
+    const Mapped& mp = it->second;
+    double w[3];
+    const int k = fan_weights(mp.at, n, at, w);
+    const int idx[3] = {0, k, k + 1};
+    double u = 0, v = 0;
+    for (int t = 0; t < 3; ++t) u += w[t] * mp.uv[idx[t]][0], v += w[t] * mp.uv[idx[t]][1];
+    return mat.texture->at(u, v);
+  }
+
   // Whitted: the exact first hit in doubles, the ray's direction, and total internal reflection
   // there decided exactly when the material could reflect totally on entering (ior < 1).
   Rgb traced(const ScenePolygon& sp, double x, double y) const {
@@ -248,6 +283,11 @@ class Shader {
   std::vector<Corners> corners_;
   std::unique_ptr<WhittedScene> whitted_;
   std::vector<Material> materials_;
+  struct Mapped {  // a textured polygon's corners and their texture coordinates
+    std::vector<Vec3d> at;
+    std::vector<std::array<double, 2>> uv;
+  };
+  std::map<int, Mapped> mapped_;
 };
 
 // The image from the samples: each pixel the filter's weighted mean of its samples (box: its

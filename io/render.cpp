@@ -290,6 +290,10 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
       if (auto fixed = remove_zero_area_triangles(b.body)) {
         b.body = std::move(fixed->body);
         for (const std::string& n : fixed->notes) repairs.push_back(b.source + ": body '" + b.name + "' " + n);
+        if (!b.face_texcoords.empty()) {  // the faces changed: their texture corners no longer match
+          b.face_texcoords.clear();
+          repairs.push_back(b.source + ": body '" + b.name + "' texture coordinates dropped with the repair");
+        }
       }
       r.bodies.push_back(&b);
       polys.push_back(&b.body);

@@ -199,8 +199,11 @@ bool is_scene_file(const std::string& path) {
 Scene scene_from_mesh(const std::string& path) {
   Scene s;
   s.file = path;
-  s.bodies.push_back(SceneBody{std::filesystem::path(path).stem().string(), path, load_mesh(path),
-                               identity_transform(), {}, {}, {}, std::nullopt});
+  MeshData data = read_mesh_file(path);
+  auto texcoords = std::move(data.texcoords);
+  auto face_texcoords = std::move(data.face_texcoords);
+  s.bodies.push_back(SceneBody{std::filesystem::path(path).stem().string(), path, make_polyhedron(std::move(data), path),
+                               identity_transform(), {}, {}, {}, std::nullopt, std::move(texcoords), std::move(face_texcoords)});
   return s;
 }
 
@@ -305,13 +308,18 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
     std::string source = path;
     std::optional<Polyhedron> poly;
     std::vector<Face> typed;
+    std::vector<std::array<double, 2>> texcoords;
+    std::vector<std::vector<int>> face_texcoords;
     if (b["mesh"]) {
       std::string rel = c.text(b["mesh"], "mesh");
       std::filesystem::path mp = rel;
       if (mp.is_relative()) mp = dir / mp;
       source = mp.string();
       try {
-        poly.emplace(load_mesh(source));
+        MeshData data = read_mesh_file(source);
+        texcoords = std::move(data.texcoords);
+        face_texcoords = std::move(data.face_texcoords);
+        poly.emplace(make_polyhedron(std::move(data), source));
       } catch (const InputError& e) {
         c.fail(b["mesh"], "mesh '" + rel + "': " + e.what());
       }
@@ -338,8 +346,11 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
         m = compose(m, one);
       }
       poly.emplace(transformed(c, b["transform"], *poly, m));
+      if (is_affine(m) && det3(m) < 0)  // the faces were turned: their corners' texture indices too
+        for (auto& t : face_texcoords) std::reverse(t.begin(), t.end());
     }
-    s.bodies.push_back(SceneBody{name, source, std::move(*poly), m, std::move(steps), std::move(notes), std::move(typed), std::nullopt});
+    s.bodies.push_back(SceneBody{name, source, std::move(*poly), m, std::move(steps), std::move(notes), std::move(typed), std::nullopt,
+                                 std::move(texcoords), std::move(face_texcoords)});
     if (b["material"]) s.bodies.back().material = parse_material(c, b["material"], static_cast<int>(i));
   }
   if (root["view"]) s.view = parse_view(c, root["view"]);

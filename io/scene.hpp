@@ -40,6 +40,10 @@ struct SceneBody {
   std::vector<Face> typed_faces;
   /// The body's material for shaded surfaces (unset: the default, in the palette's colour).
   std::optional<Material> material = std::nullopt;
+  /// OBJ texture coordinates and each face's corners' indices into them (aligned with the
+  /// face's vertices; empty: none), for `material.texture` (hlr raster).
+  std::vector<std::array<double, 2>> texcoords = {};
+  std::vector<std::vector<int>> face_texcoords = {};
 };
 
 struct Scene {

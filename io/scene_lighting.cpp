@@ -1,7 +1,11 @@
 // Lights and materials in scene files (see scene_lighting.hpp, docs/scene-format.md).
 #include "io/scene_lighting.hpp"
 
+#include <png.h>
+
 #include <cmath>
+#include <filesystem>
+#include <memory>
 
 namespace hlr {
 namespace {
@@ -31,6 +35,22 @@ Rgb colour(const YamlContext& c, const YAML::Node& n, const std::string& what) {
   }
   if (!n.IsSequence() || n.size() != 3) c.fail(n, what + " must be [r, g, b] from 0 to 1 or #rrggbb");
   return {real(c, n[0], what, 0, 1), real(c, n[1], what, 0, 1), real(c, n[2], what, 0, 1)};
+}
+
+// An 8-bit RGB texture from a PNG file (libpng's simplified API converts any PNG).
+std::shared_ptr<const TextureImage> read_texture(const YamlContext& c, const YAML::Node& n, const std::string& path) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&image, path.c_str())) c.fail(n, "texture '" + path + "' cannot be read as PNG");
+  image.format = PNG_FORMAT_RGB;
+  auto t = std::make_shared<TextureImage>();
+  t->width = static_cast<int>(image.width), t->height = static_cast<int>(image.height);
+  t->rgb.resize(PNG_IMAGE_SIZE(image));
+  if (!png_image_finish_read(&image, nullptr, t->rgb.data(), 0, nullptr)) {
+    png_image_free(&image);
+    c.fail(n, "texture '" + path + "' cannot be read as PNG");
+  }
+  return t;
 }
 
 Light parse_light(const YamlContext& c, const YAML::Node& n) {
@@ -88,7 +108,7 @@ Lighting parse_lighting(const YamlContext& c, const YAML::Node& n) {
 
 Material parse_material(const YamlContext& c, const YAML::Node& n, int body) {
   c.check_keys(n, "a material", {"colour", "color", "ka", "kd", "ks", "shininess", "transparency", "transparency_model",
-                                 "transparency_min", "transparency_power", "reflection", "ior", "checker", "colour2", "color2", "bump", "bump_size"});
+                                 "transparency_min", "transparency_power", "reflection", "ior", "checker", "colour2", "color2", "bump", "bump_size", "texture"});
   Material m;
   m.colour = palette_colour(body);
   if (n["colour"] && n["color"]) c.fail(n, "give 'colour' or 'color', not both");
@@ -108,6 +128,11 @@ Material parse_material(const YamlContext& c, const YAML::Node& n, int body) {
     if (!(m.ior >= 0.1 && m.ior <= 10)) c.fail(n["ior"], "ior must be between 1/10 and 10");
   }
   if (m.reflection + m.transparency > 1) c.fail(n, "reflection + transparency must not exceed 1");
+  if (n["texture"]) {
+    std::filesystem::path tp = c.text(n["texture"], "texture");
+    if (tp.is_relative()) tp = std::filesystem::path(c.file).parent_path() / tp;
+    m.texture = read_texture(c, n["texture"], tp.string());
+  }
   if (n["bump"]) m.bump = real(c, n["bump"], "bump", 0, 1e300);
   if (n["bump_size"]) m.bump_size = real(c, n["bump_size"], "bump_size", 1e-300, 1e300);
   if (n["checker"]) m.checker = real(c, n["checker"], "checker", 0, 1e300);

@@ -63,6 +63,28 @@ TEST(MeshIO, ObjExactWithNegativeAndSlashIndices) {
   EXPECT_TRUE(t.report().valid_solid());
 }
 
+TEST(MeshIO, ObjTextureCoordinatesPerCorner) {
+  MeshData m = read_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0.5 1\nf 1/1 2/2 3/3\nf 2 4 3\nf -3/-3/1 -1/-2 -2/-1\n", "t.obj");
+  ASSERT_EQ(m.texcoords.size(), 3u);
+  EXPECT_EQ(m.texcoords[2], (std::array<double, 2>{0.5, 1}));
+  ASSERT_EQ(m.face_texcoords.size(), 3u);
+  EXPECT_EQ(m.face_texcoords[0], (std::vector<int>{0, 1, 2}));
+  EXPECT_TRUE(m.face_texcoords[1].empty());  // a face without them
+  EXPECT_EQ(m.face_texcoords[2], (std::vector<int>{0, 1, 2}));
+  auto fails = [](const std::string& text, const std::string& what, int line) {
+    try {
+      read_obj(text, "t.obj");
+      ADD_FAILURE() << "accepted: " << what;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("t.obj:" + std::to_string(line)), std::string::npos) << e.what();
+    }
+  };
+  fails("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/1\n", "texture index 2 is out of range", 5);
+  fails("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2 3/1\n", "some corners and not others", 5);
+  fails("v 0 0 0\nvt zero 0\n", "bad number 'zero' in texture coordinates", 2);
+}
+
 TEST(MeshIO, AsciiStlMergesEqualCornersExactly) {
   std::string stl = "solid t\n";
   const char* tris[4][3] = {{"0.1 0.2 0.3", "0.1 1.2 0.3", "1.1 0.2 0.3"},

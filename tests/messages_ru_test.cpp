@@ -34,7 +34,7 @@ bool allowed_latin(const std::string& w) {
       "ZFAR", "x1", "y1", "z1", "x2", "y2", "z2", "YAML", "JSON", "NaN", "hlr", "off", "obj", "stl", "ply", "GiB", "yaml",
       "material", "lighting", "lights", "ambient", "specular", "phong", "blinn", "colour", "color", "ka", "kd", "ks", "shininess",
       "type", "directional", "point", "spot", "position", "intensity", "attenuation", "cone", "exponent", "rrggbb", "a0", "a1",
-      "a2", "r", "g", "b", "weiler", "atherton", "faces", "method", "priority", "raster", "size", "window", "trace", "reflection", "transparency", "ior", "x0", "x1", "y0", "y1"};
+      "a2", "r", "g", "b", "weiler", "atherton", "faces", "method", "priority", "raster", "size", "window", "trace", "reflection", "transparency", "ior", "x0", "x1", "y0", "y1", "PNG"};
   return keys.count(w) > 0;
 }
 
@@ -110,6 +110,7 @@ TEST(MessagesRu, EveryErrorOfABadProblemIsTranslated) {
       "problem: roberts\nbodies:\n" + std::string(kCube) + "lighting: {lights: [{type: point, position: [0, 0, 9], flux: 2}]}\n",
       "problem: roberts\nbodies:\n" + std::string(kCube) + "    material: {transparency: 0.6, reflection: 0.6}\n",
       "problem: roberts\nbodies:\n" + std::string(kCube) + "    material: {ior: 20}\n",
+      "problem: roberts\nbodies:\n" + std::string(kCube) + "    material: {texture: no_such.png}\n",
       "problem: roberts\nbodies:\n" + std::string(kCube) + "    material: {colour2: [1, 1, 1], color2: [1, 1, 1]}\n",
       "problem: raster\nbodies:\n" + std::string(kCube) + "view: {eye: [3, 4, 5]}\n",
       "problem: raster\nbodies:\n" + std::string(kCube) + "size: 8\n",

@@ -182,3 +182,57 @@ TEST(Texture, CheckerCellsAlternateAcrossTheFace) {
 }
 
 }  // namespace
+
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+TEST(Texture, ImageTexelsAtTheirCentresAndRepeating) {
+  TextureImage t;
+  t.width = 2, t.height = 2;
+  t.rgb = {255, 0, 0, 0, 255, 0,    // top row: red, green
+           0, 0, 255, 255, 255, 255};  // bottom row: blue, white
+  auto near = [](const Rgb& a, const Rgb& b) { return std::fabs(a[0] - b[0]) + std::fabs(a[1] - b[1]) + std::fabs(a[2] - b[2]) < 1e-12; };
+  EXPECT_TRUE(near(t.at(0.25, 0.75), {1, 0, 0}));  // (u, v) = (0, 0) is the bottom-left corner
+  EXPECT_TRUE(near(t.at(0.75, 0.75), {0, 1, 0}));
+  EXPECT_TRUE(near(t.at(0.25, 0.25), {0, 0, 1}));
+  EXPECT_TRUE(near(t.at(1.75, -0.75), {1, 1, 1}));  // repeats
+  EXPECT_TRUE(near(t.at(0.5, 0.75), {0.5, 0.5, 0}));  // halfway between red and green
+}
+
+// An OBJ square with texture coordinates u = x/4, v = y/4 seen along z, lit by ambient light
+// only: every pixel shows the texture at its centre's (u, v).
+TEST(Texture, ObjTextureCoordinatesMapTheImageOntoTheFace) {
+  const auto dir = std::filesystem::temp_directory_path() / "hlr_texture_test";
+  std::filesystem::create_directories(dir);
+  std::vector<std::uint8_t> img;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) img.insert(img.end(), {static_cast<std::uint8_t>(60 * i), static_cast<std::uint8_t>(60 * j), 128});
+  std::ofstream(dir / "t.png", std::ios::binary) << png_rgb(4, 4, img);
+  std::ofstream(dir / "sq.obj") << "v 0 0 0\nv 4 0 0\nv 4 4 0\nv 0 4 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n";
+  std::ofstream(dir / "s.yaml") << "bodies:\n  - mesh: sq.obj\n    material: {texture: t.png, ka: 1, kd: 0, ks: 0}\n"
+                                   "view: {direction: [0, 0, 1], up: [0, 1, 0]}\nlighting: {ambient: [1, 1, 1], lights: []}\n";
+  RasterOptions o;
+  o.width = 40, o.height = 40;
+  TextureImage t;
+  t.width = t.height = 4;
+  t.rgb = img;
+  for (RasterShading sh : {RasterShading::Flat, RasterShading::Phong}) {
+    o.shading = sh;
+    RasterResult r = raster_files({(dir / "s.yaml").string()}, o);
+    int checked = 0;
+    for (int j = 0; j < 40; ++j)
+      for (int i = 0; i < 40; ++i) {
+        if (r.ids.at(i, j) < 0) continue;
+        const double u = r.scene.grid.cx(i) / 4, v = r.scene.grid.cy(j) / 4;
+        const Rgb want = t.at(u, v);
+        for (int k = 0; k < 3; ++k)
+          EXPECT_NEAR(r.rgb[(static_cast<std::size_t>(j) * 40 + i) * 3 + k], std::lround(want[k] * 255), 1) << i << ", " << j;
+        ++checked;
+      }
+    EXPECT_GT(checked, 1000);
+  }
+}
+
+}  // namespace
