@@ -24,10 +24,10 @@ struct Entry {
 const std::vector<Entry>& catalogue() {
   static const std::vector<Entry> c = {
       // ---- the problem reader (io/problem.cpp)
-      {"a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster)",
-       "в файле задачи нужна строка 'problem: ТИП' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster)"},
-      {"unknown problem type '@x' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster)",
-       "неизвестный тип задачи '@1' (известны: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster)"},
+      {"a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster, ray-tree)",
+       "в файле задачи нужна строка 'problem: ТИП' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster, ray-tree)"},
+      {"unknown problem type '@x' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster, ray-tree)",
+       "неизвестный тип задачи '@1' (известны: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster, ray-tree)"},
       {"a horizon problem takes heights, not bodies", "задача horizon принимает высоты (heights), а не тела (bodies)"},
       {"a raster problem takes an orthographic view (the notes' depth is linear across the picture)",
        "задача raster принимает только параллельную проекцию (глубина в конспекте линейна по картине)"},
@@ -39,6 +39,10 @@ const std::vector<Entry>& catalogue() {
       {"trace must be a list of pixels [column, row]", "trace задаётся списком пикселов [столбец, строка]"},
       {"a traced pixel is [column, row]", "прослеживаемый пиксел задаётся как [столбец, строка]"},
       {"the pixel is outside the grid", "пиксел вне сетки"},
+      {"a ray-tree problem needs 'ray: {from: [x, y, z], direction: [dx, dy, dz]}'",
+       "задаче ray-tree нужен луч 'ray: {from: [x, y, z], direction: [dx, dy, dz]}'"},
+      {"the ray's direction has zero length", "направление луча имеет нулевую длину"},
+      {"depth must be 0 to 8", "глубина depth — от 0 до 8"},
       {"a horizon problem needs 'heights': one list of heights per cut z = const",
        "задаче horizon нужны высоты 'heights': по списку высот для каждого сечения z = const"},
       {"each row of heights needs at least 2 numbers", "в каждой строке высот нужно не меньше 2 чисел"},

@@ -23,7 +23,7 @@ std::vector<Rational> numbers(const P& c, const YAML::Node& n, std::size_t count
 }
 
 Problem::Type parse_type(const P& c, const YAML::Node& n) {
-  if (!n || !n.IsScalar()) c.fail(n, "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster)");
+  if (!n || !n.IsScalar()) c.fail(n, "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster, ray-tree)");
   const std::string t = n.Scalar();
   if (t == "roberts") return Problem::Type::Roberts;
   if (t == "cyrus-beck") return Problem::Type::CyrusBeck;
@@ -35,7 +35,8 @@ Problem::Type parse_type(const P& c, const YAML::Node& n) {
   if (t == "weiler-atherton") return Problem::Type::WeilerAtherton;
   if (t == "priority") return Problem::Type::Priority;
   if (t == "raster") return Problem::Type::Raster;
-  c.fail(n, "unknown problem type '" + t + "' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster)");
+  if (t == "ray-tree") return Problem::Type::RayTree;
+  c.fail(n, "unknown problem type '" + t + "' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster, ray-tree)");
 }
 
 std::string list_text(const std::vector<Rational>& v) {
@@ -88,9 +89,10 @@ const char* to_string(Problem::Type t) {
     case Problem::Type::Horizon: return "horizon";
     case Problem::Type::WeilerAtherton: return "weiler-atherton";
     case Problem::Type::Priority: return "priority";
-    case Problem::Type::Raster: break;
+    case Problem::Type::Raster: return "raster";
+    case Problem::Type::RayTree: break;
   }
-  return "raster";
+  return "ray-tree";
 }
 
 Problem load_problem(const std::string& path) { return load_problem_text(read_file_bytes(path), path); }
@@ -116,6 +118,8 @@ Problem load_problem_text(const std::string& text, const std::string& path) {
   if (horizon) extra.insert(extra.end(), {"heights", "x", "z"});
   const bool raster = pr.type == Problem::Type::Raster;
   if (raster) extra.insert(extra.end(), {"size", "window", "trace"});
+  const bool ray_tree = pr.type == Problem::Type::RayTree;
+  if (ray_tree) extra.insert(extra.end(), {"ray", "depth"});
   pr.scene = load_scene_text(text, path, extra, !clipping && !horizon);
   if (root["title"]) {
     if (!root["title"].IsScalar()) c.fail(root["title"], "title must be text");
@@ -211,6 +215,18 @@ Problem load_problem_text(const std::string& text, const std::string& path) {
         if (ij[0] < 0 || ij[0] >= pr.raster_width || ij[1] < 0 || ij[1] >= pr.raster_height) c.fail(x, "the pixel is outside the grid");
         pr.raster_trace.push_back(ij);
       }
+    }
+  }
+  if (ray_tree) {
+    const YAML::Node r = root["ray"];
+    if (!r || !r.IsMap() || !r["from"] || !r["direction"]) c.fail(r ? r : root, "a ray-tree problem needs 'ray: {from: [x, y, z], direction: [dx, dy, dz]}'");
+    c.check_keys(r, "ray", {"from", "direction"});
+    pr.ray_from = c.point(r["from"], "ray from");
+    pr.ray_direction = c.vector(r["direction"], "ray direction");
+    if (pr.ray_direction.is_zero()) c.fail(r["direction"], "the ray's direction has zero length");
+    if (root["depth"]) {
+      pr.ray_depth = static_cast<int>(c.integer(root["depth"], "depth"));
+      if (pr.ray_depth < 0 || pr.ray_depth > 8) c.fail(root["depth"], "depth must be 0 to 8");
     }
   }
   if (root["eps"]) {

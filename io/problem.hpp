@@ -19,7 +19,7 @@
 namespace hlr {
 
 struct Problem {
-  enum class Type { Roberts, CyrusBeck, Midpoint, Convexity, Decompose, Transform, Horizon, WeilerAtherton, Priority, Raster };
+  enum class Type { Roberts, CyrusBeck, Midpoint, Convexity, Decompose, Transform, Horizon, WeilerAtherton, Priority, Raster, RayTree };
   Type type = Type::Roberts;
   std::string file;
   std::string title;  // optional `title`
@@ -38,6 +38,10 @@ struct Problem {
   int raster_width = 8, raster_height = 6;
   std::array<Rational, 4> raster_window{Rational(0), Rational(8), Rational(0), Rational(6)};  // x0, x1, y0, y1
   std::vector<std::array<int, 2>> raster_trace;
+  // ray-tree: the primary ray (exact) and the levels of reflected and refracted rays
+  Point3 ray_from;
+  Vector3 ray_direction{Rational(0), Rational(0), Rational(-1)};
+  int ray_depth = 3;
   /// The page numbers faces, vertices and columns from this (0, or 1 as the notes do); the
   /// problem file's own indices and the JSON `result` stay 0-based.
   int index_base = 0;

@@ -52,11 +52,11 @@ const SolutionJson& values(const SolutionJson& s, const std::string& section, in
 }
 }  // namespace
 
-TEST(Explain, AtLeastEightProblemsCoveringAllTenTypes) {
+TEST(Explain, AtLeastEightProblemsCoveringAllElevenTypes) {
   std::set<std::string> types;
   for (const auto& p : problems()) types.insert(to_string(load_problem(p).type));
   EXPECT_GE(problems().size(), 8u);
-  EXPECT_EQ(types.size(), 10u);
+  EXPECT_EQ(types.size(), 11u);
 }
 
 TEST(Explain, GoldenMarkdownAndJson) {
@@ -332,7 +332,7 @@ TEST(Explain, InequalitiesReadLikeTheNotes) {
 // (the author's text) and formula symbols, no Latin word; and it uses the course's words.
 TEST(Explain, RussianPageHasNoEnglishOutsideFormulas) {
   const std::set<std::string> formulas = {"VT", "eps", "h_j", "light", "t_max", "t_min", "f_", "z_", "z_min", "z_max",
-                                          "X_L", "X_R", "Z_L", "Z_x", "Z_y"};  // f_п, z_б, z_min: the notes' symbols
+                                          "X_L", "X_R", "Z_L", "Z_x", "Z_y", "k_r", "k_t", "ior", "cos"};  // f_п, z_б, z_min: the notes' symbols
   bool saw_nonfacing = false, saw_hidden_edges = false, saw_piercing = false;
   for (const std::string& file : problems()) {
     Problem pr = load_problem(file);
@@ -688,4 +688,25 @@ TEST(Explain, RasterProblemErrors) {
   fails("problem: raster\n" + body + "size: [3, 3]\nwindow: [0, 1, 0, 1]\n", "binary fraction");
   fails("problem: raster\n" + body + "view: {eye: [0, 0, 5]}\n", "orthographic");
   fails("problem: raster\n" + body + "trace: [[9, 0]]\n", "outside the grid");
+}
+
+// The ray tree (issue 17) worked by hand: the ray (3, 0, −4) from (−3, 0, 5) meets the glass
+// top z = 1 at t = 1, (0, 0, 1); entering, η = 2/3, cos²θ = 16/25, k = 1 − (4/9)(9/25) = 21/25;
+// the reflection (3, 0, 4) is exact and leaves; the refracted ray has sin θt = (2/3)(3/5) = 2/5,
+// direction (2/5, 0, −√21/5), and leaves the slab's bottom parallel to the primary ray.
+TEST(Explain, RayTreePageByHand) {
+  SolutionJson s = explain(load_problem(kData + "/problems/ray_tree_slab.yaml"));
+  const auto& t = table(s, "rt_tree", "rt_nodes");
+  ASSERT_GE(t.size(), 5u);
+  EXPECT_EQ(t[0][6], "1");
+  EXPECT_EQ(t[0][7], "(0, 0, 1)");
+  EXPECT_EQ(t[0][8], "2/3");
+  EXPECT_EQ(t[0][9], "16/25");
+  EXPECT_EQ(t[0][10], "21/25");
+  EXPECT_EQ(t[0][11], "no");
+  EXPECT_EQ(t[1][4], "(3, 0, 4)");
+  EXPECT_EQ(t[1][5]["en"], "leaves the scene");
+  EXPECT_EQ(t[2][4], "≈ (0.4, 0, -0.916515)");
+  EXPECT_EQ(t[4][4], "≈ (0.6, 0, -0.8)");  // out of the slab: parallel to (3, 0, −4)
+  EXPECT_EQ(t[4][5], "mirror/0");
 }

@@ -34,7 +34,7 @@ bool allowed_latin(const std::string& w) {
       "ZFAR", "x1", "y1", "z1", "x2", "y2", "z2", "YAML", "JSON", "NaN", "hlr", "off", "obj", "stl", "ply", "GiB", "yaml",
       "material", "lighting", "lights", "ambient", "specular", "phong", "blinn", "colour", "color", "ka", "kd", "ks", "shininess",
       "type", "directional", "point", "spot", "position", "intensity", "attenuation", "cone", "exponent", "rrggbb", "a0", "a1",
-      "a2", "r", "g", "b", "weiler", "atherton", "faces", "method", "priority", "raster", "size", "window", "trace", "reflection", "transparency", "ior", "x0", "x1", "y0", "y1", "PNG"};
+      "a2", "r", "g", "b", "weiler", "atherton", "faces", "method", "priority", "raster", "size", "window", "trace", "reflection", "transparency", "ior", "x0", "x1", "y0", "y1", "PNG", "ray", "tree", "from", "direction", "dx", "dy", "dz", "depth"};
   return keys.count(w) > 0;
 }
 
@@ -120,6 +120,9 @@ TEST(MessagesRu, EveryErrorOfABadProblemIsTranslated) {
       "problem: raster\nbodies:\n" + std::string(kCube) + "trace: 3\n",
       "problem: raster\nbodies:\n" + std::string(kCube) + "trace: [[1, 2, 3]]\n",
       "problem: raster\nbodies:\n" + std::string(kCube) + "trace: [[100, 0]]\n",
+      "problem: ray-tree\nbodies:\n" + std::string(kCube) + "ray: {from: [0, 0, 5]}\n",
+      "problem: ray-tree\nbodies:\n" + std::string(kCube) + "ray: {from: [0, 0, 5], direction: [0, 0, 0]}\n",
+      "problem: ray-tree\nbodies:\n" + std::string(kCube) + "ray: {from: [0, 0, 5], direction: [0, 0, -1]}\ndepth: 9\n",
       "problem: [roberts]\n",
       "problem: robert\n",
       "- 1\n- 2\n",
