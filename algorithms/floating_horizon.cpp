@@ -1,6 +1,7 @@
 // The exact floating horizon (see floating_horizon.hpp; course notes section 24).
 #include "algorithms/floating_horizon.hpp"
 
+#include "algorithms/floating_horizon_filtered.hpp"
 #include "algorithms/parallel.hpp"
 
 #include <algorithm>
@@ -242,6 +243,10 @@ void emit_runs(const P2& a, const P2& b, const std::vector<std::pair<Rational, R
 }  // namespace
 
 HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam, std::vector<HorizonStep>* trace) {
+  return trace ? floating_horizon_exact(g, cam, trace) : floating_horizon_filtered(g, cam);
+}
+
+HorizonResult floating_horizon_exact(const HeightGrid& g, const Camera& cam, std::vector<HorizonStep>* trace) {
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
   if (nx < 2 || nz < 1 || g.ys.size() != nx * nz) throw std::invalid_argument("the grid needs at least 2 x samples and one cut");
   for (std::size_t i = 1; i < nx; ++i)
@@ -365,10 +370,12 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam, std::vect
 }
 
 void sort_visible(HorizonResult& res) {
-  std::map<int, int> rank;
-  for (std::size_t k = 0; k < res.order.size(); ++k) rank[res.order[k]] = static_cast<int>(k);
+  int top = 0;
+  for (int c : res.order) top = std::max(top, c + 1);
+  std::vector<int> rank(static_cast<std::size_t>(top), 0);
+  for (std::size_t k = 0; k < res.order.size(); ++k) rank[static_cast<std::size_t>(res.order[k])] = static_cast<int>(k);
   std::stable_sort(res.visible.begin(), res.visible.end(), [&](const HorizonPiece& a, const HorizonPiece& b) {
-    if (a.curve != b.curve) return rank[a.curve] < rank[b.curve];
+    if (a.curve != b.curve) return rank[static_cast<std::size_t>(a.curve)] < rank[static_cast<std::size_t>(b.curve)];
     if (a.segment != b.segment) return a.segment < b.segment;
     return a.t0 < b.t0;
   });

@@ -80,7 +80,12 @@ struct HorizonStep {
 /// component (the cutting planes are not seen edge-on) and whose up vector makes the cuts
 /// x-monotone in the picture (up has no x or z component... any up with the picture's x axis
 /// not orthogonal to the x axis). Throws std::invalid_argument otherwise or for a bad grid.
+/// Without a trace it runs floating_horizon_filtered() (the same result on certified doubles,
+/// floating_horizon_filtered.hpp); with one, floating_horizon_exact().
 HorizonResult floating_horizon(const HeightGrid& grid, const Camera& camera, std::vector<HorizonStep>* trace = nullptr);
+
+/// The same sweep on rationals throughout (the exam page's trace, and the tests' reference).
+HorizonResult floating_horizon_exact(const HeightGrid& grid, const Camera& camera, std::vector<HorizonStep>* trace = nullptr);
 
 /// Orders `visible` as floating_horizon() returns it: curves nearest first, then segments, then t.
 void sort_visible(HorizonResult& result);

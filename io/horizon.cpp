@@ -73,10 +73,13 @@ HeightGrid grid_from_expression(const std::string& expression, const SampleRange
     p.DefineVar("z", &zv);
     p.SetExpr(expression);
     g.ys.reserve(g.xs.size() * g.zs.size());
+    std::vector<double> xd;
+    for (const Rational& xq : g.xs) xd.push_back(to_double(xq));
     for (const Rational& zq : g.zs) {
       zv = to_double(zq);
-      for (const Rational& xq : g.xs) {
-        xv = to_double(xq);
+      for (std::size_t i = 0; i < xd.size(); ++i) {
+        const Rational& xq = g.xs[i];
+        xv = xd[i];
         double y = p.Eval();
         if (!std::isfinite(y))
           throw std::invalid_argument("the expression is not finite at x = " + to_string(xq) + ", z = " + to_string(zq));
@@ -287,11 +290,21 @@ RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std
   r.camera = camera;
   r.drawing.stats.method = Method::Horizon;
   r.drawing.facing.push_back({});  // the faces' classes are not part of the horizon (their planes cost time)
-  // Visible runs by (curve, segment); each cut edge gets them and hidden pieces between.
-  std::map<std::pair<int, int>, std::vector<std::pair<Rational, Rational>>> runs;
-  for (const HorizonPiece& p : h.visible) runs[{p.curve, p.segment}].push_back({p.t0, p.t1});
+  // Visible runs by (curve, segment): each pair's runs are consecutive in the sorted lists, so
+  // a table of ranges finds them; each cut edge gets them and hidden pieces between.
+  using Range = std::pair<std::uint32_t, std::uint32_t>;
+  auto ranges = [](const std::vector<HorizonPiece>& list, std::size_t curves, std::size_t segments) {
+    std::vector<Range> out(curves * segments, Range{0, 0});
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      Range& r = out[static_cast<std::size_t>(list[k].curve) * segments + static_cast<std::size_t>(list[k].segment)];
+      if (r.first == r.second) r.first = static_cast<std::uint32_t>(k);
+      r.second = static_cast<std::uint32_t>(k + 1);
+    }
+    return out;
+  };
+  const std::vector<Range> runs = ranges(h.visible, nz, nx > 0 ? nx - 1 : 0);
   // One segment per drawn edge, visible where the runs say, hidden between.
-  auto add_segment = [&](int v0, int v1, const std::vector<std::pair<Rational, Rational>>* vis) {
+  auto add_segment = [&](int v0, int v1, const std::vector<HorizonPiece>* list, Range range) {
     Segment s;
     s.kind = Segment::Kind::Edge;
     s.line = LineKind::Edge;
@@ -310,11 +323,12 @@ RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std
       p.t0 = t0, p.t1 = t1, p.visible = visible;
       s.pieces.push_back(p);
     };
-    if (vis)
-      for (const auto& [t0, t1] : *vis) {
-        add(at, t0, false);
-        add(t0, t1, true);
-        at = t1;
+    if (list)
+      for (std::uint32_t k = range.first; k < range.second; ++k) {
+        const HorizonPiece& p = (*list)[k];
+        add(at, p.t0, false);
+        add(p.t0, p.t1, true);
+        at = p.t1;
       }
     add(at, 1, false);
     r.drawing.segments.push_back(std::move(s));
@@ -322,25 +336,24 @@ RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std
   if (z_family)
     for (int j : h.order)
       for (std::size_t i = 0; i + 1 < nx; ++i) {
-        auto it = runs.find({j, static_cast<int>(i)});
         int v0 = static_cast<int>(static_cast<std::size_t>(j) * nx + i);
-        add_segment(v0, v0 + 1, it != runs.end() ? &it->second : nullptr);
+        add_segment(v0, v0 + 1, &h.visible, runs[static_cast<std::size_t>(j) * (nx - 1) + i]);
       }
   // The x cuts (all of them, or the side edges i = 0 and i = nx - 1 with the z cuts).
   if (x_family && classic_dx <= 0 && nz >= 2) {
-    std::map<std::pair<int, int>, std::vector<std::pair<Rational, Rational>>> xruns;
-    for (const HorizonPiece& p : hx.visible) xruns[{p.curve, p.segment}].push_back({p.t0, p.t1});
-    static const std::vector<std::pair<Rational, Rational>> whole{{Rational(0), Rational(1)}};
+    // hx.visible by (x cut i, segment j); the side edges (cuts == "z") come sorted by curve,
+    // segment and t too.
+    const std::vector<Range> xruns = ranges(hx.visible, nx, nz - 1);
+    static const std::vector<HorizonPiece> whole{{0, 0, Rational(0), Rational(1)}};
     for (std::size_t i = 0; i < nx; ++i) {
       if (cuts == "z" && i != 0 && i + 1 != nx) continue;
       for (std::size_t j = 0; j + 1 < nz; ++j) {
         int v0 = static_cast<int>(j * nx + i), v1 = static_cast<int>((j + 1) * nx + i);
         if (edge_on && cuts != "z") {  // the side edges, seen edge-on: visible whole (see x_cuts_edge_on)
-          add_segment(v0, v1, &whole);
+          add_segment(v0, v1, &whole, Range{0, 1});
           continue;
         }
-        auto it = xruns.find({static_cast<int>(i), static_cast<int>(j)});
-        add_segment(v0, v1, it != xruns.end() ? &it->second : nullptr);
+        add_segment(v0, v1, &hx.visible, xruns[i * (nz - 1) + j]);
       }
     }
   }
