@@ -7,8 +7,9 @@
 #include <array>
 #include <atomic>
 #include <cmath>
-#include <deque>
+#include <memory>
 #include <stdexcept>
+#include <tuple>
 
 #include "algorithms/parallel.hpp"
 #include "kernel/int128.hpp"
@@ -77,6 +78,23 @@ struct Seg {
 };
 using Env = std::vector<Seg>;
 
+// Lines with stable addresses, allocated in large blocks.
+class LinePool {
+ public:
+  Line* add() {
+    if (used_ == kBlock || blocks_.empty()) {
+      blocks_.push_back(std::make_unique<Line[]>(kBlock));
+      used_ = 0;
+    }
+    return &blocks_.back()[used_++];
+  }
+
+ private:
+  static constexpr std::size_t kBlock = 4096;
+  std::vector<std::unique_ptr<Line[]>> blocks_;
+  std::size_t used_ = 0;
+};
+
 inline bool same_pair(const Line* a, const Line* b) { return a == b || (a->p == b->p && a->q == b->q); }
 inline bool on(int sample, const Line* l) { return l->p == sample || l->q == sample; }
 
@@ -107,10 +125,11 @@ class Picture {
   std::uint64_t exact_count() const { return exact_.load(); }
   Abs at(int k) const { return Abs{X_[static_cast<std::size_t>(k)], k, nullptr, nullptr}; }
 
-  const Line* through(std::deque<Line>& pool, int p, int q) const {
+  const Line* through(LinePool& pool, int p, int q) const {
     const Ad s = (Y_[q] - Y_[p]) / (X_[q] - X_[p]);
-    pool.push_back(Line{p, q, s, Y_[p] - s * X_[p]});
-    return &pool.back();
+    Line* l = pool.add();
+    *l = Line{p, q, s, Y_[p] - s * X_[p]};
+    return l;
   }
 
   // The order of two samples' abscissas.
@@ -120,6 +139,9 @@ class Picture {
       const Int128 a = key_[static_cast<std::size_t>(k)], b = key_[static_cast<std::size_t>(l)];
       return a < b ? -1 : a > b ? 1 : 0;
     }
+    return sample_cmp_slow(k, l);
+  }
+  [[gnu::noinline]] int sample_cmp_slow(int k, int l) const {
     const long ik = k % static_cast<long>(nx_), jk = k / static_cast<long>(nx_), il = l % static_cast<long>(nx_),
                jl = l / static_cast<long>(nx_);
     // X = sx·(c·x_i − a·z_j) with the xs and zs increasing.
@@ -132,7 +154,14 @@ class Picture {
   }
 
   int cmp(const Abs& x, const Abs& y) const {
-    if (x.sample >= 0 && y.sample >= 0) return sample_cmp(x.sample, y.sample);
+    if (x.sample >= 0 && y.sample >= 0) {
+      if (x.sample == y.sample) return 0;
+      const int f = sign(x.x - y.x);  // the doubles at hand first, the samples' keys after
+      return f != 2 ? f : sample_cmp(x.sample, y.sample);
+    }
+    return cmp_slow(x, y);
+  }
+  [[gnu::noinline]] int cmp_slow(const Abs& x, const Abs& y) const {
     if (x.sample < 0 && y.sample < 0 &&
         ((same_pair(x.l1, y.l1) && same_pair(x.l2, y.l2)) || (same_pair(x.l1, y.l2) && same_pair(x.l2, y.l1))))
       return 0;
@@ -159,7 +188,9 @@ class Picture {
       vb = B.s * x.x + B.c;
     }
     const int f = sign(va - vb);
-    if (f != 2) return f;
+    return f != 2 ? f : diff_exact(A, B, x);
+  }
+  [[gnu::noinline]] int diff_exact(const Line& A, const Line& B, const Abs& x) const {
     ++exact_;
     Rational sa, ca, sb, cb;
     exact_line(A, sa, ca);
@@ -171,6 +202,9 @@ class Picture {
   bool same_line(const Line* A, const Line* B) const {
     if (same_pair(A, B)) return true;
     if (sign(A->s - B->s) % 2 != 0 || sign(A->c - B->c) % 2 != 0) return false;  // ±1: certainly different
+    return same_line_exact(A, B);
+  }
+  [[gnu::noinline]] bool same_line_exact(const Line* A, const Line* B) const {
     ++exact_;
     Rational sa, ca, sb, cb;
     exact_line(*A, sa, ca);
@@ -329,22 +363,22 @@ void merge(const Picture& P, const Env& A, const Env& B, bool upper, Env& out) {
 
 // floating_horizon.cpp's triangle_side() for both sides at once: the upper and lower
 // boundaries of the projected triangle of samples a, b, c.
-void triangle_sides(const Picture& P, int a, int b, int c, std::deque<Line>& lines, Env& up, Env& lo) {
+void triangle_sides(const Picture& P, int a, int b, int c, LinePool& lines, Env& up, Env& lo) {
   if (P.sample_cmp(b, a) < 0) std::swap(a, b);
   if (P.sample_cmp(c, b) < 0) std::swap(b, c);
   if (P.sample_cmp(b, a) < 0) std::swap(a, b);
   if (!(P.sample_cmp(a, c) < 0)) return;  // seen edge-on: no area in the picture
   const int side = P.orient(a, b, c);
   const Line* ac = P.through(lines, a, c);
-  Env two;
+  Env& two = side > 0 ? up : lo;  // the side through b
+  Env& one = side > 0 ? lo : up;  // the side a-c
   if (side != 0) {
     if (P.sample_cmp(a, b) < 0) push(P, two, P.at(a), P.at(b), P.through(lines, a, b));
     if (P.sample_cmp(b, c) < 0) push(P, two, P.at(b), P.at(c), P.through(lines, b, c));
+  } else {
+    two.push_back(Seg{P.at(a), P.at(c), ac});
   }
-  Env one{Seg{P.at(a), P.at(c), ac}};
-  if (side > 0) up = std::move(two), lo = std::move(one);
-  else if (side < 0) up = std::move(one), lo = std::move(two);
-  else up = one, lo = std::move(one);
+  one.push_back(Seg{P.at(a), P.at(c), ac});
 }
 
 // acc = merge(acc, add): only the pieces of acc over add's range take part; the ones to the
@@ -389,44 +423,47 @@ void merge_into(const Picture& P, Env& acc, const Env& add, bool upper) {
 // (x0, x1), where L < segment < U.
 void hidden_parts(const Picture& P, const Line& line, const Abs& x0, const Abs& x1, const Env& U, const Env& L,
                   std::vector<std::pair<Abs, Abs>>& out) {
-  thread_local std::vector<Abs> xs;
-  xs.clear();
-  xs.push_back(x0);
-  xs.push_back(x1);
-  for (const Env* e : {&U, &L}) {
-    auto first = std::upper_bound(e->begin(), e->end(), x0, [&](const Abs& v, const Seg& p) { return P.cmp(v, p.x1) < 0; });
-    for (auto it = first; it != e->end() && P.cmp(it->x0, x1) < 0; ++it) {
-      if (P.cmp(it->x0, x0) > 0) xs.push_back(it->x0);
-      if (P.cmp(it->x1, x1) < 0) xs.push_back(it->x1);
-    }
-  }
-  if (xs.size() > 2) {
-    std::sort(xs.begin(), xs.end(), [&](const Abs& a, const Abs& b) { return P.cmp(a, b) < 0; });
-    xs.erase(std::unique(xs.begin(), xs.end(), [&](const Abs& a, const Abs& b) { return P.cmp(a, b) == 0; }), xs.end());
-  }
-  auto find = [&](const Env& e, const Abs& x) -> const Seg* {
-    auto it = std::upper_bound(e.begin(), e.end(), x, [&](const Abs& v, const Seg& p) { return P.cmp(v, p.x1) < 0; });
-    return it != e.end() && P.cmp(it->x0, x) <= 0 ? &*it : nullptr;
+  // The sub-intervals between consecutive breakpoints of U and L inside (x0, x1), walked in
+  // order (the same list as sorting them all).
+  auto first = [&](const Env& e) {
+    return static_cast<std::size_t>(
+        std::upper_bound(e.begin(), e.end(), x0, [&](const Abs& v, const Seg& p) { return P.cmp(v, p.x1) < 0; }) - e.begin());
   };
-  for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
-    const Abs &a = xs[k], &b = xs[k + 1];
-    const Seg *u = find(U, a), *l = find(L, a);
-    if (!u || !l) continue;
-    auto where_above = [&](const Line& hi, const Line& lo, Abs& from, Abs& to) {
-      const int s0 = P.diff(hi, lo, a), s1 = P.diff(hi, lo, b);
-      if (s0 <= 0 && s1 <= 0) return false;
-      from = a, to = b;
-      if (s0 != s1 && s0 != 0 && s1 != 0) (s0 > 0 ? to : from) = P.crossing(&lo, &hi);
-      return true;
-    };
-    Abs lo1, hi1, lo2, hi2;
-    if (!where_above(*u->line, line, lo1, hi1)) continue;
-    if (!where_above(line, *l->line, lo2, hi2)) continue;
-    const Abs& lo = P.cmp(lo1, lo2) >= 0 ? lo1 : lo2;
-    const Abs& hi = P.cmp(hi1, hi2) <= 0 ? hi1 : hi2;
-    if (!(P.cmp(lo, hi) < 0)) continue;
-    if (!out.empty() && P.cmp(out.back().second, lo) == 0) out.back().second = hi;
-    else out.emplace_back(lo, hi);
+  std::size_t iu = first(U), il = first(L);
+  const Abs* a = &x0;
+  while (true) {
+    while (iu < U.size() && P.cmp(U[iu].x1, *a) <= 0) ++iu;
+    while (il < L.size() && P.cmp(L[il].x1, *a) <= 0) ++il;
+    const Abs* b = &x1;
+    const Seg *u = nullptr, *l = nullptr;
+    for (auto [e, i, cur] : {std::make_tuple(&U, iu, &u), std::make_tuple(&L, il, &l)}) {
+      if (i >= e->size()) continue;
+      const Seg& piece = (*e)[i];
+      const bool started = P.cmp(piece.x0, *a) <= 0;
+      if (started) *cur = &piece;
+      const Abs& next = started ? piece.x1 : piece.x0;
+      if (P.cmp(next, *b) < 0) b = &next;
+    }
+    if (u && l) {
+      auto where_above = [&](const Line& hi, const Line& lo, Abs& from, Abs& to) {
+        const int s0 = P.diff(hi, lo, *a), s1 = P.diff(hi, lo, *b);
+        if (s0 <= 0 && s1 <= 0) return false;
+        from = *a, to = *b;
+        if (s0 != s1 && s0 != 0 && s1 != 0) (s0 > 0 ? to : from) = P.crossing(&lo, &hi);
+        return true;
+      };
+      Abs lo1, hi1, lo2, hi2;
+      if (where_above(*u->line, line, lo1, hi1) && where_above(line, *l->line, lo2, hi2)) {
+        const Abs& lo = P.cmp(lo1, lo2) >= 0 ? lo1 : lo2;
+        const Abs& hi = P.cmp(hi1, hi2) <= 0 ? hi1 : hi2;
+        if (P.cmp(lo, hi) < 0) {
+          if (!out.empty() && P.cmp(out.back().second, lo) == 0) out.back().second = hi;
+          else out.emplace_back(lo, hi);
+        }
+      }
+    }
+    if (b == &x1) break;
+    a = b;
   }
 }
 
@@ -496,7 +533,7 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
   HorizonResult res;
   for (std::size_t k = 0; k < nz; ++k) res.order.push_back(static_cast<int>(v.z() > 0 ? nz - 1 - k : k));
   // The strips' envelopes, on every core, each with its own lines.
-  std::vector<std::deque<Line>> strip_lines(nz);
+  std::vector<LinePool> strip_lines(nz);
   std::vector<Env> strip_up(nz), strip_lo(nz);
   loop.for_each(nz > 0 ? nz - 1 : 0, 1, [&](std::size_t km1) {
     const std::size_t k = km1 + 1;
@@ -521,7 +558,7 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
     strip_lo[k] = std::move(lo);
   });
   Env U, L;
-  std::deque<Line> lines;
+  LinePool lines;
   std::vector<Run> runs;
   for (std::size_t k = 0; k < nz; ++k) {
     const std::size_t j = static_cast<std::size_t>(res.order[k]);

@@ -1,6 +1,7 @@
 // `hlr horizon`: a surface y = f(x, z), from an expression or a CSV height grid, drawn by the
 // exact floating horizon (course notes section 24; issue 18), through the same 2D stage and
 // writers as `hlr render`.
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -19,6 +20,7 @@ namespace {
 struct HorizonArgs : OutputArgs {
   std::string expression, grid, x = "-1:1", z = "-1:1", view, angles = "30,30", up, method = "exact", height = "1/4", cuts = "z";
   double dx = 0;
+  bool timings = false;
 };
 
 // The notes' view: the surface turned about x (elevation) and y (azimuth): the direction toward
@@ -66,13 +68,26 @@ int run_horizon(const HorizonArgs& a) {
   } catch (const NumberError& e) {
     throw std::invalid_argument(std::string("--height: ") + e.what());
   }
+  using Clock = std::chrono::steady_clock;
+  auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  auto t0 = Clock::now();
   HeightGrid g = a.grid.empty() ? grid_from_expression(a.expression, x, z) : grid_from_file(a.grid, x, z, height);
+  const double t_sampling = since(t0);
   progress("floating horizon (" + std::to_string(g.zs.size()) + " cuts of " + std::to_string(g.xs.size()) + " samples)");
   std::vector<RenderResult> results;
   if (a.method == "classic" && !(a.dx > 0)) throw std::invalid_argument("--method classic needs --dx (the column width in drawing units)");
-  results.push_back(render_horizon(g, cam, a.grid.empty() ? "y = " + a.expression : a.grid, a.method == "classic" ? a.dx : 0, a.cuts));
+  HorizonTimings ht;
+  t0 = Clock::now();
+  results.push_back(render_horizon(g, cam, a.grid.empty() ? "y = " + a.expression : a.grid, a.method == "classic" ? a.dx : 0, a.cuts, &ht));
+  const double t_model = since(t0) - ht.horizon;
+  t0 = Clock::now();
   std::string text = drawing_text(results, {}, a, format, "horizon");
+  const double t_output = since(t0);
+  t0 = Clock::now();
   write_output(a.output, text);
+  if (a.timings)
+    std::cerr << "timings: sampling " << t_sampling << " s, horizon " << ht.horizon << " s, drawing model " << t_model
+              << " s, 2D stage and format " << t_output << " s, write " << since(t0) << " s\n";
   return 0;
 }
 
@@ -96,6 +111,7 @@ void add_horizon_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"exact", "classic"}));
   cmd->add_option("--dx", a->dx, "classic: the column width in the picture (drawing units)");
   add_output_options(cmd, *a, false);
+  cmd->add_flag("--timings", a->timings, "Print the time of each stage to standard error");
   cmd->callback([a, &exit_code] { exit_code = run_horizon(*a); });
 }
 

@@ -6,11 +6,14 @@
 #include <png.h>
 
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <stdexcept>
 
+#include "algorithms/parallel.hpp"
 #include "io/input_error.hpp"
 #include "io/text_reader.hpp"
 
@@ -66,29 +69,46 @@ HeightGrid grid_from_expression(const std::string& expression, const SampleRange
   HeightGrid g;
   g.xs = samples(x);
   g.zs = samples(z);
-  double xv = 0, zv = 0;
-  mu::Parser p;
+  const std::size_t nx = g.xs.size(), nz = g.zs.size();
+  std::vector<double> xd(nx), zd(nz);
+  for (std::size_t i = 0; i < nx; ++i) xd[i] = to_double(g.xs[i]);
+  for (std::size_t j = 0; j < nz; ++j) zd[j] = to_double(g.zs[j]);
+  // One parser per range of rows (muparser binds its variables by address); the expression is
+  // checked here first, so that its errors come before any work.
+  auto parser = [&](double& xv, double& zv) {
+    auto p = std::make_unique<mu::Parser>();
+    p->DefineVar("x", &xv);
+    p->DefineVar("z", &zv);
+    p->SetExpr(expression);
+    return p;
+  };
   try {
-    p.DefineVar("x", &xv);
-    p.DefineVar("z", &zv);
-    p.SetExpr(expression);
-    g.ys.reserve(g.xs.size() * g.zs.size());
-    std::vector<double> xd;
-    for (const Rational& xq : g.xs) xd.push_back(to_double(xq));
-    for (const Rational& zq : g.zs) {
-      zv = to_double(zq);
-      for (std::size_t i = 0; i < xd.size(); ++i) {
-        const Rational& xq = g.xs[i];
-        xv = xd[i];
-        double y = p.Eval();
-        if (!std::isfinite(y))
-          throw std::invalid_argument("the expression is not finite at x = " + to_string(xq) + ", z = " + to_string(zq));
-        g.ys.push_back(rational_from_double(y));
-      }
-    }
+    double xv = xd[0], zv = zd[0];
+    parser(xv, zv)->Eval();
   } catch (const mu::Parser::exception_type& e) {
     throw std::invalid_argument("expression '" + expression + "': " + e.GetMsg());
   }
+  g.ys.resize(nx * nz);
+  std::vector<std::size_t> bad(nz, nx);  // per row, the first sample that is not finite
+  ParallelLoop().run(nz, 8, [&](unsigned, std::size_t begin, std::size_t end) {
+    double xv = 0, zv = 0;
+    auto p = parser(xv, zv);
+    for (std::size_t j = begin; j < end; ++j) {
+      zv = zd[j];
+      for (std::size_t i = 0; i < nx; ++i) {
+        xv = xd[i];
+        const double y = p->Eval();
+        if (!std::isfinite(y)) {
+          bad[j] = i;
+          break;
+        }
+        g.ys[j * nx + i] = Rational(y);  // exact: GMP converts a finite double exactly
+      }
+    }
+  });
+  for (std::size_t j = 0; j < nz; ++j)
+    if (bad[j] < nx)
+      throw std::invalid_argument("the expression is not finite at x = " + to_string(g.xs[bad[j]]) + ", z = " + to_string(g.zs[j]));
   return g;
 }
 
@@ -258,7 +278,8 @@ HeightGrid grid_from_file(const std::string& path, const SampleRange& x, const S
 }
 
 RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std::string& name, double classic_dx,
-                            const std::string& cuts) {
+                            const std::string& cuts, HorizonTimings* timings) {
+  const auto start = std::chrono::steady_clock::now();
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
   const bool z_family = cuts != "x", x_family = cuts != "z" || classic_dx <= 0;  // "z": its side edges
   HorizonResult h;
@@ -269,10 +290,19 @@ RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std
     throw std::invalid_argument("the view has no x component: the x cuts are seen edge-on; give the view an x component (or draw the z cuts)");
   if (x_family && cuts != "z" && classic_dx <= 0 && !edge_on && nz >= 2) hx = floating_horizon_x(g, camera);
   if (cuts == "z") hx.visible = h.side;  // the side edges, from the z sweep's final horizons
+  if (timings) timings->horizon = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // The surface's points, row by row on every core (each point's certified bounds cost).
+  std::vector<std::vector<Point3>> rows(nz);
+  ParallelLoop().for_each(nz, 1, [&](std::size_t j) {
+    rows[j].reserve(nx);
+    for (std::size_t i = 0; i < nx; ++i) rows[j].push_back(g.point(i, j));
+  });
   std::vector<Point3> vs;
   vs.reserve(nx * nz);
-  for (std::size_t j = 0; j < nz; ++j)
-    for (std::size_t i = 0; i < nx; ++i) vs.push_back(g.point(i, j));
+  for (std::vector<Point3>& row : rows) {
+    for (Point3& p : row) vs.push_back(std::move(p));
+    std::vector<Point3>().swap(row);
+  }
   std::vector<Face> fs;
   for (std::size_t j = 0; j + 1 < nz; ++j)
     for (std::size_t i = 0; i + 1 < nx; ++i) {

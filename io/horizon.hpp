@@ -47,7 +47,11 @@ HeightGrid grid_from_file(const std::string& path, const SampleRange& x, const S
 /// (floating_horizon_classic.hpp), to show its faults next to the exact one.
 /// `cuts`: "z" (the notes' cuts and their side edges), "x" (the other family only) or "both"
 /// (a grid). The classic method draws the z cuts only.
+/// `timings`, when given, gets the seconds of the floating horizon itself.
+struct HorizonTimings {
+  double horizon = 0;
+};
 RenderResult render_horizon(const HeightGrid& grid, const Camera& camera, const std::string& name, double classic_dx = 0,
-                            const std::string& cuts = "z");
+                            const std::string& cuts = "z", HorizonTimings* timings = nullptr);
 
 }  // namespace hlr
