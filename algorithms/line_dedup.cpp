@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <execution>
+#include <functional>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -22,7 +23,11 @@ namespace {
 // The clean-up's working state: endpoint 2k is piece k's start (t0), 2k + 1 its end (t1).
 class Dedup {
  public:
-  Dedup(const Drawing2D& d, const LineDrawing& r, const Camera& cam) : d_(d), r_(r), screen_(cam), points_(2 * d.lines.size()) {}
+  Dedup(const Drawing2D& d, const LineDrawing& r, const Camera& cam) : d_(d), r_(&r), screen_(cam), points_(2 * d.lines.size()) {}
+  /// The ends' keys given, and each end's exact 3D point on demand.
+  Dedup(const Drawing2D& d, const std::vector<std::uint64_t>& keys, const std::function<Point3(std::uint32_t)>& end_point,
+        const Camera& cam)
+      : d_(d), keys_(&keys), end_point_(&end_point), screen_(cam), points_(2 * d.lines.size()) {}
 
   CleanDrawing run(const DedupOptions& opt) {
     CleanDrawing out;
@@ -74,9 +79,10 @@ class Dedup {
   const Exact2& exact(std::uint32_t e) {
     auto it = exact_.find(e);
     if (it != exact_.end()) return it->second;
+    if (!r_) return exact_.emplace(e, screen_.project((*end_point_)(e))).first->second;
     const Polyline2D& l = line(e);
     const PieceRef& ref = d_.sources[l.first_edge];
-    const Segment& s = r_.segments[ref.segment];
+    const Segment& s = r_->segments[ref.segment];
     const Piece& p = s.pieces[ref.piece];
     return exact_.emplace(e, screen_.project(s.at(e & 1 ? p.t1 : p.t0))).first->second;
   }
@@ -100,9 +106,13 @@ class Dedup {
     keys.reserve(points_.parent.size());
     for (std::uint32_t e = 0; e < points_.parent.size(); ++e) {
       if (pulled(e)) continue;
+      if (keys_) {
+        keys.emplace_back((*keys_)[e], e);
+        continue;
+      }
       const Polyline2D& l = line(e);
       const PieceRef& ref = d_.sources[l.first_edge];
-      const Segment& s = r_.segments[ref.segment];
+      const Segment& s = r_->segments[ref.segment];
       const Piece& p = s.pieces[ref.piece];
       const Rational& t = e & 1 ? p.t1 : p.t0;
       int v = s.kind == Segment::Kind::Edge ? (t == 0 ? s.v0 : t == 1 ? s.v1 : -1) : -1;
@@ -289,7 +299,9 @@ class Dedup {
   }
 
   const Drawing2D& d_;
-  const LineDrawing& r_;
+  const LineDrawing* r_ = nullptr;
+  const std::vector<std::uint64_t>* keys_ = nullptr;
+  const std::function<Point3(std::uint32_t)>* end_point_ = nullptr;
   PicturePlane screen_;
   UnionFind points_;
   std::unordered_map<std::uint32_t, Exact2> exact_;
@@ -312,6 +324,12 @@ int kind_priority(LineKind k) {
 
 CleanDrawing dedup_drawing(const Drawing2D& drawing, const LineDrawing& lines, const Camera& camera, const DedupOptions& options) {
   Dedup d(drawing, lines, camera);
+  return d.run(options);
+}
+
+CleanDrawing dedup_by_keys(const Drawing2D& drawing, const std::vector<std::uint64_t>& end_keys,
+                           const std::function<Point3(std::uint32_t)>& end_point, const Camera& camera, const DedupOptions& options) {
+  Dedup d(drawing, end_keys, end_point, camera);
   return d.run(options);
 }
 

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "algorithms/drawing_2d.hpp"
@@ -52,6 +53,15 @@ struct DedupOptions {
 /// of the picture's lines once. Pieces with a pulled end (Polyline2D::pulled) are kept as they
 /// are (their drawn ends are not exact projections).
 CleanDrawing dedup_drawing(const Drawing2D& drawing, const LineDrawing& lines, const Camera& camera,
+                           const DedupOptions& options = {});
+
+/// dedup_drawing() without the exact line drawing: the ends' keys (end 2k is piece k's start,
+/// 2k + 1 its end; equal keys, the same exact point: a mesh vertex, or a boundary between two
+/// pieces of one segment, as dedup_drawing() keys them) and each end's exact 3D point on demand
+/// (asked only for the pairs the double filters cannot separate). Drawing2D::sources name the
+/// pieces (segment, and piece within it). The result is dedup_drawing()'s on the same pieces.
+CleanDrawing dedup_by_keys(const Drawing2D& drawing, const std::vector<std::uint64_t>& end_keys,
+                           const std::function<Point3(std::uint32_t)>& end_point, const Camera& camera,
                            const DedupOptions& options = {});
 
 /// Priority of a line kind where pieces overlap: higher wins.

@@ -83,8 +83,12 @@ Plot make_plot(const LineDrawing& lines, const Camera& camera, const PlotOptions
       c.edges.push_back(CleanEdge{p, p + 1, d.sources[l.first_edge], l.kind, l.visible, l.through, l.body});
     }
   }
+  return plot_from_clean(c, opt, seconds_since(t0));
+}
+
+Plot plot_from_clean(const CleanDrawing& c, const PlotOptions& opt, double seconds_dedup) {
   Plot plot;
-  plot.stats.seconds_dedup = seconds_since(t0);
+  plot.stats.seconds_dedup = seconds_dedup;
   plot.stats.pieces = c.pieces_in;
   plot.stats.zero_length = c.zero_length;
   plot.stats.overlap_groups = c.overlap_groups;

@@ -68,6 +68,10 @@ struct PlotOptions {
 /// Projects, cleans up and chains (not yet ordered: see order_plot).
 Plot make_plot(const LineDrawing& lines, const Camera& camera, const PlotOptions& options = {});
 
+/// make_plot()'s last step: the cleaned drawing's layers and chains (`seconds_dedup`: for the
+/// statistics).
+Plot plot_from_clean(const CleanDrawing& clean, const PlotOptions& options, double seconds_dedup = 0);
+
 /// Drops strokes shorter than `min_length` (drawing units).
 void drop_short_strokes(Plot& plot, double min_length);
 

@@ -200,16 +200,32 @@ std::string drawing_text(const std::vector<RenderResult>& results, const std::ve
     text = to_json(r0.names, r0.drawing, r0.camera, plot ? &plot->stats : nullptr, sj);
   } else {
     progress("strokes");
-    PlotOptions po;
-    po.hidden = a.hidden != "none";
-    po.dedup = po.chain = !a.raw;
-    po.threads = a.threads;
+    const PlotOptions po = plot_options(a);
     for (const RenderResult& r : results) {
       plots.push_back(make_plot(r.drawing, r.camera, po));
       add_surface_fills(plots.back(), r);
     }
+    text = plots_text(plots, view_names, a, format, command, results[0].camera.perspective);
+  }
+  return text;
+}
+
+PlotOptions plot_options(const OutputArgs& a) {
+  PlotOptions po;
+  po.hidden = a.hidden != "none";
+  po.dedup = po.chain = !a.raw;
+  po.threads = a.threads;
+  return po;
+}
+
+std::string plots_text(std::vector<Plot>& plots, const std::vector<std::string>& view_names, const OutputArgs& a,
+                       const std::string& format, const std::string& command, bool perspective) {
+  const PageOptions page = page_options(a);
+  const PlotStyle style = plot_style(a);
+  std::string text;
+  {
     select_layers(a.layers, plots);
-    if (results[0].camera.perspective && page.scale) throw std::invalid_argument("--scale (true scale) needs an orthographic view");
+    if (perspective && page.scale) throw std::invalid_argument("--scale (true scale) needs an orthographic view");
     std::vector<const Plot*> ptrs;
     for (const Plot& p : plots) ptrs.push_back(&p);
     std::vector<std::string> labels;

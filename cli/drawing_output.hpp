@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/plot.hpp"
 #include "io/render.hpp"
 
 namespace hlr::cli {
@@ -32,5 +33,13 @@ std::string check_output_args(const OutputArgs& a, bool sheet);
 /// all drawings (`view_names` label them and place them as standard views when not empty).
 std::string drawing_text(const std::vector<RenderResult>& results, const std::vector<std::string>& view_names, const OutputArgs& a,
                          const std::string& format, const std::string& command);
+
+/// The plotting options of `a` (hidden layers, clean-up and chaining unless --raw, threads).
+PlotOptions plot_options(const OutputArgs& a);
+
+/// drawing_text()'s picture formats from plots already made (make_plot() or a faster route):
+/// layers, page layout, specks, pen order, the writer.
+std::string plots_text(std::vector<Plot>& plots, const std::vector<std::string>& view_names, const OutputArgs& a,
+                       const std::string& format, const std::string& command, bool perspective = false);
 
 }  // namespace hlr::cli

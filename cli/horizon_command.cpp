@@ -76,18 +76,35 @@ int run_horizon(const HorizonArgs& a) {
   progress("floating horizon (" + std::to_string(g.zs.size()) + " cuts of " + std::to_string(g.xs.size()) + " samples)");
   std::vector<RenderResult> results;
   if (a.method == "classic" && !(a.dx > 0)) throw std::invalid_argument("--method classic needs --dx (the column width in drawing units)");
-  HorizonTimings ht;
   t0 = Clock::now();
-  results.push_back(render_horizon(g, cam, a.grid.empty() ? "y = " + a.expression : a.grid, a.method == "classic" ? a.dx : 0, a.cuts, &ht));
-  const double t_model = since(t0) - ht.horizon;
+  const HorizonDrawing hd(g, cam, a.method == "classic" ? a.dx : 0, a.cuts);
+  const double t_horizon = since(t0);
+  // The picture formats straight from the runs where the clean-up needs no exact decision
+  // (HorizonDrawing::plot); JSON, --raw and the rest through the exact model.
   t0 = Clock::now();
-  std::string text = drawing_text(results, {}, a, format, "horizon");
+  std::string text;
+  double t_model = 0;
+  std::optional<Plot> plot;
+  if (format != "json" && !a.raw) {
+    progress("strokes");
+    plot = hd.plot(plot_options(a));
+  }
+  if (plot) {
+    std::vector<Plot> plots{std::move(*plot)};
+    text = plots_text(plots, {}, a, format, "horizon");
+  } else {
+    results.push_back(hd.model(a.grid.empty() ? "y = " + a.expression : a.grid));
+    t_model = since(t0);
+    t0 = Clock::now();
+    text = drawing_text(results, {}, a, format, "horizon");
+  }
   const double t_output = since(t0);
   t0 = Clock::now();
   write_output(a.output, text);
   if (a.timings)
-    std::cerr << "timings: sampling " << t_sampling << " s, horizon " << ht.horizon << " s, drawing model " << t_model
-              << " s, 2D stage and format " << t_output << " s, write " << since(t0) << " s\n";
+    std::cerr << "timings: sampling " << t_sampling << " s, horizon " << t_horizon << " s, "
+              << (plot ? std::string("straight to the 2D stage") : "drawing model " + std::to_string(t_model) + " s")
+              << ", 2D stage and format " << t_output << " s, write " << since(t0) << " s\n";
   return 0;
 }
 

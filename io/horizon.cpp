@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -277,20 +278,85 @@ HeightGrid grid_from_file(const std::string& path, const SampleRange& x, const S
   throw InputError(path, 0, "unknown height grid format '" + ext + "' (expected .csv, .pgm or .png)");
 }
 
-RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std::string& name, double classic_dx,
-                            const std::string& cuts, HorizonTimings* timings) {
+HorizonDrawing::HorizonDrawing(const HeightGrid& g, const Camera& camera, double classic_dx, const std::string& cuts)
+    : g_(g), camera_(camera), classic_dx_(classic_dx), cuts_(cuts) {
   const auto start = std::chrono::steady_clock::now();
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
   const bool z_family = cuts != "x", x_family = cuts != "z" || classic_dx <= 0;  // "z": its side edges
-  HorizonResult h;
-  if (z_family) h = classic_dx > 0 ? floating_horizon_classic(g, camera, classic_dx) : floating_horizon(g, camera);
-  HorizonResult hx;
+  if (z_family) h_ = classic_dx > 0 ? floating_horizon_classic(g, camera, classic_dx) : floating_horizon(g, camera);
   const bool edge_on = x_cuts_edge_on(camera);
   if (edge_on && cuts != "z")
     throw std::invalid_argument("the view has no x component: the x cuts are seen edge-on; give the view an x component (or draw the z cuts)");
-  if (x_family && cuts != "z" && classic_dx <= 0 && !edge_on && nz >= 2) hx = floating_horizon_x(g, camera);
-  if (cuts == "z") hx.visible = h.side;  // the side edges, from the z sweep's final horizons
-  if (timings) timings->horizon = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (x_family && cuts != "z" && classic_dx <= 0 && !edge_on && nz >= 2) hx_ = floating_horizon_x(g, camera);
+  if (cuts == "z") hx_.visible = h_.side;  // the side edges, from the z sweep's final horizons
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // Visible runs by (curve, segment): each pair's runs are consecutive in the sorted lists, so
+  // a table of ranges finds them; each cut edge gets them and hidden pieces between.
+  using Range = std::pair<std::uint32_t, std::uint32_t>;
+  auto ranges = [](const std::vector<HorizonPiece>& list, std::size_t curves, std::size_t segments) {
+    std::vector<Range> out(curves * segments, Range{0, 0});
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      Range& r = out[static_cast<std::size_t>(list[k].curve) * segments + static_cast<std::size_t>(list[k].segment)];
+      if (r.first == r.second) r.first = static_cast<std::uint32_t>(k);
+      r.second = static_cast<std::uint32_t>(k + 1);
+    }
+    return out;
+  };
+  static const Rational zero(0), one(1);
+  // One edge per drawn grid edge, visible where the runs say, hidden between.
+  auto add_edge = [&](int v0, int v1, const std::vector<HorizonPiece>* list, Range range) {
+    Edge e{v0, v1, static_cast<std::uint32_t>(pieces_.size()), 0};
+    const Rational* at = &zero;
+    auto add = [&](const Rational* t0, const Rational* t1, bool visible) {
+      if (!(*t0 < *t1)) return;
+      if (e.count > 0 && pieces_.back().visible == visible) {
+        pieces_.back().t1 = t1;
+        return;
+      }
+      pieces_.push_back(EdgePiece{t0, t1, visible});
+      ++e.count;
+    };
+    if (list)
+      for (std::uint32_t k = range.first; k < range.second; ++k) {
+        const HorizonPiece& p = (*list)[k];
+        add(at, &p.t0, false);
+        add(&p.t0, &p.t1, true);
+        at = &p.t1;
+      }
+    add(at, &one, false);
+    edges_.push_back(e);
+  };
+  if (z_family) {
+    const std::vector<Range> runs = ranges(h_.visible, nz, nx > 0 ? nx - 1 : 0);
+    for (int j : h_.order)
+      for (std::size_t i = 0; i + 1 < nx; ++i) {
+        int v0 = static_cast<int>(static_cast<std::size_t>(j) * nx + i);
+        add_edge(v0, v0 + 1, &h_.visible, runs[static_cast<std::size_t>(j) * (nx - 1) + i]);
+      }
+  }
+  // The x cuts (all of them, or the side edges i = 0 and i = nx - 1 with the z cuts).
+  if (x_family && classic_dx <= 0 && nz >= 2) {
+    // hx.visible by (x cut i, segment j); the side edges (cuts == "z") come sorted by curve,
+    // segment and t too.
+    const std::vector<Range> xruns = ranges(hx_.visible, nx, nz - 1);
+    static const std::vector<HorizonPiece> whole{{0, 0, Rational(0), Rational(1)}};
+    for (std::size_t i = 0; i < nx; ++i) {
+      if (cuts == "z" && i != 0 && i + 1 != nx) continue;
+      for (std::size_t j = 0; j + 1 < nz; ++j) {
+        int v0 = static_cast<int>(j * nx + i), v1 = static_cast<int>((j + 1) * nx + i);
+        if (edge_on && cuts != "z") {  // the side edges, seen edge-on: visible whole (see x_cuts_edge_on)
+          add_edge(v0, v1, &whole, Range{0, 1});
+          continue;
+        }
+        add_edge(v0, v1, &hx_.visible, xruns[i * (nz - 1) + j]);
+      }
+    }
+  }
+}
+
+RenderResult HorizonDrawing::model(const std::string& name) const {
+  const HeightGrid& g = g_;
+  const std::size_t nx = g.xs.size(), nz = g.zs.size();
   // The surface's points, row by row on every core (each point's certified bounds cost).
   std::vector<std::vector<Point3>> rows(nz);
   ParallelLoop().for_each(nz, 1, [&](std::size_t j) {
@@ -317,78 +383,129 @@ RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std
   const SceneBody& body = (*scenes)[0].bodies[0];
   r.bodies = {&body};
   r.names = {DrawingBody{name, name}};
-  r.camera = camera;
+  r.camera = camera_;
   r.drawing.stats.method = Method::Horizon;
   r.drawing.facing.push_back({});  // the faces' classes are not part of the horizon (their planes cost time)
-  // Visible runs by (curve, segment): each pair's runs are consecutive in the sorted lists, so
-  // a table of ranges finds them; each cut edge gets them and hidden pieces between.
-  using Range = std::pair<std::uint32_t, std::uint32_t>;
-  auto ranges = [](const std::vector<HorizonPiece>& list, std::size_t curves, std::size_t segments) {
-    std::vector<Range> out(curves * segments, Range{0, 0});
-    for (std::size_t k = 0; k < list.size(); ++k) {
-      Range& r = out[static_cast<std::size_t>(list[k].curve) * segments + static_cast<std::size_t>(list[k].segment)];
-      if (r.first == r.second) r.first = static_cast<std::uint32_t>(k);
-      r.second = static_cast<std::uint32_t>(k + 1);
-    }
-    return out;
-  };
-  const std::vector<Range> runs = ranges(h.visible, nz, nx > 0 ? nx - 1 : 0);
-  // One segment per drawn edge, visible where the runs say, hidden between.
-  auto add_segment = [&](int v0, int v1, const std::vector<HorizonPiece>* list, Range range) {
-    Segment s;
+  r.drawing.segments.resize(edges_.size());
+  ParallelLoop().for_each(edges_.size(), 1024, [&](std::size_t k) {
+    const Edge& e = edges_[k];
+    Segment& s = r.drawing.segments[k];
     s.kind = Segment::Kind::Edge;
     s.line = LineKind::Edge;
     s.body = 0;
-    s.v0 = v0;
-    s.v1 = v1;
-    s.borrow_ends(body.body.vertices()[s.v0], body.body.vertices()[s.v1]);
-    Rational at = 0;
-    auto add = [&](const Rational& t0, const Rational& t1, bool visible) {
-      if (!(t0 < t1)) return;
-      if (!s.pieces.empty() && s.pieces.back().visible == visible) {
-        s.pieces.back().t1 = t1;
-        return;
-      }
-      Piece p;
-      p.t0 = t0, p.t1 = t1, p.visible = visible;
-      s.pieces.push_back(p);
-    };
-    if (list)
-      for (std::uint32_t k = range.first; k < range.second; ++k) {
-        const HorizonPiece& p = (*list)[k];
-        add(at, p.t0, false);
-        add(p.t0, p.t1, true);
-        at = p.t1;
-      }
-    add(at, 1, false);
-    r.drawing.segments.push_back(std::move(s));
-  };
-  if (z_family)
-    for (int j : h.order)
-      for (std::size_t i = 0; i + 1 < nx; ++i) {
-        int v0 = static_cast<int>(static_cast<std::size_t>(j) * nx + i);
-        add_segment(v0, v0 + 1, &h.visible, runs[static_cast<std::size_t>(j) * (nx - 1) + i]);
-      }
-  // The x cuts (all of them, or the side edges i = 0 and i = nx - 1 with the z cuts).
-  if (x_family && classic_dx <= 0 && nz >= 2) {
-    // hx.visible by (x cut i, segment j); the side edges (cuts == "z") come sorted by curve,
-    // segment and t too.
-    const std::vector<Range> xruns = ranges(hx.visible, nx, nz - 1);
-    static const std::vector<HorizonPiece> whole{{0, 0, Rational(0), Rational(1)}};
-    for (std::size_t i = 0; i < nx; ++i) {
-      if (cuts == "z" && i != 0 && i + 1 != nx) continue;
-      for (std::size_t j = 0; j + 1 < nz; ++j) {
-        int v0 = static_cast<int>(j * nx + i), v1 = static_cast<int>((j + 1) * nx + i);
-        if (edge_on && cuts != "z") {  // the side edges, seen edge-on: visible whole (see x_cuts_edge_on)
-          add_segment(v0, v1, &whole, Range{0, 1});
-          continue;
-        }
-        add_segment(v0, v1, &hx.visible, xruns[i * (nz - 1) + j]);
-      }
+    s.v0 = e.v0;
+    s.v1 = e.v1;
+    s.borrow_ends(body.body.vertices()[static_cast<std::size_t>(s.v0)], body.body.vertices()[static_cast<std::size_t>(s.v1)]);
+    s.pieces.resize(e.count);
+    for (std::uint32_t n = 0; n < e.count; ++n) {
+      const EdgePiece& q = pieces_[e.first + n];
+      Piece& p = s.pieces[n];
+      p.t0 = *q.t0, p.t1 = *q.t1, p.visible = q.visible;
     }
-  }
+  });
   r.drawing.stats.edges = r.drawing.segments.size();
   return r;
+}
+
+std::optional<Plot> HorizonDrawing::plot(const PlotOptions& opt) const {
+  const auto start = std::chrono::steady_clock::now();
+  const HeightGrid& g = g_;
+  const std::size_t nx = g.xs.size(), nz = g.zs.size();
+  // The points' doubles as the drawing frame takes them (DrawingFrame::to_frame: the middle of
+  // each coordinate's certified bounds), and the frame's own test on their bounds.
+  auto mid = [](const Bounds& b) { return b.lo + (b.hi - b.lo) / 2; };
+  std::vector<Bounds> bx(nx), bz(nz), by(nx * nz);
+  for (std::size_t i = 0; i < nx; ++i) bx[i] = bounds_of(g.xs[i]);
+  for (std::size_t j = 0; j < nz; ++j) bz[j] = bounds_of(g.zs[j]);
+  ParallelLoop loop(opt.threads);
+  loop.for_each(nz, 4, [&](std::size_t j) {
+    for (std::size_t i = 0; i < nx; ++i) by[j * nx + i] = bounds_of(g.ys[j * nx + i]);
+  });
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, big = 0;
+  auto box = [&](int k, const Bounds& b) {
+    lo[k] = std::min(lo[k], b.lo), hi[k] = std::max(hi[k], b.hi);
+    big = std::max({big, std::fabs(b.lo), std::fabs(b.hi)});
+  };
+  for (const Bounds& b : bx) box(0, b);
+  for (const Bounds& b : by) box(1, b);
+  for (const Bounds& b : bz) box(2, b);
+  const double ext = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  // drawing_frame()'s test for the identity frame over every segment end (every sample is one).
+  if (!(std::isfinite(big) && big < 0x1p100 && ext > 0x1p-100 && ext >= big * 0x1p-30)) return std::nullopt;
+  const Projector proj(camera_, DrawingFrame{});
+  auto frame_point = [&](int v) {
+    const std::size_t k = static_cast<std::size_t>(v);
+    return std::array<double, 3>{mid(bx[k % nx]), mid(by[k]), mid(bz[k / nx])};
+  };
+  // project_drawing()'s pieces and sources, and join_same_keys()'s keys for their ends.
+  std::vector<std::uint32_t> first(edges_.size() + 1, 0);  // drawn pieces before edge k
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    std::uint32_t n = 0;
+    for (std::uint32_t m = 0; m < edges_[k].count; ++m) n += pieces_[edges_[k].first + m].visible || opt.hidden;
+    first[k + 1] = first[k] + n;
+  }
+  Drawing2D d;
+  const std::size_t drawn = first.back();
+  d.lines.resize(drawn);
+  d.points.resize(2 * drawn);
+  d.sources.resize(drawn);
+  std::vector<std::uint64_t> keys(2 * drawn);
+  loop.for_each(edges_.size(), 1024, [&](std::size_t k) {
+    const Edge& e = edges_[k];
+    const std::array<double, 3> F = frame_point(e.v0), T = frame_point(e.v1);
+    auto at = [&](const Rational& t) {
+      if (t == 0) return F;
+      if (t == 1) return T;
+      const double u = to_double(t);
+      return std::array<double, 3>{F[0] + u * (T[0] - F[0]), F[1] + u * (T[1] - F[1]), F[2] + u * (T[2] - F[2])};
+    };
+    auto key = [&](const Rational& t, std::uint32_t piece, int end) -> std::uint64_t {
+      const int v = t == 0 ? e.v0 : t == 1 ? e.v1 : -1;
+      return v >= 0 ? (std::uint64_t{1} << 63) | static_cast<std::uint32_t>(v)
+                    : (static_cast<std::uint64_t>(k) << 32) | static_cast<std::uint32_t>(piece + static_cast<std::uint32_t>(end));
+    };
+    std::uint32_t out = first[k];
+    for (std::uint32_t m = 0; m < e.count; ++m) {
+      const EdgePiece& q = pieces_[e.first + m];
+      if (!q.visible && !opt.hidden) continue;
+      const std::array<double, 3> A = at(*q.t0), B = at(*q.t1);
+      const auto pa = proj.project(A[0], A[1], A[2]), pb = proj.project(B[0], B[1], B[2]);
+      Polyline2D& l = d.lines[out];
+      l.first = 2 * out, l.count = 2, l.first_edge = out;
+      l.kind = LineKind::Edge, l.visible = q.visible, l.body = 0;
+      d.points[2 * out] = {pa[0], pa[1]};
+      d.points[2 * out + 1] = {pb[0], pb[1]};
+      d.sources[out] = PieceRef{static_cast<int>(k), static_cast<int>(m)};
+      keys[2 * out] = key(*q.t0, m, 0);
+      keys[2 * out + 1] = key(*q.t1, m, 1);
+      ++out;
+    }
+  });
+  DedupOptions dopt;
+  dopt.overlaps = opt.dedup;
+  dopt.threads = opt.threads;
+  // The exact point of an end, for the pairs the clean-up's filters cannot separate: the
+  // segment's exact point at the piece's parameter, as Segment::at() gives it.
+  const std::function<Point3(std::uint32_t)> end_point = [&](std::uint32_t end) {
+    const PieceRef& ref = d.sources[end / 2];
+    const Edge& e = edges_[static_cast<std::size_t>(ref.segment)];
+    const EdgePiece& q = pieces_[e.first + static_cast<std::uint32_t>(ref.piece)];
+    const Rational& t = end & 1 ? *q.t1 : *q.t0;
+    const std::size_t a = static_cast<std::size_t>(e.v0), b = static_cast<std::size_t>(e.v1);
+    const Point3 A = g.point(a % nx, a / nx), B = g.point(b % nx, b / nx);
+    if (t == 0) return A;
+    if (t == 1) return B;
+    return Point3(A.x() + t * (B.x() - A.x()), A.y() + t * (B.y() - A.y()), A.z() + t * (B.z() - A.z()));
+  };
+  const CleanDrawing clean = dedup_by_keys(d, keys, end_point, camera_, dopt);
+  return plot_from_clean(clean, opt, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
+
+RenderResult render_horizon(const HeightGrid& g, const Camera& camera, const std::string& name, double classic_dx,
+                            const std::string& cuts, HorizonTimings* timings) {
+  HorizonDrawing hd(g, camera, classic_dx, cuts);
+  if (timings) timings->horizon = hd.seconds;
+  return hd.model(name);
 }
 
 }  // namespace hlr

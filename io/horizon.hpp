@@ -4,10 +4,12 @@
 // (SVG, PDF, PNG, DXF, JSON) apply unchanged.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "algorithms/floating_horizon.hpp"
 #include "algorithms/floating_horizon_classic.hpp"
+#include "algorithms/plot.hpp"
 #include "io/render.hpp"
 
 namespace hlr {
@@ -47,6 +49,41 @@ HeightGrid grid_from_file(const std::string& path, const SampleRange& x, const S
 /// (floating_horizon_classic.hpp), to show its faults next to the exact one.
 /// `cuts`: "z" (the notes' cuts and their side edges), "x" (the other family only) or "both"
 /// (a grid). The classic method draws the z cuts only.
+/// The horizon's runs and the drawn grid edges with their pieces, in render_horizon()'s order
+/// (the z cuts nearest first, then the x cuts or the side edges). model(): render_horizon()'s
+/// exact line drawing. plot(): the same drawing's Plot straight from the runs, for the picture
+/// formats: the pieces projected as project_drawing() does, their ends keyed as the clean-up
+/// keys them (a grid vertex, or a boundary between two pieces of one edge), cleaned by
+/// dedup_by_keys() (exact points built only for the pairs its filters cannot separate) and
+/// chained by plot_from_clean(): make_plot(model().drawing) piece for piece and point for
+/// point, without the exact model; nullopt where the drawing frame would not be the identity
+/// (coordinates beyond 2^100 or an extent below 2^-30 of them): then run make_plot() on model().
+class HorizonDrawing {
+ public:
+  /// The sweeps (see render_horizon() for `classic_dx` and `cuts`); `grid` must outlive this.
+  HorizonDrawing(const HeightGrid& grid, const Camera& camera, double classic_dx = 0, const std::string& cuts = "z");
+  RenderResult model(const std::string& name) const;
+  std::optional<Plot> plot(const PlotOptions& options) const;
+  double seconds = 0;  // the floating horizon's own time
+
+ private:
+  struct EdgePiece {
+    const Rational *t0, *t1;  // into the results (or 0 and 1)
+    bool visible;
+  };
+  struct Edge {
+    int v0, v1;                   // grid samples j * nx + i
+    std::uint32_t first, count;   // its pieces in pieces_
+  };
+  const HeightGrid& g_;
+  Camera camera_;
+  double classic_dx_;
+  std::string cuts_;
+  HorizonResult h_, hx_;
+  std::vector<Edge> edges_;
+  std::vector<EdgePiece> pieces_;
+};
+
 /// `timings`, when given, gets the seconds of the floating horizon itself.
 struct HorizonTimings {
   double horizon = 0;

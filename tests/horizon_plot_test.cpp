@@ -1,0 +1,109 @@
+// The horizon's picture route (io/horizon.hpp, HorizonDrawing::plot: runs straight to the 2D
+// stage) against the general one (the exact line drawing through make_plot): the same layers,
+// strokes and points, bit for bit, and the same clean-up numbers, on surfaces whose pictures
+// have what the clean-up must decide exactly: flat and terraced regions (collinear neighbours,
+// pieces of different cuts on one line seen from the side), equal heights, touching cuts.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <random>
+
+#include "algorithms/plot.hpp"
+#include "io/horizon.hpp"
+
+namespace hlr {
+namespace {
+
+HeightGrid grid(int nx, int nz, const std::function<Rational(const Rational&, const Rational&)>& f) {
+  HeightGrid g;
+  for (int i = 0; i < nx; ++i) g.xs.push_back(rational(2 * i - (nx - 1), nx - 1));
+  for (int j = 0; j < nz; ++j) g.zs.push_back(rational(2 * j - (nz - 1), nz - 1));
+  for (const Rational& z : g.zs)
+    for (const Rational& x : g.xs) g.ys.push_back(f(x, z));
+  return g;
+}
+
+void expect_same_plot(const Plot& a, const Plot& b, const std::string& what) {
+  ASSERT_EQ(a.layers.size(), b.layers.size()) << what;
+  for (std::size_t l = 0; l < a.layers.size(); ++l) {
+    const PlotLayer &p = a.layers[l], &q = b.layers[l];
+    ASSERT_EQ(p.name(), q.name()) << what;
+    ASSERT_EQ(p.strokes.size(), q.strokes.size()) << what << " layer " << p.name();
+    for (std::size_t s = 0; s < p.strokes.size(); ++s) {
+      ASSERT_EQ(p.strokes[s].closed, q.strokes[s].closed) << what;
+      ASSERT_EQ(p.strokes[s].points, q.strokes[s].points) << what << " layer " << p.name() << " stroke " << s;
+    }
+  }
+  EXPECT_EQ(a.bounds, b.bounds) << what;
+  EXPECT_EQ(a.stats.pieces, b.stats.pieces) << what;
+  EXPECT_EQ(a.stats.edges, b.stats.edges) << what;
+  EXPECT_EQ(a.stats.zero_length, b.stats.zero_length) << what;
+  EXPECT_EQ(a.stats.overlap_groups, b.stats.overlap_groups) << what;
+  EXPECT_EQ(a.stats.overlapped_pieces, b.stats.overlapped_pieces) << what;
+  EXPECT_EQ(a.stats.exact_point_tests, b.stats.exact_point_tests) << what;
+  EXPECT_EQ(a.stats.exact_line_tests, b.stats.exact_line_tests) << what;
+  EXPECT_EQ(a.stats.path_count, b.stats.path_count) << what;
+}
+
+// Returns how many exact decisions the clean-up took over all cases (the hard places were met).
+std::size_t compare(const HeightGrid& g, const std::string& name) {
+  std::size_t exact = 0;
+  for (const Vector3& v : {Vector3(1, 2, 3), Vector3(0, 1, 4), Vector3(-2, 1, 5), Vector3(3, 0, 1), Vector3(1, -1, 3)})
+    for (const char* cuts : {"z", "both"})
+      for (bool hidden : {false, true}) {
+        if (std::string(cuts) == "both" && v.x() == 0) continue;  // the x cuts are seen edge-on
+        const Camera cam = make_orthographic(v, Vector3(0, 1, 0));
+        const HorizonDrawing hd(g, cam, 0, cuts);
+        PlotOptions po;
+        po.hidden = hidden;
+        po.threads = 2;
+        std::optional<Plot> fast = hd.plot(po);
+        if (!fast) {
+          ADD_FAILURE() << name << ": no fast route";
+          continue;
+        }
+        const std::string what = name + " view " + to_string(v) + " cuts " + cuts + (hidden ? " hidden" : "");
+        Plot general = make_plot(hd.model(name).drawing, cam, po);
+        expect_same_plot(*fast, general, what);
+        exact += general.stats.exact_point_tests + general.stats.exact_line_tests;
+        order_plot(*fast, {fast->bounds[0], fast->bounds[3]});
+        order_plot(general, {general.bounds[0], general.bounds[3]});
+        expect_same_plot(*fast, general, what + " ordered");
+      }
+  return exact;
+}
+
+TEST(HorizonPlot, SameStrokesAsTheExactModelOnAPeakAndASaddle) {
+  compare(grid(13, 9, [](const Rational& x, const Rational& z) { return Rational(Rational(1) / (1 + 8 * (x * x + z * z))); }), "peak");
+  compare(grid(11, 11, [](const Rational& x, const Rational& z) { return Rational((x * x - z * z) / 2); }), "saddle");
+}
+
+TEST(HorizonPlot, SameStrokesWhereTheCleanUpDecidesExactly) {
+  std::size_t exact = 0;
+  // Flat with a bump: collinear neighbours along the cuts, and from the side (view (3, 0, 1))
+  // pieces of different cuts on one line.
+  exact += compare(grid(12, 10, [](const Rational& x, const Rational& z) {
+                     Rational d = x * x + z * z;
+                     return d < Rational(1, 4) ? Rational(Rational(1, 4) - d) : Rational(0);
+                   }),
+                   "flat with a bump");
+  // Terraces of equal heights.
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> level(0, 2);
+  exact += compare(grid(10, 8, [&](const Rational&, const Rational&) { return rational(level(rng), 8); }), "terraces");
+  // A plane: every cut on a line.
+  exact += compare(grid(7, 6, [](const Rational& x, const Rational& z) { return Rational(x / 2 + z / 3); }), "plane");
+  EXPECT_GT(exact, 0u) << "the clean-up met pairs it had to decide exactly";
+}
+
+TEST(HorizonPlot, FallsBackWhereTheFrameIsNotTheIdentity) {
+  const Rational s = parse_rational("1e120");
+  HeightGrid g = grid(5, 4, [&](const Rational& x, const Rational& z) { return Rational(s * (x * x - z / 2)); });
+  for (Rational& x : g.xs) x *= s;
+  for (Rational& z : g.zs) z *= s;
+  const HorizonDrawing hd(g, make_orthographic(Vector3(1, 2, 3), Vector3(0, 1, 0)));
+  EXPECT_FALSE(hd.plot(PlotOptions{}).has_value());
+}
+
+}  // namespace
+}  // namespace hlr
