@@ -248,7 +248,7 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam, std::vect
 
 HorizonResult floating_horizon_exact(const HeightGrid& g, const Camera& cam, std::vector<HorizonStep>* trace) {
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
-  if (nx < 2 || nz < 1 || g.ys.size() != nx * nz) throw std::invalid_argument("the grid needs at least 2 x samples and one cut");
+  if (nx < 2 || nz < 1 || g.heights() != nx * nz) throw std::invalid_argument("the grid needs at least 2 x samples and one cut");
   for (std::size_t i = 1; i < nx; ++i)
     if (!(g.xs[i - 1] < g.xs[i])) throw std::invalid_argument("grid x values must increase");
   for (std::size_t j = 1; j < nz; ++j)
@@ -385,10 +385,14 @@ HorizonResult floating_horizon_x(const HeightGrid& g, const Camera& cam) {
   HeightGrid t;
   t.xs = g.zs;
   t.zs = g.xs;
-  t.ys.resize(g.ys.size());
+  if (!g.yd.empty()) t.yd.resize(g.yd.size());
+  else t.ys.resize(g.ys.size());
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
   for (std::size_t j = 0; j < nz; ++j)
-    for (std::size_t i = 0; i < nx; ++i) t.ys[i * nz + j] = g.y(i, j);
+    for (std::size_t i = 0; i < nx; ++i) {
+      if (!g.yd.empty()) t.yd[i * nz + j] = g.yd[j * nx + i];
+      else t.ys[i * nz + j] = g.ys[j * nx + i];
+    }
   auto swap_xz = [](const Vector3& v) { return Vector3(v.z(), v.y(), v.x()); };
   Camera c = cam;
   c.direction = swap_xz(cam.direction);

@@ -21,9 +21,13 @@
 namespace hlr {
 
 /// Samples y = f(x, z) at x = xs[i], z = zs[j] (each strictly increasing): ys[j * nx + i].
+/// The heights are `ys`, or, when `yd` is not empty, the doubles `yd` taken exactly (an
+/// expression's values: no rational per sample until one is asked for; `ys` is then empty).
 struct HeightGrid {
   std::vector<Rational> xs, zs, ys;
-  const Rational& y(std::size_t i, std::size_t j) const { return ys[j * xs.size() + i]; }
+  std::vector<double> yd;
+  std::size_t heights() const { return yd.empty() ? ys.size() : yd.size(); }
+  Rational y(std::size_t i, std::size_t j) const { return yd.empty() ? ys[j * xs.size() + i] : Rational(yd[j * xs.size() + i]); }
   Point3 point(std::size_t i, std::size_t j) const { return Point3(xs[i], y(i, j), zs[j]); }
 };
 

@@ -11,7 +11,7 @@ namespace hlr {
 
 HorizonResult floating_horizon_classic(const HeightGrid& g, const Camera& cam, double dx) {
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
-  if (nx < 2 || nz < 1 || g.ys.size() != nx * nz) throw std::invalid_argument("the grid needs at least 2 x samples and one cut");
+  if (nx < 2 || nz < 1 || g.heights() != nx * nz) throw std::invalid_argument("the grid needs at least 2 x samples and one cut");
   if (cam.perspective || cam.direction.z() == 0) throw std::invalid_argument("the floating horizon takes an orthographic view with a z component");
   if (!(dx > 0)) throw std::invalid_argument("the classic method needs a column width dx > 0");
   Vector3 r = cross(cam.up, cam.direction), u = cross(cam.direction, r);

@@ -116,7 +116,8 @@ class Picture {
     loop.for_each(nz, 1, [&](std::size_t j) {
       for (std::size_t i = 0; i < nx_; ++i) {
         X_[j * nx_ + i] = fx * (c * xs[i] - a * zs[j]);
-        Y_[j * nx_ + i] = fy * (c * approx(g.ys[j * nx_ + i]) - b * zs[j]);
+        const Ad y = g.yd.empty() ? approx(g.ys[j * nx_ + i]) : Ad{g.yd[j * nx_ + i], 0};  // a double height is exact
+        Y_[j * nx_ + i] = fy * (c * y - b * zs[j]);
       }
     });
     uniform_order();
@@ -242,7 +243,7 @@ class Picture {
   }
   Rational Yq(int k) const {
     const std::size_t j = static_cast<std::size_t>(k) / nx_;
-    return Rational(sy_ * (c_ * g_.ys[static_cast<std::size_t>(k)] - b_ * g_.zs[j]));
+    return Rational(sy_ * (c_ * g_.y(static_cast<std::size_t>(k) % nx_, j) - b_ * g_.zs[j]));
   }
 
  private:
@@ -509,7 +510,7 @@ std::vector<HorizonPiece> pieces(const Picture& P, const std::vector<Run>& runs,
 
 HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, unsigned threads, HorizonCounters* counters) {
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
-  if (nx < 2 || nz < 1 || g.ys.size() != nx * nz) throw std::invalid_argument("the grid needs at least 2 x samples and one cut");
+  if (nx < 2 || nz < 1 || g.heights() != nx * nz) throw std::invalid_argument("the grid needs at least 2 x samples and one cut");
   for (std::size_t i = 1; i < nx; ++i)
     if (!(g.xs[i - 1] < g.xs[i])) throw std::invalid_argument("grid x values must increase");
   for (std::size_t j = 1; j < nz; ++j)

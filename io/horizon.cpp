@@ -89,7 +89,7 @@ HeightGrid grid_from_expression(const std::string& expression, const SampleRange
   } catch (const mu::Parser::exception_type& e) {
     throw std::invalid_argument("expression '" + expression + "': " + e.GetMsg());
   }
-  g.ys.resize(nx * nz);
+  g.yd.resize(nx * nz);
   std::vector<std::size_t> bad(nz, nx);  // per row, the first sample that is not finite
   ParallelLoop().run(nz, 8, [&](unsigned, std::size_t begin, std::size_t end) {
     double xv = 0, zv = 0;
@@ -103,7 +103,7 @@ HeightGrid grid_from_expression(const std::string& expression, const SampleRange
           bad[j] = i;
           break;
         }
-        g.ys[j * nx + i] = Rational(y);  // exact: GMP converts a finite double exactly
+        g.yd[j * nx + i] = y;  // taken exactly (HeightGrid::yd)
       }
     }
   });
@@ -419,7 +419,10 @@ std::optional<Plot> HorizonDrawing::plot(const PlotOptions& opt) const {
   for (std::size_t j = 0; j < nz; ++j) bz[j] = bounds_of(g.zs[j]);
   ParallelLoop loop(opt.threads);
   loop.for_each(nz, 4, [&](std::size_t j) {
-    for (std::size_t i = 0; i < nx; ++i) by[j * nx + i] = bounds_of(g.ys[j * nx + i]);
+    for (std::size_t i = 0; i < nx; ++i) {
+      const std::size_t k = j * nx + i;  // a double height's bounds are itself (bounds_of gives that)
+      by[k] = g.yd.empty() ? bounds_of(g.ys[k]) : Bounds{g.yd[k], g.yd[k]};
+    }
   });
   double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, big = 0;
   auto box = [&](int k, const Bounds& b) {
