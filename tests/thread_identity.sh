@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Output does not depend on the thread count (issue 14): the same bytes with --threads 1, 2
+# and 8 for line drawings (SVG with hidden lines, exact JSON) of a sphere, a cloud of
+# interpenetrating cubes and 400 random triangles (intersection lines, many cuts), the
+# visible surfaces (--surfaces), a raster (PNG and face ids) and a horizon (SVG and JSON).
+# Usage: tests/thread_identity.sh HLR GEN_MESH DATA_DIR
+set -euo pipefail
+hlr="$1"; gen="$2"; data="$3"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+"$gen" sphere 40 > "$work/sphere.off"
+"$gen" cubes 6 > "$work/cubes.off"
+"$gen" triangles 400 7 > "$work/tris.off"
+fail=0
+same() {  # name, then the command with THREADS where the count goes
+  local name="$1"; shift
+  local first=""
+  for t in 1 2 8; do
+    local out="$work/$name.$t"
+    "${@//THREADS/$t}" > "$out" 2> "$work/err" || { echo "$name: --threads $t failed: $(cat "$work/err")"; fail=1; return; }
+    if [ -z "$first" ]; then first="$out"; elif ! cmp -s "$first" "$out"; then echo "$name: --threads $t differs from --threads 1"; fail=1; fi
+  done
+  echo "$name: identical on 1, 2 and 8 threads ($(wc -c < "$first") bytes)"
+}
+for m in sphere cubes tris; do
+  same "$m.svg" "$hlr" render "$work/$m.off" --view 1,1.3,1.7 --hidden dashed --threads THREADS
+  same "$m.json" "$hlr" render "$work/$m.off" --view 1,1.3,1.7 --format json --threads THREADS
+done
+same "demo-surfaces.svg" "$hlr" render "$data/demo_lit.yaml" --surfaces --threads THREADS
+for t in 1 2 8; do
+  "$hlr" raster "$work/sphere.off" --size 160x120 --samples 2 --ids "$work/ids.$t.png" --threads "$t" -o "$work/raster.$t.png" 2> "$work/err" \
+    || { echo "raster: --threads $t failed: $(cat "$work/err")"; fail=1; }
+  for f in raster ids; do
+    cmp -s "$work/$f.1.png" "$work/$f.$t.png" || { echo "raster $f: --threads $t differs from --threads 1"; fail=1; }
+  done
+done
+echo "raster PNG and face ids: compared on 1, 2 and 8 threads"
+same "horizon.svg" "$hlr" horizon --expr "sin(5*x)*cos(4*z)/3" --x -1:1:200 --z -1:1:60 --hidden dashed --threads THREADS
+same "horizon.json" "$hlr" horizon --expr "sin(5*x)*cos(4*z)/3" --x -1:1:60 --z -1:1:20 --format json --threads THREADS
+[ "$fail" = 0 ] && echo "thread identity: all identical"
+exit "$fail"
