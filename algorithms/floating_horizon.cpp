@@ -381,7 +381,7 @@ void sort_visible(HorizonResult& res) {
   });
 }
 
-HorizonResult floating_horizon_x(const HeightGrid& g, const Camera& cam) {
+HorizonResult floating_horizon_x(const HeightGrid& g, const Camera& cam, unsigned threads) {
   HeightGrid t;
   t.xs = g.zs;
   t.zs = g.xs;
@@ -397,7 +397,7 @@ HorizonResult floating_horizon_x(const HeightGrid& g, const Camera& cam) {
   Camera c = cam;
   c.direction = swap_xz(cam.direction);
   c.up = swap_xz(cam.up);
-  return floating_horizon(t, c);
+  return floating_horizon_filtered(t, c, threads);
 }
 
 bool x_cuts_edge_on(const Camera& camera) { return !camera.perspective && camera.direction.x() == 0; }

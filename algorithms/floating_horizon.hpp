@@ -100,7 +100,7 @@ void sort_visible(HorizonResult& result);
 /// `curve` is then i and `segment` j (the edge from (i, j) to (i, j+1)). Needs a view with an x
 /// component; with none, every x cut lies in a plane through the viewing direction and is seen
 /// edge-on: see x_cuts_edge_on().
-HorizonResult floating_horizon_x(const HeightGrid& grid, const Camera& camera);
+HorizonResult floating_horizon_x(const HeightGrid& grid, const Camera& camera, unsigned threads = 0);
 
 /// True when the view has no x component: the x cuts lie in planes through the viewing
 /// direction (each is seen as a vertical line). The first and last (the side edges) are then

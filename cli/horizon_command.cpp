@@ -71,13 +71,13 @@ int run_horizon(const HorizonArgs& a) {
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   auto t0 = Clock::now();
-  HeightGrid g = a.grid.empty() ? grid_from_expression(a.expression, x, z) : grid_from_file(a.grid, x, z, height);
+  HeightGrid g = a.grid.empty() ? grid_from_expression(a.expression, x, z, a.threads) : grid_from_file(a.grid, x, z, height);
   const double t_sampling = since(t0);
   progress("floating horizon (" + std::to_string(g.zs.size()) + " cuts of " + std::to_string(g.xs.size()) + " samples)");
   std::vector<RenderResult> results;
   if (a.method == "classic" && !(a.dx > 0)) throw std::invalid_argument("--method classic needs --dx (the column width in drawing units)");
   t0 = Clock::now();
-  const HorizonDrawing hd(g, cam, a.method == "classic" ? a.dx : 0, a.cuts);
+  const HorizonDrawing hd(g, cam, a.method == "classic" ? a.dx : 0, a.cuts, a.threads);
   const double t_horizon = since(t0);
   // The picture formats straight from the runs where the clean-up needs no exact decision
   // (HorizonDrawing::plot); JSON, --raw and the rest through the exact model.

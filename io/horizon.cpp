@@ -14,6 +14,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "algorithms/floating_horizon_filtered.hpp"
 #include "algorithms/parallel.hpp"
 #include "io/input_error.hpp"
 #include "io/text_reader.hpp"
@@ -66,7 +67,7 @@ SampleRange parse_sample_range(const std::string& option, const std::string& tex
   return r;
 }
 
-HeightGrid grid_from_expression(const std::string& expression, const SampleRange& x, const SampleRange& z) {
+HeightGrid grid_from_expression(const std::string& expression, const SampleRange& x, const SampleRange& z, unsigned threads) {
   HeightGrid g;
   g.xs = samples(x);
   g.zs = samples(z);
@@ -91,7 +92,7 @@ HeightGrid grid_from_expression(const std::string& expression, const SampleRange
   }
   g.yd.resize(nx * nz);
   std::vector<std::size_t> bad(nz, nx);  // per row, the first sample that is not finite
-  ParallelLoop().run(nz, 8, [&](unsigned, std::size_t begin, std::size_t end) {
+  ParallelLoop(threads).run(nz, 8, [&](unsigned, std::size_t begin, std::size_t end) {
     double xv = 0, zv = 0;
     auto p = parser(xv, zv);
     for (std::size_t j = begin; j < end; ++j) {
@@ -278,16 +279,17 @@ HeightGrid grid_from_file(const std::string& path, const SampleRange& x, const S
   throw InputError(path, 0, "unknown height grid format '" + ext + "' (expected .csv, .pgm or .png)");
 }
 
-HorizonDrawing::HorizonDrawing(const HeightGrid& g, const Camera& camera, double classic_dx, const std::string& cuts)
-    : g_(g), camera_(camera), classic_dx_(classic_dx), cuts_(cuts) {
+HorizonDrawing::HorizonDrawing(const HeightGrid& g, const Camera& camera, double classic_dx, const std::string& cuts,
+                               unsigned threads)
+    : g_(g), camera_(camera), classic_dx_(classic_dx), cuts_(cuts), threads_(threads) {
   const auto start = std::chrono::steady_clock::now();
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
   const bool z_family = cuts != "x", x_family = cuts != "z" || classic_dx <= 0;  // "z": its side edges
-  if (z_family) h_ = classic_dx > 0 ? floating_horizon_classic(g, camera, classic_dx) : floating_horizon(g, camera);
+  if (z_family) h_ = classic_dx > 0 ? floating_horizon_classic(g, camera, classic_dx) : floating_horizon_filtered(g, camera, threads);
   const bool edge_on = x_cuts_edge_on(camera);
   if (edge_on && cuts != "z")
     throw std::invalid_argument("the view has no x component: the x cuts are seen edge-on; give the view an x component (or draw the z cuts)");
-  if (x_family && cuts != "z" && classic_dx <= 0 && !edge_on && nz >= 2) hx_ = floating_horizon_x(g, camera);
+  if (x_family && cuts != "z" && classic_dx <= 0 && !edge_on && nz >= 2) hx_ = floating_horizon_x(g, camera, threads);
   if (cuts == "z") hx_.visible = h_.side;  // the side edges, from the z sweep's final horizons
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   // Visible runs by (curve, segment): each pair's runs are consecutive in the sorted lists, so
@@ -359,7 +361,7 @@ RenderResult HorizonDrawing::model(const std::string& name) const {
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
   // The surface's points, row by row on every core (each point's certified bounds cost).
   std::vector<std::vector<Point3>> rows(nz);
-  ParallelLoop().for_each(nz, 1, [&](std::size_t j) {
+  ParallelLoop(threads_).for_each(nz, 1, [&](std::size_t j) {
     rows[j].reserve(nx);
     for (std::size_t i = 0; i < nx; ++i) rows[j].push_back(g.point(i, j));
   });
@@ -387,7 +389,7 @@ RenderResult HorizonDrawing::model(const std::string& name) const {
   r.drawing.stats.method = Method::Horizon;
   r.drawing.facing.push_back({});  // the faces' classes are not part of the horizon (their planes cost time)
   r.drawing.segments.resize(edges_.size());
-  ParallelLoop().for_each(edges_.size(), 1024, [&](std::size_t k) {
+  ParallelLoop(threads_).for_each(edges_.size(), 1024, [&](std::size_t k) {
     const Edge& e = edges_[k];
     Segment& s = r.drawing.segments[k];
     s.kind = Segment::Kind::Edge;

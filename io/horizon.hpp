@@ -27,7 +27,7 @@ SampleRange parse_sample_range(const std::string& option, const std::string& tex
 /// y = expression(x, z) at every sample; the double value of the expression is taken exactly as
 /// its binary rational. Throws std::invalid_argument for a bad expression or a value that is
 /// not finite (naming x and z).
-HeightGrid grid_from_expression(const std::string& expression, const SampleRange& x, const SampleRange& z);
+HeightGrid grid_from_expression(const std::string& expression, const SampleRange& x, const SampleRange& z, unsigned threads = 0);
 
 /// A CSV of heights, one row per z sample (the first row at z = z.from), one column per x
 /// sample, decimals read exactly; the ranges give the coordinates (their counts are taken from
@@ -61,7 +61,9 @@ HeightGrid grid_from_file(const std::string& path, const SampleRange& x, const S
 class HorizonDrawing {
  public:
   /// The sweeps (see render_horizon() for `classic_dx` and `cuts`); `grid` must outlive this.
-  HorizonDrawing(const HeightGrid& grid, const Camera& camera, double classic_dx = 0, const std::string& cuts = "z");
+  /// `threads`: 0 = all cores.
+  HorizonDrawing(const HeightGrid& grid, const Camera& camera, double classic_dx = 0, const std::string& cuts = "z",
+                 unsigned threads = 0);
   RenderResult model(const std::string& name) const;
   std::optional<Plot> plot(const PlotOptions& options) const;
   double seconds = 0;  // the floating horizon's own time
@@ -79,6 +81,7 @@ class HorizonDrawing {
   Camera camera_;
   double classic_dx_;
   std::string cuts_;
+  unsigned threads_;
   HorizonResult h_, hx_;
   std::vector<Edge> edges_;
   std::vector<EdgePiece> pieces_;
