@@ -563,9 +563,11 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
   std::vector<Run> runs;
   for (std::size_t k = 0; k < nz; ++k) {
     const std::size_t j = static_cast<std::size_t>(res.order[k]);
-    if (k > 0) {
-      merge_into(P, U, strip_up[k], true);
-      merge_into(P, L, strip_lo[k], false);
+    if (k > 0) {  // the upper and the lower horizon at once (they share nothing but lines)
+      loop.for_each(2, 1, [&](std::size_t upper) {
+        if (upper) merge_into(P, U, strip_up[k], true);
+        else merge_into(P, L, strip_lo[k], false);
+      });
       Env().swap(strip_up[k]);
       Env().swap(strip_lo[k]);
     }
