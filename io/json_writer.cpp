@@ -1,6 +1,8 @@
 // JSON writer (see json_writer.hpp): formats the exact drawing, nothing else.
 #include "io/json_writer.hpp"
 
+#include "algorithms/parallel.hpp"
+
 #include <cmath>
 #include <cstdio>
 
@@ -260,10 +262,6 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r
     jb.push_back(b);
   }
   j["bodies"] = jb;
-  Json segs = Json::array();
-  for (const Segment& s : r.segments)
-    for (const Piece& p : s.pieces) segs.push_back(piece_json(s, p));
-  j["segments"] = segs;
   Json st;
   st["edges"] = r.stats.edges;
   st["self_hidden_edges"] = r.stats.self_hidden;
@@ -285,7 +283,21 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r
   std::string out = "{\n \"view\": " + j["view"].dump() + ",\n \"bodies\": [";
   for (std::size_t i = 0; i < j["bodies"].size(); ++i) out += std::string(i ? "," : "") + "\n  " + j["bodies"][i].dump();
   out += "\n ],\n \"segments\": [";
-  for (std::size_t i = 0; i < j["segments"].size(); ++i) out += std::string(i ? "," : "") + "\n  " + j["segments"][i].dump();
+  // One line per piece, formatted on every core in runs of segments and joined in order (no
+  // document of every piece in memory at once).
+  constexpr std::size_t kRun = 2048;
+  std::vector<std::string> parts((r.segments.size() + kRun - 1) / kRun);
+  ParallelLoop().for_each(parts.size(), 1, [&](std::size_t c) {
+    for (std::size_t k = c * kRun, end = std::min(r.segments.size(), k + kRun); k < end; ++k)
+      for (const Piece& p : r.segments[k].pieces) parts[c] += ",\n  " + piece_json(r.segments[k], p).dump();
+  });
+  bool first = true;
+  for (std::string& part : parts) {
+    if (part.empty()) continue;
+    out.append(part, first ? 1 : 0, std::string::npos);  // the first piece has no comma before it
+    first = false;
+    std::string().swap(part);
+  }
   out += "\n ],\n \"stats\": " + j["stats"].dump();
   if (plot) {
     Json pj;
