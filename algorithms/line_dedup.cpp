@@ -222,13 +222,28 @@ class Dedup {
       }
     };
     const std::size_t n_cells = static_cast<std::size_t>(g) * g;
+    ParallelLoop loop(threads);
+    // Each piece's cells on all cores (counted, then written at the piece's offset), then
+    // grouped by cell in piece order: each cell lists its pieces in the order of `live`.
+    std::vector<std::uint32_t> count(live.size() + 1, 0);
+    loop.for_each(live.size(), 4096, [&](std::size_t i) {
+      std::uint32_t n = 0;
+      for_cells(live[i], [&](std::size_t) { ++n; });
+      count[i + 1] = n;
+    });
+    for (std::size_t i = 0; i < live.size(); ++i) count[i + 1] += count[i];
+    std::vector<std::uint32_t> cell_of(count.back());
+    loop.for_each(live.size(), 4096, [&](std::size_t i) {
+      std::uint32_t at = count[i];
+      for_cells(live[i], [&](std::size_t cell) { cell_of[at++] = static_cast<std::uint32_t>(cell); });
+    });
     std::vector<std::uint32_t> start(n_cells + 1, 0);
-    for (std::uint32_t k : live) for_cells(k, [&](std::size_t cell) { ++start[cell + 1]; });
+    for (std::uint32_t c : cell_of) ++start[c + 1];
     for (std::size_t c = 0; c < n_cells; ++c) start[c + 1] += start[c];
     std::vector<std::uint32_t> items(start[n_cells]), fill(start.begin(), start.end() - 1);
-    for (std::uint32_t k : live) for_cells(k, [&](std::size_t cell) { items[fill[cell]++] = k; });
+    for (std::size_t i = 0; i < live.size(); ++i)
+      for (std::uint32_t at = count[i]; at < count[i + 1]; ++at) items[fill[cell_of[at]]++] = live[i];
     // Pairs that pass the double filter, found on all cores; the exact tests in a fixed order.
-    ParallelLoop loop(threads);
     std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop.workers());
     loop.run(n_cells, 256, [&](unsigned worker, std::size_t begin, std::size_t end) {
       for (std::size_t c = begin; c < end; ++c)
