@@ -1,6 +1,8 @@
 // The 2D stage (see drawing_2d.hpp).
 #include "algorithms/drawing_2d.hpp"
 
+#include "algorithms/parallel.hpp"
+
 #include <algorithm>
 #include <limits>
 #include <set>
@@ -75,36 +77,53 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
       for (const Point3* p : {&s.from(), &s.to()}) far = std::max(far, proj.project(*p)[2]);
     near = 1e-4 * std::max(far, 1e-300);
   }
+  // Runs of segments on every core, each into its own lists; joined in segment order.
+  constexpr std::size_t kRun = 4096;
+  std::vector<Drawing2D> runs((r.segments.size() + kRun - 1) / kRun);
+  ParallelLoop().for_each(runs.size(), 1, [&](std::size_t c) {
+    Drawing2D& d = runs[c];
+    for (std::size_t si = c * kRun, end = std::min(r.segments.size(), si + kRun); si < end; ++si) {
+      const Segment& s = r.segments[si];
+      for (std::size_t pi = 0; pi < s.pieces.size(); ++pi) {
+        const Piece& p = s.pieces[pi];
+        if (p.behind_eye || p.clipped || (!p.visible && !(p.through ? opt.through : opt.hidden))) continue;
+        std::array<double, 4> l;
+        bool pulled = false;
+        if (!piece_line(s, p, proj, camera.perspective, near, l, pulled)) continue;
+        Polyline2D pl;
+        pl.first = static_cast<std::uint32_t>(d.points.size());
+        pl.count = 2;
+        pl.first_edge = static_cast<std::uint32_t>(d.sources.size());
+        pl.kind = s.line;
+        pl.visible = p.visible;
+        pl.through = p.through;
+        pl.intersection = s.kind == Segment::Kind::Intersection;
+        pl.body = s.body;
+        pl.body2 = s.body2;
+        pl.pulled = pulled;
+        d.points.push_back({l[0], l[1]});
+        d.points.push_back({l[2], l[3]});
+        d.sources.push_back(PieceRef{static_cast<int>(si), static_cast<int>(pi)});
+        d.lines.push_back(pl);
+      }
+    }
+  });
   Drawing2D d;
   std::size_t pieces = 0;
-  for (const Segment& s : r.segments) pieces += s.pieces.size();
+  for (const Drawing2D& run : runs) pieces += run.lines.size();
   d.lines.reserve(pieces);
   d.points.reserve(2 * pieces);
   d.sources.reserve(pieces);
-  for (std::size_t si = 0; si < r.segments.size(); ++si) {
-    const Segment& s = r.segments[si];
-    for (std::size_t pi = 0; pi < s.pieces.size(); ++pi) {
-      const Piece& p = s.pieces[pi];
-      if (p.behind_eye || p.clipped || (!p.visible && !(p.through ? opt.through : opt.hidden))) continue;
-      std::array<double, 4> l;
-      bool pulled = false;
-      if (!piece_line(s, p, proj, camera.perspective, near, l, pulled)) continue;
-      Polyline2D pl;
-      pl.first = static_cast<std::uint32_t>(d.points.size());
-      pl.count = 2;
-      pl.first_edge = static_cast<std::uint32_t>(d.sources.size());
-      pl.kind = s.line;
-      pl.visible = p.visible;
-      pl.through = p.through;
-      pl.intersection = s.kind == Segment::Kind::Intersection;
-      pl.body = s.body;
-      pl.body2 = s.body2;
-      pl.pulled = pulled;
-      d.points.push_back({l[0], l[1]});
-      d.points.push_back({l[2], l[3]});
-      d.sources.push_back(PieceRef{static_cast<int>(si), static_cast<int>(pi)});
+  for (Drawing2D& run : runs) {
+    const auto points = static_cast<std::uint32_t>(d.points.size()), sources = static_cast<std::uint32_t>(d.sources.size());
+    for (Polyline2D pl : run.lines) {
+      pl.first += points;
+      pl.first_edge += sources;
       d.lines.push_back(pl);
     }
+    d.points.insert(d.points.end(), run.points.begin(), run.points.end());
+    d.sources.insert(d.sources.end(), run.sources.begin(), run.sources.end());
+    run = Drawing2D();
   }
   if (opt.vertex_labels) add_vertex_labels(r, proj, camera, opt.label_base, d);
   return d;
