@@ -246,9 +246,10 @@ HorizonResult floating_horizon(const HeightGrid& g, const Camera& cam, std::vect
   return trace ? floating_horizon_exact(g, cam, trace) : floating_horizon_filtered(g, cam);
 }
 
-HorizonResult floating_horizon_exact(const HeightGrid& g, const Camera& cam, std::vector<HorizonStep>* trace) {
+std::array<Vector3, 2> horizon_axes(const HeightGrid& g, const Camera& cam) {
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
   if (nx < 2 || nz < 1 || g.heights() != nx * nz) throw std::invalid_argument("the grid needs at least 2 x samples and one cut");
+  if (nx * nz > 2'000'000'000ull) throw std::invalid_argument("the grid has too many samples");
   for (std::size_t i = 1; i < nx; ++i)
     if (!(g.xs[i - 1] < g.xs[i])) throw std::invalid_argument("grid x values must increase");
   for (std::size_t j = 1; j < nz; ++j)
@@ -256,10 +257,17 @@ HorizonResult floating_horizon_exact(const HeightGrid& g, const Camera& cam, std
   if (cam.perspective) throw std::invalid_argument("the floating horizon takes an orthographic view");
   const Vector3& v = cam.direction;
   if (v.z() == 0) throw std::invalid_argument("the view direction lies in the cutting planes z = const: give it a z component");
-  // Picture axes as the exact clean-up's (unnormalised): X = P·r, Y = P·u.
   Vector3 r = cross(cam.up, v), u = cross(v, r);
   if (r.y() != 0 || r.x() == 0)
     throw std::invalid_argument("the cuts must run left to right in the picture: choose up in the plane of y and the view direction");
+  return {r, u};
+}
+
+HorizonResult floating_horizon_exact(const HeightGrid& g, const Camera& cam, std::vector<HorizonStep>* trace) {
+  const std::size_t nx = g.xs.size(), nz = g.zs.size();
+  const Vector3& v = cam.direction;
+  // Picture axes as the exact clean-up's (unnormalised): X = P·r, Y = P·u.
+  const auto [r, u] = horizon_axes(g, cam);
   auto project = [&](std::size_t i, std::size_t j) {
     const Rational &x = g.xs[i], &y = g.y(i, j), &z = g.zs[j];
     return P2{x * r.x() + z * r.z(), x * u.x() + y * u.y() + z * u.z()};

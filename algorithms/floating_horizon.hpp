@@ -91,6 +91,11 @@ HorizonResult floating_horizon(const HeightGrid& grid, const Camera& camera, std
 /// The same sweep on rationals throughout (the exam page's trace, and the tests' reference).
 HorizonResult floating_horizon_exact(const HeightGrid& grid, const Camera& camera, std::vector<HorizonStep>* trace = nullptr);
 
+/// The checks both sweeps make (the grid's shape and order, an orthographic view with a z
+/// component, cuts running left to right) and the picture axes r = up × v, u = v × r. Throws
+/// std::invalid_argument.
+std::array<Vector3, 2> horizon_axes(const HeightGrid& grid, const Camera& camera);
+
 /// Orders `visible` as floating_horizon() returns it: curves nearest first, then segments, then t.
 void sort_visible(HorizonResult& result);
 

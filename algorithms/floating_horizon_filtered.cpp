@@ -510,18 +510,8 @@ std::vector<HorizonPiece> pieces(const Picture& P, const std::vector<Run>& runs,
 
 HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, unsigned threads, HorizonCounters* counters) {
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
-  if (nx < 2 || nz < 1 || g.heights() != nx * nz) throw std::invalid_argument("the grid needs at least 2 x samples and one cut");
-  for (std::size_t i = 1; i < nx; ++i)
-    if (!(g.xs[i - 1] < g.xs[i])) throw std::invalid_argument("grid x values must increase");
-  for (std::size_t j = 1; j < nz; ++j)
-    if (!(g.zs[j - 1] < g.zs[j])) throw std::invalid_argument("grid z values must increase");
-  if (nx * nz > 2'000'000'000ull) throw std::invalid_argument("the grid has too many samples");
-  if (cam.perspective) throw std::invalid_argument("the floating horizon takes an orthographic view");
   const Vector3& v = cam.direction;
-  if (v.z() == 0) throw std::invalid_argument("the view direction lies in the cutting planes z = const: give it a z component");
-  Vector3 r = cross(cam.up, v), u = cross(v, r);
-  if (r.y() != 0 || r.x() == 0)
-    throw std::invalid_argument("the cuts must run left to right in the picture: choose up in the plane of y and the view direction");
+  const auto [r, u] = horizon_axes(g, cam);
   // The picture (X, Y) = (sx·(c·x − a·z), sy·(c·y − b·z)) for v = (a, b, c): r = λ·(c, 0, −a),
   // so X is the exact picture's abscissa times |1/λ|; (0, c, −b) is orthogonal to v, so Y is
   // a positive multiple of the exact picture's ordinate plus a multiple of its abscissa (a

@@ -11,17 +11,13 @@
 #include "algorithms/plot.hpp"
 #include "io/horizon.hpp"
 
+#include "horizon_grids.hpp"
+
 namespace hlr {
 namespace {
 
-HeightGrid grid(int nx, int nz, const std::function<Rational(const Rational&, const Rational&)>& f) {
-  HeightGrid g;
-  for (int i = 0; i < nx; ++i) g.xs.push_back(rational(2 * i - (nx - 1), nx - 1));
-  for (int j = 0; j < nz; ++j) g.zs.push_back(rational(2 * j - (nz - 1), nz - 1));
-  for (const Rational& z : g.zs)
-    for (const Rational& x : g.xs) g.ys.push_back(f(x, z));
-  return g;
-}
+using test::uniform_grid;
+const auto& grid = uniform_grid;
 
 void expect_same_plot(const Plot& a, const Plot& b, const std::string& what) {
   ASSERT_EQ(a.layers.size(), b.layers.size()) << what;
