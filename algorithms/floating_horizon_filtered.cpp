@@ -43,11 +43,12 @@ inline Ad operator/(Ad a, Ad b) {
   const double v = a.v / b.v;
   return {v, (a.e + std::fabs(v) * b.e) / m * kSafety + std::fabs(v) * kU + kTiny};
 }
-// A rational's double (GMP truncates: within one ulp).
+// A rational's double (GMP truncates: within one ulp; below the normal range, whether it
+// gives a subnormal or zero, within the smallest normal 2^-1022).
 Ad approx(const Rational& q) {
   const double v = q.get_d();
   if (!std::isfinite(v)) return {0, HUGE_VAL};
-  return {v, std::fabs(v) * 0x1p-52 + kTiny};
+  return {v, std::fabs(v) * 0x1p-52 + 0x1p-1022};
 }
 // The exact number's sign, or 2 when the bound does not tell.
 inline int sign(Ad a) {
