@@ -267,7 +267,8 @@ HorizonResult floating_horizon_exact(const HeightGrid& g, const Camera& cam, std
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
   const Vector3& v = cam.direction;
   // Picture axes as the exact clean-up's (unnormalised): X = P·r, Y = P·u.
-  const auto [r, u] = horizon_axes(g, cam);
+  const std::array<Vector3, 2> axes = horizon_axes(g, cam);
+  const Vector3 &r = axes[0], &u = axes[1];
   auto project = [&](std::size_t i, std::size_t j) {
     const Rational &x = g.xs[i], &y = g.y(i, j), &z = g.zs[j];
     return P2{x * r.x() + z * r.z(), x * u.x() + y * u.y() + z * u.z()};

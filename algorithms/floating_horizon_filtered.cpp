@@ -512,7 +512,8 @@ std::vector<HorizonPiece> pieces(const Picture& P, const std::vector<Run>& runs,
 HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, unsigned threads, HorizonCounters* counters) {
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
   const Vector3& v = cam.direction;
-  const auto [r, u] = horizon_axes(g, cam);
+  const std::array<Vector3, 2> axes = horizon_axes(g, cam);
+  const Vector3 &r = axes[0], &u = axes[1];
   // The picture (X, Y) = (sx·(c·x − a·z), sy·(c·y − b·z)) for v = (a, b, c): r = λ·(c, 0, −a),
   // so X is the exact picture's abscissa times |1/λ|; (0, c, −b) is orthogonal to v, so Y is
   // a positive multiple of the exact picture's ordinate plus a multiple of its abscissa (a
