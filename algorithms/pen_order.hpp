@@ -1,7 +1,9 @@
 // Pen order for plotters (issue 13; vpype's linesort): the order and direction in which the
 // strokes are drawn, to cut the pen-up travel between them. Greedy nearest neighbour from the
 // pen's home (each stroke may be drawn either way; a closed stroke starts at its nearest
-// point), then 2-opt moves (reverse a run of strokes) over near neighbours until none helps.
+// point), then 2-opt moves (reverse a run of strokes) over near neighbours until none helps
+// (each stroke end's nearest ends found once; a queue of places whose pen-up edges changed,
+// then whole passes until one finds nothing).
 // Drawing coordinates only: the order never changes what is drawn.
 #pragma once
 
@@ -23,7 +25,8 @@ struct Stroke {
 struct PenOrderOptions {
   bool two_opt = true;
   std::size_t neighbours = 8;  // 2-opt candidates per stroke end
-  int max_passes = 50;
+  int max_passes = 50;         // bound on the 2-opt's work: about this many looks at every place
+  unsigned threads = 0;        // neighbour lists on this many cores (0: all); the order does not depend on it
 };
 
 struct PenOrder {

@@ -189,7 +189,9 @@ std::string drawing_text(const std::vector<RenderResult>& results, const std::ve
       po.hidden = a.hidden != "none";
       po.threads = a.threads;
       plot = make_plot(results[0].drawing, results[0].camera, po);
-      order_plot(*plot, {plot->bounds[0], plot->bounds[3]});
+      PenOrderOptions order;
+      order.threads = a.threads;
+      order_plot(*plot, {plot->bounds[0], plot->bounds[3]}, order);
     }
     const RenderResult& r0 = results[0];
     SurfacesJson sj;
@@ -241,7 +243,9 @@ std::string plots_text(std::vector<Plot>& plots, const std::vector<std::string>&
     for (Plot& p : plots) {
       drop_short_strokes(p, a.min_length / sheet.views[0].scale);
       // A shaded picture is not plotted: its lines keep their chained order.
-      if (!a.raw && p.fills.empty()) order_plot(p, {p.bounds[0], p.bounds[3]});
+      PenOrderOptions order;
+      order.threads = a.threads;
+      if (!a.raw && p.fills.empty()) order_plot(p, {p.bounds[0], p.bounds[3]}, order);
     }
     for (const std::string& note : sheet.notes) std::cerr << "hlr " << command << ": note: " << note << "\n";
     progress("writing");

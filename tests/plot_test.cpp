@@ -109,6 +109,39 @@ TEST(PenOrder, TwoOptNeverLengthensAndHelpsOnRandomStrokes) {
   EXPECT_LT(final, 0.97 * greedy) << "2-opt should shorten greedy nearest-neighbour travel on random strokes";
 }
 
+// Open, closed, one-point and empty strokes together; the neighbour lists are built on several
+// cores: the order must not depend on how many, and closed strokes start where the order says.
+TEST(PenOrder, MixedStrokesSameOrderOnAnyThreadCount) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 100);
+  std::vector<Stroke> strokes;
+  for (int i = 0; i < 3000; ++i) {
+    Point2 a{u(rng), u(rng)};
+    switch (i % 5) {
+      case 0: strokes.push_back(Stroke{{a, {a[0] + 1, a[1]}, {a[0] + 1, a[1] + 1}}, true}); break;  // a triangle
+      case 1: strokes.push_back(Stroke{{a}, false}); break;                                       // a dot
+      case 2: if (i % 20 == 2) { strokes.push_back(Stroke{}); break; } [[fallthrough]];             // empty
+      default: strokes.push_back(Stroke{{a, {a[0] + u(rng) / 30, a[1] + u(rng) / 30}}, false});
+    }
+  }
+  PenOrderOptions one, four;
+  one.threads = 1, four.threads = 4;
+  PenOrder a = order_strokes(strokes, {0, 100}, one), b = order_strokes(strokes, {0, 100}, four);
+  EXPECT_EQ(a.order, b.order);
+  EXPECT_EQ(a.reversed, b.reversed);
+  EXPECT_EQ(a.start, b.start);
+  EXPECT_EQ(a.pen_up, b.pen_up);
+  EXPECT_LT(a.pen_up, 0.97 * a.pen_up_greedy);
+  std::vector<Stroke> placed;
+  for (std::size_t i = 0; i < a.order.size(); ++i) {
+    Stroke s = strokes[a.order[i]];
+    if (s.closed) std::rotate(s.points.begin(), s.points.begin() + a.start[i], s.points.end());
+    else if (a.reversed[i]) std::reverse(s.points.begin(), s.points.end());
+    placed.push_back(s);
+  }
+  EXPECT_NEAR(pen_up_length(placed, {0, 100}), a.pen_up, 1e-6);
+}
+
 // ---------------------------------------------------------------- dashes
 TEST(Dashes, PatternRunsOnAcrossCorners) {
   // An L of 5 + 5 with dash 3, gap 1: dashes [0,3], [4,7] (across the corner), [8,10].
