@@ -40,7 +40,14 @@ void Engine<P>::visibility(LineDrawing& res) {
   loop.run(n, 512, [&](unsigned w, std::size_t b, std::size_t e) {
     Work& wk = work[w];
     if (!ready[w]) wk.stamps.reset(occ_.size()), ready[w] = 1;
-    for (std::size_t i = b; i < e; ++i) solve(res.segments[i], gv_[i], wk);
+    for (std::size_t i = b; i < e; ++i) {
+      Segment& s = res.segments[i];
+      if (opt_.decide && !opt_.decide(s)) {
+        s.pieces = {Piece{Rational(0), Rational(1), false}};
+        continue;
+      }
+      solve(s, gv_[i], wk);
+    }
   });
   FaceRouteStats& fs = *res.stats.faces;
   for (const Work& w : work) {

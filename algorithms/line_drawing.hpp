@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -38,6 +39,8 @@ const char* to_string(LineKind k);
 /// Which edges a renderer draws.
 enum class EdgeSelection { All, Feature };
 
+struct Segment;
+
 /// What every hidden-line route takes (the render pipeline's options add the rest).
 struct LineOptions {
   EdgeSelection edges = EdgeSelection::Feature;  // Feature: boundaries, silhouettes, creases
@@ -51,6 +54,10 @@ struct LineOptions {
   /// Per-face route: only each face's facing and which closed solids hide their back faces
   /// (LineDrawing::facing, back_faces_unseen, notes), no lines: what the raster algorithms need.
   bool facing_only = false;
+  /// Per-face route: when set, only the segments it returns true for get their visibility
+  /// decided; each of the others gets one placeholder piece over [0, 1], hidden (tiles cut
+  /// those away, a merge puts the tiles' pieces in: picture_tiles.hpp).
+  std::function<bool(const Segment&)> decide;
   unsigned threads = 0;                           // 0: all cores
 };
 

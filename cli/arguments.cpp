@@ -110,4 +110,14 @@ ProgressLine::~ProgressLine() {
   if (isatty(2)) std::cerr << "\r\x1b[K" << std::flush;
 }
 
+namespace {
+std::vector<std::string>& stored_command_line() {
+  static std::vector<std::string> args;
+  return args;
+}
+}  // namespace
+
+void set_command_line(std::vector<std::string> args) { stored_command_line() = std::move(args); }
+const std::vector<std::string>& command_line() { return stored_command_line(); }
+
 }  // namespace hlr::cli

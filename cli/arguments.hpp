@@ -17,6 +17,10 @@ const std::vector<std::string>& value_options();
 /// argv with "--opt -1,2,3" joined into "--opt=-1,2,3" for the value options.
 std::vector<std::string> join_negative_values(int argc, char** argv);
 
+/// The whole command line (after join_negative_values), kept by main: tile files record it.
+void set_command_line(std::vector<std::string> args);
+const std::vector<std::string>& command_line();
+
 /// Parses "X,Y,Z" exactly; throws std::invalid_argument naming the option and the bad part.
 Vector3 parse_vector3(const std::string& option, const std::string& text);
 

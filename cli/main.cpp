@@ -47,12 +47,13 @@ int main(int argc, char** argv) {
     if (!known) {
       std::cerr << "hlr: unknown command '" << given << "'";
       if (best_d <= 3) std::cerr << "; did you mean '" << best << "'?";
-      std::cerr << " (commands: info, render, raster, clip, decompose, explain, horizon; hlr --help)\n";
+      std::cerr << " (commands: info, render, merge, raster, clip, decompose, explain, horizon; hlr --help)\n";
       return 2;
     }
   }
   try {
     std::vector<std::string> args = hlr::cli::join_negative_values(argc, argv);
+    hlr::cli::set_command_line(args);
     std::vector<std::string> rest(args.rbegin(), args.rend() - 1);  // CLI11 takes them reversed
     app.parse(rest);
   } catch (const CLI::ParseError& e) {

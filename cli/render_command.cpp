@@ -21,6 +21,8 @@
 #include "io/json_writer.hpp"
 #include "io/plot_output.hpp"
 #include "io/render.hpp"
+#include "io/input_error.hpp"
+#include "io/tile_file.hpp"
 #include "io/svg_writer.hpp"
 #include "io/standard_views.hpp"
 
@@ -33,7 +35,47 @@ struct RenderArgs : OutputArgs {
   std::string method = "faces", crease = "30";
   bool timings = false, surfaces = false, shadows = false, no_through = false;
   std::string views, up_axis;
+  std::string tile;  // "I/N"
 };
+
+// A merge of tile files (hlr merge): the tiles and their paths.
+struct MergeInput {
+  std::vector<TileFile> tiles;
+  std::vector<std::string> paths;
+};
+
+// "I/N" with 1 <= I <= N.
+RenderOptions::Tile parse_tile(const std::string& text) {
+  const std::size_t slash = text.find('/');
+  try {
+    std::size_t used = 0, used2 = 0;
+    const std::string a = text.substr(0, slash), b = slash == std::string::npos ? "" : text.substr(slash + 1);
+    const long i = std::stol(a, &used), n = std::stol(b, &used2);
+    if (used == a.size() && used2 == b.size() && n >= 1 && n <= 1000000 && i >= 1 && i <= n)
+      return RenderOptions::Tile{static_cast<int>(i - 1), static_cast<int>(n)};
+  } catch (const std::exception&) {
+  }
+  throw std::invalid_argument("--tile: '" + text + "' is not I/N with 1 <= I <= N (e.g. 3/9: the third of nine tiles)");
+}
+
+// The render command's arguments for a tile file: without the ones a merge gives itself.
+std::vector<std::string> tile_args() {
+  const std::vector<std::string>& all = command_line();
+  std::vector<std::string> out;
+  const std::vector<std::string> with_value = {"--tile", "-o", "--format", "--threads"}, flags = {"--progress", "--quiet", "--timings"};
+  for (std::size_t i = 2; i < all.size(); ++i) {
+    const std::string& x = all[i];
+    if (std::find(flags.begin(), flags.end(), x) != flags.end()) continue;
+    if (std::find(with_value.begin(), with_value.end(), x) != with_value.end()) {
+      ++i;
+      continue;
+    }
+    bool joined = false;
+    for (const std::string& w : with_value) joined = joined || x.rfind(w + "=", 0) == 0;
+    if (!joined) out.push_back(x);
+  }
+  return out;
+}
 
 
 RenderOptions render_options(const RenderArgs& a) {
@@ -64,10 +106,15 @@ RenderOptions render_options(const RenderArgs& a) {
   return o;
 }
 
-int run_render(const RenderArgs& a) {
+int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
   if (!a.view.empty() && !a.eye.empty()) throw std::invalid_argument("give --view (orthographic) or --eye (perspective), not both");
   if (!a.views.empty() && (!a.view.empty() || !a.eye.empty())) throw std::invalid_argument("give --views (a sheet) or one --view/--eye, not both");
-  const std::string format = check_output_args(a, !a.views.empty());  // before the long work
+  std::optional<RenderOptions::Tile> tile;
+  if (!a.tile.empty()) {
+    tile = parse_tile(a.tile);
+    if (!a.views.empty()) throw std::invalid_argument("--tile takes one view, not --views");
+  }
+  const std::string format = tile ? "tile" : check_output_args(a, !a.views.empty());  // before the long work
   ProgressLine progress_line("render", a.progress, a.quiet);
   using Clock = std::chrono::steady_clock;
   auto t_start = Clock::now();
@@ -100,6 +147,8 @@ int run_render(const RenderArgs& a) {
     if (one.up_axis.empty()) one.up_axis = z_up ? "z" : "y";
     RenderOptions options = render_options(one);
     options.surface_corners = format == "json";
+    options.tile = tile;
+    options.segments_only = merge != nullptr;
     progress(view_names.empty() ? "hidden lines" : "hidden lines, view " + view_names[i]);
     try {
       results[i] = render(i + 1 < n_views ? scenes : std::move(scenes), options);
@@ -110,8 +159,13 @@ int run_render(const RenderArgs& a) {
     if (i == 0)
       for (const std::string& note : results[i].notes) std::cerr << "hlr render: note: " << note << "\n";
   }
+  if (merge) {
+    progress("joining the tiles");
+    merge_tiles(results[0].drawing, merge->tiles, merge->paths);
+  }
   auto t_solved = Clock::now();
-  std::string text = drawing_text(results, view_names, a, format, "render");
+  std::string text = tile ? tile_text(results[0].drawing, tile->index, tile->count, tile_args())
+                          : drawing_text(results, view_names, a, format, merge ? "merge" : "render");
   write_output(a.output, text);
   if (a.timings) {
     auto t_end = Clock::now();
@@ -145,11 +199,7 @@ int run_render(const RenderArgs& a) {
   return 0;
 }
 
-}  // namespace
-
-void add_render_command(CLI::App& app, int& exit_code) {
-  auto a = std::make_shared<RenderArgs>();
-  CLI::App* cmd = app.add_subcommand("render", "Exact hidden-line drawing as SVG, PDF, PNG, DXF or JSON");
+void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   cmd->add_option("inputs", a->inputs, "Mesh files (.off .obj .stl .ply) and scene files (.yaml .yml .json)")->required();
   add_output_options(cmd, *a, true);
   cmd->add_option("--view", a->view,
@@ -185,7 +235,53 @@ void add_render_command(CLI::App& app, int& exit_code) {
                   "Clip the drawing to box:XMIN,XMAX,YMIN,YMAX,ZMIN,ZMAX, frustum:XL,XR,YB,YT,ZNEAR,ZFAR,ZCP or a convex mesh file");
   cmd->add_option("--near", a->near,
                   "Perspective near plane at this fraction of the eye-target distance from the eye (default 1/1000)");
+  cmd->add_option("--tile", a->tile,
+                  "Only tile I of an N-tile split of the picture, as a tile file for hlr merge (I/N, e.g. 3/9; the per-face route's "
+                  "line drawings)");
+}
+
+struct MergeArgs {
+  std::vector<std::string> tiles;
+  std::string output, format;
+  unsigned threads = 0;
+  bool progress = false, quiet = false, timings = false;
+};
+
+int run_merge(const MergeArgs& m) {
+  MergeInput in;
+  for (const std::string& p : m.tiles) in.tiles.push_back(read_tile(p)), in.paths.push_back(p);
+  // The render the tiles came from, with this command's output.
+  CLI::App again;
+  auto a = std::make_shared<RenderArgs>();
+  add_render_options(&again, a);
+  std::vector<std::string> args(in.tiles[0].args.rbegin(), in.tiles[0].args.rend());
+  try {
+    again.parse(args);
+  } catch (const CLI::ParseError& e) {
+    throw InputError(in.paths[0], 0, std::string("its render arguments do not parse: ") + e.what());
+  }
+  a->output = m.output, a->format = m.format, a->threads = m.threads;
+  a->progress = m.progress, a->quiet = m.quiet, a->timings = m.timings, a->tile.clear();
+  return run_render(*a, &in);
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app, int& exit_code) {
+  auto a = std::make_shared<RenderArgs>();
+  CLI::App* cmd = app.add_subcommand("render", "Exact hidden-line drawing as SVG, PDF, PNG, DXF or JSON");
+  add_render_options(cmd, a);
   cmd->callback([a, &exit_code] { exit_code = run_render(*a); });
+  auto m = std::make_shared<MergeArgs>();
+  CLI::App* mc = app.add_subcommand("merge", "Join the tile files of hlr render --tile I/N into the whole drawing (SVG, PDF, PNG, DXF or JSON)");
+  mc->add_option("tiles", m->tiles, "The tile files, every tile of the split once, any order")->required();
+  mc->add_option("-o", m->output, "Output file (default: standard output); the extension picks the format");
+  mc->add_option("--format", m->format, "svg, pdf, png, dxf or json (default: from the output file's extension, else svg)");
+  mc->add_option("--threads", m->threads, "Threads (default: all cores)");
+  mc->add_flag("--progress", m->progress, "Say what it is doing on standard error");
+  mc->add_flag("--quiet", m->quiet, "No progress messages");
+  mc->add_flag("--timings", m->timings, "Print the time of each stage to standard error");
+  mc->callback([m, &exit_code] { exit_code = run_merge(*m); });
 }
 
 }  // namespace hlr::cli

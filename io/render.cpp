@@ -18,6 +18,7 @@
 #include "algorithms/shadows.hpp"
 #include "algorithms/transparency.hpp"
 #include "algorithms/weiler_atherton.hpp"
+#include "algorithms/picture_tiles.hpp"
 
 namespace hlr {
 
@@ -274,6 +275,46 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
   r.drawing = std::move(d);
 }
 
+// A tile of the picture (picture_tiles.hpp): its split, from every body's vertices, and the
+// cut of each segment to it.
+class TileCut {
+ public:
+  TileCut(const std::vector<const Polyhedron*>& polys, const Camera& cam, const RenderOptions::Tile& t)
+      : cam_(cam), pp_(cam), index_(t.index) {
+    if (t.count < 1 || t.index < 0 || t.index >= t.count) throw std::invalid_argument("--tile: no tile " + std::to_string(t.index + 1) + " of " + std::to_string(t.count));
+    std::vector<const Point3*> pts;
+    for (const Polyhedron* p : polys)
+      for (const Point3& q : p->vertices()) pts.push_back(&q);
+    const DrawingFrame frame = drawing_frame(pts.size(), [&](std::size_t i) -> const Point3& { return *pts[i]; });
+    proj_.emplace(cam, frame);
+    split_ = split_picture(cam, *proj_, pts.size(), [&](std::size_t i) -> const Point3& { return *pts[i]; }, t.count);
+  }
+  /// False only when no point of the segment is in the tile (a filter in doubles).
+  bool may_hold(const Segment& s) const { return where(s) != 0; }
+  /// The segment's pieces cut to the tile, exactly.
+  void apply(Segment& s) const {
+    const int w = where(s);
+    if (w == 0) s.pieces.clear();
+    if (w == 1) cut_to_intervals(s, tile_intervals(s, pp_, cam_, split_, index_));
+  }
+
+ private:
+  // 0: no point of the segment in the tile, 2: all of it, 1: not known without exact numbers.
+  int where(const Segment& s) const {
+    if (split_.count == 1) return 2;
+    if (cam_.perspective && (cam_.in_front(s.from()) != Sign::Positive || cam_.in_front(s.to()) != Sign::Positive)) return 1;
+    const auto a = proj_->project(s.from()), b = proj_->project(s.to());
+    return !tile_may_hold(split_, index_, a, b) ? 0 : tile_holds_wholly(split_, index_, a, b) ? 2 : 1;
+  }
+
+ private:
+  const Camera& cam_;
+  PicturePlane pp_;
+  int index_;
+  std::optional<Projector> proj_;
+  TileSplit split_;
+};
+
 }  // namespace
 
 RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
@@ -303,14 +344,21 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   if (o.method == RenderMethod::Roberts)
     for (const Polyhedron* p : polys) p->report();  // Roberts' checks belong to loading
   r.camera = choose_camera(o.view, scene_view, polys);
+  if ((o.tile || o.segments_only) &&
+      (o.method != RenderMethod::Faces || o.surfaces || o.shadows || o.clip))
+    throw std::invalid_argument("tiles take line drawings of the per-face route (not --method roberts, --surfaces, --shadows or --clip)");
+  RenderOptions tiled = o;
+  std::optional<TileCut> cut;
+  if (o.tile) cut.emplace(polys, r.camera, *o.tile), tiled.lines.decide = [&](const Segment& s) { return cut->may_hold(s); };
+  if (o.segments_only) tiled.lines.decide = [](const Segment&) { return false; };
   try {
     if (o.surfaces || o.shadows || o.method == RenderMethod::WeilerAtherton || o.method == RenderMethod::Priority)
       solve_surfaces(r, polys, *owned, o);
     else {
-      r.drawing = solve(polys, r.camera, o);
+      r.drawing = solve(polys, r.camera, tiled);
       const std::vector<char> see = see_through_bodies(r);
-      if (o.method == RenderMethod::Faces && o.through_lines)
-        r.through_pieces = mark_see_through(r.drawing, polys, r.camera, o.lines, see);
+      if (o.method == RenderMethod::Faces && o.through_lines && !o.segments_only)
+        r.through_pieces = mark_see_through(r.drawing, polys, r.camera, tiled.lines, see);
       else if (o.method == RenderMethod::Roberts && std::find(see.begin(), see.end(), 1) != see.end())
         repairs.push_back("transparent bodies hide the lines behind them with --method roberts (the per-face route draws those lines as seen through)");
     }
@@ -331,6 +379,8 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
       if (near) clip_near(s, *near);
       if (o.clip) clip_pieces(s, *o.clip);
     });
+  if (cut)
+    ParallelLoop(o.lines.threads).for_each(r.drawing.segments.size(), 256, [&](std::size_t i) { cut->apply(r.drawing.segments[i]); });
   return r;
 }
 

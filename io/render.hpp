@@ -52,6 +52,16 @@ struct RenderOptions {
   /// Lines behind transparent bodies (a material with transparency > 0) as their own class,
   /// seen through (see_through_lines.hpp; the per-face route). Off: they are hidden lines.
   bool through_lines = true;
+  /// Only the part of the drawing in tile `index` (0-based) of a `count`-tile split of the
+  /// picture (picture_tiles.hpp; issue 14): segments outside it are not solved, every piece is
+  /// cut to the tile. The per-face route's line drawings only.
+  struct Tile {
+    int index = 0, count = 1;
+  };
+  std::optional<Tile> tile;
+  /// The segments without their visibility (each one placeholder piece): a merge of tiles
+  /// puts the tiles' pieces in (io/tile_file.hpp). The per-face route's line drawings only.
+  bool segments_only = false;
 };
 
 struct RenderResult {

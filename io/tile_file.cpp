@@ -1,0 +1,157 @@
+// Tile files (see tile_file.hpp; issue 14).
+#include "io/tile_file.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "algorithms/picture_tiles.hpp"
+#include "io/input_error.hpp"
+#include "io/text_reader.hpp"
+#include "kernel/number.hpp"
+
+namespace hlr {
+namespace {
+
+void mix(std::uint64_t& h, std::int64_t v) {  // FNV-1a over the value's 8 bytes
+  for (int k = 0; k < 8; ++k) {
+    h ^= static_cast<std::uint64_t>(v >> (8 * k)) & 0xff;
+    h *= 0x100000001b3ull;
+  }
+}
+
+std::string kind_text(const Piece& p) {
+  std::string k = p.visible ? "v" : "h";
+  if (p.behind_eye) k += 'b';
+  if (p.clipped) k += 'c';
+  if (p.through) k += 't';
+  return k;
+}
+
+bool parse_kind(const std::string& k, Piece& p) {
+  if (k.empty() || (k[0] != 'v' && k[0] != 'h')) return false;
+  p.visible = k[0] == 'v';
+  std::size_t at = 1;
+  for (char c : {'b', 'c', 't'}) {
+    const bool has = at < k.size() && k[at] == c;
+    (c == 'b' ? p.behind_eye : c == 'c' ? p.clipped : p.through) = has;
+    at += has;
+  }
+  return at == k.size();
+}
+
+}  // namespace
+
+std::uint64_t segment_fingerprint(const LineDrawing& d) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  mix(h, static_cast<std::int64_t>(d.segments.size()));
+  for (const Segment& s : d.segments)
+    for (std::int64_t v : {static_cast<std::int64_t>(s.kind), static_cast<std::int64_t>(s.line), std::int64_t{s.body},
+                           std::int64_t{s.body2}, std::int64_t{s.v0}, std::int64_t{s.v1}, std::int64_t{s.face0},
+                           std::int64_t{s.face1}, std::int64_t{s.self_hidden}})
+      mix(h, v);
+  return h;
+}
+
+std::string tile_text(const LineDrawing& d, int index, int count, const std::vector<std::string>& args) {
+  std::ostringstream out;
+  out << "hlr-tile 1\ntile " << index + 1 << " " << count << "\n";
+  for (const std::string& a : args) {
+    if (a.find('\n') != std::string::npos) throw std::invalid_argument("--tile: an argument with a line break cannot go into a tile file");
+    out << "arg " << a << "\n";
+  }
+  out << "segments " << d.segments.size() << " " << std::hex << segment_fingerprint(d) << std::dec << "\n";
+  const FaceRouteStats f = d.stats.faces.value_or(FaceRouteStats{});
+  out << "counters " << d.stats.pairs_tested << " " << d.stats.pairs_skipped << " " << d.stats.pairs_rational << " "
+      << f.comparisons << " " << f.comparisons_identical << " " << f.comparisons_exact << "\n";
+  for (std::size_t i = 0; i < d.segments.size(); ++i)
+    for (const Piece& p : d.segments[i].pieces)
+      out << "piece " << i << " " << p.t0.get_str() << " " << p.t1.get_str() << " " << kind_text(p) << "\n";
+  out << "end\n";
+  return out.str();
+}
+
+TileFile read_tile(const std::string& path) {
+  const std::string bytes = read_file_bytes(path);
+  TileFile t;
+  std::istringstream in(bytes);
+  std::string line;
+  int n = 0;
+  auto fail = [&](const std::string& what) { throw InputError(path, n, what); };
+  bool header = false, tile = false, segments = false, end = false;
+  while (std::getline(in, line)) {
+    ++n;
+    if (end) fail("text after 'end'");
+    if (!header) {
+      if (line != "hlr-tile 1") fail("not an hlr tile file (the first line must be 'hlr-tile 1'; made by hlr render --tile I/N)");
+      header = true;
+      continue;
+    }
+    const std::size_t sp = line.find(' ');
+    const std::string key = line.substr(0, sp), rest = sp == std::string::npos ? "" : line.substr(sp + 1);
+    std::istringstream f(rest);
+    if (key == "arg") {
+      t.args.push_back(rest);
+    } else if (key == "tile") {
+      long i = 0, c = 0;
+      if (!(f >> i >> c) || c < 1 || i < 1 || i > c || !(f >> std::ws).eof()) fail("'tile I N' with 1 <= I <= N expected");
+      t.index = static_cast<int>(i - 1), t.count = static_cast<int>(c), tile = true;
+    } else if (key == "segments") {
+      if (!(f >> t.segments >> std::hex >> t.fingerprint) || !(f >> std::ws).eof()) fail("'segments COUNT FINGERPRINT' expected");
+      segments = true;
+    } else if (key == "counters") {
+      if (!(f >> t.pairs_tested >> t.pairs_skipped >> t.pairs_rational >> t.comparisons >> t.comparisons_identical >> t.comparisons_exact))
+        fail("'counters' and six counts expected");
+    } else if (key == "piece") {
+      std::size_t seg = 0;
+      std::string a, b, k;
+      if (!(f >> seg >> a >> b >> k) || !(f >> std::ws).eof()) fail("'piece SEGMENT T0 T1 KIND' expected");
+      if (!segments || seg >= t.segments) fail("piece of segment " + std::to_string(seg) + ": not a segment of the drawing");
+      Piece p;
+      if (!try_parse_rational(a, p.t0) || !try_parse_rational(b, p.t1) || !(p.t0 >= 0 && p.t0 < p.t1 && p.t1 <= 1))
+        fail("piece parameters must be exact numbers with 0 <= T0 < T1 <= 1");
+      if (!parse_kind(k, p)) fail("piece kind '" + k + "': v or h, then b, c, t");
+      t.pieces.emplace_back(seg, std::move(p));
+    } else if (key == "end") {
+      end = true;
+    } else {
+      fail("unknown record '" + key + "'");
+    }
+  }
+  if (!header) fail("empty file: not an hlr tile file");
+  if (!tile || !segments) fail("the 'tile' or 'segments' record is missing");
+  if (!end) fail("the file ends without 'end' (cut short?)");
+  return t;
+}
+
+void merge_tiles(LineDrawing& d, const std::vector<TileFile>& tiles, const std::vector<std::string>& paths) {
+  if (tiles.empty()) throw std::invalid_argument("merge: no tile files");
+  const TileFile& first = tiles[0];
+  std::vector<int> seen(static_cast<std::size_t>(first.count), -1);
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const TileFile& t = tiles[k];
+    if (t.count != first.count) throw InputError(paths[k], 0, "a tile of " + std::to_string(t.count) + " tiles, " + paths[0] + " is one of " + std::to_string(first.count));
+    if (t.args != first.args) throw InputError(paths[k], 0, "rendered with other input or options than " + paths[0]);
+    if (t.segments != d.segments.size() || t.fingerprint != segment_fingerprint(d))
+      throw InputError(paths[k], 0, "its segments are not the drawing's (the input files changed since the tiles were made?)");
+    int& s = seen[static_cast<std::size_t>(t.index)];
+    if (s >= 0) throw InputError(paths[k], 0, "tile " + std::to_string(t.index + 1) + " is also " + paths[static_cast<std::size_t>(s)]);
+    s = static_cast<int>(k);
+  }
+  for (std::size_t i = 0; i < seen.size(); ++i)
+    if (seen[i] < 0) throw std::invalid_argument("merge: tile " + std::to_string(i + 1) + " of " + std::to_string(first.count) + " is missing");
+  for (Segment& s : d.segments) s.pieces.clear();
+  FaceRouteStats& f = d.stats.faces ? *d.stats.faces : d.stats.faces.emplace();
+  d.stats.pairs_tested = d.stats.pairs_skipped = d.stats.pairs_rational = 0;
+  f.comparisons = f.comparisons_identical = f.comparisons_exact = 0;
+  for (const TileFile& t : tiles) {
+    for (const auto& [i, p] : t.pieces) d.segments[i].pieces.push_back(p);
+    d.stats.pairs_tested += t.pairs_tested, d.stats.pairs_skipped += t.pairs_skipped, d.stats.pairs_rational += t.pairs_rational;
+    f.comparisons += t.comparisons, f.comparisons_identical += t.comparisons_identical, f.comparisons_exact += t.comparisons_exact;
+  }
+  for (std::size_t i = 0; i < d.segments.size(); ++i) {
+    const std::string err = join_tile_pieces(d.segments[i].pieces);
+    if (!err.empty()) throw std::invalid_argument("merge: segment " + std::to_string(i) + ": " + err);
+  }
+}
+
+}  // namespace hlr
