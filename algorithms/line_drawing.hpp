@@ -58,6 +58,9 @@ struct LineOptions {
   /// decided; each of the others gets one placeholder piece over [0, 1], hidden (tiles cut
   /// those away, a merge puts the tiles' pieces in: picture_tiles.hpp).
   std::function<bool(const Segment&)> decide;
+  /// Per-face route: when set, a face triangle (its body and the body's vertex indices) hides
+  /// only when this returns true: a tile leaves out the triangles that cannot reach it.
+  std::function<bool(int body, const std::array<int, 3>& vertices)> may_occlude;
   unsigned threads = 0;                           // 0: all cores
 };
 

@@ -72,31 +72,34 @@ TileSplit split_picture(const Camera& cam, const Projector& proj, std::size_t n,
     bool operator<(const Sample& o) const { return v < o.v || (v == o.v && i < o.i); }
   };
   std::vector<Sample> sx, sy;
+  std::vector<double> err(n > 0 ? (n - 1) / step + 1 : 0);
   for (std::size_t i = 0; i < n; i += step) {
-    const Point3& p = point(i);
-    if (cam.perspective && cam.in_front(p) != Sign::Positive) continue;
-    const auto d = proj.project(p);
-    if (!std::isfinite(d[0]) || !std::isfinite(d[1])) continue;
-    sx.push_back({d[0], i});
-    sy.push_back({-d[1], i});  // rows from the top
+    const LocatedPoint d = locate(cam, proj, point(i));
+    if (!(d.err < HUGE_VAL) || cam.in_front(point(i)) != Sign::Positive) continue;
+    err[i / step] = d.err;
+    sx.push_back({d.x, i});
+    sy.push_back({-d.y, i});  // rows from the top
   }
   const PicturePlane pp(cam);
-  auto lines = [&](std::vector<Sample>& s, int k, bool vertical, std::vector<Rational>& exact, std::vector<double>& dr) {
+  auto lines = [&](std::vector<Sample>& s, int k, bool vertical, std::vector<Rational>& exact, std::vector<double>& dr,
+                   std::vector<double>& de) {
     std::sort(s.begin(), s.end());
     for (int c = 1; c < k; ++c) {
-      if (s.empty()) {  // nothing in front of the eye: every line at 0
+      if (s.empty()) {  // nothing in front of the eye: every line at 0, no filter
         exact.emplace_back(0);
         dr.push_back(0);
+        de.push_back(HUGE_VAL);
         continue;
       }
       const Sample& q = s[std::min(s.size() - 1, s.size() * static_cast<std::size_t>(c) / static_cast<std::size_t>(k))];
       const Exact2 e = pp.project(point(q.i));
       exact.push_back(vertical ? e[0] : e[1]);
       dr.push_back(vertical ? q.v : -q.v);
+      de.push_back(err[q.i / step]);
     }
   };
-  lines(sx, cols, true, t.xs, t.xd);
-  lines(sy, rows, false, t.ys, t.yd);
+  lines(sx, cols, true, t.xs, t.xd, t.xe);
+  lines(sy, rows, false, t.ys, t.yd, t.ye);
   return t;
 }
 
@@ -132,35 +135,63 @@ std::vector<std::pair<Rational, Rational>> tile_intervals(const Segment& s, cons
   return out;
 }
 
+LocatedPoint locate(const Camera& cam, const Projector& proj, const Point3& p) {
+  const std::array<double, 3> q = proj.frame().to_frame(p);
+  const std::array<double, 3> d = proj.project(q[0], q[1], q[2]);
+  LocatedPoint out{d[0], d[1], HUGE_VAL};
+  if (!std::isfinite(d[0]) || !std::isfinite(d[1])) return out;
+  // The frame's doubles are within 2^-52 of the exact coordinates (relative); the projection
+  // is two or three dot products with unit vectors (each component within 2^-52) and, in
+  // perspective, a division: an error below 16·2^-52·m, m the sum of the magnitudes, in each
+  // of screen x, y and depth, so 2^-40·m is a bound with room to spare; perspective adds the
+  // division's amplification (1 + |x| + |y|) / depth where depth is clearly positive.
+  double m = std::fabs(q[0]) + std::fabs(q[1]) + std::fabs(q[2]);
+  if (!cam.perspective) {
+    out.err = 0x1p-40 * m + 0x1p-1000;
+    return out;
+  }
+  const std::array<double, 3> e = proj.frame().to_frame(cam.eye);
+  m += std::fabs(e[0]) + std::fabs(e[1]) + std::fabs(e[2]);
+  if (!(d[2] > 0x1p-30 * m)) return out;  // not clearly in front: no bound
+  out.err = 0x1p-40 * m * (1 + std::fabs(d[0]) + std::fabs(d[1])) / d[2] + 0x1p-1000;
+  return out;
+}
+
 namespace {
 
-// The lines' drawing coordinates and the ends' are within a tiny relative error of the exact
-// ones (a few units in the last place: Projector's doubles of exact points, docs/design.md):
-// a margin of 2^-20 of the magnitudes at hand covers it many times over.
-double margin(double v, double w) { return 0x1p-20 * (std::fabs(v) + std::fabs(w)) + 0x1p-1000; }
+// Sure sides: a + its error before line L - its error.
+bool before(double a, double ea, double l, double el) { return a + ea < l - el; }
 
 }  // namespace
 
-bool tile_may_hold(const TileSplit& split, int index, const std::array<double, 3>& a, const std::array<double, 3>& b) {
+bool tile_may_hold(const TileSplit& split, int index, const LocatedPoint& a, const LocatedPoint& b) {
+  if (split.count == 1) return true;
+  if (!(a.err < HUGE_VAL) || !(b.err < HUGE_VAL)) return true;
+  return (tile_outside(split, index, a) & tile_outside(split, index, b)) == 0;
+}
+
+bool tile_holds_wholly(const TileSplit& split, int index, const LocatedPoint& a, const LocatedPoint& b) {
+  if (split.count == 1) return true;
+  if (!(a.err < HUGE_VAL) || !(b.err < HUGE_VAL)) return false;
   const int col = index % split.cols, row = index / split.cols;
-  const double x0 = std::min(a[0], b[0]), x1 = std::max(a[0], b[0]), y0 = std::min(a[1], b[1]), y1 = std::max(a[1], b[1]);
-  if (!std::isfinite(x0) || !std::isfinite(x1) || !std::isfinite(y0) || !std::isfinite(y1)) return true;
-  if (col > 0 && x1 < split.xd[col - 1] - margin(x1, split.xd[col - 1])) return false;
-  if (col + 1 < split.cols && x0 > split.xd[col] + margin(x0, split.xd[col])) return false;
-  if (row > 0 && y0 > split.yd[row - 1] + margin(y0, split.yd[row - 1])) return false;
-  if (row + 1 < split.rows && y1 < split.yd[row] - margin(y1, split.yd[row])) return false;
+  for (const LocatedPoint* p : {&a, &b}) {
+    if (col > 0 && !before(split.xd[col - 1], split.xe[col - 1], p->x, p->err)) return false;
+    if (col + 1 < split.cols && !before(p->x, p->err, split.xd[col], split.xe[col])) return false;
+    if (row > 0 && !before(p->y, p->err, split.yd[row - 1], split.ye[row - 1])) return false;
+    if (row + 1 < split.rows && !before(split.yd[row], split.ye[row], p->y, p->err)) return false;
+  }
   return true;
 }
 
-bool tile_holds_wholly(const TileSplit& split, int index, const std::array<double, 3>& a, const std::array<double, 3>& b) {
+int tile_outside(const TileSplit& split, int index, const LocatedPoint& a) {
+  if (!(a.err < HUGE_VAL)) return 0;
   const int col = index % split.cols, row = index / split.cols;
-  const double x0 = std::min(a[0], b[0]), x1 = std::max(a[0], b[0]), y0 = std::min(a[1], b[1]), y1 = std::max(a[1], b[1]);
-  if (!std::isfinite(x0) || !std::isfinite(x1) || !std::isfinite(y0) || !std::isfinite(y1)) return false;
-  if (col > 0 && !(x0 > split.xd[col - 1] + margin(x0, split.xd[col - 1]))) return false;
-  if (col + 1 < split.cols && !(x1 < split.xd[col] - margin(x1, split.xd[col]))) return false;
-  if (row > 0 && !(y1 < split.yd[row - 1] - margin(y1, split.yd[row - 1]))) return false;
-  if (row + 1 < split.rows && !(y0 > split.yd[row] + margin(y0, split.yd[row]))) return false;
-  return true;
+  int bits = 0;
+  if (col > 0 && before(a.x, a.err, split.xd[col - 1], split.xe[col - 1])) bits |= 1;
+  if (col + 1 < split.cols && !before(a.x, -a.err, split.xd[col], -split.xe[col]) ) bits |= 2;
+  if (row > 0 && !before(a.y, -a.err, split.yd[row - 1], -split.ye[row - 1])) bits |= 4;
+  if (row + 1 < split.rows && before(a.y, a.err, split.yd[row], split.ye[row])) bits |= 8;
+  return bits;
 }
 
 void cut_to_intervals(Segment& s, const std::vector<std::pair<Rational, Rational>>& intervals) {

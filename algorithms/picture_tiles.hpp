@@ -29,7 +29,17 @@ struct TileSplit {
   int count = 1, cols = 1, rows = 1;
   std::vector<Rational> xs, ys;      // cols - 1 and rows - 1 exact lines, xs increasing, ys decreasing
   std::vector<double> xd, yd;        // the same lines in drawing coordinates (Projector's), for filters
+  std::vector<double> xe, ye;        // bounds on the error of xd and yd
 };
+
+/// A point for the filters: drawing coordinates (Projector's) and a bound on their error, from
+/// the error of the doubles of the point in the frame (below 2^-52 relative) through the
+/// projection's few operations (docs/design.md, "Tiles"); infinite where no bound is known
+/// (perspective: not clearly in front of the eye).
+struct LocatedPoint {
+  double x = 0, y = 0, err = 0;
+};
+LocatedPoint locate(const Camera& camera, const Projector& projector, const Point3& p);
 
 /// The columns and rows for `count` tiles: cols = the smallest divisor of count that is at
 /// least its square root, rows = count / cols (4 -> 2 x 2, 9 -> 3 x 3, 6 -> 3 x 2, 7 -> 7 x 1).
@@ -47,13 +57,19 @@ TileSplit split_picture(const Camera& camera, const Projector& projector, std::s
 std::vector<std::pair<Rational, Rational>> tile_intervals(const Segment& segment, const PicturePlane& picture,
                                                           const Camera& camera, const TileSplit& split, int index);
 
-/// A conservative filter: false only when no point of the segment with drawing end points
-/// `a`, `b` (both strictly in front of the eye) can belong to tile `index`.
-bool tile_may_hold(const TileSplit& split, int index, const std::array<double, 3>& a, const std::array<double, 3>& b);
+/// A conservative filter: false only when no point of the segment with ends `a`, `b` can
+/// belong to tile `index`.
+bool tile_may_hold(const TileSplit& split, int index, const LocatedPoint& a, const LocatedPoint& b);
 
 /// A conservative filter the other way: true only when every point of that segment is in tile
 /// `index` (then tile_intervals() is [0, 1]).
-bool tile_holds_wholly(const TileSplit& split, int index, const std::array<double, 3>& a, const std::array<double, 3>& b);
+bool tile_holds_wholly(const TileSplit& split, int index, const LocatedPoint& a, const LocatedPoint& b);
+
+/// The sides of tile `index` that the point `a` surely lies beyond: bits 1 left, 2 right, 4
+/// above, 8 below (a bit only where the error bounds cannot doubt it). Points whose bits share
+/// one lie on one side of a tile line, and so does their convex hull (perspective: when all
+/// are in front of the eye, which a finite error bound says).
+int tile_outside(const TileSplit& split, int index, const LocatedPoint& a);
 
 /// Cuts the segment's pieces to the intervals (tile_intervals()): what tile draws of it.
 void cut_to_intervals(Segment& segment, const std::vector<std::pair<Rational, Rational>>& intervals);

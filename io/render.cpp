@@ -279,7 +279,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
 // cut of each segment to it.
 class TileCut {
  public:
-  TileCut(const std::vector<const Polyhedron*>& polys, const Camera& cam, const RenderOptions::Tile& t)
+  TileCut(const std::vector<const Polyhedron*>& polys, const Camera& cam, const RenderOptions::Tile& t, unsigned threads)
       : cam_(cam), pp_(cam), index_(t.index) {
     if (t.count < 1 || t.index < 0 || t.index >= t.count) throw std::invalid_argument("--tile: no tile " + std::to_string(t.index + 1) + " of " + std::to_string(t.count));
     std::vector<const Point3*> pts;
@@ -288,6 +288,22 @@ class TileCut {
     const DrawingFrame frame = drawing_frame(pts.size(), [&](std::size_t i) -> const Point3& { return *pts[i]; });
     proj_.emplace(cam, frame);
     split_ = split_picture(cam, *proj_, pts.size(), [&](std::size_t i) -> const Point3& { return *pts[i]; }, t.count);
+    // Each vertex's sides of the tile it surely lies outside (a triangle whose three vertices
+    // share one cannot reach the tile: its picture is in their convex hull).
+    std::size_t at = 0;
+    for (const Polyhedron* p : polys) {
+      first_.push_back(at);
+      at += p->num_vertices();
+    }
+    outside_.assign(pts.size(), 0);
+    ParallelLoop(threads).for_each(pts.size(), 4096, [&](std::size_t i) {
+      if (split_.count > 1) outside_[i] = static_cast<unsigned char>(tile_outside(split_, index_, locate(cam, *proj_, *pts[i])));
+    });
+  }
+  /// False only when the triangle (body, its vertex indices) cannot reach the tile.
+  bool may_occlude(int body, const std::array<int, 3>& v) const {
+    const std::size_t o = first_[static_cast<std::size_t>(body)];
+    return (outside_[o + v[0]] & outside_[o + v[1]] & outside_[o + v[2]]) == 0;
   }
   /// False only when no point of the segment is in the tile (a filter in doubles).
   bool may_hold(const Segment& s) const { return where(s) != 0; }
@@ -302,8 +318,7 @@ class TileCut {
   // 0: no point of the segment in the tile, 2: all of it, 1: not known without exact numbers.
   int where(const Segment& s) const {
     if (split_.count == 1) return 2;
-    if (cam_.perspective && (cam_.in_front(s.from()) != Sign::Positive || cam_.in_front(s.to()) != Sign::Positive)) return 1;
-    const auto a = proj_->project(s.from()), b = proj_->project(s.to());
+    const LocatedPoint a = locate(cam_, *proj_, s.from()), b = locate(cam_, *proj_, s.to());
     return !tile_may_hold(split_, index_, a, b) ? 0 : tile_holds_wholly(split_, index_, a, b) ? 2 : 1;
   }
 
@@ -313,6 +328,8 @@ class TileCut {
   int index_;
   std::optional<Projector> proj_;
   TileSplit split_;
+  std::vector<std::size_t> first_;       // per body: its first vertex in outside_
+  std::vector<unsigned char> outside_;   // per vertex: tile_outside()
 };
 
 }  // namespace
@@ -349,7 +366,11 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     throw std::invalid_argument("tiles take line drawings of the per-face route (not --method roberts, --surfaces, --shadows or --clip)");
   RenderOptions tiled = o;
   std::optional<TileCut> cut;
-  if (o.tile) cut.emplace(polys, r.camera, *o.tile), tiled.lines.decide = [&](const Segment& s) { return cut->may_hold(s); };
+  if (o.tile) {
+    cut.emplace(polys, r.camera, *o.tile, o.lines.threads);
+    tiled.lines.decide = [&](const Segment& s) { return cut->may_hold(s); };
+    tiled.lines.may_occlude = [&](int body, const std::array<int, 3>& v) { return cut->may_occlude(body, v); };
+  }
   if (o.segments_only) tiled.lines.decide = [](const Segment&) { return false; };
   try {
     if (o.surfaces || o.shadows || o.method == RenderMethod::WeilerAtherton || o.method == RenderMethod::Priority)
