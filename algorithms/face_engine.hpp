@@ -133,6 +133,7 @@ class Engine {
   std::vector<std::vector<Vec<P>>> face_normal_;
   std::vector<Tri> tris_;
   std::vector<Occluder<P>> occ_;
+  std::size_t hiding_ = 0;  // triangles that hide (occ_ without a tile's restriction)
   std::vector<Box> boxes_;
   ScreenGrid grid_;
   double margin_ = 0;

@@ -42,7 +42,7 @@ LineDrawing Engine<P>::run() {
     return res;
   }
   build_occluders();
-  res.stats.faces->occluders = occ_.size();
+  res.stats.faces->occluders = hiding_;  // a tile's too: every hiding triangle of the scene
   std::size_t total = 0;
   for (const BodyTopology& t : topo_) total += t.edges.size();
   res.segments.reserve(total + 64);

@@ -112,6 +112,7 @@ void Engine<P>::build_occluders() {
     // No point strictly in front of the eye: its sight cone lies behind the eye, where nothing
     // is drawn (docs/design.md, "Occluders that reach behind the eye").
     if (cam_.perspective && !vfront_[t0.v[0]] && !vfront_[t0.v[1]] && !vfront_[t0.v[2]]) continue;
+    ++hiding_;
     if (opt_.may_occlude) {  // a tile: only the triangles that can reach it
       const int o = voff_[t0.body];
       if (!opt_.may_occlude(t0.body, {t0.v[0] - o, t0.v[1] - o, t0.v[2] - o})) continue;

@@ -23,6 +23,8 @@
 #include "io/render.hpp"
 #include "io/input_error.hpp"
 #include "io/tile_file.hpp"
+#include "algorithms/parallel.hpp"
+#include <exception>
 #include "io/svg_writer.hpp"
 #include "io/standard_views.hpp"
 
@@ -161,7 +163,7 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
   }
   if (merge) {
     progress("joining the tiles");
-    merge_tiles(results[0].drawing, merge->tiles, merge->paths);
+    merge_tiles(results[0].drawing, merge->tiles, merge->paths, a.threads);
   }
   auto t_solved = Clock::now();
   std::string text = tile ? tile_text(results[0].drawing, tile->index, tile->count, tile_args())
@@ -249,7 +251,19 @@ struct MergeArgs {
 
 int run_merge(const MergeArgs& m) {
   MergeInput in;
-  for (const std::string& p : m.tiles) in.tiles.push_back(read_tile(p)), in.paths.push_back(p);
+  in.paths = m.tiles;
+  in.tiles.resize(m.tiles.size());
+  // Read on every core; the first bad file (in the order given) is the one reported.
+  std::vector<std::exception_ptr> failed(m.tiles.size());
+  ParallelLoop(m.threads).for_each(m.tiles.size(), 1, [&](std::size_t k) {
+    try {
+      in.tiles[k] = read_tile(m.tiles[k]);
+    } catch (...) {
+      failed[k] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
   // The render the tiles came from, with this command's output.
   CLI::App again;
   auto a = std::make_shared<RenderArgs>();

@@ -371,7 +371,10 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     tiled.lines.decide = [&](const Segment& s) { return cut->may_hold(s); };
     tiled.lines.may_occlude = [&](int body, const std::array<int, 3>& v) { return cut->may_occlude(body, v); };
   }
-  if (o.segments_only) tiled.lines.decide = [](const Segment&) { return false; };
+  if (o.segments_only) {  // no visibility: no segment is solved, no face hides
+    tiled.lines.decide = [](const Segment&) { return false; };
+    tiled.lines.may_occlude = [](int, const std::array<int, 3>&) { return false; };
+  }
   try {
     if (o.surfaces || o.shadows || o.method == RenderMethod::WeilerAtherton || o.method == RenderMethod::Priority)
       solve_surfaces(r, polys, *owned, o);

@@ -2,8 +2,11 @@
 #include "io/tile_file.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <string_view>
 #include <sstream>
 
+#include "algorithms/parallel.hpp"
 #include "algorithms/picture_tiles.hpp"
 #include "io/input_error.hpp"
 #include "io/text_reader.hpp"
@@ -37,6 +40,34 @@ bool parse_kind(const std::string& k, Piece& p) {
     at += has;
   }
   return at == k.size();
+}
+
+// Four fields separated by single spaces, nothing else.
+bool split4(std::string_view s, std::string_view (&out)[4]) {
+  for (int k = 0; k < 4; ++k) {
+    const std::size_t sp = s.find(' ');
+    if ((k < 3) != (sp != std::string_view::npos)) return false;
+    out[k] = s.substr(0, sp);
+    if (out[k].empty()) return false;
+    if (k < 3) s = s.substr(sp + 1);
+  }
+  return true;
+}
+
+// "N/D" or "N" (get_str()'s form): digits, an optional '-' on N, D > 0.
+bool parse_fraction(std::string_view s, Rational& q) {
+  if (s.size() > 100000) return false;
+  const std::size_t slash = s.find('/');
+  auto digits = [](std::string_view d, bool sign) {
+    if (sign && !d.empty() && d[0] == '-') d.remove_prefix(1);
+    return !d.empty() && std::all_of(d.begin(), d.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
+  if (!digits(s.substr(0, slash), true) || (slash != std::string_view::npos && !digits(s.substr(slash + 1), false))) return false;
+  const std::string text(s);
+  if (mpq_set_str(q.get_mpq_t(), text.c_str(), 10) != 0) return false;
+  if (sgn(q.get_den()) <= 0) return false;
+  q.canonicalize();  // any form of the fraction is taken
+  return true;
 }
 
 }  // namespace
@@ -73,12 +104,14 @@ std::string tile_text(const LineDrawing& d, int index, int count, const std::vec
 TileFile read_tile(const std::string& path) {
   const std::string bytes = read_file_bytes(path);
   TileFile t;
-  std::istringstream in(bytes);
-  std::string line;
   int n = 0;
   auto fail = [&](const std::string& what) { throw InputError(path, n, what); };
   bool header = false, tile = false, segments = false, end = false;
-  while (std::getline(in, line)) {
+  for (std::size_t at = 0; at < bytes.size();) {
+    std::size_t eol = bytes.find('\n', at);
+    if (eol == std::string::npos) eol = bytes.size();
+    const std::string_view line(bytes.data() + at, eol - at);
+    at = eol + 1;
     ++n;
     if (end) fail("text after 'end'");
     if (!header) {
@@ -87,7 +120,22 @@ TileFile read_tile(const std::string& path) {
       continue;
     }
     const std::size_t sp = line.find(' ');
-    const std::string key = line.substr(0, sp), rest = sp == std::string::npos ? "" : line.substr(sp + 1);
+    const std::string_view key = line.substr(0, sp);
+    if (key == "piece") {
+      std::string_view f4[4];
+      if (!split4(line.substr(sp + 1), f4)) fail("'piece SEGMENT T0 T1 KIND' expected");
+      std::size_t seg = 0;
+      const auto [end_at, ec] = std::from_chars(f4[0].data(), f4[0].data() + f4[0].size(), seg);
+      if (ec != std::errc() || end_at != f4[0].data() + f4[0].size()) fail("'piece SEGMENT T0 T1 KIND' expected");
+      if (!segments || seg >= t.segments) fail("piece of segment " + std::to_string(seg) + ": not a segment of the drawing");
+      Piece p;
+      if (!parse_fraction(f4[1], p.t0) || !parse_fraction(f4[2], p.t1) || !(sgn(p.t0) >= 0 && p.t0 < p.t1 && p.t1 <= 1))
+        fail("piece parameters must be exact fractions N/D (or integers) with 0 <= T0 < T1 <= 1");
+      if (!parse_kind(std::string(f4[3]), p)) fail("piece kind '" + std::string(f4[3]) + "': v or h, then b, c, t");
+      t.pieces.emplace_back(seg, std::move(p));
+      continue;
+    }
+    const std::string rest = sp == std::string::npos ? "" : std::string(line.substr(sp + 1));
     std::istringstream f(rest);
     if (key == "arg") {
       t.args.push_back(rest);
@@ -101,20 +149,10 @@ TileFile read_tile(const std::string& path) {
     } else if (key == "counters") {
       if (!(f >> t.pairs_tested >> t.pairs_skipped >> t.pairs_rational >> t.comparisons >> t.comparisons_identical >> t.comparisons_exact))
         fail("'counters' and six counts expected");
-    } else if (key == "piece") {
-      std::size_t seg = 0;
-      std::string a, b, k;
-      if (!(f >> seg >> a >> b >> k) || !(f >> std::ws).eof()) fail("'piece SEGMENT T0 T1 KIND' expected");
-      if (!segments || seg >= t.segments) fail("piece of segment " + std::to_string(seg) + ": not a segment of the drawing");
-      Piece p;
-      if (!try_parse_rational(a, p.t0) || !try_parse_rational(b, p.t1) || !(p.t0 >= 0 && p.t0 < p.t1 && p.t1 <= 1))
-        fail("piece parameters must be exact numbers with 0 <= T0 < T1 <= 1");
-      if (!parse_kind(k, p)) fail("piece kind '" + k + "': v or h, then b, c, t");
-      t.pieces.emplace_back(seg, std::move(p));
     } else if (key == "end") {
       end = true;
     } else {
-      fail("unknown record '" + key + "'");
+      fail("unknown record '" + std::string(key) + "'");
     }
   }
   if (!header) fail("empty file: not an hlr tile file");
@@ -123,15 +161,16 @@ TileFile read_tile(const std::string& path) {
   return t;
 }
 
-void merge_tiles(LineDrawing& d, const std::vector<TileFile>& tiles, const std::vector<std::string>& paths) {
+void merge_tiles(LineDrawing& d, const std::vector<TileFile>& tiles, const std::vector<std::string>& paths, unsigned threads) {
   if (tiles.empty()) throw std::invalid_argument("merge: no tile files");
   const TileFile& first = tiles[0];
+  const std::uint64_t fingerprint = segment_fingerprint(d);
   std::vector<int> seen(static_cast<std::size_t>(first.count), -1);
   for (std::size_t k = 0; k < tiles.size(); ++k) {
     const TileFile& t = tiles[k];
     if (t.count != first.count) throw InputError(paths[k], 0, "a tile of " + std::to_string(t.count) + " tiles, " + paths[0] + " is one of " + std::to_string(first.count));
     if (t.args != first.args) throw InputError(paths[k], 0, "rendered with other input or options than " + paths[0]);
-    if (t.segments != d.segments.size() || t.fingerprint != segment_fingerprint(d))
+    if (t.segments != d.segments.size() || t.fingerprint != fingerprint)
       throw InputError(paths[k], 0, "its segments are not the drawing's (the input files changed since the tiles were made?)");
     int& s = seen[static_cast<std::size_t>(t.index)];
     if (s >= 0) throw InputError(paths[k], 0, "tile " + std::to_string(t.index + 1) + " is also " + paths[static_cast<std::size_t>(s)]);
@@ -148,10 +187,10 @@ void merge_tiles(LineDrawing& d, const std::vector<TileFile>& tiles, const std::
     d.stats.pairs_tested += t.pairs_tested, d.stats.pairs_skipped += t.pairs_skipped, d.stats.pairs_rational += t.pairs_rational;
     f.comparisons += t.comparisons, f.comparisons_identical += t.comparisons_identical, f.comparisons_exact += t.comparisons_exact;
   }
-  for (std::size_t i = 0; i < d.segments.size(); ++i) {
-    const std::string err = join_tile_pieces(d.segments[i].pieces);
-    if (!err.empty()) throw std::invalid_argument("merge: segment " + std::to_string(i) + ": " + err);
-  }
+  std::vector<std::string> errors(d.segments.size());
+  ParallelLoop(threads).for_each(d.segments.size(), 1024, [&](std::size_t i) { errors[i] = join_tile_pieces(d.segments[i].pieces); });
+  for (std::size_t i = 0; i < errors.size(); ++i)
+    if (!errors[i].empty()) throw std::invalid_argument("merge: segment " + std::to_string(i) + ": " + errors[i]);
 }
 
 }  // namespace hlr

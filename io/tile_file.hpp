@@ -45,6 +45,8 @@ TileFile read_tile(const std::string& path);
 /// Puts the pieces of `tiles` (every tile of one split, each once) into `drawing` (the same
 /// render's segments: segments_only) and adds their work counters to its statistics. Throws
 /// InputError when the tiles do not belong together or do not cover a segment exactly once.
-void merge_tiles(LineDrawing& drawing, const std::vector<TileFile>& tiles, const std::vector<std::string>& paths);
+/// Joins on `threads` cores (0: all).
+void merge_tiles(LineDrawing& drawing, const std::vector<TileFile>& tiles, const std::vector<std::string>& paths,
+                 unsigned threads = 0);
 
 }  // namespace hlr
