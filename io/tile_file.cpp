@@ -101,8 +101,9 @@ std::string tile_text(const LineDrawing& d, int index, int count, const std::vec
   return out.str();
 }
 
-TileFile read_tile(const std::string& path) {
-  const std::string bytes = read_file_bytes(path);
+TileFile read_tile(const std::string& path) { return read_tile_text(read_file_bytes(path), path); }
+
+TileFile read_tile_text(const std::string& bytes, const std::string& path) {
   TileFile t;
   int n = 0;
   auto fail = [&](const std::string& what) { throw InputError(path, n, what); };

@@ -41,6 +41,8 @@ std::string tile_text(const LineDrawing& drawing, int index, int count, const st
 
 /// Reads a tile file; throws InputError (file, line, what is wrong).
 TileFile read_tile(const std::string& path);
+/// The same from the file's text (`path` names it in errors).
+TileFile read_tile_text(const std::string& text, const std::string& path);
 
 /// Puts the pieces of `tiles` (every tile of one split, each once) into `drawing` (the same
 /// render's segments: segments_only) and adds their work counters to its statistics. Throws

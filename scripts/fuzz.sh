@@ -11,7 +11,7 @@ shift || true
 CC=clang CXX=clang++ HLR_BUILD_DIR="$ROOT/build-asan" HLR_BUILD_TYPE=RelWithDebInfo \
   "$ROOT/scripts/setup.sh" -DHLR_SANITIZE=ON -DHLR_FUZZ=ON -DHLR_BUILD_BENCHMARKS=OFF
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_number fuzz_off fuzz_obj fuzz_stl fuzz_ply fuzz_scene fuzz_problem fuzz_options fuzz_render fuzz_horizon)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_number fuzz_off fuzz_obj fuzz_stl fuzz_ply fuzz_scene fuzz_problem fuzz_options fuzz_render fuzz_horizon fuzz_tile)
 out="$ROOT/build-asan/fuzz-corpus"
 mkdir -p "$out"
 status=0

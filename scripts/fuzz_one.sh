@@ -15,6 +15,7 @@ case "$name" in
   fuzz_ply)     exts="ply" ;;
   fuzz_scene)   exts="yaml yml json" ;;
   fuzz_problem) exts="yaml" ;;
+  fuzz_tile)    exts="tile" ;;
   fuzz_number)  exts="" ; i=0; for s in 0.1 -3/7 1e-3 2.5E+2 nan 1/0 +7 .5 5.; do i=$((i+1)); printf '%s' "$s" > "$seeds/n$i"; done ;;
   fuzz_render|fuzz_horizon) exts="" ; i=0; for s in 0123456789abcdef 'zzzzzzzzzzzzzzzz' 'AAAAAAAAAAAAAAAAAAAAAAAA' '1q2w3e4r5t6y7u8i9o0p'; do i=$((i+1)); printf '%s' "$s" > "$seeds/r$i"; done ;;
   fuzz_options) exts="" ; printf '1,13/10,1.7' > "$seeds/v"; printf 'box:0,2,0,2,0,2' > "$seeds/b"; printf 'frustum:-4,4,-4,4,1,-3,5' > "$seeds/f"; printf -- '-2,-1,1/2,3/2,3/2,-1/2' > "$seeds/s" ;;
