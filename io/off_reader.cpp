@@ -1,49 +1,140 @@
 // OFF reader with exact coordinates (Geomview OFF: header, counts, vertices, faces; extra
-// per-vertex and per-face values such as colours are skipped).
+// per-vertex and per-face values such as colours are skipped). Large files are read in chunks
+// of lines on every core: a quick pass finds where each chunk of vertex and face lines starts,
+// then the chunks are parsed at once; any surprise (a record over several lines, bad text, too
+// few lines) falls back to reading the whole file in order, so the result and every error
+// message are exactly the sequential reader's.
 #include <algorithm>
+#include <exception>
+#include <optional>
 
+#include "algorithms/parallel.hpp"
 #include "io/mesh_reader.hpp"
 #include "io/text_reader.hpp"
 
 namespace hlr {
+namespace {
 
-MeshData read_off(std::string_view bytes, const std::string& file) {
-  TokenStream ts(bytes, file);
+struct Header {
+  long nv = 0, nf = 0;
+};
+
+Header read_header(TokenStream& ts) {
   std::string_view header;
   if (!ts.next(header)) ts.fail("empty file: expected an OFF header");
   std::string h(header);
-  bool ok = h.size() >= 3 && h.compare(h.size() - 3, 3, "OFF") == 0 &&
-            h.find_first_not_of("STCN") == h.size() - 3;
+  bool ok = h.size() >= 3 && h.compare(h.size() - 3, 3, "OFF") == 0 && h.find_first_not_of("STCN") == h.size() - 3;
   if (!ok) ts.fail("expected an OFF header (OFF, COFF, NOFF, STOFF...), found '" + h.substr(0, 40) + "'");
-  long nv = ts.integer("vertex count", 0, 1L << 40);
-  long nf = ts.integer("face count", 0, 1L << 40);
+  Header r;
+  r.nv = ts.integer("vertex count", 0, 1L << 40);
+  r.nf = ts.integer("face count", 0, 1L << 40);
   ts.integer("edge count", 0, 1L << 62);
   ts.skip_rest_of_line();
   // Each vertex needs at least "x y z" (5 bytes), each face at least "3 a b c" (7 bytes).
-  if (nv * 5 + nf * 7 > static_cast<long>(ts.remaining_bytes()) + 1)
-    ts.fail("declared " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
-            " faces, more than the file can hold");
+  if (r.nv * 5 + r.nf * 7 > static_cast<long>(ts.remaining_bytes()) + 1)
+    ts.fail("declared " + std::to_string(r.nv) + " vertices and " + std::to_string(r.nf) + " faces, more than the file can hold");
+  return r;
+}
+
+void read_vertex(TokenStream& ts, Point3& out) {
+  Rational x = ts.number("vertex x"), y = ts.number("vertex y"), z = ts.number("vertex z");
+  out = Point3(std::move(x), std::move(y), std::move(z));
+  ts.skip_rest_of_line();
+}
+
+void read_face(TokenStream& ts, long f, long nv, Face& face, int& line) {
+  long n = ts.integer("face vertex count", 0, kMaxFaceVertices);
+  line = ts.line();
+  if (n < 3) ts.fail("face " + std::to_string(f) + " has " + std::to_string(n) + " vertices; a face needs at least 3");
+  face.resize(static_cast<std::size_t>(n));
+  for (long k = 0; k < n; ++k) face[k] = static_cast<int>(ts.integer("vertex index", 0, std::max(0L, nv - 1)));
+  ts.skip_rest_of_line();
+}
+
+MeshData read_in_order(TokenStream& ts, const Header& h) {
   MeshData m;
-  m.vertices.reserve(nv);
-  for (long i = 0; i < nv; ++i) {
-    Rational x = ts.number("vertex x"), y = ts.number("vertex y"), z = ts.number("vertex z");
-    m.vertices.emplace_back(std::move(x), std::move(y), std::move(z));
-    ts.skip_rest_of_line();
-  }
-  m.faces.reserve(nf);
-  for (long f = 0; f < nf; ++f) {
-    long n = ts.integer("face vertex count", 0, kMaxFaceVertices);
-    int line = ts.line();
-    if (n < 3) ts.fail("face " + std::to_string(f) + " has " + std::to_string(n) + " vertices; a face needs at least 3");
-    Face face(n);
-    for (long k = 0; k < n; ++k) {
-      face[k] = static_cast<int>(ts.integer("vertex index", 0, std::max(0L, nv - 1)));
-    }
-    m.faces.push_back(std::move(face));
-    m.face_lines.push_back(line);
-    ts.skip_rest_of_line();
-  }
+  m.vertices.resize(static_cast<std::size_t>(h.nv));
+  for (long i = 0; i < h.nv; ++i) read_vertex(ts, m.vertices[i]);
+  m.faces.resize(static_cast<std::size_t>(h.nf));
+  m.face_lines.resize(static_cast<std::size_t>(h.nf));
+  for (long f = 0; f < h.nf; ++f) read_face(ts, f, h.nv, m.faces[f], m.face_lines[f]);
   return m;
+}
+
+// The start (offset, line) of every k-th line holding a token, from `at` (line `line`), for
+// `count` such lines; the last entry is where the line after them starts. False when the text
+// has fewer.
+struct Mark {
+  std::size_t at;
+  int line;
+};
+bool mark_lines(std::string_view t, std::size_t& at, int& line, long count, long k, std::vector<Mark>& marks) {
+  for (long n = 0; n < count; ++n) {
+    // Find the next line with a token (TokenStream skips blanks and '#' comments).
+    for (;;) {
+      if (at >= t.size()) return false;
+      std::size_t p = at;
+      while (p < t.size() && (t[p] == ' ' || t[p] == '\t' || t[p] == '\r' || t[p] == '\f' || t[p] == '\v')) ++p;
+      if (p < t.size() && t[p] != '\n' && t[p] != '#') break;
+      const std::size_t eol = t.find('\n', at);
+      if (eol == std::string_view::npos) return false;
+      at = eol + 1, ++line;
+    }
+    if (n % k == 0) marks.push_back({at, line});
+    const std::size_t eol = t.find('\n', at);
+    at = eol == std::string_view::npos ? t.size() : eol + 1;
+    ++line;
+  }
+  marks.push_back({at, line});
+  return true;
+}
+
+constexpr long kChunk = 4096;  // lines per chunk
+constexpr long kParallelFrom = 8 * kChunk;
+
+// The chunks, or nullopt when a surprise sends the file to the sequential reader.
+std::optional<MeshData> read_in_chunks(std::string_view bytes, const std::string& file, std::size_t at, int line, const Header& h) {
+  std::vector<Mark> vm, fm;
+  if (!mark_lines(bytes, at, line, h.nv, kChunk, vm)) return std::nullopt;
+  if (!mark_lines(bytes, at, line, h.nf, kChunk, fm)) return std::nullopt;
+  // The rest of the file must hold no token (the sequential reader ignores it too, but a
+  // record spread over lines would end there: leave such files to it).
+  TokenStream rest(bytes, file, at, line);
+  if (!rest.at_end()) return std::nullopt;
+  MeshData m;
+  m.vertices.resize(static_cast<std::size_t>(h.nv));
+  m.faces.resize(static_cast<std::size_t>(h.nf));
+  m.face_lines.resize(static_cast<std::size_t>(h.nf));
+  const std::size_t vchunks = vm.size() - 1, fchunks = fm.size() - 1;
+  std::vector<char> ok(vchunks + fchunks, 1);
+  ParallelLoop().for_each(vchunks + fchunks, 1, [&](std::size_t c) {
+    const bool faces = c >= vchunks;
+    const std::vector<Mark>& mk = faces ? fm : vm;
+    const std::size_t k = faces ? c - vchunks : c;
+    const long first = static_cast<long>(k) * kChunk, last = std::min(first + kChunk, faces ? h.nf : h.nv);
+    TokenStream ts(bytes.substr(0, mk[k + 1].at), file, mk[k].at, mk[k].line);
+    try {
+      for (long i = first; i < last; ++i) {
+        if (faces) read_face(ts, i, h.nv, m.faces[i], m.face_lines[i]);
+        else read_vertex(ts, m.vertices[i]);
+      }
+      ok[c] = ts.at_end();  // exactly its lines
+    } catch (const std::exception&) {
+      ok[c] = 0;
+    }
+  });
+  if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return std::nullopt;
+  return m;
+}
+
+}  // namespace
+
+MeshData read_off(std::string_view bytes, const std::string& file) {
+  TokenStream ts(bytes, file);
+  const Header h = read_header(ts);
+  if (h.nv + h.nf >= kParallelFrom)
+    if (auto m = read_in_chunks(bytes, file, ts.position(), ts.position_line(), h)) return std::move(*m);
+  return read_in_order(ts, h);
 }
 
 }  // namespace hlr

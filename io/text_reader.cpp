@@ -31,6 +31,9 @@ TokenStream::TokenStream(std::string_view text, std::string file, std::size_t of
     if (text[i] == '\n') ++line_;
 }
 
+TokenStream::TokenStream(std::string_view text, std::string file, std::size_t offset, int line)
+    : text_(text), file_(std::move(file)), pos_(offset), line_(line), token_line_(line) {}
+
 void TokenStream::skip_space() {
   while (pos_ < text_.size()) {
     char c = text_[pos_];

@@ -22,6 +22,8 @@ std::string read_file_bytes(const std::string& path);
 class TokenStream {
  public:
   TokenStream(std::string_view text, std::string file, std::size_t offset = 0);
+  /// From `offset`, which is on line `line` (no counting: a chunk of a large file).
+  TokenStream(std::string_view text, std::string file, std::size_t offset, int line);
 
   /// Next token; false at the end. `line()` is then the token's line.
   bool next(std::string_view& token);
@@ -38,6 +40,9 @@ class TokenStream {
   /// Bytes not yet read (for sanity checks of declared counts).
   std::size_t remaining_bytes() const { return text_.size() - pos_; }
   int line() const { return token_line_; }
+  /// Where the stream is: the byte offset and its line.
+  std::size_t position() const { return pos_; }
+  int position_line() const { return line_; }
   const std::string& file() const { return file_; }
   [[noreturn]] void fail(const std::string& message) const;
 

@@ -162,3 +162,81 @@ TEST(MeshIO, FileExtensionCaseInsensitive) {
   std::string p = temp_file("UP.OFF", kTetraOff);
   EXPECT_EQ(load_mesh(p).num_faces(), 4u);
 }
+
+// Large OFF files are read in chunks of lines on every core (io/off_reader.cpp); the result
+// and each error must be the in-order reader's: comments, blank lines, CRLF, colours, and a
+// vertex spread over two lines (which sends the file to the in-order reader).
+namespace {
+struct BigOff {
+  std::string text;
+  std::vector<int> face_line, vertex_line;  // expected line of each face and vertex
+};
+BigOff big_off(int n, int split_vertex, const std::string& bad_vertex_token, int bad_vertex, int bad_face) {
+  BigOff b;
+  int line = 1;
+  auto add = [&](const std::string& l) { b.text += l + "\n", ++line; };
+  add("OFF");
+  add(std::to_string(n) + " " + std::to_string(n) + " 0");
+  for (int i = 0; i < n; ++i) {
+    if (i % 1000 == 7) add("# a comment line");
+    if (i % 3000 == 11) add("");
+    const std::string x = std::to_string(i) + "/7", y = "0." + std::to_string(i % 97), z = std::to_string(-i);
+    b.vertex_line.push_back(line);
+    if (i == split_vertex) {
+      add(x + " " + y);
+      add(z);
+    } else if (i == bad_vertex) {
+      add(x + " " + bad_vertex_token + " " + z);
+    } else if (i % 5 == 0) {
+      add(x + " " + y + " " + z + " 255 0 0 # coloured\r");
+    } else {
+      add(x + " " + y + " " + z);
+    }
+  }
+  for (int f = 0; f < n; ++f) {
+    if (f % 2000 == 3) add("   # indented comment");
+    b.face_line.push_back(line);
+    if (f == bad_face) add("3 0 1 " + std::to_string(n));
+    else add("3 " + std::to_string(f) + " " + std::to_string((f + 1) % n) + " " + std::to_string((f + 2) % n));
+  }
+  return b;
+}
+void expect_big(const MeshData& m, const BigOff& b, int n) {
+  ASSERT_EQ(m.vertices.size(), static_cast<std::size_t>(n));
+  ASSERT_EQ(m.faces.size(), static_cast<std::size_t>(n));
+  for (int i = 0; i < n; i += 1) {
+    ASSERT_EQ(m.vertices[i].x(), Rational(i) / 7) << i;
+    ASSERT_EQ(m.vertices[i].y(), Q(("0." + std::to_string(i % 97)).c_str())) << i;
+    ASSERT_EQ(m.vertices[i].z(), Rational(-i)) << i;
+    ASSERT_EQ(m.faces[i], (Face{i, (i + 1) % n, (i + 2) % n})) << i;
+    ASSERT_EQ(m.face_lines[i], b.face_line[i]) << i;
+  }
+}
+std::string off_error(const std::string& text) {
+  try {
+    read_off(text, "big.off");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(MeshIO, LargeOffReadInChunksExactly) {
+  const int n = 40000;
+  BigOff plain = big_off(n, -1, "", -1, -1);
+  expect_big(read_off(plain.text, "big.off"), plain, n);
+  BigOff split = big_off(n, 23456, "", -1, -1);  // in order: the same numbers
+  expect_big(read_off(split.text, "big.off"), split, n);
+}
+
+TEST(MeshIO, LargeOffErrorsNameTheLine) {
+  const int n = 40000;
+  BigOff bad = big_off(n, -1, "0.5.5", 30001, -1);
+  std::string e = off_error(bad.text);
+  EXPECT_NE(e.find("big.off:" + std::to_string(bad.vertex_line[30001]) + ": vertex y: bad number '0.5.5'"), std::string::npos) << e;
+  EXPECT_EQ(bad.vertex_line[30001], 30044);  // 2 header lines, 30,001 vertices, 30 comments and 10 blank lines before it
+  BigOff bad_face = big_off(n, -1, "", -1, 39000);
+  e = off_error(bad_face.text);
+  EXPECT_NE(e.find("big.off:" + std::to_string(bad_face.face_line[39000]) + ": vertex index 40000 is out of range"), std::string::npos) << e;
+}
