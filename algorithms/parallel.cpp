@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -46,6 +47,16 @@ void ParallelLoop::for_each(std::size_t n, std::size_t grain, const std::functio
     for (std::size_t i = b; i < e; ++i) body(i);
   });
 }
+
+struct ThreadLimit::Control {
+  tbb::global_control control;
+  explicit Control(unsigned threads) : control(tbb::global_control::max_allowed_parallelism, threads) {}
+};
+
+ThreadLimit::ThreadLimit(unsigned threads) {
+  if (threads > 0) control_ = std::make_unique<Control>(threads);
+}
+ThreadLimit::~ThreadLimit() = default;
 
 void plane_all_faces(const Polyhedron& p, unsigned threads) {
   ParallelLoop loop(threads);

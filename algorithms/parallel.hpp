@@ -33,6 +33,20 @@ class ParallelLoop {
   std::unique_ptr<Arena> arena_;
 };
 
+/// While it lives, no parallel work of the process (ParallelLoop, parallel sorts, any oneTBB
+/// use) runs on more than `threads` threads (0: no limit): `--threads N` of the commands.
+class ThreadLimit {
+ public:
+  explicit ThreadLimit(unsigned threads);
+  ~ThreadLimit();
+  ThreadLimit(const ThreadLimit&) = delete;
+  ThreadLimit& operator=(const ThreadLimit&) = delete;
+
+ private:
+  struct Control;
+  std::unique_ptr<Control> control_;
+};
+
 class Polyhedron;
 
 /// Every face plane of `p` computed once, on `threads` cores (0: all); before parallel stages

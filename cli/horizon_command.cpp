@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "algorithms/progress.hpp"
+#include "algorithms/parallel.hpp"
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
 #include "cli/drawing_output.hpp"
@@ -53,6 +54,7 @@ Vector3 view_from_angles(const std::string& text) {
 }
 
 int run_horizon(const HorizonArgs& a) {
+  const ThreadLimit limit(a.threads);  // every parallel stage, sorts included
   if (a.expression.empty() == a.grid.empty()) throw std::invalid_argument("give --expr EXPRESSION or --grid FILE.csv (one of them)");
   const std::string format = check_output_args(a, false);
   SampleRange x = parse_sample_range("--x", a.x, 81), z = parse_sample_range("--z", a.z, 41);

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "algorithms/parallel.hpp"
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
 #include "io/atomic_file.hpp"
@@ -65,6 +66,7 @@ RasterOptions raster_options(const RasterArgs& a) {
 }
 
 int run_raster(const RasterArgs& a) {
+  const ThreadLimit limit(a.threads);  // every parallel stage, sorts included
   if (!a.view.empty() && !a.eye.empty()) throw std::invalid_argument("give --view (orthographic) or --eye (perspective), not both");
   if (!ends_with(a.output, ".png")) throw std::invalid_argument("-o must name a .png file");
   if (!a.ids.empty() && !ends_with(a.ids, ".png") && !ends_with(a.ids, ".json"))

@@ -109,6 +109,7 @@ RenderOptions render_options(const RenderArgs& a) {
 }
 
 int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
+  const ThreadLimit limit(a.threads);  // every parallel stage, sorts included
   if (!a.view.empty() && !a.eye.empty()) throw std::invalid_argument("give --view (orthographic) or --eye (perspective), not both");
   if (!a.views.empty() && (!a.view.empty() || !a.eye.empty())) throw std::invalid_argument("give --views (a sheet) or one --view/--eye, not both");
   std::optional<RenderOptions::Tile> tile;
@@ -250,6 +251,7 @@ struct MergeArgs {
 };
 
 int run_merge(const MergeArgs& m) {
+  const ThreadLimit limit(m.threads);  // every parallel stage, sorts included
   MergeInput in;
   in.paths = m.tiles;
   in.tiles.resize(m.tiles.size());
