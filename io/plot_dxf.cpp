@@ -46,7 +46,7 @@ void write_tables(DL_Dxf& dxf, DL_WriterA& dw, const std::vector<std::string>& n
   }
   dw.tableEnd();
   dw.tableStyle(1);
-  dxf.writeStyle(dw, DL_StyleData("standard", 0, 2.5, 1.0, 0.0, 0, 2.5, "txt", ""));
+  dxf.writeStyle(dw, DL_StyleData("Standard", 0, 2.5, 1.0, 0.0, 0, 2.5, "txt", ""));
   dw.tableEnd();
   dxf.writeView(dw);
   dxf.writeUcs(dw);

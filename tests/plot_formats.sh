@@ -16,6 +16,13 @@ pdftoppm -r 30 -png "$W/a.PDF" "$W/page" || { echo "PDF: pdftoppm cannot read it
 for want in "visible-silhouette" "hidden-crease" "DASHED" "AC1015" "POLYLINE"; do
   grep -q "$want" "$W/a.dxf" || { echo "DXF: no $want"; fail=1; }
 done
+# The same bytes on every run, in every format (a DXF once carried an uninitialised handle:
+# dxflib's text style must be named "Standard" for its dimension style to refer to it).
+for f in svg pdf png dxf json; do
+  "$HLR" render "$D/demo.yaml" --hidden dashed --page A4 -o "$W/r1.$f"
+  "$HLR" render "$D/demo.yaml" --hidden dashed --page A4 -o "$W/r2.$f"
+  cmp -s "$W/r1.$f" "$W/r2.$f" || { echo "$f: two runs differ"; fail=1; }
+done
 "$HLR" render "$D/demo.yaml" --hidden dashed -o "$W/a.JSON"
 head -c 1 "$W/a.JSON" | grep -q '{' || { echo "JSON by upper-case extension: not JSON"; fail=1; }
 "$HLR" render "$D/demo.yaml" --hidden dashed --dpi 96 -o "$W/a.png"

@@ -43,6 +43,15 @@ check cubes-axis cubes.off --view 0,0,1 --hidden solid
 check cubes-diagonal cubes.off --view 1,1,0 --hidden dashed
 check triangles tris.off --view 1,1.3,1.7 --hidden dashed
 check transparent "$data/transparency_demo.yaml" --hidden dashed
+# The page formats from the same tiles: PDF, PNG and DXF byte for byte too.
+rm -f part*.tile
+for i in 1 2 3 4; do "$hlr" render "$data/demo.yaml" --hidden dashed --page A4 --tile "$i/4" -o "part$i.tile" 2>/dev/null; done
+for f in pdf png dxf; do
+  "$hlr" render "$data/demo.yaml" --hidden dashed --page A4 -o "whole.$f" 2>/dev/null
+  "$hlr" merge part*.tile -o "merged.$f" 2>/dev/null
+  cmp -s "whole.$f" "merged.$f" || { echo "demo $f: merged differs"; fail=1; }
+done
+echo "demo: PDF, PNG and DXF identical from 4 tiles"
 # Errors: each a message naming the problem, a non-zero exit, no output file.
 rm -f part*.tile merged.svg
 for i in 1 2 3 4; do "$hlr" render "$data/demo.yaml" --tile "$i/4" -o "part$i.tile" 2>/dev/null; done
