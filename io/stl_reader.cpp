@@ -84,17 +84,25 @@ MeshData read_stl_binary(std::string_view bytes, const std::string& file) {
   std::uint32_t n;
   std::memcpy(&n, bytes.data() + 80, 4);
   MeshData m;
-  std::unordered_map<std::uint64_t, std::vector<int>> buckets;  // hash of bits -> vertices
-  std::vector<std::array<float, 3>> stored;                     // float value of each vertex
+  // Corners welded by exact float value in an open-addressing table (vertex ids, numbered by
+  // first appearance): no allocation per vertex.
   auto bits = [](float f) {
     if (f == 0.0f) f = 0.0f;  // -0 and +0 are the same point
     std::uint32_t u;
     std::memcpy(&u, &f, 4);
     return u;
   };
+  std::size_t cap = 16;
+  while (cap < 2 * 3 * static_cast<std::size_t>(n)) cap *= 2;
+  std::vector<int> table(cap, -1);
+  std::vector<std::array<float, 3>> stored;  // float value of each vertex
+  stored.reserve(n / 2 + 8);
+  m.vertices.reserve(n / 2 + 8);
+  m.faces.reserve(n);
+  m.face_lines.assign(n, 0);
   for (std::uint32_t t = 0; t < n; ++t) {
     const char* rec = bytes.data() + 84 + 50ull * t;
-    Face face;
+    Face face(3);
     for (int c = 0; c < 3; ++c) {
       float xyz[3];
       for (int k = 0; k < 3; ++k) {
@@ -104,9 +112,12 @@ MeshData read_stl_binary(std::string_view bytes, const std::string& file) {
       }
       std::uint64_t h = (static_cast<std::uint64_t>(bits(xyz[0])) * 0x9E3779B97F4A7C15ull) ^
                         (static_cast<std::uint64_t>(bits(xyz[1])) * 0xC2B2AE3D27D4EB4Full) ^ bits(xyz[2]);
-      auto& bucket = buckets[h];
+      h ^= h >> 29;
+      std::size_t at = static_cast<std::size_t>(h * 0xBF58476D1CE4E5B9ull) & (cap - 1);
       int found = -1;
-      for (int v : bucket) {
+      for (;; at = (at + 1) & (cap - 1)) {
+        const int v = table[at];
+        if (v < 0) break;
         // Float equality is exact value equality (the -0 case compares equal too).
         if (stored[v][0] == xyz[0] && stored[v][1] == xyz[1] && stored[v][2] == xyz[2]) {
           found = v;
@@ -117,12 +128,11 @@ MeshData read_stl_binary(std::string_view bytes, const std::string& file) {
         found = static_cast<int>(m.vertices.size());
         m.vertices.emplace_back(Rational(xyz[0]), Rational(xyz[1]), Rational(xyz[2]));
         stored.push_back({xyz[0], xyz[1], xyz[2]});
-        bucket.push_back(found);
+        table[at] = found;
       }
-      face.push_back(found);
+      face[c] = found;
     }
     m.faces.push_back(std::move(face));
-    m.face_lines.push_back(0);
   }
   return m;
 }

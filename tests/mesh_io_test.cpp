@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <map>
+#include <random>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -239,4 +241,31 @@ TEST(MeshIO, LargeOffErrorsNameTheLine) {
   BigOff bad_face = big_off(n, -1, "", -1, 39000);
   e = off_error(bad_face.text);
   EXPECT_NE(e.find("big.off:" + std::to_string(bad_face.face_line[39000]) + ": vertex index 40000 is out of range"), std::string::npos) << e;
+}
+
+// Binary STL corners are welded by exact float value (a hash table without allocation per
+// vertex): the same vertices, numbered by first appearance, as a plain map of the values;
+// -0 and +0 are one point, 0.1f and the double 0.1 are not the same value.
+TEST(MeshIO, BinaryStlWeldsLikeAMapOfValues) {
+  std::mt19937 rng(3);
+  const float values[] = {0.0f, -0.0f, 0.1f, -0.1f, 1.0f, 1e-30f, 3.5f, 123456.78f};
+  std::uniform_int_distribution<int> pick(0, 7);
+  std::vector<std::array<float, 9>> tris(5000);
+  for (auto& t : tris)
+    for (float& c : t) c = values[pick(rng)];
+  MeshData m = read_stl(binary_stl(tris), "w.stl");
+  std::map<std::array<float, 3>, int> seen;
+  std::vector<std::array<float, 3>> order;
+  ASSERT_EQ(m.faces.size(), tris.size());
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    for (int c = 0; c < 3; ++c) {
+      std::array<float, 3> p = {tris[t][3 * c], tris[t][3 * c + 1], tris[t][3 * c + 2]};
+      for (float& x : p) x = x == 0.0f ? 0.0f : x;
+      auto [it, fresh] = seen.emplace(p, static_cast<int>(order.size()));
+      if (fresh) order.push_back(p);
+      ASSERT_EQ(m.faces[t][c], it->second) << t << " " << c;
+    }
+  ASSERT_EQ(m.vertices.size(), order.size());
+  for (std::size_t v = 0; v < order.size(); ++v)
+    EXPECT_EQ(m.vertices[v], Point3(Rational(order[v][0]), Rational(order[v][1]), Rational(order[v][2])));
 }
