@@ -51,8 +51,8 @@ class PointGrid {
     bool operator<(const Found& o) const { return d < o.d || (d == o.d && entry < o.entry); }
   };
   /// The `k` strokes nearest to `q` among entries with accept(entry) true and distance at most
-  /// `max_dist`, each stroke by its nearest entry, in (distance, entry index) order: the same as
-  /// k calls of nearest() each excluding the strokes already found, in one walk of the rings.
+  /// `max_dist`, each stroke by its nearest entry, in (distance, entry index) order, in one walk
+  /// of the rings.
   template <class Accept>
   void nearest_strokes(const Point2& q, std::size_t k, Accept accept, double max_dist, std::vector<Found>& best) const {
     best.clear();
@@ -82,37 +82,12 @@ class PointGrid {
       if (!any && r > g_) break;
     }
   }
-  /// The nearest entry with accept(entry) true, or -1.
+  /// The nearest entry with accept(entry) true, or -1 (ties: the lower index).
   template <class Accept>
   long nearest(const Point2& q, Accept accept, double max_dist = std::numeric_limits<double>::infinity()) const {
-    if (live_ == 0) return -1;
-    int cx = clampc((q[0] - x0_) / size_), cy = clampc((q[1] - y0_) / size_);
-    long best = -1;
-    double bd = std::numeric_limits<double>::infinity();
-    for (int r = 0; r < 2 * g_; ++r) {
-      if (best >= 0 && bd < (r - 1) * size_) break;  // every unvisited cell is farther
-      if ((r - 1) * size_ > max_dist) break;
-      bool any = false;
-      for (int y = cy - r; y <= cy + r; ++y) {
-        if (y < 0 || y >= g_) continue;
-        for (int x = cx - r; x <= cx + r; x += (y == cy - r || y == cy + r) ? 1 : 2 * r) {
-          if (x < 0 || x >= g_) {
-            if (r == 0) break;
-            continue;
-          }
-          any = true;
-          for (std::uint32_t i : cells_[static_cast<std::size_t>(y) * g_ + x]) {
-            if (!accept(entries_[i])) continue;
-            double d = dist(q, entries_[i].p);
-            if (d > max_dist) continue;
-            if (d < bd || (d == bd && static_cast<long>(i) < best)) bd = d, best = i;
-          }
-          if (r == 0) break;
-        }
-      }
-      if (!any && r > g_) break;
-    }
-    return best;
+    thread_local std::vector<Found> one;
+    nearest_strokes(q, 1, accept, max_dist, one);  // the nearest stroke by its nearest entry
+    return one.empty() ? -1 : static_cast<long>(one[0].entry);
   }
 
  private:
