@@ -6,12 +6,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <exception>
 #include <cmath>
 #include <optional>
 #include <set>
 #include <filesystem>
 #include <iostream>
 
+#include "algorithms/parallel.hpp"
 #include "algorithms/progress.hpp"
 #include "cli/arguments.hpp"
 #include "cli/clipper_spec.hpp"
@@ -23,8 +25,6 @@
 #include "io/render.hpp"
 #include "io/input_error.hpp"
 #include "io/tile_file.hpp"
-#include "algorithms/parallel.hpp"
-#include <exception>
 #include "io/svg_writer.hpp"
 #include "io/standard_views.hpp"
 

@@ -322,7 +322,6 @@ class TileCut {
     return !tile_may_hold(split_, index_, a, b) ? 0 : tile_holds_wholly(split_, index_, a, b) ? 2 : 1;
   }
 
- private:
   const Camera& cam_;
   PicturePlane pp_;
   int index_;
