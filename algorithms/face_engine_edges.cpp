@@ -2,6 +2,7 @@
 // of the drawing (boundary, silhouette, crease over the threshold, or every edge) and which
 // are self-hidden (both faces non-facing, the notes' Stage 1).
 #include "algorithms/face_engine.hpp"
+#include "algorithms/parallel.hpp"
 
 namespace hlr::face_route {
 
@@ -10,13 +11,20 @@ template <class P>
 void Engine<P>::collect_edges(int b, LineDrawing& res) {
   const Polyhedron& p = *bodies_[b];
   const auto& facing = facing_[b];
-  for (const BodyEdge& e : topo_[b].edges) {
+  const std::vector<BodyEdge>& edges = topo_[b].edges;
+  // Each edge classified on every core (-1: not drawn), then the drawn ones appended in order.
+  std::vector<signed char> kinds(edges.size()), hidden(edges.size());
+  ParallelLoop(opt_.threads).for_each(edges.size(), 4096, [&](std::size_t i) {
+    const BodyEdge& e = edges[i];
     LineKind kind = LineKind::Edge;
     bool self_hidden = false;
-    std::vector<int> live;  // uses on non-degenerate faces
-    for (const EdgeUse& u : e.uses)
-      if (!degenerate_[b][u.face]) live.push_back(static_cast<int>(&u - e.uses.data()));
-    if (live.size() == 2) {
+    int live[2], n_live = 0;  // uses on non-degenerate faces (the first two)
+    for (std::size_t k = 0; k < e.uses.size(); ++k)
+      if (!degenerate_[b][e.uses[k].face]) {
+        if (n_live < 2) live[n_live] = static_cast<int>(k);
+        ++n_live;
+      }
+    if (n_live == 2) {
       const EdgeUse& a = e.uses[live[0]];
       const EdgeUse& c = e.uses[live[1]];
       int fa = facing[a.face], fc = facing[c.face];
@@ -31,24 +39,33 @@ void Engine<P>::collect_edges(int b, LineDrawing& res) {
           kind = LineKind::Silhouette;
       }
       if (kind == LineKind::Edge && (opt_.edges == EdgeSelection::Feature || opt_.classify_all) && crease(b, a, c)) kind = LineKind::Crease;
-    } else if (live.size() == 1) {
+    } else if (n_live == 1) {
       kind = LineKind::Boundary;
     } else {
       kind = LineKind::Crease;  // non-manifold: a feature
     }
-    if (opt_.edges == EdgeSelection::Feature && kind == LineKind::Edge) continue;
-    if (opt_.edges == EdgeSelection::All && !opt_.classify_all) kind = LineKind::Edge;
+    if (opt_.edges == EdgeSelection::All && !opt_.classify_all && kind != LineKind::Edge) kind = LineKind::Edge;
+    else if (opt_.edges == EdgeSelection::Feature && kind == LineKind::Edge) {
+      kinds[i] = -1;
+      return;
+    }
+    kinds[i] = static_cast<signed char>(kind);
+    hidden[i] = self_hidden;
+  });
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (kinds[i] < 0) continue;
+    const BodyEdge& e = edges[i];
     Segment s;
     s.body = b;
-    s.line = kind;
+    s.line = static_cast<LineKind>(kinds[i]);
     s.v0 = e.u;
     s.v1 = e.v;
     s.face0 = e.uses.empty() ? -1 : e.uses[0].face;
     s.face1 = e.uses.size() > 1 ? e.uses[1].face : -1;
     s.borrow_ends(p.vertices()[e.u], p.vertices()[e.v]);
-    s.self_hidden = self_hidden;
+    s.self_hidden = hidden[i] != 0;
     ++res.stats.edges;
-    if (self_hidden) ++res.stats.self_hidden;
+    if (s.self_hidden) ++res.stats.self_hidden;
     res.segments.push_back(std::move(s));
     gv_.push_back({voff_[b] + e.u, voff_[b] + e.v});
   }
