@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "algorithms/lighting.hpp"
+#include "algorithms/parallel.hpp"
 
 namespace hlr {
 std::string sheet_to_svg(const Sheet& sheet, const PlotStyle& style) {
@@ -60,13 +61,24 @@ std::string sheet_to_svg(const Sheet& sheet, const PlotStyle& style) {
         if (l.name() != names[n]) continue;
         std::vector<char> closed;
         auto strokes = page_strokes(v, l, style, &closed);
-        for (std::size_t s = 0; s < strokes.size(); ++s) {
+        // Each stroke's path text on every core, appended in order.
+        std::vector<std::string> paths(strokes.size());
+        ParallelLoop().for_each(strokes.size(), 8, [&](std::size_t s) {
           const auto& pts = strokes[s];
-          std::string d = "M" + f(pts[0][0]) + " " + f(pts[0][1]) + "L";
-          for (std::size_t i = 1; i < pts.size(); ++i) d += (i > 1 ? " " : "") + f(pts[i][0]) + " " + f(pts[i][1]);
-          if (closed[s]) d += "Z";
-          out += "  <path d=\"" + d + "\"/>\n";
-        }
+          std::string& d = paths[s];
+          d.reserve(16 + 20 * pts.size());
+          d += "  <path d=\"M";
+          for (std::size_t i = 0; i < pts.size(); ++i) {
+            if (i > 1) d += ' ';
+            d += f(pts[i][0]);
+            d += ' ';
+            d += f(pts[i][1]);
+            if (i == 0) d += 'L';
+          }
+          if (closed[s]) d += 'Z';
+          d += "\"/>\n";
+        });
+        for (const std::string& d : paths) out += d;
       }
     out += "</g>\n";
   }
