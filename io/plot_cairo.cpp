@@ -1,6 +1,8 @@
 // The sheet as PDF and PNG through cairo (see plot_output.hpp). Drawn in millimetres: the
 // same strokes, weights and dashes as the SVG.
 #include <cairo-pdf.h>
+#include <ctime>
+#include <cstdlib>
 #include <cairo.h>
 
 #include <algorithm>
@@ -85,6 +87,21 @@ void check(cairo_status_t st) {
   if (st != CAIRO_STATUS_SUCCESS) throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(st));
 }
 
+// SOURCE_DATE_EPOCH (seconds since 1970) as ISO 8601, or "" when it is not set or not a number.
+std::string source_date() {
+  const char* e = std::getenv("SOURCE_DATE_EPOCH");
+  if (!e || !*e) return "";
+  char* end = nullptr;
+  const long long t = std::strtoll(e, &end, 10);
+  if (*end != '\0' || t < 0) return "";
+  const std::time_t tt = static_cast<std::time_t>(t);
+  std::tm utc{};
+  if (!gmtime_r(&tt, &utc)) return "";
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return buf;
+}
+
 }  // namespace
 
 std::string sheet_to_pdf(const Sheet& sheet, const PlotStyle& style) {
@@ -93,6 +110,9 @@ std::string sheet_to_pdf(const Sheet& sheet, const PlotStyle& style) {
   cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(append, &out, sheet.width_mm * pt, sheet.height_mm * pt);
   cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, "exact-hlr drawing");
   cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "exact-hlr");
+  // The same drawing gives the same bytes: no creation date from the clock (cairo writes none
+  // for a date it cannot read), or SOURCE_DATE_EPOCH's when set (reproducible builds).
+  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, source_date().c_str());
   cairo_t* cr = cairo_create(surface);
   cairo_scale(cr, pt, pt);
   draw_sheet(cr, sheet, style);

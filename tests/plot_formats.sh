@@ -17,12 +17,16 @@ for want in "visible-silhouette" "hidden-crease" "DASHED" "AC1015" "POLYLINE"; d
   grep -q "$want" "$W/a.dxf" || { echo "DXF: no $want"; fail=1; }
 done
 # The same bytes on every run, in every format (a DXF once carried an uninitialised handle:
-# dxflib's text style must be named "Standard" for its dimension style to refer to it).
+# dxflib's text style must be named "Standard" for its dimension style to refer to it; a PDF
+# carried the clock's creation date: none now, or SOURCE_DATE_EPOCH's). A second apart.
 for f in svg pdf png dxf json; do
   "$HLR" render "$D/demo.yaml" --hidden dashed --page A4 -o "$W/r1.$f"
+  [ "$f" = pdf ] && sleep 1.1
   "$HLR" render "$D/demo.yaml" --hidden dashed --page A4 -o "$W/r2.$f"
   cmp -s "$W/r1.$f" "$W/r2.$f" || { echo "$f: two runs differ"; fail=1; }
 done
+SOURCE_DATE_EPOCH=1700000000 "$HLR" render "$D/demo.yaml" --page A4 -o "$W/dated.pdf"
+pdfinfo "$W/dated.pdf" | grep -q "CreationDate:.*2023" || { echo "PDF: SOURCE_DATE_EPOCH not its creation date"; pdfinfo "$W/dated.pdf"; fail=1; }
 "$HLR" render "$D/demo.yaml" --hidden dashed -o "$W/a.JSON"
 head -c 1 "$W/a.JSON" | grep -q '{' || { echo "JSON by upper-case extension: not JSON"; fail=1; }
 "$HLR" render "$D/demo.yaml" --hidden dashed --dpi 96 -o "$W/a.png"
