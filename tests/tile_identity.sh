@@ -4,8 +4,9 @@
 # blanked: those are the tiles' sums) on 1, 4 and 9 tiles, for the demo scene (orthographic
 # and perspective with the eye among the bodies), a sphere with every edge, a grid of cubes
 # seen along an axis (edges lying on the tile lines, which pass through vertices), 400 random
-# interpenetrating triangles (intersection lines, open surfaces) and a transparent scene (lines
-# seen through). Then the merge's errors: a missing tile, a tile given twice, tiles of another
+# interpenetrating triangles (intersection lines, open surfaces), a transparent scene (lines
+# seen through) and triangles with coordinates far outside doubles (orthographic, and with
+# the eye among them). Then the merge's errors: a missing tile, a tile given twice, tiles of another
 # render, a file cut short, not a tile file: a message and exit code 1 or 2, no output.
 # Usage: tests/tile_identity.sh HLR GEN_MESH DATA_DIR
 set -euo pipefail
@@ -15,6 +16,18 @@ trap 'rm -rf "$work"' EXIT
 "$gen" sphere 20 > "$work/sphere.off"
 "$gen" cubes 4 > "$work/cubes.off"
 "$gen" triangles 400 7 > "$work/tris.off"
+# 60 random triangles with coordinates of 300 digits and of 10^-400 (beyond doubles: the
+# filters work in the drawing frame, the decisions stay exact).
+python3 - "$work" <<'PY'
+import random, sys
+random.seed(5)
+for name, suffix in [("huge", "0" * 300), ("tiny", "/1" + "0" * 400)]:
+    lines = ["OFF", "180 60 0"]
+    for i in range(180):
+        lines.append(" ".join("%d%s" % (random.randint(-50, 50), suffix) for _ in range(3)))
+    lines += ["3 %d %d %d" % (3 * f, 3 * f + 1, 3 * f + 2) for f in range(60)]
+    open(sys.argv[1] + "/" + name + ".off", "w").write("\n".join(lines) + "\n")
+PY
 cd "$work"
 fail=0
 blank() { sed -E 's/"(pairs_tested|pairs_skipped_by_prefilter|pairs_on_rational_path|parameter_comparisons[a-z_]*)":[0-9]+/"\1":"_"/g' "$1"; }
@@ -43,6 +56,9 @@ check cubes-axis cubes.off --view 0,0,1 --hidden solid
 check cubes-diagonal cubes.off --view 1,1,0 --hidden dashed
 check triangles tris.off --view 1,1.3,1.7 --hidden dashed
 check transparent "$data/transparency_demo.yaml" --hidden dashed
+check digits-300 huge.off --view 1,1.3,1.7 --hidden dashed
+check digits-minus-400 tiny.off --view 1,1.3,1.7 --hidden dashed
+check eye-among-huge huge.off --eye 0,0,0 --target 1,1,1 --hidden dashed
 # The page formats from the same tiles: PDF, PNG and DXF byte for byte too.
 rm -f part*.tile
 for i in 1 2 3 4; do "$hlr" render "$data/demo.yaml" --hidden dashed --page A4 --tile "$i/4" -o "part$i.tile" 2>/dev/null; done
