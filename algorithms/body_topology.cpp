@@ -39,6 +39,9 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv) {
   auto less = [](const U& a, const U& c) { return a.key < c.key || (a.key == c.key && a.slot < c.slot); };
   for (std::size_t i = 0; i < nv; ++i)
     if (start[i + 1] - start[i] > 1) std::sort(uses.begin() + start[i], uses.begin() + start[i + 1], less);
+  std::size_t distinct = 0;
+  for (std::size_t i = 0; i < uses.size(); ++i) distinct += i == 0 || uses[i].key != uses[i - 1].key;
+  t.edges.reserve(distinct);
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     BodyEdge e;

@@ -18,10 +18,29 @@ struct EdgeUse {
   bool forward;    // traversed from the lower vertex id to the higher
 };
 
+/// The uses of one edge: two in place (a closed surface's edges have two), more beside, so
+/// that a mesh of a million faces does not allocate once per edge.
+class EdgeUses {
+ public:
+  std::size_t size() const { return n_; }
+  bool empty() const { return n_ == 0; }
+  const EdgeUse& operator[](std::size_t k) const { return k < 2 ? in_[k] : more_[k - 2]; }
+  void push_back(const EdgeUse& u) {
+    if (n_ < 2) in_[n_] = u;
+    else more_.push_back(u);
+    ++n_;
+  }
+
+ private:
+  EdgeUse in_[2]{};
+  std::vector<EdgeUse> more_;
+  std::uint32_t n_ = 0;
+};
+
 /// One undirected edge (body-local vertex ids u < v) and its uses, in order of slot.
 struct BodyEdge {
   int u, v;
-  std::vector<EdgeUse> uses;
+  EdgeUses uses;
   /// Exactly two uses in opposite directions (an edge of a closed, oriented surface).
   bool closed_pair() const { return uses.size() == 2 && uses[0].forward != uses[1].forward; }
 };

@@ -12,15 +12,33 @@
 
 #include <array>
 #include <atomic>
+#include <cmath>
+#include <cstring>
+#include <limits>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "algorithms/line_drawing.hpp"
 #include "algorithms/picture_plane.hpp"
-#include "algorithms/scene_polygons.hpp"
 #include "kernel/polyhedron.hpp"
 
 namespace hlr {
+
+/// A double above v (below, for next_down) with nothing between: std::nextafter's value,
+/// with the bits stepped inline (the library call dominated the interval arithmetic), except
+/// that 0 steps to ±2^-1022, the smallest normal double (still a bound: a rounded result of 0
+/// is within 2^-1075 of the exact value), so that no subnormal, slow on x86, enters.
+inline double next_up(double v) {
+  if (!(v < INFINITY)) return v;  // +inf, NaN
+  if (v == 0) return 0x1p-1022;
+  std::uint64_t b;
+  std::memcpy(&b, &v, sizeof b);
+  b += v > 0 ? 1 : -1;
+  std::memcpy(&v, &b, sizeof b);
+  return v;
+}
+inline double next_down(double v) { return -next_up(-v); }
 
 /// A closed interval of doubles that contains an exact value.
 struct Interval {
@@ -53,24 +71,31 @@ struct RasterGrid {
   std::array<int, 2> rows(double lo, double hi) const;
 };
 
-/// A grid of `width` x `height` square pixels holding the picture of `polygons` with a margin;
-/// `x_unit`, `y_unit`: the true length of one picture unit along x and y (picture_plane.hpp).
-RasterGrid raster_grid(const std::vector<ScenePolygon>& polygons, int width, int height, double x_unit, double y_unit);
+/// A grid of `width` x `height` square pixels holding the picture extent [x0, x1] x [y0, y1]
+/// (`extent` = {x0, y0, x1, y1}, nearest doubles of exact extremes; empty: [-1, 1]²) with a
+/// margin; `x_unit`, `y_unit`: the true length of one picture unit along x and y
+/// (picture_plane.hpp).
+RasterGrid raster_grid(const std::array<double, 4>& extent, int width, int height, double x_unit, double y_unit);
 
-/// A convex picture polygon ready for pixel tests.
+/// A convex picture polygon ready for pixel tests: a face, or a triangle of a face that is not
+/// convex, counter-clockwise in the picture. Its corners are body vertices
+/// (RasterScene::corner_verts[first .. first + count)); the exact picture points and the exact
+/// depth function are computed on demand (RasterScene::point, RasterScene::depth) by the rare
+/// decisions the certified doubles cannot take.
 struct RasterPolygon {
   int body = -1, face = -1;
-  int id = -1;    // global face number: faces of earlier bodies first
-  int rank = 0;   // 0: the face is toward the viewer; 1: turned away or an open surface's back
-  int poly = -1;  // index into RasterScene::source
-  /// Side k: A + B·x + C·y >= 0 inside (from corner k to k + 1), certified doubles.
-  std::vector<FilteredLinear> sides;
+  int id = -1;     // global face number: faces of earlier bodies first
+  int rank = 0;    // 0: the face is toward the viewer; 1: turned away or an open surface's back
+  int piece = 0;   // which convex piece of the face (0 for a convex face)
+  int first = 0;   // its corners and sides: RasterScene::corner_verts, RasterScene::sides
+  int count = 0;
   std::array<double, 4> box{};  // x0, y0, x1, y1 of the picture polygon, certified outward
   /// Depth along the sight ray, smaller nearer: z = (n0 + nx·x + ny·y) / (d0 + dx·x + dy·y)
-  /// (orthographic: the denominator is 1; perspective: the numerator is constant).
-  std::array<Rational, 6> z;
+  /// (orthographic: the denominator is 1; perspective: the numerator is constant), as
+  /// certified intervals of the exact coefficients (RasterScene::depth).
   std::array<Interval, 6> zi;
   FilteredLinear zlin;  // orthographic: the depth itself, for differences of two depths
+  FilteredLinear zden;  // perspective: the denominator
 };
 
 /// Counters of exact fallbacks (the double filter could not decide).
@@ -87,25 +112,42 @@ struct RasterCounters {
 struct RasterScene {
   Camera camera;
   RasterGrid grid;
-  std::vector<ScenePolygon> source;
+  std::vector<const Polyhedron*> bodies;
+  std::shared_ptr<const PicturePlane> plane;
   std::vector<RasterPolygon> polygons;
+  std::vector<int> corner_verts;       // polygon p's corner k: vertex corner_verts[p.first + k] of its body
+  std::vector<FilteredLinear> sides;   // side k (corner k to k + 1): A + B·x + C·y >= 0 inside
   std::vector<std::array<int, 2>> faces;  // global face number -> (body, face)
   mutable RasterCounters counters;
+
+  int vert(const RasterPolygon& p, int k) const { return corner_verts[static_cast<std::size_t>(p.first + k)]; }
+  const Point3& corner(const RasterPolygon& p, int k) const { return bodies[p.body]->vertices()[vert(p, k)]; }
+  const FilteredLinear& side(const RasterPolygon& p, int k) const { return sides[static_cast<std::size_t>(p.first + k)]; }
+  /// The exact picture point of corner k.
+  Exact2 point(const RasterPolygon& p, int k) const;
+  /// All its exact picture points, counter-clockwise.
+  std::vector<Exact2> points(const RasterPolygon& p) const;
+  /// The exact depth coefficients (n0, nx, ny, d0, dx, dy) of RasterPolygon::zi.
+  std::array<Rational, 6> depth(const RasterPolygon& p) const;
 
   /// Whether the closed picture of polygon p contains the centre of pixel (i, j).
   bool covers(const RasterPolygon& p, int i, int j) const;
   /// The sign of a's side-k function at the picture point (x, y) (an exact double pair).
-  int side_sign(const RasterPolygon& p, std::size_t k, double x, double y) const;
+  int side_sign(const RasterPolygon& p, int k, double x, double y) const;
   /// The sign of z_a - z_b at the exact picture point (x, y): negative when a is nearer.
   int depth_order(const RasterPolygon& a, const RasterPolygon& b, double x, double y) const;
+  /// The sign of p's depth denominator at (x, y) (perspective; 1 orthographic).
+  int denominator_sign(const RasterPolygon& p, double x, double y) const;
   /// The seen-over order at (x, y): true when a is seen over b (nearer; on a tie, rank, then id).
   bool nearer(const RasterPolygon& a, const RasterPolygon& b, double x, double y) const;
 };
 
 /// The raster scene of `bodies` under `camera`: every face that can be seen (LineDrawing's
-/// facing and back_faces_unseen, as the vector routes) as convex picture polygons, on a grid of
-/// width x height pixels (or on `grid` when given: the exam's own grid). Perspective: every body
-/// must lie in front of the eye (the caller checks).
+/// facing and back_faces_unseen, as the vector routes; faces seen edge-on and faces of zero
+/// area left out) as convex picture polygons (scene_polygons.hpp's: a convex face as itself
+/// without corners on a straight side, any other face as its exact triangles), on a grid of
+/// width x height pixels (or on `grid` when given: the exam's own grid). Perspective: every
+/// body must lie in front of the eye (the caller checks). The bodies must outlive the scene.
 RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineDrawing& lines,
                          int width, int height, unsigned threads = 0, const RasterGrid* grid = nullptr);
 

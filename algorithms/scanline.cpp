@@ -13,15 +13,16 @@ namespace hlr {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-double down(double v) { return std::nextafter(v, -kInf); }
-double up(double v) { return std::nextafter(v, kInf); }
+double down(double v) { return next_down(v); }
+double up(double v) { return next_up(v); }
 
 // The span of polygon p on the row at y (an exact double): [L, R] as intervals containing the
 // exact ends (L = -inf, R = +inf when no side bounds them). False when a side's slope has no
 // certain sign (a nearly horizontal side): the caller tests centres one by one.
-bool span(const RasterPolygon& p, double y, Interval& L, Interval& R) {
+bool span(const RasterScene& scene, const RasterPolygon& p, double y, Interval& L, Interval& R) {
   L = {-kInf, -kInf}, R = {kInf, kInf};
-  for (const FilteredLinear& s : p.sides) {  // A + B·x + C·y >= 0, each within [m, m + r]
+  for (int k = 0; k < p.count; ++k) {
+    const FilteredLinear& s = scene.side(p, k);  // A + B·x + C·y >= 0, each within [m, m + r]
     const Interval A{s.m[0], up(s.m[0] + s.r[0])}, B{s.m[1], up(s.m[1] + s.r[1])}, C{s.m[2], up(s.m[2] + s.r[2])};
     const double c0 = C.lo * y, c1 = C.hi * y;
     const Interval cy{down(std::min(c0, c1)), up(std::max(c0, c1))};
@@ -40,7 +41,7 @@ bool span(const RasterPolygon& p, double y, Interval& L, Interval& R) {
 }  // namespace
 
 std::optional<ExactSpan> exact_span(const RasterScene& s, const RasterPolygon& p, const Rational& y) {
-  const std::vector<Exact2>& pts = s.source[p.poly].pts;
+  const std::vector<Exact2> pts = s.points(p);
   ExactSpan out;
   bool has_l = false, has_r = false;
   for (std::size_t k = 0; k < pts.size(); ++k) {
@@ -86,7 +87,7 @@ FaceIdBuffer scanline(const RasterScene& s, const ScanlineOptions& o, ScanlineSt
         const RasterPolygon& poly = s.polygons[p];
         if (y < poly.box[1] || y > poly.box[3]) continue;
         Interval L, R;
-        const bool ok = span(poly, y, L, R);
+        const bool ok = span(s, poly, y, L, R);
         ++n_spans;
         n_test += !ok;
         auto cols = ok ? g.columns(std::max(L.lo, poly.box[0]), std::min(R.hi, poly.box[2])) : g.columns(poly.box[0], poly.box[2]);

@@ -25,20 +25,38 @@ bool is_convex(const std::vector<Exact2>& poly) {
   return true;
 }
 
-// A polygon counter-clockwise in the picture, or nothing when its picture has no area.
-bool add(std::vector<ScenePolygon>& out, ScenePolygon p) {
-  Rational a = picture_area2(p.pts);
-  if (a == 0) return false;
-  if (a < 0) {
-    std::reverse(p.pts.begin(), p.pts.end());
-    std::reverse(p.corners.begin(), p.corners.end());
-    std::reverse(p.verts.begin(), p.verts.end());
-  }
-  out.push_back(std::move(p));
-  return true;
-}
-
 }  // namespace
+
+std::vector<std::vector<int>> face_pieces(const Polyhedron& p, int f, const std::vector<Exact2>& pic) {
+  std::vector<std::vector<int>> out;
+  const std::size_t n = pic.size();
+  std::vector<int> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<int>(i);
+  const int a = n == 3 ? orient2d(pic[0], pic[1], pic[2]) : sgn(picture_area2(pic));
+  if (a == 0) return out;
+  if (a < 0) std::reverse(order.begin(), order.end());
+  std::vector<Exact2> ccw;
+  for (int i : order) ccw.push_back(pic[i]);
+  if (n == 3) {  // a triangle with an area: convex, no corner on a straight side
+    out.push_back(order);
+    return out;
+  }
+  if (is_convex(ccw)) {
+    std::vector<int> clean;
+    for (std::size_t i = 0; i < n; ++i)  // drop corners on a straight side
+      if (orient2d(ccw[(i + n - 1) % n], ccw[i], ccw[(i + 1) % n]) != 0) clean.push_back(order[i]);
+    out.push_back(std::move(clean));
+    return out;
+  }
+  for (const FaceTriangle& t : face_triangles(p, f).triangles) {
+    std::vector<int> tri{t.v[0], t.v[1], t.v[2]};
+    const int o = orient2d(pic[tri[0]], pic[tri[1]], pic[tri[2]]);
+    if (o == 0) continue;
+    if (o < 0) std::reverse(tri.begin(), tri.end());
+    out.push_back(std::move(tri));
+  }
+  return out;
+}
 
 std::vector<ScenePolygon> scene_polygons(const std::vector<const Polyhedron*>& bodies, const PicturePlane& pp,
                                          const LineDrawing& lines) {
@@ -50,39 +68,14 @@ std::vector<ScenePolygon> scene_polygons(const std::vector<const Polyhedron*>& b
     for (std::size_t f = 0; f < p.num_faces(); ++f) {
       if (p.planes()[f].is_degenerate()) continue;
       if (b < lines.back_faces_unseen.size() && lines.back_faces_unseen[b] && lines.facing[b][f] < 0) continue;
-      ScenePolygon whole{static_cast<int>(b), static_cast<int>(f), 0, {}, {}};
-      for (int v : p.faces()[f]) whole.corners.push_back(p.vertices()[v]), whole.pts.push_back(pic[v]), whole.verts.push_back(v);
-      const int a = whole.pts.size() == 3 ? orient2d(whole.pts[0], whole.pts[1], whole.pts[2]) : sgn(picture_area2(whole.pts));
-      if (a == 0) continue;
-      if (a < 0) {
-        std::reverse(whole.pts.begin(), whole.pts.end());
-        std::reverse(whole.corners.begin(), whole.corners.end());
-        std::reverse(whole.verts.begin(), whole.verts.end());
-      }
-      if (whole.pts.size() == 3) {  // a triangle with an area: convex, no corner on a straight side
-        out.push_back(std::move(whole));
-        continue;
-      }
-      if (is_convex(whole.pts)) {
-        ScenePolygon clean{whole.body, whole.face, 0, {}, {}};
-        const std::size_t n = whole.pts.size();
-        for (std::size_t i = 0; i < n; ++i)  // drop corners on a straight side
-          if (orient2d(whole.pts[(i + n - 1) % n], whole.pts[i], whole.pts[(i + 1) % n]) != 0)
-            clean.pts.push_back(whole.pts[i]), clean.corners.push_back(whole.corners[i]), clean.verts.push_back(whole.verts[i]);
-        out.push_back(std::move(clean));
-        continue;
-      }
-      FaceTriangles ft = face_triangles(p, static_cast<int>(f));
+      const Face& face = p.faces()[f];
+      std::vector<Exact2> fp;
+      for (int v : face) fp.push_back(pic[v]);
       int piece = 0;
-      for (const FaceTriangle& t : ft.triangles) {
-        ScenePolygon tri{whole.body, whole.face, piece, {}, {}};
-        for (int k = 0; k < 3; ++k) {
-          const int v = p.faces()[f][t.v[k]];
-          tri.corners.push_back(p.vertices()[v]);
-          tri.pts.push_back(pic[v]);
-          tri.verts.push_back(v);
-        }
-        if (add(out, std::move(tri))) ++piece;
+      for (const std::vector<int>& q : face_pieces(p, static_cast<int>(f), fp)) {
+        ScenePolygon sp{static_cast<int>(b), static_cast<int>(f), piece++, {}, {}, {}};
+        for (int i : q) sp.corners.push_back(p.vertices()[face[i]]), sp.pts.push_back(fp[i]), sp.verts.push_back(face[i]);
+        out.push_back(std::move(sp));
       }
     }
   }

@@ -27,6 +27,13 @@ struct ScenePolygon {
 std::vector<ScenePolygon> scene_polygons(const std::vector<const Polyhedron*>& bodies, const PicturePlane& pp,
                                          const LineDrawing& lines);
 
+/// The convex picture pieces of face `f` of `p` whose vertices (in face order) have the exact
+/// picture points `pic`: the face itself when its picture is convex (corners on a straight side
+/// dropped), else the triangles of its exact triangulation with an area; each piece as
+/// positions in the face, counter-clockwise in the picture. Empty when the face's picture has
+/// no area (seen edge-on).
+std::vector<std::vector<int>> face_pieces(const Polyhedron& p, int f, const std::vector<Exact2>& pic);
+
 /// Twice the signed area of a picture polygon (positive counter-clockwise).
 Rational picture_area2(const std::vector<Exact2>& p);
 

@@ -82,7 +82,7 @@ class Subdivision {
     const double x0 = g_.cx(w.i0), x1 = g_.cx(w.i1 - 1), y1 = g_.cy(w.j0), y0 = g_.cy(w.j1 - 1);
     if (p.box[0] > x1 || p.box[2] < x0 || p.box[1] > y1 || p.box[3] < y0) return Kind::Disjoint;
     bool all_in = true;
-    for (std::size_t k = 0; k < p.sides.size(); ++k) {
+    for (int k = 0; k < p.count; ++k) {
       int outside = 0;
       for (int a = 0; a < 2; ++a)
         for (int b = 0; b < 2; ++b) {
@@ -117,8 +117,7 @@ class Subdivision {
     int first = 0;
     for (int u = 0; u < 2; ++u)
       for (int v = 0; v < 2; ++v) {
-        const Rational x(g_.cx(ci[u])), y(g_.cy(cj[v]));
-        int sg = sgn(p.z[3] + p.z[4] * x + p.z[5] * y);
+        const int sg = s_.denominator_sign(p, g_.cx(ci[u]), g_.cy(cj[v]));
         if (sg == 0 || (first != 0 && sg != first)) return false;
         first = sg;
       }

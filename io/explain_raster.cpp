@@ -25,9 +25,12 @@ namespace {
 std::string xy(const Exact2& p) { return "(" + q(p[0]) + ", " + q(p[1]) + ")"; }
 
 // The depth toward the viewer s(x, y) = −z(x, y) of an orthographic raster polygon (z smaller nearer).
-std::array<Rational, 3> s_coefficients(const RasterPolygon& p) { return {-p.z[0], -p.z[1], -p.z[2]}; }
-Rational s_at(const RasterPolygon& p, const Rational& x, const Rational& y) {
-  auto c = s_coefficients(p);
+std::array<Rational, 3> s_coefficients(const RasterScene& s, const RasterPolygon& p) {
+  const std::array<Rational, 6> z = s.depth(p);
+  return {-z[0], -z[1], -z[2]};
+}
+Rational s_at(const RasterScene& s, const RasterPolygon& p, const Rational& x, const Rational& y) {
+  auto c = s_coefficients(s, p);
   return c[0] + c[1] * x + c[2] * y;
 }
 
@@ -58,7 +61,7 @@ J raster_solution(const Problem& pr) {
   std::map<int, std::string> letter;  // global face number -> letter
   std::vector<std::string> letter_of(np);
   for (int p = 0; p < np; ++p) {
-    const ScenePolygon& sp = s.source[p];
+    const RasterPolygon& sp = s.polygons[p];
     names[p] = pr.scene.bodies[sp.body].name + "/" + ix(sp.face) + (sp.piece ? "#" + std::to_string(sp.piece) : std::string());
     const int id = s.polygons[p].id;
     if (!letter.count(id)) letter[id] = std::string(1, static_cast<char>('A' + letter.size() % 26));
@@ -75,8 +78,8 @@ J raster_solution(const Problem& pr) {
   J& tp = in.table("rs_polygons", {"rs_label", "polygon", "rs_picture_corners", "rs_depth_function"});
   for (int p = 0; p < np; ++p) {
     std::string corners;
-    for (const Exact2& c : s.source[p].pts) corners += (corners.empty() ? "" : ", ") + xy(c);
-    auto c = s_coefficients(s.polygons[p]);
+    for (const Exact2& c : s.points(s.polygons[p])) corners += (corners.empty() ? "" : ", ") + xy(c);
+    auto c = s_coefficients(s, s.polygons[p]);
     tp.push_back({letter_of[p], names[p], corners, "s = " + linear_text(c[1], c[2], 0, c[0])});
   }
   out["sections"].push_back(in.j);
@@ -93,7 +96,7 @@ J raster_solution(const Problem& pr) {
     int cur = -1;
     for (int p = 0; p < np; ++p) {
       const bool in_p = s.covers(s.polygons[p], i, j);
-      J before = cur < 0 ? J{{"en", "background, −∞"}, {"ru", "фон, −∞"}} : J(letter_of[cur] + ", " + q(s_at(s.polygons[cur], c[0], c[1])));
+      J before = cur < 0 ? J{{"en", "background, −∞"}, {"ru", "фон, −∞"}} : J(letter_of[cur] + ", " + q(s_at(s, s.polygons[cur], c[0], c[1])));
       J kept = "no";
       if (in_p && (cur < 0 || s.nearer(s.polygons[p], s.polygons[cur], g.cx(i), g.cy(j)))) {
         const bool tie = cur >= 0 && s.depth_order(s.polygons[p], s.polygons[cur], g.cx(i), g.cy(j)) == 0;
@@ -103,7 +106,7 @@ J raster_solution(const Problem& pr) {
         kept = J{{"en", "no (a tie: the rule)"}, {"ru", "нет (равная глубина: правило)"}};
       }
       zt.push_back({"(" + std::to_string(i) + ", " + std::to_string(j) + ")", xy(c), letter_of[p] + " " + names[p], in_p ? "yes" : "no",
-                    in_p ? q(s_at(s.polygons[p], c[0], c[1])) : "-", before, kept});
+                    in_p ? q(s_at(s, s.polygons[p], c[0], c[1])) : "-", before, kept});
     }
   }
   zb.value("rs_tie_rule", "a tie in depth goes to the face toward the viewer, then to the lower face number",
@@ -115,8 +118,8 @@ J raster_solution(const Problem& pr) {
   Section sl("rs_scanline");
   std::vector<Rational> ytop(np), ybottom(np);
   for (int p = 0; p < np; ++p) {
-    ytop[p] = ybottom[p] = s.source[p].pts[0][1];
-    for (const Exact2& c : s.source[p].pts) ytop[p] = std::max(ytop[p], c[1]), ybottom[p] = std::min(ybottom[p], c[1]);
+    ytop[p] = ybottom[p] = s.point(s.polygons[p], 0)[1];
+    for (const Exact2& c : s.points(s.polygons[p])) ytop[p] = std::max(ytop[p], c[1]), ybottom[p] = std::min(ybottom[p], c[1]);
   }
   auto row_y = [&](int j) { return Rational(g.y1 - rational(2 * j + 1, 2) * g.ystep); };
   J& yg = sl.table("rs_ygroups", {"rs_row", "y", "rs_added"});
@@ -135,13 +138,13 @@ J raster_solution(const Problem& pr) {
       active += (active.empty() ? "" : ", ") + letter_of[p];
       auto sp = exact_span(s, s.polygons[p], y);
       if (!sp) continue;
-      const auto& pts = s.source[p].pts;
+      const std::vector<Exact2> pts = s.points(s.polygons[p]);
       auto dx = [&](int side) -> std::string {  // X(y − ystep) − X(y) along the bounding side: C·ystep / B
         if (side < 0) return "-";
         const Exact2 &a = pts[side], &b = pts[(side + 1) % pts.size()];
         return q((b[0] - a[0]) * g.ystep / (a[1] - b[1]));
       };
-      auto c = s_coefficients(s.polygons[p]);
+      auto c = s_coefficients(s, s.polygons[p]);
       std::string cols;
       for (int i = 0; i < g.width; ++i) {
         const Rational x = g.x0 + rational(2 * i + 1, 2) * g.xstep;
@@ -150,7 +153,7 @@ J raster_solution(const Problem& pr) {
         int& cur = frame[static_cast<std::size_t>(j) * g.width + i];
         if (cur < 0 || s.nearer(s.polygons[p], s.polygons[cur], g.cx(i), g.cy(j))) cur = p;
       }
-      st.push_back({std::to_string(j), letter_of[p], q(sp->xl), q(sp->xr), dx(sp->left), dx(sp->right), q(s_at(s.polygons[p], sp->xl, y)),
+      st.push_back({std::to_string(j), letter_of[p], q(sp->xl), q(sp->xr), dx(sp->left), dx(sp->right), q(s_at(s, s.polygons[p], sp->xl, y)),
                     q(c[1] * g.xstep), q(-c[2] * g.ystep), cols.empty() ? "-" : cols});
     }
     std::string line;
@@ -178,7 +181,7 @@ J raster_solution(const Problem& pr) {
     std::string types_en, types_ru;
     for (auto [p, surrounding] : w.polygons) {
       bool inside = true;
-      for (const Exact2& c : s.source[p].pts) inside = inside && c[0] >= x0 && c[0] <= x1 && c[1] >= y0 && c[1] <= y1;
+      for (const Exact2& c : s.points(s.polygons[p])) inside = inside && c[0] >= x0 && c[0] <= x1 && c[1] >= y0 && c[1] <= y1;
       const char* en = surrounding ? "surrounding" : inside ? "contained" : "intersecting";
       const char* ru = surrounding ? "охватывающий" : inside ? "внутренний" : "пересекающий";
       types_en += (types_en.empty() ? "" : ", ") + letter_of[p] + " " + en;

@@ -125,23 +125,33 @@ int fan_weights(const std::vector<Vec3d>& c, const Vec3d& n, const Vec3d& p, dou
 class Shader {
  public:
   Shader(const RasterResult& r, const RasterOptions& o) : r_(r), o_(o), lift_(r.render.camera), light_(render_lighting(r.render)) {
-    flat_ = flat_face_colours(r.render);
+    std::vector<std::vector<char>> seen_face(r.render.bodies.size());  // the faces some sample sees
+    for (std::size_t b = 0; b < seen_face.size(); ++b) seen_face[b].assign(r.render.bodies[b]->body.num_faces(), 0);
+    for (int p : r.ids.polygons)
+      if (p >= 0) seen_face[r.scene.polygons[p].body][r.scene.polygons[p].face] = 1;
+    flat_ = flat_face_colours(r.render, &seen_face);
     for (std::size_t b = 0; b < r.render.bodies.size(); ++b) materials_.push_back(body_material(r.render, b));
+    // Smooth shading, textures and ray tracing read the exact face planes: computed once here,
+    // on all cores (flat colours need none: face_normal).
+    bool planes = o.bounces > 0 || o.shading != RasterShading::Flat;
+    for (const Material& m : materials_) planes = planes || m.checker > 0 || m.bump > 0 || m.texture;
+    if (planes)
+      for (const SceneBody* b : r.render.bodies) plane_all_faces(b->body, o.threads);
     // Textured polygons seen: their corners with the texture coordinates of the mesh.
-    std::vector<char> seen_poly(r.scene.source.size(), 0);
+    std::vector<char> seen_poly(r.scene.polygons.size(), 0);
     for (int p : r.ids.polygons)
       if (p >= 0) seen_poly[p] = 1;
-    for (std::size_t p = 0; p < r.scene.source.size(); ++p) {
-      const ScenePolygon& sp = r.scene.source[p];
+    for (std::size_t p = 0; p < r.scene.polygons.size(); ++p) {
+      const RasterPolygon& sp = r.scene.polygons[p];
       const SceneBody& body = *r.render.bodies[sp.body];
       if (!seen_poly[p] || !materials_[sp.body].texture || body.face_texcoords.size() <= static_cast<std::size_t>(sp.face) ||
           body.face_texcoords[sp.face].empty())
         continue;
       const Face& face = body.body.faces()[sp.face];
       Mapped mp;
-      for (std::size_t k = 0; k < sp.corners.size(); ++k) {
-        mp.at.push_back(d3(sp.corners[k]));
-        const std::size_t q = std::find(face.begin(), face.end(), sp.verts[k]) - face.begin();
+      for (int k = 0; k < sp.count; ++k) {
+        mp.at.push_back(d3(r.scene.corner(sp, k)));
+        const std::size_t q = std::find(face.begin(), face.end(), r.scene.vert(sp, k)) - face.begin();
         mp.uv.push_back(body.texcoords[body.face_texcoords[sp.face][q]]);
       }
       mapped_.emplace(static_cast<int>(p), std::move(mp));
@@ -163,14 +173,14 @@ class Shader {
     const double cs = std::cos(o.smooth_degrees * M_PI / 180);
     for (std::size_t b = 0; b < r.render.bodies.size(); ++b) normals_.push_back(body_normals(r.render.bodies[b]->body));
     // Per polygon seen: corners in doubles, their normals toward the viewer, their colours.
-    const auto& polys = r.scene.source;
+    const auto& polys = r.scene.polygons;
     corners_.resize(polys.size());
     std::vector<char> seen(polys.size(), 0);
     for (int p : r.ids.polygons)
       if (p >= 0) seen[p] = 1;
     ParallelLoop(o.threads).for_each(polys.size(), 64, [&](std::size_t p) {
       if (!seen[p]) return;
-      const ScenePolygon& sp = polys[p];
+      const RasterPolygon& sp = polys[p];
       const BodyNormals& n = normals_[sp.body];
       const bool back = r.render.drawing.facing[sp.body][sp.face] < 0;
       Material m = body_material(r.render, sp.body);
@@ -180,8 +190,8 @@ class Shader {
       c.n = {to_double(h.normal().x()), to_double(h.normal().y()), to_double(h.normal().z())};
       c.offset = to_double(h.d());
       c.material = m;
-      for (std::size_t k = 0; k < sp.corners.size(); ++k) {
-        Vec3d x = d3(sp.corners[k]), vn = vertex_normal(n, sp.face, sp.verts[k], cs);
+      for (int k = 0; k < sp.count; ++k) {
+        Vec3d x = d3(r.scene.corner(sp, k)), vn = vertex_normal(n, sp.face, r.scene.vert(sp, k), cs);
         if (back) vn = {-vn[0], -vn[1], -vn[2]};
         c.at.push_back(x);
         c.normal.push_back(vn);
@@ -193,7 +203,7 @@ class Shader {
   Rgb colour(std::size_t sample, double x, double y) const {
     const int p = r_.ids.polygons[sample];
     if (p < 0) return o_.background;
-    const ScenePolygon& sp = r_.scene.source[p];
+    const RasterPolygon& sp = r_.scene.polygons[p];
     if (whitted_) return traced(sp, x, y);
     const Material& mat = materials_[sp.body];
     const bool textured = mat.checker > 0 || mat.bump > 0 || mapped_.count(p);
@@ -250,7 +260,7 @@ class Shader {
 
   // Whitted: the exact first hit in doubles, the ray's direction, and total internal reflection
   // there decided exactly when the material could reflect totally on entering (ior < 1).
-  Rgb traced(const ScenePolygon& sp, double x, double y) const {
+  Rgb traced(const RasterPolygon& sp, double x, double y) const {
     const Plane& h = r_.render.bodies[sp.body]->body.planes()[sp.face];
     const Vec3d n{to_double(h.normal().x()), to_double(h.normal().y()), to_double(h.normal().z())};
     const Vec3d at = lift_.at(x, y, n, to_double(h.d()));

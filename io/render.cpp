@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <climits>
 #include <cmath>
 #include <map>
 
@@ -95,14 +96,13 @@ Lighting scene_lighting(const std::vector<Scene>& scenes, const Camera& cam) {
 
 // The flat colour of face f of body b under `light`, for the side the viewer sees (facing -1:
 // the back side).
-Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Lighting& light, bool back) {
+// `n`: the face's unit normal.
+Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Lighting& light, bool back, std::array<double, 3> n) {
   const Polyhedron& p = r.bodies[b]->body;
   Material m;
   m.colour = palette_colour(static_cast<int>(b));
   if (r.bodies[b]->material) m = *r.bodies[b]->material;
   const std::array<double, 3> eye = d3(r.camera.eye), view = unit3(d3(r.camera.direction));
-  const Plane& h = p.planes()[f];
-  std::array<double, 3> n = unit3({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))});
   if (back) n = {-n[0], -n[1], -n[2]};
   std::array<double, 3> c{0, 0, 0};
   for (int v : p.faces()[f]) {
@@ -111,6 +111,11 @@ Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Light
   }
   std::array<double, 3> to_viewer = r.camera.perspective ? unit3({eye[0] - c[0], eye[1] - c[1], eye[2] - c[2]}) : view;
   return shade(m, light, c, n, to_viewer);
+}
+
+Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Lighting& light, bool back) {
+  const Plane& h = r.bodies[b]->body.planes()[f];
+  return face_colour(r, b, f, light, back, unit3({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))}));
 }
 
 // Flat colour of every face, for the side the viewer sees (facing: 1 front, -1 back, 0 edge-on).
@@ -411,14 +416,42 @@ Lighting render_lighting(const RenderResult& r) { return scene_lighting(*r.scene
 
 Material body_material(const RenderResult& r, std::size_t b) { return material_of(r, b); }
 
-std::vector<std::vector<Rgb>> flat_face_colours(const RenderResult& r) {
+std::array<double, 3> face_normal(const Polyhedron& p, std::size_t f) {
+  const Face& face = p.faces()[f];
+  std::array<double, 3> n{0, 0, 0};
+  const std::array<double, 3> o = d3(p.vertices()[face[0]]);
+  for (std::size_t i = 1; i + 1 < face.size(); ++i) {  // Newell's sum as a fan from the first vertex
+    const std::array<double, 3> a = d3(p.vertices()[face[i]]), b = d3(p.vertices()[face[i + 1]]);
+    const double u[3] = {a[0] - o[0], a[1] - o[1], a[2] - o[2]}, v[3] = {b[0] - o[0], b[1] - o[1], b[2] - o[2]};
+    n[0] += u[1] * v[2] - u[2] * v[1], n[1] += u[2] * v[0] - u[0] * v[2], n[2] += u[0] * v[1] - u[1] * v[0];
+  }
+  const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (std::isfinite(l) && l > 0x1p-500) return {n[0] / l, n[1] / l, n[2] / l};
+  std::vector<const Point3*> pts;
+  for (int v : face) pts.push_back(&p.vertices()[v]);
+  const Plane h = primitive_plane_of_polygon(pts.data(), pts.size());  // exact: beyond the doubles' range
+  // Scaled by a power of two so that the largest component is near 1 (integers of any size).
+  int e = INT_MIN;
+  for (int k = 0; k < 3; ++k)
+    if (sgn(h[k]) != 0) e = std::max(e, static_cast<int>(mpz_sizeinbase(h[k].get_num().get_mpz_t(), 2)));
+  if (e == INT_MIN) return {0, 0, 1};
+  std::array<double, 3> m;
+  for (int k = 0; k < 3; ++k) {
+    mpz_class q = h[k].get_num();
+    m[k] = e > 900 ? mpz_class(q >> (e - 900)).get_d() : q.get_d();
+  }
+  return unit3(m);
+}
+
+std::vector<std::vector<Rgb>> flat_face_colours(const RenderResult& r, const std::vector<std::vector<char>>* only) {
   const Lighting light = render_lighting(r);
   std::vector<std::vector<Rgb>> out(r.bodies.size());
   for (std::size_t b = 0; b < r.bodies.size(); ++b) {
     out[b].resize(r.bodies[b]->body.num_faces());
     ParallelLoop().for_each(out[b].size(), 256, [&](std::size_t f) {
       const bool back = b < r.drawing.facing.size() && f < r.drawing.facing[b].size() && r.drawing.facing[b][f] < 0;
-      out[b][f] = face_colour(r, b, f, light, back);
+      if (only && !(*only)[b][f]) return;
+      out[b][f] = face_colour(r, b, f, light, back, face_normal(r.bodies[b]->body, f));
     });
   }
   return out;

@@ -123,9 +123,15 @@ Lighting render_lighting(const RenderResult& result);
 /// The material of body b (its own, else the palette's default colour).
 Material body_material(const RenderResult& result, std::size_t body);
 
+/// The unit normal of face f in doubles, for shading: Newell's sum over the vertices' doubles
+/// (no exact plane needed), the exact plane's direction where the doubles cannot hold the
+/// numbers (coordinates beyond 2^500 or below 2^-500).
+std::array<double, 3> face_normal(const Polyhedron& p, std::size_t f);
+
 /// Every face's flat colour (per body, per face) for the side the viewer sees (facing from
-/// result.drawing; -1: the back side).
-std::vector<std::vector<Rgb>> flat_face_colours(const RenderResult& result);
+/// result.drawing; -1: the back side), with face_normal's normals; with `only`, just the faces
+/// it marks (the others black).
+std::vector<std::vector<Rgb>> flat_face_colours(const RenderResult& result, const std::vector<std::vector<char>>* only = nullptr);
 
 /// Loads mesh files (.off .obj .stl .ply) and scene files (.yaml .yml .json), then renders.
 /// Also throws InputError (file and line) for bad input.

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 
 #include "algorithms/face_occluders.hpp"
@@ -146,10 +147,16 @@ bool all_in_front(const std::vector<const Polyhedron*>& bodies, const Camera& ca
   return true;
 }
 
-void check_scene(const std::vector<Polyhedron>& b, int size = 48) {
+// `scale`: the scene's coordinates are the cameras' times this (perspective eyes and targets
+// scaled with them).
+void check_scene(const std::vector<Polyhedron>& b, int size = 48, const Rational& scale = 1) {
   std::vector<const Polyhedron*> ptrs;
   for (const auto& p : b) ptrs.push_back(&p);
-  for (const Camera& cam : cameras()) {
+  for (Camera cam : cameras()) {
+    if (cam.perspective) {
+      cam.eye = P(cam.eye.x() * scale, cam.eye.y() * scale, cam.eye.z() * scale);
+      cam.target = P(cam.target.x() * scale, cam.target.y() * scale, cam.target.z() * scale);
+    }
     if (!all_in_front(ptrs, cam)) continue;
     Frames r = run_all(ptrs, cam, size, size * 3 / 4);
     expect_same(r);
@@ -190,6 +197,75 @@ TEST(Raster, CoplanarOverlappingQuadsAndAnOpenSurface) {
   check_scene({quad(P(0, 0, 0), P(3, 0, 0), P(3, 3, 0), P(0, 3, 0)), quad(P(1, 1, 0), P(4, 1, 0), P(4, 4, 0), P(1, 4, 0)),
                box(1, 1, 0, 2, 2, 2)});
   check_scene({quad(P(Q("5/2"), -2, -1), P(Q("5/2"), 6, -1), P(Q("5/2"), 6, 4), P(Q("5/2"), -2, 4)), box(0, 0, 0, 4, 4, 3)});
+}
+
+// Every face as a fan of triangles: the raster scene's triangle route (interval filters on
+// the vertices' picture points, the depth from the corners, no face planes).
+Polyhedron fanned(const Polyhedron& p) {
+  std::vector<Face> faces;
+  for (const Face& f : p.faces())
+    for (std::size_t k = 1; k + 1 < f.size(); ++k) faces.push_back({f[0], f[k], f[k + 1]});
+  return Polyhedron(p.vertices(), faces);
+}
+
+std::vector<Polyhedron> fanned(const std::vector<Polyhedron>& b) {
+  std::vector<Polyhedron> out;
+  for (const Polyhedron& p : b) out.push_back(fanned(p));
+  return out;
+}
+
+std::vector<Polyhedron> scaled(const std::vector<Polyhedron>& b, const Rational& k) {
+  std::vector<Polyhedron> out;
+  for (const Polyhedron& p : b) {
+    std::vector<Point3> v;
+    for (const Point3& x : p.vertices()) v.push_back(P(x.x() * k, x.y() * k, x.z() * k));
+    out.push_back(Polyhedron(v, p.faces()));
+  }
+  return out;
+}
+
+std::vector<std::vector<Polyhedron>> hard_scenes() {
+  return {{box(0, 2, 0, 3, 4, 2), box(1, 0, 0, 4, 2, 3), box(3, 2, 0, 4, 3, 1)},  // touching, flush
+          {box(0, 2, 0, 3, 4, 2), box(1, 1, 1, 4, 3, 3)},                         // interpenetrating
+          {quad(P(Q("5/2"), -2, -1), P(Q("5/2"), 6, -1), P(Q("5/2"), 6, 4), P(Q("5/2"), -2, 4)), box(0, 0, 0, 4, 4, 3)}};
+}
+
+TEST(Raster, TriangleMeshesTakeTheFilteredRouteAndAgreeWithTheOracle) {
+  for (const auto& scene : hard_scenes()) check_scene(fanned(scene));
+  // Triangles and quads in one scene: one body of each kind.
+  check_scene({fanned(box(0, 2, 0, 3, 4, 2)), box(1, 1, 1, 4, 3, 3)});
+}
+
+TEST(Raster, CoordinatesBeyondTheDoubleFiltersFallBackToExact) {
+  // 10^130 puts picture points beyond 2^400 (the filters' limit: exact projections, exact
+  // depths, sides left to exact tests); 10^-130 puts products among the subnormals.
+  mpz_class ten = 10, big;
+  mpz_pow_ui(big.get_mpz_t(), ten.get_mpz_t(), 130);
+  for (const Rational& k : {Rational(big), Rational(1 / Rational(big))}) {
+    const std::vector<Polyhedron> pierce = hard_scenes()[1];
+    check_scene(scaled(fanned(pierce), k), 16, k);
+    check_scene(scaled(pierce, k), 16, k);
+  }
+  // The huge scene really takes the exact route: every side test falls back.
+  const std::vector<Polyhedron> huge = scaled(fanned(hard_scenes()[1]), Rational(big));
+  std::vector<const Polyhedron*> ptrs{&huge[0], &huge[1]};
+  const Camera cam = cameras()[0];
+  Frames r = run_all(ptrs, cam, 16, 12);
+  EXPECT_GT(r.scene.counters.inside_exact.load(), 100u);
+}
+
+TEST(Raster, NextUpStepsLikeNextafterAwayFromZero) {
+  const double inf = std::numeric_limits<double>::infinity(), dmax = std::numeric_limits<double>::max();
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  for (double v : {1.0, -1.0, 0.1, -3e-300, 5e300, dmax, -dmax, tiny, -tiny, 0x1p-1022, -0x1p-1022, -inf}) {
+    EXPECT_EQ(next_up(v), std::nextafter(v, inf)) << v;
+    EXPECT_EQ(next_down(v), std::nextafter(v, -inf)) << v;
+  }
+  EXPECT_EQ(next_up(inf), inf);
+  EXPECT_EQ(next_down(-inf), -inf);
+  EXPECT_EQ(next_up(0.0), 0x1p-1022);  // a bound, and no subnormal
+  EXPECT_EQ(next_down(-0.0), -0x1p-1022);
+  EXPECT_TRUE(std::isnan(next_up(std::nan(""))));
 }
 
 TEST(Raster, CgalMeshesFourAlgorithmsAgreeWithTheVectorRoute) {
