@@ -37,8 +37,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-Vec3d d3(const Point3& p) { return {to_double(p.x()), to_double(p.y()), to_double(p.z())}; }
-Vec3d d3(const Vector3& p) { return {to_double(p.x()), to_double(p.y()), to_double(p.z())}; }
+// Doubles for shading: the middle of the certified bounds each exact number carries (within an
+// ulp of the nearest double, without a rational on the way).
+double mid(const Bounds& b) { return b.lo + (b.hi - b.lo) / 2; }
+Vec3d d3(const Point3& p) { return {mid(p.approx(0)), mid(p.approx(1)), mid(p.approx(2))}; }
+Vec3d d3(const Vector3& p) { return {mid(p.approx(0)), mid(p.approx(1)), mid(p.approx(2))}; }
 double dot3(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Vec3d unit(Vec3d a) {
   double l = std::sqrt(dot3(a, a));
@@ -84,11 +87,9 @@ BodyNormals body_normals(const Polyhedron& p) {
   BodyNormals n;
   n.face.resize(p.num_faces());
   n.around.resize(p.num_vertices());
-  for (std::size_t f = 0; f < p.num_faces(); ++f) {
-    const Plane& h = p.planes()[f];
-    n.face[f] = unit({to_double(h.normal().x()), to_double(h.normal().y()), to_double(h.normal().z())});
+  ParallelLoop().for_each(p.num_faces(), 1024, [&](std::size_t f) { n.face[f] = face_normal(p, f); });
+  for (std::size_t f = 0; f < p.num_faces(); ++f)
     for (int v : p.faces()[f]) n.around[v].push_back(static_cast<int>(f));
-  }
   return n;
 }
 
@@ -131,11 +132,9 @@ class Shader {
       if (p >= 0) seen_face[r.scene.polygons[p].body][r.scene.polygons[p].face] = 1;
     flat_ = flat_face_colours(r.render, &seen_face);
     for (std::size_t b = 0; b < r.render.bodies.size(); ++b) materials_.push_back(body_material(r.render, b));
-    // Smooth shading, textures and ray tracing read the exact face planes: computed once here,
-    // on all cores (flat colours need none: face_normal).
-    bool planes = o.bounces > 0 || o.shading != RasterShading::Flat;
-    for (const Material& m : materials_) planes = planes || m.checker > 0 || m.bump > 0 || m.texture;
-    if (planes)
+    // Ray tracing reads the exact face planes (total internal reflection is decided exactly):
+    // computed once here, on all cores. Shading needs none (face_normal).
+    if (o.bounces > 0)
       for (const SceneBody* b : r.render.bodies) plane_all_faces(b->body, o.threads);
     // Textured polygons seen: their corners with the texture coordinates of the mesh.
     std::vector<char> seen_poly(r.scene.polygons.size(), 0);
@@ -186,9 +185,7 @@ class Shader {
       Material m = body_material(r.render, sp.body);
       if (m.checker > 0 || m.texture) m.colour = {1, 1, 1};  // Gouraud: the texture modulates the interpolated light
       Corners& c = corners_[p];
-      const Plane& h = r.render.bodies[sp.body]->body.planes()[sp.face];
-      c.n = {to_double(h.normal().x()), to_double(h.normal().y()), to_double(h.normal().z())};
-      c.offset = to_double(h.d());
+      c.n = plane_d(sp.body, sp.face, c.offset);
       c.material = m;
       for (int k = 0; k < sp.count; ++k) {
         Vec3d x = d3(r.scene.corner(sp, k)), vn = vertex_normal(n, sp.face, r.scene.vert(sp, k), cs);
@@ -209,9 +206,9 @@ class Shader {
     const bool textured = mat.checker > 0 || mat.bump > 0 || mapped_.count(p);
     if (o_.shading == RasterShading::Flat && !textured) return flat_[sp.body][sp.face];
     if (o_.shading == RasterShading::Flat) {  // a textured face: its colour and bumped normal at the point
-      const Plane& h = r_.render.bodies[sp.body]->body.planes()[sp.face];
-      const Vec3d n{to_double(h.normal().x()), to_double(h.normal().y()), to_double(h.normal().z())};
-      const Vec3d at = lift_.at(x, y, n, to_double(h.d()));
+      double offset = 0;
+      const Vec3d n = plane_d(sp.body, sp.face, offset);
+      const Vec3d at = lift_.at(x, y, n, offset);
       Material m = mat;
       m.colour = colour_at(p, mat, at, n);
       Vec3d un = unit(n);
@@ -258,12 +255,20 @@ class Shader {
     return mat.texture->at(u, v);
   }
 
+  // The face's plane in doubles for shading: its unit normal n (face_normal) and n·X + offset = 0.
+  Vec3d plane_d(int b, int f, double& offset) const {
+    const Polyhedron& p = r_.render.bodies[b]->body;
+    const Vec3d n = face_normal(p, f), x = d3(p.vertices()[p.faces()[f][0]]);
+    offset = -dot3(n, x);
+    return n;
+  }
+
   // Whitted: the exact first hit in doubles, the ray's direction, and total internal reflection
   // there decided exactly when the material could reflect totally on entering (ior < 1).
   Rgb traced(const RasterPolygon& sp, double x, double y) const {
     const Plane& h = r_.render.bodies[sp.body]->body.planes()[sp.face];
-    const Vec3d n{to_double(h.normal().x()), to_double(h.normal().y()), to_double(h.normal().z())};
-    const Vec3d at = lift_.at(x, y, n, to_double(h.d()));
+    const Vec3d n{mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))};
+    const Vec3d at = lift_.at(x, y, n, mid(h.approx(3)));
     const Vec3d dir = lift_.persp ? unit(minus(at, lift_.e)) : Vec3d{-lift_.v[0], -lift_.v[1], -lift_.v[2]};
     const Material m = body_material(r_.render, sp.body);
     bool tir = false;
