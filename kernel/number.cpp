@@ -3,6 +3,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 
 namespace hlr {
 
@@ -160,7 +161,42 @@ Rational rational_from_double(double v) {
 
 std::string to_string(const Rational& q) { return q.get_str(10); }
 
+namespace {
+
+// to_double by one integer division: |q| = n/d; a = n·2^s / d truncated has 55 or 56 bits, its
+// lowest bit or'ed with "remainder != 0" (sticky), so converting it to double rounds exactly
+// as rounding n/d to 53 bits would; an exact tie (zero remainder, dropped bits 10..0) is
+// truncated, toward zero, as the slow path decides ties. Then 2^-s scales exactly when the
+// result is a normal double. False when it is not (subnormal or overflow): the slow path.
+bool to_double_by_division(const Rational& q, double& out) {
+  mpz_srcptr n = q.get_num_mpz_t(), d = q.get_den_mpz_t();
+  if (mpz_sgn(n) == 0) return out = 0, true;
+  const long nb = static_cast<long>(mpz_sizeinbase(n, 2)), db = static_cast<long>(mpz_sizeinbase(d, 2));
+  if (nb <= 53 && db <= 53) return out = mpz_get_d(n) / mpz_get_d(d), true;  // both exact, one IEEE rounding
+  const long s = 55 - nb + db;  // n·2^s / d lies in [2^54, 2^56)
+  if (s > 1000 || s < -1000) return false;  // far outside the normal range
+  mpz_class a, b, quo, rem;
+  mpz_abs(a.get_mpz_t(), n);
+  b = mpz_class(d);
+  if (s >= 0) mpz_mul_2exp(a.get_mpz_t(), a.get_mpz_t(), static_cast<unsigned long>(s));
+  else mpz_mul_2exp(b.get_mpz_t(), b.get_mpz_t(), static_cast<unsigned long>(-s));
+  mpz_tdiv_qr(quo.get_mpz_t(), rem.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+  std::uint64_t m = mpz_get_ui(quo.get_mpz_t());  // below 2^56
+  const int drop = m >= (std::uint64_t{1} << 55) ? 3 : 2;  // bits below the 53 kept
+  const std::uint64_t low = m & ((std::uint64_t{1} << drop) - 1);
+  if (mpz_sgn(rem.get_mpz_t()) != 0) m |= 1;
+  else if (low == std::uint64_t{1} << (drop - 1)) m -= low;  // an exact tie goes toward zero, as the slow path
+  const double v = std::ldexp(static_cast<double>(m), static_cast<int>(-s));
+  if (!(std::fabs(v) >= 0x1p-1022) || !std::isfinite(v)) return false;
+  out = mpz_sgn(n) < 0 ? -v : v;
+  return true;
+}
+
+}  // namespace
+
 double to_double(const Rational& q) {
+  double fast;
+  if (to_double_by_division(q, fast)) return fast;
   // mpq_get_d truncates; round to nearest via the two neighbours' exact comparison.
   double d = q.get_d();
   if (!std::isfinite(d)) return d;

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "kernel/number.hpp"
 
@@ -66,4 +67,47 @@ TEST(Number, ToDoubleRoundsToNearest) {
   EXPECT_EQ(hlr::to_double(Rational(1, 10)), 0.1);
   EXPECT_EQ(hlr::to_double(Rational(1, 3)), 1.0 / 3.0);
   EXPECT_EQ(hlr::to_double(Rational(-2, 3)), -2.0 / 3.0);
+}
+
+// The reference: the nearest double by comparing exact distances to the truncated value and
+// its two neighbours (ties toward zero), as to_double did before its one-division path.
+double nearest_by_comparison(const Rational& q) {
+  double d = q.get_d();
+  if (!std::isfinite(d)) return d;
+  Rational best(d), err = abs(q - best);
+  for (double c : {std::nextafter(d, HUGE_VAL), std::nextafter(d, -HUGE_VAL)}) {
+    if (!std::isfinite(c)) continue;
+    Rational e = abs(q - Rational(c));
+    if (e < err) err = e, d = c;
+  }
+  return d;
+}
+
+TEST(Number, ToDoubleEqualsTheExactComparisonOnRandomAndTiedValues) {
+  std::mt19937_64 rng(2026);
+  auto big = [&](int bits) {
+    mpz_class z = 0;
+    for (int b = 0; b < bits; b += 32) z = (z << 32) + static_cast<unsigned long>(rng() & 0xffffffffu);
+    z >>= (bits + 31) / 32 * 32 - bits;
+    return z == 0 ? mpz_class(1) : z;
+  };
+  for (int i = 0; i < 20000; ++i) {
+    const int nb = 1 + static_cast<int>(rng() % 200), db = 1 + static_cast<int>(rng() % 200);
+    Rational q(big(nb), big(db));
+    q.canonicalize();
+    if (rng() % 2) q = -q;
+    if (rng() % 8 == 0) q *= Rational(mpz_class(1) << static_cast<unsigned long>(rng() % 2000), 1) / Rational(mpz_class(1) << 1000, 1);
+    ASSERT_EQ(hlr::to_double(q), nearest_by_comparison(q)) << q.get_str();
+  }
+  // Exact ties between two doubles go toward zero; one above or below a tie goes to its side.
+  for (const char* t : {"9007199254740993", "9007199254740995", "-9007199254740995", "18014398509481990", "18014398509481994"}) {
+    const Rational q{mpz_class(t)};
+    EXPECT_EQ(hlr::to_double(q), nearest_by_comparison(q)) << t;
+    EXPECT_EQ(hlr::to_double(Rational(q + Rational(1, 3))), nearest_by_comparison(Rational(q + Rational(1, 3)))) << t;
+    EXPECT_EQ(hlr::to_double(Rational(q - Rational(1, 3))), nearest_by_comparison(Rational(q - Rational(1, 3)))) << t;
+  }
+  // Subnormal and beyond the range: the comparison path.
+  const Rational tiny(mpz_class(3), mpz_class(1) << 1070), huge(mpz_class(1) << 1100, mpz_class(7));
+  EXPECT_EQ(hlr::to_double(tiny), nearest_by_comparison(tiny));
+  EXPECT_EQ(hlr::to_double(huge), nearest_by_comparison(huge));
 }
