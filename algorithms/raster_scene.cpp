@@ -144,18 +144,25 @@ Plane face_plane(const Polyhedron& body, int f) {
   return primitive_plane_of_polygon(pts.data(), pts.size());
 }
 
-std::array<Rational, 6> RasterScene::depth(const RasterPolygon& p) const {
+const std::array<Rational, 6>& RasterScene::depth(const RasterPolygon& p) const {
+  std::atomic<const std::array<Rational, 6>*>& slot = depth_cache->slot[static_cast<std::size_t>(p.id)];
+  if (const auto* z = slot.load(std::memory_order_acquire)) return *z;
   auto [num, den] = plane->ray_parameter(face_plane(*bodies[p.body], p.face));
-  if (!camera.perspective)  // z = -s = -num / den, den constant
-    return {Rational(-num.c0 / den.c0), Rational(-num.cx / den.c0), Rational(-num.cy / den.c0), Rational(1), Rational(0), Rational(0)};
-  return {num.c0, num.cx, num.cy, den.c0, den.cx, den.cy};  // z = l = num / den, num constant
+  auto* fresh = camera.perspective
+                    ? new std::array<Rational, 6>{num.c0, num.cx, num.cy, den.c0, den.cx, den.cy}  // z = l = num / den, num constant
+                    : new std::array<Rational, 6>{Rational(-num.c0 / den.c0), Rational(-num.cx / den.c0), Rational(-num.cy / den.c0),
+                                                  Rational(1), Rational(0), Rational(0)};  // z = -s = -num / den, den constant
+  const std::array<Rational, 6>* kept = nullptr;
+  if (slot.compare_exchange_strong(kept, fresh, std::memory_order_acq_rel)) return *fresh;
+  delete fresh;  // another thread was first: the same value
+  return *kept;
 }
 
 int RasterScene::denominator_sign(const RasterPolygon& p, double x, double y) const {
   if (!camera.perspective) return 1;
   const int sg = p.zden.sign(x, y);
   if (sg != 2) return sg;
-  const std::array<Rational, 6> z = depth(p);
+  const std::array<Rational, 6>& z = depth(p);
   return sgn(Rational(z[3] + z[4] * Rational(x) + z[5] * Rational(y)));
 }
 
@@ -181,7 +188,8 @@ int RasterScene::depth_order(const RasterPolygon& a, const RasterPolygon& b, dou
   counters.depth_exact.fetch_add(1, std::memory_order_relaxed);
   const Rational qx(x), qy(y);
   auto z = [&](const RasterPolygon& p) -> Rational {
-    const std::array<Rational, 6> c = depth(p);
+    const std::array<Rational, 6>& c = depth(p);
+    if (!camera.perspective) return c[0] + c[1] * qx + c[2] * qy;  // the denominator is 1
     return (c[0] + c[1] * qx + c[2] * qy) / (c[3] + c[4] * qx + c[5] * qy);
   };
   return cmp(z(a), z(b));
@@ -254,7 +262,7 @@ int orient_filtered(const Pic& a, const Pic& b, const Pic& c) {
 // Certified intervals of a face's depth coefficients (RasterScene::depth) from the plane's
 // bounds; the bounds of the exact ones where the doubles cannot hold the numbers.
 std::array<Interval, 6> exact_depth_intervals(const RasterScene& s, const RasterPolygon& p) {
-  const std::array<Rational, 6> z = s.depth(p);
+  const std::array<Rational, 6>& z = s.depth(p);
   std::array<Interval, 6> out;
   for (int k = 0; k < 6; ++k) out[k] = of(z[k]);
   return out;
@@ -381,6 +389,7 @@ RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Cam
     offset[b + 1] = offset[b] + static_cast<int>(bodies[b]->num_faces());
     for (std::size_t f = 0; f < bodies[b]->num_faces(); ++f) s.faces.push_back({static_cast<int>(b), static_cast<int>(f)});
   }
+  s.depth_cache = std::make_shared<RasterScene::DepthCache>(s.faces.size());
   // Every vertex's picture as intervals, then the faces seen as polygons, on all cores in
   // chunks of faces joined in order.
   std::vector<std::vector<Pic>> pic(bodies.size());

@@ -127,8 +127,18 @@ struct RasterScene {
   Exact2 point(const RasterPolygon& p, int k) const;
   /// All its exact picture points, counter-clockwise.
   std::vector<Exact2> points(const RasterPolygon& p) const;
-  /// The exact depth coefficients (n0, nx, ny, d0, dx, dy) of RasterPolygon::zi.
-  std::array<Rational, 6> depth(const RasterPolygon& p) const;
+  /// The exact depth coefficients (n0, nx, ny, d0, dx, dy) of RasterPolygon::zi, computed on
+  /// the first call for the face and kept (safe from parallel loops).
+  const std::array<Rational, 6>& depth(const RasterPolygon& p) const;
+  /// The kept exact depths, one slot per global face number, filled on demand.
+  struct DepthCache {
+    std::vector<std::atomic<const std::array<Rational, 6>*>> slot;
+    explicit DepthCache(std::size_t faces) : slot(faces) {}
+    ~DepthCache() {
+      for (auto& s : slot) delete s.load();
+    }
+  };
+  std::shared_ptr<DepthCache> depth_cache;
 
   /// Whether the closed picture of polygon p contains the centre of pixel (i, j).
   bool covers(const RasterPolygon& p, int i, int j) const;

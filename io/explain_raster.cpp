@@ -26,7 +26,7 @@ std::string xy(const Exact2& p) { return "(" + q(p[0]) + ", " + q(p[1]) + ")"; }
 
 // The depth toward the viewer s(x, y) = −z(x, y) of an orthographic raster polygon (z smaller nearer).
 std::array<Rational, 3> s_coefficients(const RasterScene& s, const RasterPolygon& p) {
-  const std::array<Rational, 6> z = s.depth(p);
+  const std::array<Rational, 6>& z = s.depth(p);
   return {-z[0], -z[1], -z[2]};
 }
 Rational s_at(const RasterScene& s, const RasterPolygon& p, const Rational& x, const Rational& y) {

@@ -236,6 +236,18 @@ TEST(Raster, TriangleMeshesTakeTheFilteredRouteAndAgreeWithTheOracle) {
   check_scene({fanned(box(0, 2, 0, 3, 4, 2)), box(1, 1, 1, 4, 3, 3)});
 }
 
+TEST(Raster, TwinBodiesTieInDepthAtEveryCentre) {
+  // Coincident faces: every covered centre is a depth tie, decided by the exact depths (kept
+  // per face) and the rule (toward the viewer, then the lower face number).
+  check_scene({box(0, 0, 0, 3, 2, 2), box(0, 0, 0, 3, 2, 2)});
+  check_scene({fanned(box(0, 0, 0, 3, 2, 2)), fanned(box(0, 0, 0, 3, 2, 2))});
+  const std::vector<Polyhedron> twins{fanned(box(0, 0, 0, 3, 2, 2)), fanned(box(0, 0, 0, 3, 2, 2))};
+  std::vector<const Polyhedron*> ptrs{&twins[0], &twins[1]};
+  Frames r = run_all(ptrs, cameras()[0], 24, 18);
+  EXPECT_GT(r.scene.counters.depth_exact.load(), 50u);
+  for (std::int32_t id : r.z.ids) EXPECT_LT(id, static_cast<std::int32_t>(twins[0].num_faces())) << "the first body's face wins every tie";
+}
+
 TEST(Raster, CoordinatesBeyondTheDoubleFiltersFallBackToExact) {
   // 10^130 puts picture points beyond 2^400 (the filters' limit: exact projections, exact
   // depths, sides left to exact tests); 10^-130 puts products among the subnormals.
