@@ -26,4 +26,10 @@ struct FaceTriangles {
 /// is zero, NonPlanar when a vertex is off its plane, SelfIntersecting when no ear is found.
 FaceTriangles face_triangles(const Polyhedron& p, int f);
 
+/// Whether face f (4 to kConvexFanLimit vertices) is proven planar and strictly convex (every
+/// turn strictly one way, winding once) by the 128-bit integer test that face_triangles tries
+/// first; false when it is not, or when the numbers are too large for that test. A triangle
+/// gives false too (callers treat triangles apart).
+bool proven_convex_face(const Polyhedron& p, int f);
+
 }  // namespace hlr

@@ -8,6 +8,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "algorithms/face_triangles.hpp"
 #include "algorithms/parallel.hpp"
 #include "algorithms/scene_polygons.hpp"
 
@@ -270,6 +271,8 @@ std::array<Interval, 6> exact_depth_intervals(const RasterScene& s, const Raster
 
 // A triangle's plane: n = (b - a) x (c - a), d = -n·a, a positive multiple of its exact plane
 // (the depth functions are fractions: a common factor changes no value and no sign).
+// A strictly convex face's first three corners give a positive multiple of its plane too (the
+// turn at the second corner is strictly positive about its normal).
 bool triangle_plane(const Polyhedron& body, int f, Interval n[3], Interval& d) {
   const Face& face = body.faces()[f];
   Interval x[3][3];
@@ -289,10 +292,11 @@ bool triangle_plane(const Polyhedron& body, int f, Interval n[3], Interval& d) {
   return true;
 }
 
-std::array<Interval, 6> depth_intervals(const FrameIntervals& f, const Polyhedron& body, const RasterScene& s, const RasterPolygon& p) {
+std::array<Interval, 6> depth_intervals(const FrameIntervals& f, const Polyhedron& body, bool convex, const RasterScene& s,
+                                        const RasterPolygon& p) {
   Interval n[3], hd;
   bool ok = f.usable;
-  if (body.faces()[p.face].size() == 3) {
+  if (body.faces()[p.face].size() == 3 || convex) {
     ok = ok && triangle_plane(body, p.face, n, hd);
   } else {  // the body's planes are computed (raster_scene)
     const Plane& h = body.planes()[p.face];
@@ -322,9 +326,11 @@ struct Chunk {
   std::vector<int> verts;
 };
 
-// Face f of body b as convex picture polygons: a triangle by the interval filter on its
-// corners (exact when the filter cannot tell), any other face exactly (face_pieces).
-void add_face(const Polyhedron& p, int b, int f, const std::vector<Pic>& pic, const PicturePlane& pp, Chunk& out) {
+// Face f of body b as convex picture polygons: a triangle, or a face proven strictly convex
+// and planar (its picture is convex with every corner, or of zero area when seen edge-on), by
+// the interval filter on its first three corners (exact when the filter cannot tell); any other
+// face exactly (face_pieces).
+void add_face(const Polyhedron& p, int b, int f, bool convex, const std::vector<Pic>& pic, const PicturePlane& pp, Chunk& out) {
   const Face& face = p.faces()[f];
   auto push = [&](int piece, const std::vector<int>& at) {
     RasterPolygon rp;
@@ -333,10 +339,13 @@ void add_face(const Polyhedron& p, int b, int f, const std::vector<Pic>& pic, co
     for (int i : at) out.verts.push_back(face[i]);
     out.polygons.push_back(rp);
   };
-  if (face.size() == 3) {
+  if (face.size() == 3 || convex) {
     int o = orient_filtered(pic[face[0]], pic[face[1]], pic[face[2]]);
     if (o == 2) o = orient2d(pp.project(p.vertices()[face[0]]), pp.project(p.vertices()[face[1]]), pp.project(p.vertices()[face[2]]));
-    if (o != 0) push(0, o > 0 ? std::vector<int>{0, 1, 2} : std::vector<int>{2, 1, 0});
+    if (o == 0) return;
+    std::vector<int> at(face.size());
+    for (std::size_t k = 0; k < at.size(); ++k) at[k] = static_cast<int>(o > 0 ? k : at.size() - 1 - k);
+    push(0, at);
     return;
   }
   std::vector<Exact2> fp;
@@ -380,10 +389,20 @@ RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Cam
   const PicturePlane& pp = *plane;
   const FrameIntervals fi(pp, camera);
   ParallelLoop loop(threads);
-  // A body with a face that is not a triangle gets its planes computed once, before the
-  // parallel loops; triangles need none (the interval filters, then face_plane on demand).
-  for (const Polyhedron* b : bodies)
-    if (std::any_of(b->faces().begin(), b->faces().end(), [](const Face& f) { return f.size() != 3; })) plane_all_faces(*b, threads);
+  // Faces proven strictly convex and planar in integers (proven_convex_face) are treated like
+  // triangles; a body with any other face that is not a triangle gets its planes computed once,
+  // before the parallel loops. Triangles need none (the interval filters, then face_plane on
+  // demand).
+  std::vector<std::vector<char>> convex(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const Polyhedron& p = *bodies[b];
+    convex[b].assign(p.num_faces(), 0);
+    if (std::all_of(p.faces().begin(), p.faces().end(), [](const Face& f) { return f.size() == 3; })) continue;
+    loop.for_each(p.num_faces(), 1024, [&](std::size_t f) { convex[b][f] = p.faces()[f].size() > 3 && proven_convex_face(p, static_cast<int>(f)); });
+    bool other = false;
+    for (std::size_t f = 0; f < p.num_faces(); ++f) other = other || (p.faces()[f].size() != 3 && !convex[b][f]);
+    if (other) plane_all_faces(p, threads);
+  }
   std::vector<int> offset(bodies.size() + 1, 0);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     offset[b + 1] = offset[b] + static_cast<int>(bodies[b]->num_faces());
@@ -409,9 +428,10 @@ RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Cam
     const bool cull = b < lines.back_faces_unseen.size() && lines.back_faces_unseen[b];
     for (std::size_t f = f0; f < f1; ++f) {
       if (cull && lines.facing[b][f] < 0) continue;
-      // A triangle of zero area has a picture of zero area (add_face drops it).
-      if (p.faces()[f].size() != 3 && p.planes()[f].is_degenerate()) continue;
-      add_face(p, static_cast<int>(b), static_cast<int>(f), pic[b], pp, chunks[c]);
+      // A triangle of zero area has a picture of zero area (add_face drops it); a proven
+      // convex face has an area.
+      if (p.faces()[f].size() != 3 && !convex[b][f] && p.planes()[f].is_degenerate()) continue;
+      add_face(p, static_cast<int>(b), static_cast<int>(f), convex[b][f], pic[b], pp, chunks[c]);
     }
   });
   std::size_t np = 0, nv = 0;
@@ -429,7 +449,7 @@ RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Cam
     RasterPolygon& p = s.polygons[i];
     p.id = offset[p.body] + p.face;
     p.rank = lines.facing[p.body][p.face] > 0 ? 0 : 1;
-    p.zi = depth_intervals(fi, *bodies[p.body], s, p);
+    p.zi = depth_intervals(fi, *bodies[p.body], convex[p.body][p.face], s, p);
     p.zlin = filtered(p.zi[0], p.zi[1], p.zi[2]);
     p.zden = filtered(p.zi[3], p.zi[4], p.zi[5]);
     const std::vector<Pic>& c = pic[p.body];

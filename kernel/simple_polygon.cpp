@@ -13,8 +13,7 @@
 namespace hlr {
 namespace {
 
-// Convex faces with at most this many vertices are fanned from their first vertex.
-constexpr int kFanLimit = 12;
+constexpr int kFanLimit = kConvexFanLimit;
 
 using K = Epeck;
 using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;

@@ -11,6 +11,10 @@
 
 namespace hlr {
 
+/// Convex polygons with at most this many vertices are fanned from their first vertex
+/// (triangulate_simple_polygon); larger convex ones are halved recursively.
+inline constexpr int kConvexFanLimit = 12;
+
 /// The coordinate plane a planar polygon is seen in: the axis of the largest component of its
 /// normal is dropped, (i, j) are the kept axes; `ccw` when the polygon runs counter-clockwise
 /// in (i, j) (the normal's dropped component is positive).

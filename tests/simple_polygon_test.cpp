@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
+#include "algorithms/face_triangles.hpp"
 #include "kernel/simple_polygon.hpp"
 
 namespace hlr {
@@ -124,3 +126,76 @@ TEST(SimplePolygon, ClockwiseFacesKeepTheirOrientation) {
 
 }  // namespace
 }  // namespace hlr
+
+// face_triangles' 128-bit route (planar, strictly convex faces of 4 to 12 vertices with decimal
+// coordinates) gives the rational route's verdict and triangles: random faces on random planes,
+// convex (points on an ellipse), with a straight corner, reflex, star-shaped (winding twice),
+// bent out of the plane, and with coordinates too large for 128 bits.
+namespace {
+
+hlr::FaceTriangles rational_route(const hlr::Polyhedron& p, int f) {
+  using namespace hlr;
+  FaceTriangles out;
+  const Face& face = p.faces()[f];
+  std::vector<const Point3*> pts;
+  for (int v : face) pts.push_back(&p.vertices()[v]);
+  Plane h = plane_of_polygon(pts.data(), pts.size());
+  if (h.is_degenerate()) {
+    const ZeroAreaKind k = zero_area_kind(pts.data(), pts.size());
+    out.status = k == ZeroAreaKind::Collinear ? FaceTriangles::Status::Degenerate
+                 : k == ZeroAreaKind::Crossing ? FaceTriangles::Status::SelfIntersecting
+                                               : FaceTriangles::Status::NonPlanar;
+    return out;
+  }
+  for (std::size_t k = 0; k < face.size(); ++k)
+    if (h.value(*pts[k]) != 0) {
+      out.status = FaceTriangles::Status::NonPlanar;
+      return out;
+    }
+  out.triangles = triangulate_face(p.vertices(), face, h.normal());
+  if (out.triangles.empty()) out.status = FaceTriangles::Status::SelfIntersecting;
+  return out;
+}
+
+}  // namespace
+
+TEST(FaceTriangles, IntegerRouteEqualsTheRationalRoute) {
+  using namespace hlr;
+  std::mt19937 rng(29);
+  auto dec = [&](int range) { return Rational(static_cast<long>(rng() % (2 * range + 1)) - range, 1000); };
+  int fast = 0;
+  for (int it = 0; it < 3000; ++it) {
+    const int n = 4 + static_cast<int>(rng() % 10);  // 4..13: 13 is past the fan limit
+    const int kind = static_cast<int>(rng() % 6);
+    // A plane through o spanned by integer-ish vectors a, b; the polygon's points o + x·a + y·b.
+    const Rational o[3] = {dec(5000), dec(5000), dec(5000)};
+    Rational a[3] = {dec(3), dec(3), dec(3)}, b[3] = {dec(3), dec(3), dec(3)};
+    std::vector<std::array<Rational, 2>> uv;
+    for (int k = 0; k < n; ++k) {
+      const double t = 2 * M_PI * k / n * (kind == 4 ? 2 : 1);  // kind 4: a star winding twice
+      long r = kind == 2 && k == 1 ? 300 : 1000;                // kind 2: a reflex corner
+      uv.push_back({Rational(std::lround(r * std::cos(t)), 100), Rational(std::lround(r * std::sin(t) * 0.7), 100)});
+    }
+    if (kind == 3) uv[1] = {(uv[0][0] + uv[2][0]) / 2, (uv[0][1] + uv[2][1]) / 2};  // a corner on a straight side
+    std::vector<Point3> v;
+    for (int k = 0; k < n; ++k) {
+      Rational c[3];
+      for (int i = 0; i < 3; ++i) c[i] = o[i] + uv[k][0] * a[i] + uv[k][1] * b[i];
+      if (kind == 5 && k == 2) c[2] += Rational(1, 1000);  // bent out of the plane
+      v.push_back(Point3(c[0], c[1], c[2]));
+    }
+    if (it % 50 == 0) v[0] = Point3(v[0].x() + Rational(mpz_class(1) << 80, 1), v[0].y(), v[0].z());  // too large
+    std::vector<int> face(n);
+    for (int k = 0; k < n; ++k) face[k] = k;
+    Polyhedron p(v, {face});
+    const FaceTriangles got = face_triangles(p, 0), want = rational_route(p, 0);
+    fast += proven_convex_face(p, 0);
+    ASSERT_EQ(got.status, want.status) << "face " << it << " kind " << kind;
+    ASSERT_EQ(got.triangles.size(), want.triangles.size()) << it;
+    for (std::size_t t = 0; t < got.triangles.size(); ++t) {
+      EXPECT_EQ(got.triangles[t].v, want.triangles[t].v) << it;
+      EXPECT_EQ(got.triangles[t].edge, want.triangles[t].edge) << it;
+    }
+  }
+  EXPECT_GT(fast, 500) << "the integer route was taken";
+}
