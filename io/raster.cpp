@@ -310,6 +310,13 @@ class Shader {
 void resolve(const RasterResult& r, const RasterOptions& o, const std::vector<Rgb>& samples, std::vector<std::uint8_t>& rgb) {
   const int n = o.samples, W = r.ids.width, H = r.ids.height;
   rgb.resize(static_cast<std::size_t>(r.width) * r.height * 3);
+  auto byte = [](double v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255)); };
+  if (n == 1 && o.filter == RasterFilter::Box) {  // one sample per pixel: its colour (the mean of one, exactly)
+    ParallelLoop(o.threads).for_each(samples.size(), 16384, [&](std::size_t k) {
+      for (int ch = 0; ch < 3; ++ch) rgb[k * 3 + ch] = byte(samples[k][ch]);
+    });
+    return;
+  }
   ParallelLoop(o.threads).for_each(r.height, 1, [&](std::size_t j) {
     for (int i = 0; i < r.width; ++i) {
       Rgb acc{0, 0, 0};
