@@ -1,12 +1,17 @@
 // Body topology (see body_topology.hpp): counting sort of edge uses by their lower vertex,
-// then a sort within each bucket.
+// then a sort within each bucket, every pass on all cores. The buckets are filled in any order
+// (atomic cursors) and then sorted by (edge, slot), a total order, so the result does not
+// depend on the thread count.
 #include "algorithms/body_topology.hpp"
 
 #include <algorithm>
+#include <atomic>
+
+#include "algorithms/parallel.hpp"
 
 namespace hlr {
 
-BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv) {
+BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsigned threads) {
   BodyTopology t;
   std::vector<int>& fo = t.face_offset;
   fo.resize(faces.size() + 1, 0);
@@ -18,42 +23,50 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv) {
     int face, slot;
     bool forward;
   };
+  const ParallelLoop loop(threads);
+  constexpr std::size_t kGrain = 8192;
+  // Uses per lower vertex, then each bucket's start.
   std::vector<std::uint32_t> start(nv + 1, 0);
-  for (std::size_t f = 0; f < faces.size(); ++f)
+  loop.for_each(faces.size(), kGrain, [&](std::size_t f) {
     for (std::size_t k = 0; k < faces[f].size(); ++k) {
-      int u = faces[f][k], v = faces[f][(k + 1) % faces[f].size()];
-      if (u != v) ++start[std::min(u, v) + 1];
+      const int u = faces[f][k], v = faces[f][(k + 1) % faces[f].size()];
+      if (u != v) std::atomic_ref<std::uint32_t>(start[std::min(u, v) + 1]).fetch_add(1, std::memory_order_relaxed);
     }
+  });
   for (std::size_t i = 1; i <= nv; ++i) start[i] += start[i - 1];
   std::vector<U> uses(start[nv]);
   {
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t f = 0; f < faces.size(); ++f)
+    loop.for_each(faces.size(), kGrain, [&](std::size_t f) {
       for (std::size_t k = 0; k < faces[f].size(); ++k) {
-        int u = faces[f][k], v = faces[f][(k + 1) % faces[f].size()];
+        const int u = faces[f][k], v = faces[f][(k + 1) % faces[f].size()];
         if (u == v) continue;
-        std::uint64_t key = (static_cast<std::uint64_t>(std::min(u, v)) << 32) | static_cast<std::uint32_t>(std::max(u, v));
-        uses[fill[std::min(u, v)]++] = {key, static_cast<int>(f), fo[f] + static_cast<int>(k), u < v};
+        const std::uint64_t key = (static_cast<std::uint64_t>(std::min(u, v)) << 32) | static_cast<std::uint32_t>(std::max(u, v));
+        const std::uint32_t at = std::atomic_ref<std::uint32_t>(fill[std::min(u, v)]).fetch_add(1, std::memory_order_relaxed);
+        uses[at] = {key, static_cast<int>(f), fo[f] + static_cast<int>(k), u < v};
       }
+    });
   }
   auto less = [](const U& a, const U& c) { return a.key < c.key || (a.key == c.key && a.slot < c.slot); };
-  for (std::size_t i = 0; i < nv; ++i)
+  loop.for_each(nv, kGrain, [&](std::size_t i) {
     if (start[i + 1] - start[i] > 1) std::sort(uses.begin() + start[i], uses.begin() + start[i + 1], less);
-  std::size_t distinct = 0;
-  for (std::size_t i = 0; i < uses.size(); ++i) distinct += i == 0 || uses[i].key != uses[i - 1].key;
-  t.edges.reserve(distinct);
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    BodyEdge e;
-    e.u = static_cast<int>(uses[i].key >> 32);
-    e.v = static_cast<int>(uses[i].key & 0xffffffffu);
-    for (; j < uses.size() && uses[j].key == uses[i].key; ++j) {
-      e.uses.push_back({uses[j].face, uses[j].slot, uses[j].forward});
-      t.slot_edge[uses[j].slot] = static_cast<int>(t.edges.size());
+  });
+  // One edge per run of equal keys: the runs found in one pass, the edges built on all cores.
+  std::vector<std::uint32_t> first;  // the first use of each edge
+  first.reserve(uses.size() / 2 + 1);
+  for (std::size_t i = 0; i < uses.size(); ++i)
+    if (i == 0 || uses[i].key != uses[i - 1].key) first.push_back(static_cast<std::uint32_t>(i));
+  first.push_back(static_cast<std::uint32_t>(uses.size()));
+  t.edges.resize(first.size() - 1);
+  loop.for_each(t.edges.size(), kGrain, [&](std::size_t e) {
+    BodyEdge& edge = t.edges[e];
+    edge.u = static_cast<int>(uses[first[e]].key >> 32);
+    edge.v = static_cast<int>(uses[first[e]].key & 0xffffffffu);
+    for (std::uint32_t j = first[e]; j < first[e + 1]; ++j) {
+      edge.uses.push_back({uses[j].face, uses[j].slot, uses[j].forward});
+      t.slot_edge[uses[j].slot] = static_cast<int>(e);
     }
-    t.edges.push_back(std::move(e));
-    i = j;
-  }
+  });
   return t;
 }
 

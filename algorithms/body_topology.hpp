@@ -52,8 +52,9 @@ struct BodyTopology {
   std::vector<int> slot_third;   // slot -> the third vertex of the triangle on that side (caller's)
 };
 
-/// Groups the edge uses of `faces` (vertex ids below `num_vertices`) by undirected edge.
-/// Sides with a repeated vertex (u == v) are no edge. `slot_third` is sized and set to -1.
-BodyTopology body_topology(const std::vector<Face>& faces, std::size_t num_vertices);
+/// Groups the edge uses of `faces` (vertex ids below `num_vertices`) by undirected edge, on
+/// `threads` cores (0: all; the same result on any number). Sides with a repeated vertex
+/// (u == v) are no edge. `slot_third` is sized and set to -1.
+BodyTopology body_topology(const std::vector<Face>& faces, std::size_t num_vertices, unsigned threads = 0);
 
 }  // namespace hlr

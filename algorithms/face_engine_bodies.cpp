@@ -146,7 +146,7 @@ int Engine<P>::volume_sign(const std::vector<int>& ids) const {
 
 template <class P>
 void Engine<P>::prepare_body(int b, LineDrawing& res) {
-  topo_[b] = body_topology(bodies_[b]->faces(), bodies_[b]->num_vertices());
+  topo_[b] = body_topology(bodies_[b]->faces(), bodies_[b]->num_vertices(), opt_.threads);
   const int first_tri = triangulate_body(b);
   // A closed solid: every edge in exactly two faces, traversed in opposite directions.
   bool closed = true;

@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <execution>
+#include <map>
 #include <mutex>
 #include <set>
 #include <thread>
 #include <vector>
 
+#include "algorithms/body_topology.hpp"
 #include "algorithms/parallel.hpp"
 
 using namespace hlr;
@@ -43,3 +45,56 @@ TEST(Parallel, EveryIndexOnceInOrderOfRanges) {
 }
 
 }  // namespace
+
+// Body topology on all cores equals the definition (a map from each undirected edge to its
+// uses in slot order) and is the same on 1, 2 and 8 threads: a grid of quads and triangles
+// large enough for many chunks, with a fin (an edge in three faces), a face with a repeated
+// vertex (no edge on that side) and a lone triangle.
+TEST(Parallel, BodyTopologyEqualsTheMapOfEdgeUsesOnAnyThreadCount) {
+  using namespace hlr;
+  const int n = 300;
+  std::vector<Face> faces;
+  auto id = [&](int i, int j) { return i * (n + 1) + j; };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      if ((i + j) % 3 == 0) faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      else faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)}), faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  const int extra = (n + 1) * (n + 1);
+  faces.push_back({id(1, 1), id(2, 2), extra});          // a fin on the diagonal (1,1)-(2,2)
+  faces.push_back({id(5, 5), id(5, 5), id(6, 6)});       // a repeated vertex
+  faces.push_back({extra + 1, extra + 2, extra + 3});    // a lone triangle
+  const std::size_t nv = extra + 4;
+  std::map<std::pair<int, int>, std::vector<std::array<int, 3>>> want;  // (u, v) -> (face, slot, forward)
+  int slot = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (std::size_t k = 0; k < faces[f].size(); ++k, ++slot) {
+      const int u = faces[f][k], v = faces[f][(k + 1) % faces[f].size()];
+      if (u != v) want[{std::min(u, v), std::max(u, v)}].push_back({static_cast<int>(f), slot, u < v});
+    }
+  std::vector<std::vector<int>> edge_of_slot;
+  for (unsigned threads : {1u, 2u, 8u}) {
+    const BodyTopology t = body_topology(faces, nv, threads);
+    ASSERT_EQ(t.edges.size(), want.size()) << threads;
+    std::size_t e = 0;
+    for (const auto& [uv, uses] : want) {
+      const BodyEdge& got = t.edges[e];
+      ASSERT_EQ(got.u, uv.first);
+      ASSERT_EQ(got.v, uv.second);
+      ASSERT_EQ(got.uses.size(), uses.size());
+      for (std::size_t k = 0; k < uses.size(); ++k) {
+        EXPECT_EQ(got.uses[k].face, uses[k][0]);
+        EXPECT_EQ(got.uses[k].slot, uses[k][1]);
+        EXPECT_EQ(got.uses[k].forward, uses[k][2] != 0);
+        EXPECT_EQ(t.slot_edge[uses[k][1]], static_cast<int>(e));
+      }
+      ++e;
+    }
+    edge_of_slot.push_back(t.slot_edge);
+    auto fin = std::find_if(t.edges.begin(), t.edges.end(), [&](const BodyEdge& x) { return x.u == id(1, 1) && x.v == id(2, 2); });
+    ASSERT_NE(fin, t.edges.end());
+    EXPECT_EQ(fin->uses.size(), 3u) << "the fin's edge has three uses";
+  }
+  EXPECT_EQ(edge_of_slot[0], edge_of_slot[1]);
+  EXPECT_EQ(edge_of_slot[0], edge_of_slot[2]);
+}
