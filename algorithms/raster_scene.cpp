@@ -15,8 +15,10 @@
 namespace hlr {
 namespace {
 
-// Interval arithmetic: each operation rounds to nearest, then widens by one ulp each way, so
-// the result contains the exact value (the rounding error is at most half an ulp of the result).
+// Interval arithmetic: each operation rounds to nearest, then widens one step each way
+// (next_up/next_down: one ulp, or to ±2^-1022 from 0), so the result contains the exact value
+// (the rounding error is at most half an ulp of the result, or 2^-1075 when it underflows to 0);
+// a product with an exact zero interval is exact zero.
 double down(double v) { return next_down(v); }
 double up(double v) { return next_up(v); }
 Interval of(const Rational& q) {
