@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <random>
 
 #include "algorithms/face_occluders.hpp"
 #include "algorithms/ray_casting.hpp"
@@ -246,6 +247,39 @@ TEST(Raster, TwinBodiesTieInDepthAtEveryCentre) {
   Frames r = run_all(ptrs, cameras()[0], 24, 18);
   EXPECT_GT(r.scene.counters.depth_exact.load(), 50u);
   for (std::int32_t id : r.z.ids) EXPECT_LT(id, static_cast<std::int32_t>(twins[0].num_faces())) << "the first body's face wins every tie";
+}
+
+TEST(Raster, RandomTrianglesAgreeWithTheOracleWithTheEyeCloseAndAlongFaces) {
+  // Random triangles (coordinates k/8 in [0, 4]³, a third of them in the plane z = 2, so
+  // coplanar overlaps, shared planes and piercing), one open body and one body per triangle,
+  // seen by the standard cameras, along the z axis (the coplanar ones edge-on) and from an eye
+  // half a unit below the lowest ones.
+  std::mt19937 rng(17);
+  auto c = [&] { return Rational(static_cast<long>(rng() % 33), 8); };
+  for (int round = 0; round < 2; ++round) {
+    std::vector<Point3> v;
+    std::vector<Face> f;
+    for (int t = 0; t < 24; ++t) {
+      const bool flat = t % 3 == 0;
+      for (int k = 0; k < 3; ++k) v.push_back(P(c(), c(), flat ? Rational(2) : c()));
+      f.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+    }
+    std::vector<Polyhedron> one{Polyhedron(v, f)}, many;
+    for (int t = 0; t < 24; ++t) many.push_back(Polyhedron({v[3 * t], v[3 * t + 1], v[3 * t + 2]}, {{0, 1, 2}}));
+    for (const auto* scene : {&one, &many}) {
+      check_scene(*scene, 40);
+      std::vector<const Polyhedron*> ptrs;
+      for (const auto& p : *scene) ptrs.push_back(&p);
+      for (const Camera& cam : {make_orthographic(Vector3(0, 0, 1), Vector3(0, 1, 0)),
+                                make_perspective(P(2, 2, Q("-1/2")), P(2, 2, 2), Vector3(0, 1, 0))}) {
+        Frames r = run_all(ptrs, cam, 40, 30);
+        expect_same(r);
+        EXPECT_GT(check_oracle(ptrs, cam, r, 1), 0);
+        check_vector(ptrs, cam, r, 1);
+        if (::testing::Test::HasFailure()) return;
+      }
+    }
+  }
 }
 
 TEST(Raster, CoordinatesBeyondTheDoubleFiltersFallBackToExact) {
