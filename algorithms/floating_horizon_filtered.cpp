@@ -66,6 +66,7 @@ inline int sgn_int(T v) { return v > 0 ? 1 : v < 0 ? -1 : 0; }
 struct Line {
   int p = -1, q = -1;
   Ad s, c;
+  int moved = -1;  // where compact() copied it (scratch lines only)
 };
 // An abscissa: a sample's X, or the crossing of two lines.
 struct Abs {
@@ -79,21 +80,24 @@ struct Seg {
 };
 using Env = std::vector<Seg>;
 
-// Lines with stable addresses, allocated in large blocks.
+// Lines with stable addresses, allocated in large blocks; reset() reuses the blocks (a
+// strip's scratch lines: most sides of its triangles end up below its envelopes, and fresh
+// memory for each strip cost more in page faults than the sweep itself).
 class LinePool {
  public:
   Line* add() {
-    if (used_ == kBlock || blocks_.empty()) {
-      blocks_.push_back(std::make_unique<Line[]>(kBlock));
-      used_ = 0;
+    if (block_ == blocks_.size() || used_ == kBlock) {
+      if (used_ == kBlock) ++block_, used_ = 0;
+      if (block_ == blocks_.size()) blocks_.push_back(std::make_unique<Line[]>(kBlock));
     }
-    return &blocks_.back()[used_++];
+    return &blocks_[block_][used_++];
   }
+  void reset() { block_ = 0, used_ = 0; }
 
  private:
   static constexpr std::size_t kBlock = 4096;
   std::vector<std::unique_ptr<Line[]>> blocks_;
-  std::size_t used_ = 0;
+  std::size_t block_ = 0, used_ = 0;
 };
 
 inline bool same_pair(const Line* a, const Line* b) { return a == b || (a->p == b->p && a->q == b->q); }
@@ -492,18 +496,42 @@ void emit_runs(const Picture& P, int p, int q, bool forward, const std::vector<s
   emit(at, P.at(q));
 }
 
+// A run's exact parameters along its segment.
+HorizonPiece piece(const Picture& P, const Run& r) {
+  Rational t0 = P.parameter(r.x0, r.p, r.q), t1 = P.parameter(r.x1, r.p, r.q);
+  if (!r.forward) {
+    Rational u0(1 - t1), u1(1 - t0);
+    t0 = std::move(u0), t1 = std::move(u1);
+  }
+  return HorizonPiece{r.curve, r.segment, std::move(t0), std::move(t1)};
+}
+
 // The exact parameters of the runs (on every core).
 std::vector<HorizonPiece> pieces(const Picture& P, const std::vector<Run>& runs, const ParallelLoop& loop) {
   std::vector<HorizonPiece> out(runs.size());
-  loop.for_each(runs.size(), 256, [&](std::size_t k) {
-    const Run& r = runs[k];
-    Rational t0 = P.parameter(r.x0, r.p, r.q), t1 = P.parameter(r.x1, r.p, r.q);
-    if (!r.forward) {
-      Rational u0(1 - t1), u1(1 - t0);
-      t0 = std::move(u0), t1 = std::move(u1);
-    }
-    out[k] = HorizonPiece{r.curve, r.segment, std::move(t0), std::move(t1)};
-  });
+  loop.for_each(runs.size(), 256, [&](std::size_t k) { out[k] = piece(P, runs[k]); });
+  return out;
+}
+
+// Copies the lines that the envelopes `up` and `lo` refer to (their pieces' lines and the
+// lines whose crossings bound them) out of the scratch pool into one block of their own, and
+// points the envelopes there.
+std::unique_ptr<Line[]> compact(Env& up, Env& lo) {
+  std::size_t n = 0;
+  auto count = [&](const Line* l) {
+    if (l && l->moved < 0) const_cast<Line*>(l)->moved = static_cast<int>(n++);
+  };
+  for (Env* e : {&up, &lo})
+    for (const Seg& s : *e) count(s.line), count(s.x0.l1), count(s.x0.l2), count(s.x1.l1), count(s.x1.l2);
+  auto out = std::make_unique<Line[]>(n);
+  auto move = [&](const Line*& l) {
+    if (!l) return;
+    Line& dst = out[static_cast<std::size_t>(l->moved)];
+    if (dst.p < 0) dst = Line{l->p, l->q, l->s, l->c};
+    l = &dst;
+  };
+  for (Env* e : {&up, &lo})
+    for (Seg& s : *e) move(s.line), move(s.x0.l1), move(s.x0.l2), move(s.x1.l1), move(s.x1.l2);
   return out;
 }
 
@@ -525,16 +553,18 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
   auto idx = [nx](std::size_t i, std::size_t j) { return static_cast<int>(j * nx + i); };
   HorizonResult res;
   for (std::size_t k = 0; k < nz; ++k) res.order.push_back(static_cast<int>(v.z() > 0 ? nz - 1 - k : k));
-  // The strips' envelopes, on every core, each with its own lines.
-  std::vector<LinePool> strip_lines(nz);
+  // The strips' envelopes, on every core, a batch at a time (the memory of a batch only), each
+  // strip built on its thread's scratch lines and keeping the lines its envelopes use.
+  std::vector<std::unique_ptr<Line[]>> strip_lines(nz);
   std::vector<Env> strip_up(nz), strip_lo(nz);
-  loop.for_each(nz > 0 ? nz - 1 : 0, 1, [&](std::size_t km1) {
-    const std::size_t k = km1 + 1;
+  auto build_strip = [&](std::size_t k) {
     const std::size_t j = static_cast<std::size_t>(res.order[k]), jp = static_cast<std::size_t>(res.order[k - 1]);
     const std::size_t j0 = std::min(j, jp), j1 = std::max(j, jp);
     // The cells in the order of their abscissas (X is monotone in i along a cut), each
     // triangle merged into the strip's envelopes where it lies: linear in the strip's size.
     const bool fw = P.sample_cmp(idx(0, j0), idx(1, j0)) < 0;
+    thread_local LinePool scratch;
+    scratch.reset();
     Env up, lo, tu, tl;
     for (std::size_t n = 0; n + 1 < nx; ++n) {
       const std::size_t i = fw ? n : nx - 2 - n;
@@ -542,19 +572,26 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
       for (auto [p, q, s] : {std::array<int, 3>{a, b, cc}, std::array<int, 3>{a, cc, d}}) {
         tu.clear();
         tl.clear();
-        triangle_sides(P, p, q, s, strip_lines[k], tu, tl);
+        triangle_sides(P, p, q, s, scratch, tu, tl);
         merge_into(P, up, tu, true);
         merge_into(P, lo, tl, false);
       }
     }
+    strip_lines[k] = compact(up, lo);
     strip_up[k] = std::move(up);
     strip_lo[k] = std::move(lo);
-  });
+  };
+  const std::size_t batch = std::max<std::size_t>(16, 8 * static_cast<std::size_t>(loop.workers()));
   Env U, L;
-  LinePool lines;
-  std::vector<Run> runs;
+  LinePool lines;  // the first cut's lines and the side edges' (the horizons keep them)
+  LinePool cut_lines;  // a later cut's lines: needed until its runs have their parameters
+  std::vector<HorizonPiece>& visible = res.visible;
   for (std::size_t k = 0; k < nz; ++k) {
     const std::size_t j = static_cast<std::size_t>(res.order[k]);
+    if (k > 0 && !strip_lines[k]) {
+      const std::size_t end = std::min(nz, k + batch);
+      loop.for_each(end - k, 1, [&](std::size_t n) { build_strip(k + n); });
+    }
     if (k > 0) {  // the upper and the lower horizon at once (they share nothing but lines)
       loop.for_each(2, 1, [&](std::size_t upper) {
         if (upper) merge_into(P, U, strip_up[k], true);
@@ -564,6 +601,8 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
       Env().swap(strip_lo[k]);
     }
     // The cut's segments against the horizons of what is in front, on every core.
+    LinePool& pool = k == 0 ? lines : cut_lines;
+    cut_lines.reset();
     std::vector<const Line*> cut(nx - 1);
     std::vector<int> left(nx - 1), right(nx - 1);
     std::vector<char> forward(nx - 1);
@@ -571,20 +610,28 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
       const int c0 = idx(i, j), c1 = idx(i + 1, j);
       forward[i] = P.sample_cmp(c0, c1) < 0;
       left[i] = forward[i] ? c0 : c1, right[i] = forward[i] ? c1 : c0;
-      cut[i] = P.through(lines, left[i], right[i]);
+      cut[i] = P.through(pool, left[i], right[i]);
     }
+    // Each chunk's runs with their exact parameters; a backward segment's runs came in
+    // increasing X: turned round, the list is in sort_visible()'s order (cuts, segments, t).
     constexpr std::size_t kGrain = 128;
-    std::vector<std::vector<Run>> part((nx - 1 + kGrain - 1) / kGrain);
+    std::vector<std::vector<HorizonPiece>> part((nx - 1 + kGrain - 1) / kGrain);
     loop.for_each(part.size(), 1, [&](std::size_t chunk) {
-      std::vector<Run>& out = part[chunk];
-      std::vector<std::pair<Abs, Abs>> hidden;
+      thread_local std::vector<Run> runs;
+      thread_local std::vector<std::pair<Abs, Abs>> hidden;
+      runs.clear();
       for (std::size_t i = chunk * kGrain, end = std::min(nx - 1, i + kGrain); i < end; ++i) {
         hidden.clear();
         if (k > 0) hidden_parts(P, *cut[i], P.at(left[i]), P.at(right[i]), U, L, hidden);
-        emit_runs(P, left[i], right[i], forward[i] != 0, hidden, static_cast<int>(j), static_cast<int>(i), out);
+        const std::size_t from = runs.size();
+        emit_runs(P, left[i], right[i], forward[i] != 0, hidden, static_cast<int>(j), static_cast<int>(i), runs);
+        if (!forward[i]) std::reverse(runs.begin() + static_cast<long>(from), runs.end());
       }
+      part[chunk].reserve(runs.size());
+      for (const Run& r : runs) part[chunk].push_back(piece(P, r));
     });
-    for (const std::vector<Run>& p : part) runs.insert(runs.end(), p.begin(), p.end());
+    for (std::vector<HorizonPiece>& p : part)
+      for (HorizonPiece& hp : p) visible.push_back(std::move(hp));
     if (k == 0) {  // the nearest cut is the first geometry: a strip of zero width
       Env first;
       const bool fw = forward[0] != 0;
@@ -622,15 +669,6 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
       return a.t0 < b.t0;
     });
   }
-  // Each segment's runs came in increasing X; a backward segment's go in decreasing t: turn
-  // them round, and the list is in sort_visible()'s order (cuts, segments, t).
-  for (std::size_t a = 0; a < runs.size();) {
-    std::size_t b = a + 1;
-    while (b < runs.size() && runs[b].curve == runs[a].curve && runs[b].segment == runs[a].segment) ++b;
-    if (!runs[a].forward) std::reverse(runs.begin() + static_cast<long>(a), runs.begin() + static_cast<long>(b));
-    a = b;
-  }
-  res.visible = pieces(P, runs, loop);
   if (counters) counters->exact = P.exact_count();
   return res;
 }

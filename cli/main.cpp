@@ -6,11 +6,13 @@
 
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
+#include "cli/huge_pages.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "kernel/number.hpp"
 
 int main(int argc, char** argv) {
+  hlr::cli::use_huge_pages(argv);
   CLI::App app{"hlr: exact hidden-line removal for polyhedra"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "hlr 0.1.0");
