@@ -427,15 +427,42 @@ void merge_into(const Picture& P, Env& acc, const Env& add, bool upper) {
 
 // floating_horizon.cpp's hidden_parts(): the hidden open intervals of the segment on `line` over
 // (x0, x1), where L < segment < U.
+// The first piece of `e` ending after x (e.size() if none), searched from `hint` outwards by
+// doubling steps, then by halves (a cut's segments come in order: the answer is near the last).
+std::size_t first_after(const Picture& P, const Env& e, const Abs& x, std::size_t hint) {
+  const std::size_t n = e.size();
+  auto after = [&](std::size_t k) { return P.cmp(x, e[k].x1) < 0; };  // false, ..., false, true, ..., true
+  std::size_t lo = 0, hi = n;  // the answer is in [lo, hi]
+  hint = std::min(hint, n);
+  if (hint < n && after(hint)) {
+    hi = hint;
+    for (std::size_t step = 1; step <= hi; step *= 2) {
+      if (!after(hi - step)) {
+        lo = hi - step + 1;
+        break;
+      }
+      hi -= step;
+    }
+  } else {
+    lo = hint < n ? hint + 1 : n;
+    for (std::size_t step = 1; lo + step - 1 < n; step *= 2) {
+      if (after(lo + step - 1)) {
+        hi = lo + step - 1;
+        break;
+      }
+      lo += step;
+    }
+  }
+  return static_cast<std::size_t>(
+      std::partition_point(e.begin() + static_cast<long>(lo), e.begin() + static_cast<long>(hi), [&](const Seg& p) { return !(P.cmp(x, p.x1) < 0); }) -
+      e.begin());
+}
+
 void hidden_parts(const Picture& P, const Line& line, const Abs& x0, const Abs& x1, const Env& U, const Env& L,
-                  std::vector<std::pair<Abs, Abs>>& out) {
+                  std::vector<std::pair<Abs, Abs>>& out, std::array<std::size_t, 2>& hint) {
   // The sub-intervals between consecutive breakpoints of U and L inside (x0, x1), walked in
   // order (the same list as sorting them all).
-  auto first = [&](const Env& e) {
-    return static_cast<std::size_t>(
-        std::upper_bound(e.begin(), e.end(), x0, [&](const Abs& v, const Seg& p) { return P.cmp(v, p.x1) < 0; }) - e.begin());
-  };
-  std::size_t iu = first(U), il = first(L);
+  std::size_t iu = hint[0] = first_after(P, U, x0, hint[0]), il = hint[1] = first_after(P, L, x0, hint[1]);
   const Abs* a = &x0;
   while (true) {
     while (iu < U.size() && P.cmp(U[iu].x1, *a) <= 0) ++iu;
@@ -496,20 +523,22 @@ void emit_runs(const Picture& P, int p, int q, bool forward, const std::vector<s
   emit(at, P.at(q));
 }
 
-// A run's exact parameters along its segment.
-HorizonPiece piece(const Picture& P, const Run& r) {
-  Rational t0 = P.parameter(r.x0, r.p, r.q), t1 = P.parameter(r.x1, r.p, r.q);
+// A run's exact parameters along its segment, written into `out` (a GMP number is built in
+// place: moving one allocates).
+void piece(const Picture& P, const Run& r, HorizonPiece& out) {
+  out.curve = r.curve, out.segment = r.segment;
+  out.t0 = P.parameter(r.x0, r.p, r.q);
+  out.t1 = P.parameter(r.x1, r.p, r.q);
   if (!r.forward) {
-    Rational u0(1 - t1), u1(1 - t0);
-    t0 = std::move(u0), t1 = std::move(u1);
+    out.t0 = 1 - out.t0, out.t1 = 1 - out.t1;
+    out.t0.swap(out.t1);
   }
-  return HorizonPiece{r.curve, r.segment, std::move(t0), std::move(t1)};
 }
 
 // The exact parameters of the runs (on every core).
 std::vector<HorizonPiece> pieces(const Picture& P, const std::vector<Run>& runs, const ParallelLoop& loop) {
   std::vector<HorizonPiece> out(runs.size());
-  loop.for_each(runs.size(), 256, [&](std::size_t k) { out[k] = piece(P, runs[k]); });
+  loop.for_each(runs.size(), 256, [&](std::size_t k) { piece(P, runs[k], out[k]); });
   return out;
 }
 
@@ -585,7 +614,7 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
   Env U, L;
   LinePool lines;  // the first cut's lines and the side edges' (the horizons keep them)
   LinePool cut_lines;  // a later cut's lines: needed until its runs have their parameters
-  std::vector<HorizonPiece>& visible = res.visible;
+  std::vector<std::vector<HorizonPiece>> parts;  // res.visible, a chunk of a cut each
   for (std::size_t k = 0; k < nz; ++k) {
     const std::size_t j = static_cast<std::size_t>(res.order[k]);
     if (k > 0 && !strip_lines[k]) {
@@ -619,19 +648,19 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
     loop.for_each(part.size(), 1, [&](std::size_t chunk) {
       thread_local std::vector<Run> runs;
       thread_local std::vector<std::pair<Abs, Abs>> hidden;
+      std::array<std::size_t, 2> hint{0, 0};
       runs.clear();
       for (std::size_t i = chunk * kGrain, end = std::min(nx - 1, i + kGrain); i < end; ++i) {
         hidden.clear();
-        if (k > 0) hidden_parts(P, *cut[i], P.at(left[i]), P.at(right[i]), U, L, hidden);
+        if (k > 0) hidden_parts(P, *cut[i], P.at(left[i]), P.at(right[i]), U, L, hidden, hint);
         const std::size_t from = runs.size();
         emit_runs(P, left[i], right[i], forward[i] != 0, hidden, static_cast<int>(j), static_cast<int>(i), runs);
         if (!forward[i]) std::reverse(runs.begin() + static_cast<long>(from), runs.end());
       }
-      part[chunk].reserve(runs.size());
-      for (const Run& r : runs) part[chunk].push_back(piece(P, r));
+      part[chunk].resize(runs.size());
+      for (std::size_t n = 0; n < runs.size(); ++n) piece(P, runs[n], part[chunk][n]);
     });
-    for (std::vector<HorizonPiece>& p : part)
-      for (HorizonPiece& hp : p) visible.push_back(std::move(hp));
+    for (std::vector<HorizonPiece>& p : part) parts.push_back(std::move(p));
     if (k == 0) {  // the nearest cut is the first geometry: a strip of zero width
       Env first;
       const bool fw = forward[0] != 0;
@@ -642,6 +671,21 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
       U = first, L = first;
     }
     res.horizon_breakpoints = std::max({res.horizon_breakpoints, U.size(), L.size()});
+  }
+  {  // swapped into place on every core (a GMP number's move allocates)
+    std::size_t total = 0;
+    for (const std::vector<HorizonPiece>& p : parts) total += p.size();
+    std::vector<std::size_t> at(parts.size() + 1, 0);
+    for (std::size_t n = 0; n < parts.size(); ++n) at[n + 1] = at[n] + parts[n].size();
+    res.visible.resize(total);
+    loop.for_each(parts.size(), 16, [&](std::size_t n) {
+      for (std::size_t m = 0; m < parts[n].size(); ++m) {
+        HorizonPiece &to = res.visible[at[n] + m], &from = parts[n][m];
+        to.curve = from.curve, to.segment = from.segment;
+        to.t0.swap(from.t0), to.t1.swap(from.t1);
+      }
+      std::vector<HorizonPiece>().swap(parts[n]);
+    });
   }
   std::vector<Run> side_runs;
   if (nz >= 2) {
@@ -659,7 +703,8 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
       const int p = fw ? a : b, q = fw ? b : a;
       const Line* edge = P.through(lines, p, q);
       std::vector<std::pair<Abs, Abs>> hidden;
-      hidden_parts(P, *edge, P.at(p), P.at(q), U, L, hidden);
+      std::array<std::size_t, 2> hint{0, 0};
+      hidden_parts(P, *edge, P.at(p), P.at(q), U, L, hidden, hint);
       emit_runs(P, p, q, fw, hidden, static_cast<int>(far), static_cast<int>(j), side_runs);
     }
     for (HorizonPiece& hp : pieces(P, side_runs, loop)) res.side.push_back(std::move(hp));
