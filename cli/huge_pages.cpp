@@ -2,11 +2,13 @@
 // envelopes): on a machine whose page faults are costly (virtual machines) the first touch of
 // fresh memory took half the time of a 1M-triangle render. glibc reads its malloc settings only
 // when a process starts, so the tool sets them and starts itself again (one exec, a few
-// milliseconds). The output does not depend on it; HLR_MALLOC=system turns it off.
+// milliseconds). The output does not depend on it; HLR_MALLOC=system turns it off, HLR_MALLOC=show
+// prints the settings in effect (tests/thread_identity.sh).
 #include "cli/huge_pages.hpp"
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -17,7 +19,10 @@ void use_huge_pages(char** argv) {
   const char* mode = std::getenv("HLR_MALLOC");
   if (mode && std::strcmp(mode, "system") == 0) return;
   const char* old = std::getenv("GLIBC_TUNABLES");
-  if (old && std::strstr(old, "glibc.malloc.hugetlb")) return;  // set by the user, or by the restart
+  if (old && std::strstr(old, "glibc.malloc.hugetlb")) {  // set by the user, or by the restart
+    if (mode && std::strcmp(mode, "show") == 0) std::fprintf(stderr, "hlr: GLIBC_TUNABLES=%s\n", old);
+    return;
+  }
   // hugetlb=1: madvise(MADV_HUGEPAGE) on the heap as it grows; top_pad: grow it 256 MiB at a
   // time (address space; pages are touched only when used); trim_threshold: never give freed
   // memory back to the system mid-run (zeroing it again when it returns cost a third of the

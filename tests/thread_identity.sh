@@ -3,6 +3,8 @@
 # and 8 for line drawings (SVG with hidden lines, exact JSON) of a sphere, a cloud of
 # interpenetrating cubes and 400 random triangles (intersection lines, many cuts), the
 # visible surfaces (--surfaces), a raster (PNG and face ids) and a horizon (SVG and JSON).
+# The same bytes again with HLR_MALLOC=system (no huge pages), and the restart's settings are
+# the ones cli/huge_pages.cpp names, a user's own left alone.
 # Usage: tests/thread_identity.sh HLR GEN_MESH DATA_DIR
 set -euo pipefail
 hlr="$1"; gen="$2"; data="$3"
@@ -20,6 +22,9 @@ same() {  # name, then the command with THREADS where the count goes
     "${@//THREADS/$t}" > "$out" 2> "$work/err" || { echo "$name: --threads $t failed: $(cat "$work/err")"; fail=1; return; }
     if [ -z "$first" ]; then first="$out"; elif ! cmp -s "$first" "$out"; then echo "$name: --threads $t differs from --threads 1"; fail=1; fi
   done
+  # glibc's own malloc settings instead of the huge pages hlr sets for itself (cli/huge_pages.cpp)
+  HLR_MALLOC=system "${@//THREADS/2}" > "$work/$name.system" 2> "$work/err" || { echo "$name: HLR_MALLOC=system failed"; fail=1; return; }
+  cmp -s "$first" "$work/$name.system" || { echo "$name: HLR_MALLOC=system differs"; fail=1; }
   echo "$name: identical on 1, 2 and 8 threads ($(wc -c < "$first") bytes)"
 }
 for m in sphere cubes tris; do
@@ -37,5 +42,13 @@ done
 echo "raster PNG and face ids: compared on 1, 2 and 8 threads"
 same "horizon.svg" "$hlr" horizon --expr "sin(5*x)*cos(4*z)/3" --x -1:1:200 --z -1:1:60 --hidden dashed --threads THREADS
 same "horizon.json" "$hlr" horizon --expr "sin(5*x)*cos(4*z)/3" --x -1:1:60 --z -1:1:20 --format json --threads THREADS
+# The restart: hlr's settings when none are given; a user's glibc.malloc.hugetlb left as it is.
+shown="$(HLR_MALLOC=show "$hlr" --version 2>&1 >/dev/null || true)"
+case "$shown" in
+  *"glibc.malloc.hugetlb=1:glibc.malloc.top_pad=268435456:glibc.malloc.trim_threshold=4294967295"*) echo "huge pages: $shown" ;;
+  *) echo "huge pages: not set by the restart: '$shown'"; fail=1 ;;
+esac
+shown="$(GLIBC_TUNABLES=glibc.malloc.hugetlb=0 HLR_MALLOC=show "$hlr" --version 2>&1 >/dev/null || true)"
+[ "$shown" = "hlr: GLIBC_TUNABLES=glibc.malloc.hugetlb=0" ] || { echo "huge pages: a user's setting changed: '$shown'"; fail=1; }
 [ "$fail" = 0 ] && echo "thread identity: all identical"
 exit "$fail"
