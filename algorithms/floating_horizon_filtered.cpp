@@ -387,6 +387,39 @@ void triangle_sides(const Picture& P, int a, int b, int c, LinePool& lines, Env&
   one.push_back(Seg{P.at(a), P.at(c), ac});
 }
 
+// The upper and lower boundaries of a cell (samples q[0..3] in their order round it) at once,
+// when its picture is a strictly convex quadrilateral with four different abscissas: the
+// union of its two triangles is then the quadrilateral, whose boundary from the leftmost to
+// the rightmost corner is one chain over it and one under it (the diagonal is inside). False
+// (nothing written) otherwise: the caller merges the two triangles.
+bool convex_cell_sides(const Picture& P, const std::array<int, 4>& q, LinePool& lines, Env& up, Env& lo) {
+  const int turn = P.orient(q[0], q[1], q[2]);
+  if (turn == 0 || P.orient(q[1], q[2], q[3]) != turn || P.orient(q[2], q[3], q[0]) != turn || P.orient(q[3], q[0], q[1]) != turn)
+    return false;
+  int left = 0, right = 0;
+  for (int k = 1; k < 4; ++k) {
+    const int l = P.sample_cmp(q[k], q[left]), r = P.sample_cmp(q[k], q[right]);
+    if (l < 0) left = k;
+    if (r > 0) right = k;
+  }
+  for (int k = 0; k < 4; ++k)
+    for (int m = k + 1; m < 4; ++m)
+      if (P.sample_cmp(q[k], q[m]) == 0) return false;
+  // turn > 0: clockwise in (X, Y) (see orient), so the corners after the leftmost in their
+  // order run over the top to the rightmost; turn < 0: under it.
+  Env& forward = turn > 0 ? up : lo;
+  Env& backward = turn > 0 ? lo : up;
+  for (int k = left; k != right; k = (k + 1) % 4) {
+    const int u = q[k], v = q[(k + 1) % 4];
+    forward.push_back(Seg{P.at(u), P.at(v), P.through(lines, u, v)});
+  }
+  for (int k = left; k != right; k = (k + 3) % 4) {
+    const int u = q[k], v = q[(k + 3) % 4];
+    backward.push_back(Seg{P.at(u), P.at(v), P.through(lines, u, v)});
+  }
+  return true;
+}
+
 // acc = merge(acc, add): only the pieces of acc over add's range take part; the ones to the
 // left and right stay as they are (joined to the merged part where the same line goes on).
 // A horizon is the envelope function cut into maximal pieces on one line, so the result is
@@ -598,6 +631,13 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
     for (std::size_t n = 0; n + 1 < nx; ++n) {
       const std::size_t i = fw ? n : nx - 2 - n;
       const int a = idx(i, j0), b = idx(i + 1, j0), cc = idx(i + 1, j1), d = idx(i, j1);
+      tu.clear();
+      tl.clear();
+      if (convex_cell_sides(P, {a, b, cc, d}, scratch, tu, tl)) {  // both triangles at once
+        merge_into(P, up, tu, true);
+        merge_into(P, lo, tl, false);
+        continue;
+      }
       for (auto [p, q, s] : {std::array<int, 3>{a, b, cc}, std::array<int, 3>{a, cc, d}}) {
         tu.clear();
         tl.clear();

@@ -120,12 +120,35 @@ class Dedup {
                                  : (static_cast<std::uint64_t>(ref.segment) << 32) | static_cast<std::uint32_t>(ref.piece + (e & 1));
       keys.emplace_back(key, e);
     }
+    // The vertices of the first body by a table (the partition is the sort's, and a set's root
+    // is its smallest end either way); the rest sorted.
+    constexpr std::uint64_t kBody0 = std::uint64_t{1} << 63;
+    std::uint64_t top = 0;
+    for (const auto& [key, e] : keys)
+      if ((key >> 32) == (kBody0 >> 32)) top = std::max(top, key & 0xffffffffu);
+    if (top < 8 * static_cast<std::uint64_t>(keys.size()) + 1024) {
+      std::vector<std::uint32_t> first(static_cast<std::size_t>(top) + 1, UINT32_MAX);
+      std::size_t rest = 0;
+      for (const auto& [key, e] : keys) {
+        if ((key >> 32) != (kBody0 >> 32)) {
+          keys[rest++] = {key, e};
+          continue;
+        }
+        std::uint32_t& f = first[static_cast<std::size_t>(key & 0xffffffffu)];
+        if (f == UINT32_MAX) f = e;
+        else points_.unite(f, e);
+      }
+      keys.resize(rest);
+    }
     std::sort(std::execution::par, keys.begin(), keys.end());
     for (std::size_t i = 1; i < keys.size(); ++i)
       if (keys[i].first == keys[i - 1].first) points_.unite(keys[i].second, keys[i - 1].second);
   }
 
-  // Ends within delta in both coordinates are compared exactly; farther ones differ.
+  // Ends within delta in both coordinates are compared exactly; farther ones differ. Ends
+  // already joined by their keys are one exact point: of each such group only the ends whose
+  // doubles differ from its root's take part (the root stands for the rest), so the groups
+  // found, and their roots (the smallest end), are those of comparing every end.
   void join_close_points() {
     struct End {
       double x, y;
@@ -136,6 +159,8 @@ class Dedup {
     for (std::uint32_t e = 0; e < points_.parent.size(); ++e)
       if (!pulled(e)) {
         auto p = xy(e);
+        const std::uint32_t root = points_.find(e);
+        if (root != e && xy(root) == p) continue;
         order.push_back({p[0], p[1], e});
       }
     std::sort(std::execution::par, order.begin(), order.end(), [](const End& a, const End& b) {
