@@ -10,6 +10,7 @@
 #include "algorithms/parallel.hpp"
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
+#include "cli/process.hpp"
 #include "cli/drawing_output.hpp"
 #include "io/atomic_file.hpp"
 #include "io/horizon.hpp"
@@ -107,6 +108,7 @@ int run_horizon(const HorizonArgs& a) {
     std::cerr << "timings: sampling " << t_sampling << " s, horizon " << t_horizon << " s, "
               << (plot ? std::string("straight to the 2D stage") : "drawing model " + std::to_string(t_model) + " s")
               << ", 2D stage and format " << t_output << " s, write " << since(t0) << " s\n";
+  exit_without_teardown(0);
   return 0;
 }
 

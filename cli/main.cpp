@@ -6,7 +6,7 @@
 
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
-#include "cli/huge_pages.hpp"
+#include "cli/process.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "kernel/number.hpp"

@@ -9,6 +9,7 @@
 #include "algorithms/parallel.hpp"
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
+#include "cli/process.hpp"
 #include "io/atomic_file.hpp"
 #include "io/raster.hpp"
 #include "algorithms/progress.hpp"
@@ -104,6 +105,7 @@ int run_raster(const RasterArgs& a) {
               << " s, shading " << r.seconds.shading << " s; exact fallbacks: inside " << c.inside_exact << ", depth "
               << c.depth_exact << "\n";
   }
+  exit_without_teardown(0);
   return 0;
 }
 

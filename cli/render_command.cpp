@@ -19,6 +19,7 @@
 #include "cli/clipper_spec.hpp"
 #include "cli/drawing_output.hpp"
 #include "cli/commands.hpp"
+#include "cli/process.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_writer.hpp"
 #include "io/plot_output.hpp"
@@ -199,6 +200,7 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
                 << pr->order.size() << ", pairs " << pr->pairs << ", swaps " << pr->swaps << ", cycles " << pr->cycles << ", cuts "
                 << pr->splits << " (along outlines " << pr->outline_splits << ")\n";
   }
+  exit_without_teardown(0);
   return 0;
 }
 

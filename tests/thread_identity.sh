@@ -4,7 +4,7 @@
 # interpenetrating cubes and 400 random triangles (intersection lines, many cuts), the
 # visible surfaces (--surfaces), a raster (PNG and face ids) and a horizon (SVG and JSON).
 # The same bytes again with HLR_MALLOC=system (no huge pages), and the restart's settings are
-# the ones cli/huge_pages.cpp names, a user's own left alone.
+# the ones cli/process.cpp names, a user's own left alone.
 # Usage: tests/thread_identity.sh HLR GEN_MESH DATA_DIR
 set -euo pipefail
 hlr="$1"; gen="$2"; data="$3"
@@ -22,7 +22,7 @@ same() {  # name, then the command with THREADS where the count goes
     "${@//THREADS/$t}" > "$out" 2> "$work/err" || { echo "$name: --threads $t failed: $(cat "$work/err")"; fail=1; return; }
     if [ -z "$first" ]; then first="$out"; elif ! cmp -s "$first" "$out"; then echo "$name: --threads $t differs from --threads 1"; fail=1; fi
   done
-  # glibc's own malloc settings instead of the huge pages hlr sets for itself (cli/huge_pages.cpp)
+  # glibc's own malloc settings instead of the huge pages hlr sets for itself (cli/process.cpp)
   HLR_MALLOC=system "${@//THREADS/2}" > "$work/$name.system" 2> "$work/err" || { echo "$name: HLR_MALLOC=system failed"; fail=1; return; }
   cmp -s "$first" "$work/$name.system" || { echo "$name: HLR_MALLOC=system differs"; fail=1; }
   echo "$name: identical on 1, 2 and 8 threads ($(wc -c < "$first") bytes)"
