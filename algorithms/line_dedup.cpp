@@ -6,6 +6,7 @@
 #include "algorithms/union_find.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <execution>
 #include <functional>
 #include <cmath>
@@ -265,12 +266,23 @@ class Dedup {
       std::uint32_t at = count[i];
       for_cells(live[i], [&](std::size_t cell) { cell_of[at++] = static_cast<std::uint32_t>(cell); });
     });
-    std::vector<std::uint32_t> start(n_cells + 1, 0);
-    for (std::uint32_t c : cell_of) ++start[c + 1];
-    for (std::size_t c = 0; c < n_cells; ++c) start[c + 1] += start[c];
-    std::vector<std::uint32_t> items(start[n_cells]), fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < live.size(); ++i)
-      for (std::uint32_t at = count[i]; at < count[i + 1]; ++at) items[fill[cell_of[at]]++] = live[i];
+    // Grouped by cell on all cores: a cell's pieces come in any order (the pairs are sorted
+    // before the exact tests, so nothing depends on it).
+    std::vector<std::uint32_t> start(n_cells + 1, 0), items;
+    {
+      std::vector<std::atomic<std::uint32_t>> n(n_cells);
+      loop.run(cell_of.size(), 1 << 16, [&](unsigned, std::size_t b, std::size_t e) {
+        for (std::size_t i = b; i < e; ++i) n[cell_of[i]].fetch_add(1, std::memory_order_relaxed);
+      });
+      for (std::size_t c = 0; c < n_cells; ++c) start[c + 1] = start[c] + n[c].load(std::memory_order_relaxed);
+      for (std::size_t c = 0; c < n_cells; ++c) n[c].store(start[c], std::memory_order_relaxed);
+      items.resize(start[n_cells]);
+      loop.run(live.size(), 4096, [&](unsigned, std::size_t b, std::size_t e) {
+        for (std::size_t i = b; i < e; ++i)
+          for (std::uint32_t at = count[i]; at < count[i + 1]; ++at)
+            items[n[cell_of[at]].fetch_add(1, std::memory_order_relaxed)] = live[i];
+      });
+    }
     // Pairs that pass the double filter, found on all cores; the exact tests in a fixed order.
     std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop.workers());
     loop.run(n_cells, 256, [&](unsigned worker, std::size_t begin, std::size_t end) {
