@@ -390,7 +390,7 @@ void sort_visible(HorizonResult& res) {
   });
 }
 
-HorizonResult floating_horizon_x(const HeightGrid& g, const Camera& cam, unsigned threads) {
+HorizonResult floating_horizon_x(const HeightGrid& g, const Camera& cam, unsigned threads, bool flat) {
   HeightGrid t;
   t.xs = g.zs;
   t.zs = g.xs;
@@ -406,7 +406,7 @@ HorizonResult floating_horizon_x(const HeightGrid& g, const Camera& cam, unsigne
   Camera c = cam;
   c.direction = swap_xz(cam.direction);
   c.up = swap_xz(cam.up);
-  return floating_horizon_filtered(t, c, threads);
+  return floating_horizon_filtered(t, c, threads, nullptr, flat);
 }
 
 bool x_cuts_edge_on(const Camera& camera) { return !camera.perspective && camera.direction.x() == 0; }

@@ -40,6 +40,10 @@ struct HorizonPiece {
 
 struct HorizonResult {
   std::vector<HorizonPiece> visible;  // by curve in drawing order (nearest first), then segment
+  /// Only from floating_horizon_filtered(..., flat = false): `visible` left empty and its
+  /// pieces kept here, in the same order, in the chunks they were computed in (one vector of a
+  /// million GMP numbers costs a serial allocation each; the horizon drawing reads the chunks).
+  std::vector<std::vector<HorizonPiece>> visible_chunks;
   std::vector<int> order;             // the curves, nearest to the viewer first
   std::size_t horizon_breakpoints = 0;  // largest size of the upper or lower horizon
   /// The notes' side edges, the edges (i, j)-(i, j+1) at i = 0 and i = nx - 1 (`curve` = i,
@@ -105,7 +109,7 @@ void sort_visible(HorizonResult& result);
 /// `curve` is then i and `segment` j (the edge from (i, j) to (i, j+1)). Needs a view with an x
 /// component; with none, every x cut lies in a plane through the viewing direction and is seen
 /// edge-on: see x_cuts_edge_on().
-HorizonResult floating_horizon_x(const HeightGrid& grid, const Camera& camera, unsigned threads = 0);
+HorizonResult floating_horizon_x(const HeightGrid& grid, const Camera& camera, unsigned threads = 0, bool flat = true);
 
 /// True when the view has no x component: the x cuts lie in planes through the viewing
 /// direction (each is seen as a vertical line). The first and last (the side edges) are then

@@ -599,7 +599,7 @@ std::unique_ptr<Line[]> compact(Env& up, Env& lo) {
 
 }  // namespace
 
-HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, unsigned threads, HorizonCounters* counters) {
+HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, unsigned threads, HorizonCounters* counters, bool flat) {
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
   const Vector3& v = cam.direction;
   const std::array<Vector3, 2> axes = horizon_axes(g, cam);
@@ -712,7 +712,9 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
     }
     res.horizon_breakpoints = std::max({res.horizon_breakpoints, U.size(), L.size()});
   }
-  {  // swapped into place on every core (a GMP number's move allocates)
+  if (!flat) {
+    res.visible_chunks = std::move(parts);
+  } else {  // swapped into place on every core (a GMP number's move allocates)
     std::size_t total = 0;
     for (const std::vector<HorizonPiece>& p : parts) total += p.size();
     std::vector<std::size_t> at(parts.size() + 1, 0);

@@ -22,8 +22,9 @@ struct HorizonCounters {
 };
 
 /// floating_horizon_exact()'s result, computed on certified doubles (see above); `threads`: 0 =
-/// all cores. Throws std::invalid_argument as floating_horizon_exact() does.
+/// all cores; `flat` = false leaves the visible pieces in HorizonResult::visible_chunks.
+/// Throws std::invalid_argument as floating_horizon_exact() does.
 HorizonResult floating_horizon_filtered(const HeightGrid& grid, const Camera& camera, unsigned threads = 0,
-                                        HorizonCounters* counters = nullptr);
+                                        HorizonCounters* counters = nullptr, bool flat = true);
 
 }  // namespace hlr

@@ -285,28 +285,33 @@ HorizonDrawing::HorizonDrawing(const HeightGrid& g, const Camera& camera, double
   const auto start = std::chrono::steady_clock::now();
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
   const bool z_family = cuts != "x", x_family = cuts != "z" || classic_dx <= 0;  // "z": its side edges
-  if (z_family) h_ = classic_dx > 0 ? floating_horizon_classic(g, camera, classic_dx) : floating_horizon_filtered(g, camera, threads);
+  if (z_family) h_ = classic_dx > 0 ? floating_horizon_classic(g, camera, classic_dx) : floating_horizon_filtered(g, camera, threads, nullptr, false);
   const bool edge_on = x_cuts_edge_on(camera);
   if (edge_on && cuts != "z")
     throw std::invalid_argument("the view has no x component: the x cuts are seen edge-on; give the view an x component (or draw the z cuts)");
-  if (x_family && cuts != "z" && classic_dx <= 0 && !edge_on && nz >= 2) hx_ = floating_horizon_x(g, camera, threads);
+  if (x_family && cuts != "z" && classic_dx <= 0 && !edge_on && nz >= 2) hx_ = floating_horizon_x(g, camera, threads, false);
   if (cuts == "z") hx_.visible = h_.side;  // the side edges, from the z sweep's final horizons
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  // Visible runs by (curve, segment): each pair's runs are consecutive in the sorted lists, so
-  // a table of ranges finds them; each cut edge gets them and hidden pieces between.
-  using Range = std::pair<std::uint32_t, std::uint32_t>;
-  auto ranges = [](const std::vector<HorizonPiece>& list, std::size_t curves, std::size_t segments) {
-    std::vector<Range> out(curves * segments, Range{0, 0});
-    for (std::size_t k = 0; k < list.size(); ++k) {
-      Range& r = out[static_cast<std::size_t>(list[k].curve) * segments + static_cast<std::size_t>(list[k].segment)];
-      if (r.first == r.second) r.first = static_cast<std::uint32_t>(k);
-      r.second = static_cast<std::uint32_t>(k + 1);
-    }
+  // Visible runs by (curve, segment): each pair's runs are consecutive in the sorted lists (in
+  // one chunk where the sweep left them in chunks), so a table of spans finds them; each cut
+  // edge gets them and hidden pieces between.
+  using Range = std::pair<const HorizonPiece*, const HorizonPiece*>;
+  auto ranges = [](const HorizonResult& h, std::size_t curves, std::size_t segments) {
+    std::vector<Range> out(curves * segments, Range{nullptr, nullptr});
+    auto add = [&](const std::vector<HorizonPiece>& pieces) {
+      for (const HorizonPiece& p : pieces) {
+        Range& r = out[static_cast<std::size_t>(p.curve) * segments + static_cast<std::size_t>(p.segment)];
+        if (r.first == r.second) r.first = &p;
+        r.second = &p + 1;
+      }
+    };
+    add(h.visible);
+    for (const std::vector<HorizonPiece>& chunk : h.visible_chunks) add(chunk);
     return out;
   };
   static const Rational zero(0), one(1);
   // One edge per drawn grid edge, visible where the runs say, hidden between.
-  auto add_edge = [&](int v0, int v1, const std::vector<HorizonPiece>* list, Range range) {
+  auto add_edge = [&](int v0, int v1, Range range) {
     Edge e{v0, v1, static_cast<std::uint32_t>(pieces_.size()), 0};
     const Rational* at = &zero;
     auto add = [&](const Rational* t0, const Rational* t1, bool visible) {
@@ -318,39 +323,37 @@ HorizonDrawing::HorizonDrawing(const HeightGrid& g, const Camera& camera, double
       pieces_.push_back(EdgePiece{t0, t1, visible});
       ++e.count;
     };
-    if (list)
-      for (std::uint32_t k = range.first; k < range.second; ++k) {
-        const HorizonPiece& p = (*list)[k];
-        add(at, &p.t0, false);
-        add(&p.t0, &p.t1, true);
-        at = &p.t1;
-      }
+    for (const HorizonPiece* p = range.first; p != range.second; ++p) {
+      add(at, &p->t0, false);
+      add(&p->t0, &p->t1, true);
+      at = &p->t1;
+    }
     add(at, &one, false);
     edges_.push_back(e);
   };
   if (z_family) {
-    const std::vector<Range> runs = ranges(h_.visible, nz, nx > 0 ? nx - 1 : 0);
+    const std::vector<Range> runs = ranges(h_, nz, nx > 0 ? nx - 1 : 0);
     for (int j : h_.order)
       for (std::size_t i = 0; i + 1 < nx; ++i) {
         int v0 = static_cast<int>(static_cast<std::size_t>(j) * nx + i);
-        add_edge(v0, v0 + 1, &h_.visible, runs[static_cast<std::size_t>(j) * (nx - 1) + i]);
+        add_edge(v0, v0 + 1, runs[static_cast<std::size_t>(j) * (nx - 1) + i]);
       }
   }
   // The x cuts (all of them, or the side edges i = 0 and i = nx - 1 with the z cuts).
   if (x_family && classic_dx <= 0 && nz >= 2) {
     // hx.visible by (x cut i, segment j); the side edges (cuts == "z") come sorted by curve,
     // segment and t too.
-    const std::vector<Range> xruns = ranges(hx_.visible, nx, nz - 1);
+    const std::vector<Range> xruns = ranges(hx_, nx, nz - 1);
     static const std::vector<HorizonPiece> whole{{0, 0, Rational(0), Rational(1)}};
     for (std::size_t i = 0; i < nx; ++i) {
       if (cuts == "z" && i != 0 && i + 1 != nx) continue;
       for (std::size_t j = 0; j + 1 < nz; ++j) {
         int v0 = static_cast<int>(j * nx + i), v1 = static_cast<int>((j + 1) * nx + i);
         if (edge_on && cuts != "z") {  // the side edges, seen edge-on: visible whole (see x_cuts_edge_on)
-          add_edge(v0, v1, &whole, Range{0, 1});
+          add_edge(v0, v1, Range{whole.data(), whole.data() + 1});
           continue;
         }
-        add_edge(v0, v1, &hx_.visible, xruns[i * (nz - 1) + j]);
+        add_edge(v0, v1, xruns[i * (nz - 1) + j]);
       }
     }
   }
