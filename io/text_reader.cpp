@@ -2,10 +2,10 @@
 #include "io/text_reader.hpp"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <memory>
 
 namespace hlr {
 
@@ -17,12 +17,22 @@ std::string read_file_bytes(const std::string& path) {
     throw InputError(path, 0, "is not a regular file");
   if (!ec && std::filesystem::exists(status) && std::filesystem::file_size(path, ec) > kMaxInputBytes)
     throw InputError(path, 0, "is larger than " + std::to_string(kMaxInputBytes >> 30) + " GiB, the most hlr reads");
-  std::ifstream in(path, std::ios::binary);
+  // One read into a string of the file's size (a stream copy grew its buffer by doubling and
+  // copied 38 MB several times), then whatever more there is (a file still growing, a pipe).
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> in(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!in) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw InputError(path, 0, "read error");
-  return std::move(ss).str();
+  std::uintmax_t size = !ec && std::filesystem::is_regular_file(status) ? std::filesystem::file_size(path, ec) : 0;
+  if (ec) size = 0;
+  std::string out(static_cast<std::size_t>(size), '\0');
+  std::size_t got = size > 0 ? std::fread(out.data(), 1, out.size(), in.get()) : 0;
+  out.resize(got);
+  char buf[1 << 16];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, in.get())) > 0;) {
+    if (out.size() + n > kMaxInputBytes) throw InputError(path, 0, "is larger than " + std::to_string(kMaxInputBytes >> 30) + " GiB, the most hlr reads");
+    out.append(buf, n);
+  }
+  if (std::ferror(in.get())) throw InputError(path, 0, "read error");
+  return out;
 }
 
 TokenStream::TokenStream(std::string_view text, std::string file, std::size_t offset)
