@@ -41,7 +41,7 @@ class Vector3 {
 /// An exact 3D point. Same representation as Vector3, a different meaning.
 class Point3 {
  public:
-  Point3() : Point3(Rational(0), Rational(0), Rational(0)) {}
+  Point3() {}  // the origin: zeros, whose bounds are {0, 0} (no temporaries: readers resize to millions)
   Point3(Rational x, Rational y, Rational z);
   const Rational& x() const { return c_[0]; }
   const Rational& y() const { return c_[1]; }
