@@ -458,8 +458,6 @@ void merge_into(const Picture& P, Env& acc, const Env& add, bool upper) {
   }
 }
 
-// floating_horizon.cpp's hidden_parts(): the hidden open intervals of the segment on `line` over
-// (x0, x1), where L < segment < U.
 // The first piece of `e` ending after x (e.size() if none), searched from `hint` outwards by
 // doubling steps, then by halves (a cut's segments come in order: the answer is near the last).
 std::size_t first_after(const Picture& P, const Env& e, const Abs& x, std::size_t hint) {
@@ -491,6 +489,9 @@ std::size_t first_after(const Picture& P, const Env& e, const Abs& x, std::size_
       e.begin());
 }
 
+// floating_horizon.cpp's hidden_parts(): the hidden open intervals of the segment on `line` over
+// (x0, x1), where L < segment < U.
+// `hint`: where the previous segment's search in U and L ended (updated).
 void hidden_parts(const Picture& P, const Line& line, const Abs& x0, const Abs& x1, const Env& U, const Env& L,
                   std::vector<std::pair<Abs, Abs>>& out, std::array<std::size_t, 2>& hint) {
   // The sub-intervals between consecutive breakpoints of U and L inside (x0, x1), walked in
@@ -715,11 +716,9 @@ HorizonResult floating_horizon_filtered(const HeightGrid& g, const Camera& cam, 
   if (!flat) {
     res.visible_chunks = std::move(parts);
   } else {  // swapped into place on every core (a GMP number's move allocates)
-    std::size_t total = 0;
-    for (const std::vector<HorizonPiece>& p : parts) total += p.size();
     std::vector<std::size_t> at(parts.size() + 1, 0);
     for (std::size_t n = 0; n < parts.size(); ++n) at[n + 1] = at[n] + parts[n].size();
-    res.visible.resize(total);
+    res.visible.resize(at.back());
     loop.for_each(parts.size(), 16, [&](std::size_t n) {
       for (std::size_t m = 0; m < parts[n].size(); ++m) {
         HorizonPiece &to = res.visible[at[n] + m], &from = parts[n][m];
