@@ -7,6 +7,7 @@
 #include "algorithms/face_engine.hpp"
 #include "algorithms/face_triangles.hpp"
 #include "algorithms/facing.hpp"
+#include "algorithms/parallel.hpp"
 
 namespace hlr::face_route {
 namespace {
@@ -96,17 +97,26 @@ int Engine<P>::triangulate_body(int b) {
   degenerate_[b].assign(faces.size(), 0);
   face_normal_[b].resize(faces.size());
   const int first_tri = static_cast<int>(tris_.size());
+  // Triangles' normals and facing on all cores (integer arithmetic on the shared coordinates;
+  // each face writes its own slots), then the triangles listed in face order.
+  ParallelLoop(opt_.threads).for_each(faces.size(), 4096, [&](std::size_t f) {
+    const Face& face = faces[f];
+    if (face.size() != 3) return;
+    Tri probe{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}};
+    Vec<P> n = normal(probe);
+    if (P::sign(n[0]) == 0 && P::sign(n[1]) == 0 && P::sign(n[2]) == 0) {
+      degenerate_[b][f] = 1;  // zero area: neither occludes nor faces
+      return;
+    }
+    facing[f] = facing_sign<P>(n, X_[probe.v[0]], view_, cam_.perspective);
+    face_normal_[b][f] = std::move(n);
+  });
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const Face& face = faces[f];
     static const std::vector<FaceTriangle> kTriangle = {{{0, 1, 2}, {true, true, true}}};
     FaceTriangles ft;  // triangles need no triangulation (nor an allocation each)
     if (face.size() == 3) {
-      Tri probe{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}};
-      Vec<P> n = normal(probe);
-      if (P::sign(n[0]) == 0 && P::sign(n[1]) == 0 && P::sign(n[2]) == 0) {
-        degenerate_[b][f] = 1;  // zero area: neither occludes nor faces
-        continue;
-      }
+      if (degenerate_[b][f]) continue;
     } else {
       ft = face_triangles(p, static_cast<int>(f));
       if (ft.status == FaceTriangles::Status::Degenerate) {
@@ -121,6 +131,7 @@ int Engine<P>::triangulate_body(int b) {
         if (t.edge[k]) topo.slot_third[fo[f] + t.v[k]] = tri.v[(k + 2) % 3];  // side k's opposite vertex
       tris_.push_back(tri);
     }
+    if (face.size() == 3) continue;  // normal and facing above
     face_normal_[b][f] = normal(tris_.back());
     facing[f] = facing_sign<P>(face_normal_[b][f], X_[tris_.back().v[0]], view_, cam_.perspective);
   }

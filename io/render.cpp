@@ -97,12 +97,20 @@ Lighting scene_lighting(const std::vector<Scene>& scenes, const Camera& cam) {
 // The flat colour of face f of body b under `light`, for the side the viewer sees (facing -1:
 // the back side).
 // `n`: the face's unit normal.
-Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Lighting& light, bool back, std::array<double, 3> n) {
+// The camera's eye and unit view direction in doubles, once per drawing (each costs exact
+// copies).
+struct ViewDoubles {
+  std::array<double, 3> eye, view;
+  explicit ViewDoubles(const Camera& c) : eye(d3(c.eye)), view(unit3(d3(c.direction))) {}
+};
+
+Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Lighting& light, bool back, std::array<double, 3> n,
+                const ViewDoubles& vd) {
   const Polyhedron& p = r.bodies[b]->body;
   Material m;
   m.colour = palette_colour(static_cast<int>(b));
   if (r.bodies[b]->material) m = *r.bodies[b]->material;
-  const std::array<double, 3> eye = d3(r.camera.eye), view = unit3(d3(r.camera.direction));
+  const std::array<double, 3>&eye = vd.eye, &view = vd.view;
   if (back) n = {-n[0], -n[1], -n[2]};
   std::array<double, 3> c{0, 0, 0};
   for (int v : p.faces()[f]) {
@@ -113,21 +121,22 @@ Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Light
   return shade(m, light, c, n, to_viewer);
 }
 
-Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Lighting& light, bool back) {
+Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Lighting& light, bool back, const ViewDoubles& vd) {
   const Plane& h = r.bodies[b]->body.planes()[f];
-  return face_colour(r, b, f, light, back, unit3({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))}));
+  return face_colour(r, b, f, light, back, unit3({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))}), vd);
 }
 
 // Flat colour of every face, for the side the viewer sees (facing: 1 front, -1 back, 0 edge-on).
 void shade_faces(RenderResult& r, const std::vector<Scene>& scenes, const LineDrawing& all) {
   const Lighting light = scene_lighting(scenes, r.camera);
   r.face_colours.resize(r.bodies.size());
+  const ViewDoubles vd(r.camera);
   for (std::size_t b = 0; b < r.bodies.size(); ++b) {
     const Polyhedron& p = r.bodies[b]->body;
     r.face_colours[b].resize(p.num_faces());
     ParallelLoop().for_each(p.num_faces(), 256, [&](std::size_t f) {
       bool back = b < all.facing.size() && f < all.facing[b].size() && all.facing[b][f] < 0;
-      r.face_colours[b][f] = face_colour(r, b, f, light, back);
+      r.face_colours[b][f] = face_colour(r, b, f, light, back, vd);
     });
   }
 }
@@ -202,6 +211,7 @@ void solve_shadows(RenderResult& r, const std::vector<const Polyhedron*>& polys,
   so.threads = o.lines.threads;
   r.shadows = shadows(polys, r.camera, *r.surfaces, light_places(light), so);
   r.shadow_colours.resize(r.shadows->faces.size());
+  const ViewDoubles vd(r.camera);
   ParallelLoop(o.lines.threads).for_each(r.shadows->faces.size(), 4, [&](std::size_t k) {
     const ShadowFace& f = r.shadows->faces[k];
     bool back = static_cast<std::size_t>(f.body) < all.facing.size() && all.facing[f.body][f.face] < 0;
@@ -210,7 +220,7 @@ void solve_shadows(RenderResult& r, const std::vector<const Polyhedron*>& polys,
       some.lights.clear();
       for (std::size_t i = 0; i < light.lights.size(); ++i)
         if ((reg.lights >> i) & 1u) some.lights.push_back(light.lights[i]);
-      r.shadow_colours[k].push_back(face_colour(r, f.body, f.face, some, back));
+      r.shadow_colours[k].push_back(face_colour(r, f.body, f.face, some, back, vd));
     }
   });
 }
@@ -445,13 +455,14 @@ std::array<double, 3> face_normal(const Polyhedron& p, std::size_t f) {
 
 std::vector<std::vector<Rgb>> flat_face_colours(const RenderResult& r, const std::vector<std::vector<char>>* only) {
   const Lighting light = render_lighting(r);
+  const ViewDoubles vd(r.camera);
   std::vector<std::vector<Rgb>> out(r.bodies.size());
   for (std::size_t b = 0; b < r.bodies.size(); ++b) {
     out[b].resize(r.bodies[b]->body.num_faces());
     ParallelLoop().for_each(out[b].size(), 256, [&](std::size_t f) {
       const bool back = b < r.drawing.facing.size() && f < r.drawing.facing[b].size() && r.drawing.facing[b][f] < 0;
       if (only && !(*only)[b][f]) return;
-      out[b][f] = face_colour(r, b, f, light, back, face_normal(r.bodies[b]->body, f));
+      out[b][f] = face_colour(r, b, f, light, back, face_normal(r.bodies[b]->body, f), vd);
     });
   }
   return out;
