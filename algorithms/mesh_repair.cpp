@@ -1,6 +1,9 @@
 // Mesh repairs (see mesh_repair.hpp).
 #include "algorithms/mesh_repair.hpp"
 
+#include <atomic>
+
+#include "algorithms/parallel.hpp"
 #include "kernel/predicates.hpp"
 
 namespace hlr {
@@ -26,6 +29,14 @@ bool middle_of(const std::vector<Point3>& vs, const Face& f, int& a, int& m, int
 
 std::optional<MeshRepair> remove_zero_area_triangles(const Polyhedron& body) {
   const std::vector<Point3>& vs = body.vertices();
+  // Most meshes have none: look on all cores first, copy the faces only to repair.
+  std::atomic<bool> any{false};
+  ParallelLoop().run(body.faces().size(), 8192, [&](unsigned, std::size_t b, std::size_t e) {
+    int a, m, c;
+    for (std::size_t f = b; f < e && !any.load(std::memory_order_relaxed); ++f)
+      if (middle_of(vs, body.faces()[f], a, m, c)) any = true;
+  });
+  if (!any) return std::nullopt;
   std::vector<Face> faces = body.faces();
   int removed = 0;
   std::string which;

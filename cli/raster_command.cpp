@@ -100,7 +100,7 @@ int run_raster(const RasterArgs& a) {
     const RasterCounters& c = r.scene.counters;
     std::cerr << std::fixed;
     std::cerr.precision(3);
-    std::cerr << "timings: faces " << faces << ", polygons " << r.scene.polygons.size() << ", facing " << r.seconds.setup
+    std::cerr << "timings: faces " << faces << ", polygons " << r.scene.polygons.size() << ", load " << r.seconds.load << " s, facing " << r.seconds.setup
               << " s, raster scene " << r.seconds.scene << " s, " << to_string(o.algorithm) << " " << r.seconds.visibility
               << " s, shading " << r.seconds.shading << " s; exact fallbacks: inside " << c.inside_exact << ", depth "
               << c.depth_exact << "\n";

@@ -398,9 +398,13 @@ RasterResult raster(std::vector<Scene> scenes, const RasterOptions& o) {
 }
 
 RasterResult raster_files(const std::vector<std::string>& inputs, const RasterOptions& o) {
+  const auto t0 = Clock::now();
   std::vector<Scene> scenes;
   for (const auto& in : inputs) scenes.push_back(is_scene_file(in) ? load_scene(in) : scene_from_mesh(in));
-  return raster(std::move(scenes), o);
+  const double load = since(t0);
+  RasterResult r = raster(std::move(scenes), o);
+  r.seconds.load = load;
+  return r;
 }
 
 namespace {

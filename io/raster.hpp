@@ -41,6 +41,7 @@ struct RasterOptions {
 };
 
 struct RasterTimes {
+  double load = 0;  // reading the files (raster_files only)
   double setup = 0, scene = 0, visibility = 0, shading = 0;
 };
 
