@@ -444,6 +444,11 @@ void merge_into(const Picture& P, Env& acc, const Env& add, bool upper) {
                 ? acc.end()
                 : std::lower_bound(lo, acc.end(), add.back().x1, [&](const Seg& p, const Abs& v) { return P.cmp(p.x0, v) < 0; });
   thread_local Env middle, merged, tail;
+  if (lo == acc.begin() && hi == acc.end()) {  // add spans all of acc (a strip into a horizon): no copies
+    merge(P, acc, add, upper, merged);
+    acc.swap(merged);
+    return;
+  }
   middle.assign(lo, hi);
   merge(P, middle, add, upper, merged);
   tail.assign(hi, acc.end());
