@@ -91,7 +91,9 @@ void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk) const 
   const bool hides = static_cast<std::size_t>(s.body) >= opt_.see_through.size() || !opt_.see_through[s.body];
   if (s.self_hidden && hides) {  // its own front faces hide it
     const bool front = gv[0] >= 0 && vfront_[gv[0]] && vfront_[gv[1]];
-    s.pieces = pieces_from_hidden({{Rational(0), Rational(1)}}, front ? std::nullopt : depth_of(s));
+    std::vector<std::pair<Rational, Rational>> all;  // built in place (a braced list copies)
+    all.emplace_back(0, 1);
+    s.pieces = pieces_from_hidden(std::move(all), front ? std::nullopt : depth_of(s));
     return;
   }
   // The segment's screen box; Box::dmin holds its farthest depth here. In perspective only its

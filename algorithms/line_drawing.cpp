@@ -40,10 +40,16 @@ void Segment::set_ends(Point3 a, Point3 b) {
 
 std::vector<Piece> pieces_from_hidden(std::vector<std::pair<Rational, Rational>> hidden,
                                       const std::optional<std::pair<Rational, Rational>>& depth) {
-  // Common cases without any arithmetic: nothing hidden, or one span over the whole edge.
-  if (!depth && hidden.empty()) return {Piece{Rational(0), Rational(1), true}};
-  if (!depth && hidden.size() == 1 && hidden[0].first == 0 && hidden[0].second == 1)
-    return {Piece{Rational(0), Rational(1), false}};
+  // Common cases without any arithmetic: nothing hidden, or one span over the whole edge (the
+  // piece built in place: a braced list copies its GMP numbers, six allocations per edge).
+  auto whole = [](bool visible) {
+    std::vector<Piece> out(1);
+    out[0].t1 = 1;
+    out[0].visible = visible;
+    return out;
+  };
+  if (!depth && hidden.empty()) return whole(true);
+  if (!depth && hidden.size() == 1 && hidden[0].first == 0 && hidden[0].second == 1) return whole(false);
   std::sort(hidden.begin(), hidden.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<std::pair<Rational, Rational>> merged;
   for (auto& s : hidden) {
