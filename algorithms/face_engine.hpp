@@ -111,8 +111,15 @@ class Engine {
   void test_integer(const Occluder<P>& o, const Vec<P>& X0, const Vec<P>& X1, Work& wk) const;
   bool end_on_hides(const Occluder<P>& o, int on_side) const;
   void merge(Work& wk, std::vector<std::pair<Rational, Rational>>& out) const;
-  void test_rational(const Occluder<P>& o, const std::array<Rational, 3>& A, const std::array<Rational, 3>& B,
-                     std::vector<std::pair<Rational, Rational>>& out, Work& wk) const;
+  /// A segment with rational ends (scaled like the points) and their doubles for the filter.
+  struct RationalEnds {
+    std::array<Rational, 3> A, B;
+    std::array<double, 3> Ad, Bd;
+    bool filter = true;  // the doubles are fit for filtered_sign
+  };
+  static int filtered_sign(const Occluder<P>& o, int k, const std::array<double, 3>& X);
+  void test_rational(const Occluder<P>& o, const RationalEnds& e, std::vector<std::pair<Rational, Rational>>& out,
+                     Work& wk) const;
 
   const std::vector<const Polyhedron*>& bodies_;
   const Camera& cam_;

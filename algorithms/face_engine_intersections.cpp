@@ -4,11 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <tuple>
 
 #include "algorithms/face_engine.hpp"
 #include "algorithms/intersection_broad_phase.hpp"
 #include "algorithms/intersection_lines.hpp"
+#include "algorithms/parallel.hpp"
 
 namespace hlr::face_route {
 namespace {
@@ -72,20 +74,23 @@ void Engine<P>::add_intersections(LineDrawing& res) {
   });
   res.stats.faces->intersection_pairs = pairs.tested;
   const auto& hits = pairs.kept;
-  std::vector<Line> segs;
-  for (auto [ta, tc] : hits) {
-    const Tri &x = tris_[ta], &y = tris_[tc];
+  // The exact segments on all cores, each pair into its own slot (then in pair order).
+  std::vector<std::optional<Line>> found(hits.size());
+  ParallelLoop(opt_.threads).for_each(hits.size(), 64, [&](std::size_t i) {
+    const Tri &x = tris_[hits[i].first], &y = tris_[hits[i].second];
     TriangleRef rx{{&world(x.v[0]), &world(x.v[1]), &world(x.v[2])}, x.edge};
     TriangleRef ry{{&world(y.v[0]), &world(y.v[1]), &world(y.v[2])}, y.edge};
     auto seg = triangle_intersection(rx, ry);
-    if (!seg) continue;
+    if (!seg) return;
     bool swap = y.body < x.body;
     const Tri& f = swap ? y : x;
     const Tri& g = swap ? x : y;
-    Point3 a = seg->first, b = seg->second;
-    if (b < a) std::swap(a, b);
-    segs.emplace_back(f.body, g.body, f.face, g.face, a, b);
-  }
+    if (seg->second < seg->first) std::swap(seg->first, seg->second);
+    found[i].emplace(f.body, g.body, f.face, g.face, std::move(seg->first), std::move(seg->second));
+  });
+  std::vector<Line> segs;
+  for (auto& l : found)
+    if (l) segs.push_back(std::move(*l));
   // The same segment from two triangles of one face (along a diagonal): once.
   std::sort(segs.begin(), segs.end(), [](const auto& p, const auto& q) {
     if (std::get<0>(p) != std::get<0>(q)) return std::get<0>(p) < std::get<0>(q);
@@ -97,10 +102,10 @@ void Engine<P>::add_intersections(LineDrawing& res) {
   });
   std::vector<Line> uniq;
   for (std::size_t i = 0; i < segs.size(); ++i) {
-    if (i > 0 && std::get<0>(segs[i - 1]) == std::get<0>(segs[i]) && std::get<1>(segs[i - 1]) == std::get<1>(segs[i]) &&
-        std::get<4>(segs[i - 1]) == std::get<4>(segs[i]) && std::get<5>(segs[i - 1]) == std::get<5>(segs[i]))
+    if (!uniq.empty() && std::get<0>(uniq.back()) == std::get<0>(segs[i]) && std::get<1>(uniq.back()) == std::get<1>(segs[i]) &&
+        std::get<4>(uniq.back()) == std::get<4>(segs[i]) && std::get<5>(uniq.back()) == std::get<5>(segs[i]))
       continue;
-    uniq.push_back(segs[i]);
+    uniq.push_back(std::move(segs[i]));
   }
   join_collinear(uniq);
   for (auto& [b0, b1, f0, f1, a, b] : uniq) {

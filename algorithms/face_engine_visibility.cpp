@@ -138,12 +138,18 @@ void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk) const 
     for (int i : wk.cand) test_integer(occ_[i], X_[gv[0]], X_[gv[1]], wk);
     merge(wk, hidden);
   } else {
-    std::array<Rational, 3> A, B;
+    RationalEnds ends;
     for (int k = 0; k < 3; ++k) {
-      A[k] = s.from()[k] * scale_;
-      B[k] = s.to()[k] * scale_;
+      ends.A[k] = s.from()[k] * scale_;
+      ends.B[k] = s.to()[k] * scale_;
+      ends.Ad[k] = ends.A[k].get_d();
+      ends.Bd[k] = ends.B[k].get_d();
+      for (double v : {ends.Ad[k], ends.Bd[k]})  // normal or exactly zero (see filtered_sign)
+        if (!std::isfinite(v) || (v != 0 && std::fabs(v) < 0x1p-1000)) ends.filter = false;
+      if ((ends.Ad[k] == 0) != (sgn(ends.A[k]) == 0) || (ends.Bd[k] == 0) != (sgn(ends.B[k]) == 0))
+        ends.filter = false;
     }
-    for (int i : wk.cand) test_rational(occ_[i], A, B, hidden, wk);
+    for (int i : wk.cand) test_rational(occ_[i], ends, hidden, wk);
   }
   // Both ends strictly in front of the eye: no part is behind it, the depths are not needed.
   s.pieces = pieces_from_hidden(std::move(hidden), front[0] && front[1] ? std::nullopt : depth_of(s));
@@ -209,11 +215,39 @@ void Engine<P>::merge(Work& wk, std::vector<std::pair<Rational, Rational>>& out)
   for (auto& m : merged) out.push_back({rat(m.first), rat(m.second)});
 }
 
-// The same on rational end points (intersection lines), values m·(L·P) - c.
+// Sign of m·X - c from doubles, or 0 when the filter cannot tell. Each input is within 2u
+// of its exact value (mpq_get_d and mpz_get_d truncate; Int128 and int64 conversions round),
+// each product adds u and the three additions u each, so the computed value is within
+// (2u + 2u + u + 3u)·S + O(u²) < 9u·S of the exact one, S = Σ|m_j X_j| + |c| (u = 2^-53).
+// The bound used, 2e-15·S_d, exceeds 18u·S_d, and S_d >= S·(1 - 8u); the floor covers
+// products that underflowed. The caller uses it only on ends whose doubles are zero exactly
+// when the rational is, and otherwise normal above 2^-1000 (so no product of an integer and a
+// coordinate underflows). S_d not finite (a value beyond the double range): no decision.
 template <class P>
-void Engine<P>::test_rational(const Occluder<P>& o, const std::array<Rational, 3>& A, const std::array<Rational, 3>& B,
-                   std::vector<std::pair<Rational, Rational>>& out, Work& wk) const {
+int Engine<P>::filtered_sign(const Occluder<P>& o, int k, const std::array<double, 3>& X) {
+  double s = -P::dbl(o.c[k]), mag = std::fabs(s);
+  for (int j = 0; j < 3; ++j) {
+    const double t = P::cdbl(o.m[k][j]) * X[j];
+    s += t;
+    mag += std::fabs(t);
+  }
+  if (!std::isfinite(mag)) return 0;
+  const double bound = 2e-15 * mag + 1e-300;
+  return s > bound ? 1 : (s < -bound ? -1 : 0);
+}
+
+// The same on rational end points (intersection lines), values m·X - c. A filter on doubles
+// first: an occluder whose inequality k is certainly not positive at both ends hides nothing
+// of the segment (the exact loop would return at k too: the result does not depend on the
+// order of k). The rest is decided on the exact values.
+template <class P>
+void Engine<P>::test_rational(const Occluder<P>& o, const RationalEnds& e,
+                              std::vector<std::pair<Rational, Rational>>& out, Work& wk) const {
   ++wk.pairs;
+  for (int k = 0; e.filter && k < 4; ++k)
+    if (filtered_sign(o, k, e.Ad) < 0 && filtered_sign(o, k, e.Bd) < 0) return;
+  const auto& A = e.A;
+  const auto& B = e.B;
   Rational lo = 0, hi = 1;
   int on_side = 0;
   for (int k = 0; k < 4; ++k) {

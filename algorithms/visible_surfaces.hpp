@@ -39,6 +39,15 @@ struct VisiblePolygon {
   std::vector<Exact2> outer_2d;
   std::vector<std::vector<Exact2>> holes_2d;
   Rational area2;
+
+  // Moves declared noexcept so that vectors of polygons move them when they grow (mpq_class's
+  // move is not noexcept, so the defaulted one would copy every point). It cannot throw: it
+  // allocates only in mpq_init, and GMP aborts rather than throw when memory runs out.
+  VisiblePolygon() = default;
+  VisiblePolygon(const VisiblePolygon&) = default;
+  VisiblePolygon& operator=(const VisiblePolygon&) = default;
+  VisiblePolygon(VisiblePolygon&&) noexcept = default;
+  VisiblePolygon& operator=(VisiblePolygon&&) noexcept = default;
 };
 
 struct VisibleFace {

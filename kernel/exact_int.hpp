@@ -71,6 +71,7 @@ struct Fast {
   static V mul(C a, C b) { return static_cast<V>(a) * b; }
   static int sign(const V& v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
   static double dbl(const V& v) { return static_cast<double>(v); }
+  static double cdbl(C v) { return static_cast<double>(v); }
   /// n/d for the split-parameter filter: both below 2^127, finite doubles, 3 roundings.
   static double ratio(const V& n, const V& d) { return dbl(n) / dbl(d); }
   static int compare(const V& a, const V& b, const V& c, const V& d) { return compare_products(a, b, c, d); }
@@ -86,6 +87,7 @@ struct Fast40 {
   static V mul(C a, C b) { return a * b; }
   static int sign(const V& v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
   static double dbl(const V& v) { return static_cast<double>(v); }
+  static double cdbl(const C& v) { return static_cast<double>(v); }
   static double ratio(const V& n, const V& d) { return dbl(n) / dbl(d); }
   static int compare(const V& a, const V& b, const V& c, const V& d) { return compare_products(a, b, c, d); }
   static mpz_class z(const V& v) { return to_mpz(v); }
@@ -99,6 +101,7 @@ struct Big {
   static V mul(const C& a, const C& b) { return a * b; }
   static int sign(const V& v) { return sgn(v); }
   static double dbl(const V& v) { return v.get_d(); }
+  static double cdbl(const C& v) { return v.get_d(); }
   /// n/d for the filter without overflow: GMP integers reach far beyond the doubles (a
   /// coordinate with a 150-digit denominator gives plane values of 450 digits), so the two
   /// are taken as mantissa·2^exponent and divided, then scaled back (mpz_get_d_2exp truncates:
