@@ -102,6 +102,7 @@ class Engine {
   bool may_meet(const Tri& x, const Tri& y) const;
   bool extent_on_plane(const Tri& t, const Tri& o, int axis, double out[2], double& scale) const;
   bool straddles(const Tri& x, const Tri& y) const;
+  std::optional<std::pair<Point3, Point3>> segment(const Tri& x, const Tri& y) const;
   const Point3& world(int g) const;
   // face_engine_visibility.cpp
   void visibility(LineDrawing& res);
@@ -113,7 +114,8 @@ class Engine {
   void merge(Work& wk, std::vector<std::pair<Rational, Rational>>& out) const;
   /// A segment with rational ends (scaled like the points) and their doubles for the filter.
   struct RationalEnds {
-    std::array<Rational, 3> A, B;
+    std::array<mpz_class, 3> a, b;  // A = a / da, B = b / db (common denominators, positive)
+    mpz_class da, db;
     std::array<double, 3> Ad, Bd;
     bool filter = true;  // the doubles are fit for filtered_sign
   };

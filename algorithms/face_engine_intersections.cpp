@@ -78,9 +78,7 @@ void Engine<P>::add_intersections(LineDrawing& res) {
   std::vector<std::optional<Line>> found(hits.size());
   ParallelLoop(opt_.threads).for_each(hits.size(), 64, [&](std::size_t i) {
     const Tri &x = tris_[hits[i].first], &y = tris_[hits[i].second];
-    TriangleRef rx{{&world(x.v[0]), &world(x.v[1]), &world(x.v[2])}, x.edge};
-    TriangleRef ry{{&world(y.v[0]), &world(y.v[1]), &world(y.v[2])}, y.edge};
-    auto seg = triangle_intersection(rx, ry);
+    auto seg = segment(x, y);
     if (!seg) return;
     bool swap = y.body < x.body;
     const Tri& f = swap ? y : x;
@@ -120,6 +118,89 @@ void Engine<P>::add_intersections(LineDrawing& res) {
     ++res.stats.intersection_segments;
     res.segments.push_back(std::move(s));
     gv_.push_back({-1, -1});
+  }
+}
+
+// The exact segment of two triangles (triangle_intersection's rules: no line when the planes
+// are parallel, either triangle meets the other's plane in fewer than two points or along a
+// mesh edge). Under Fast on the integer coordinates: a crossing point of edge p_k p_j with
+// plane values s_k, s_j is (p_k·(-s_j) + p_j·s_k) / (s_k - s_j); with |p| < 2^29 and
+// |s| < 2^93 the numerators stay below 2^123 and the denominators below 2^94 (Int128). All
+// points lie on the planes' common line, so their order along it is their order along one
+// axis where the line's direction u is not zero (times u's sign there), compared as products
+// in 256 bits. Only the two ends become rationals (divided by the scale). Other policies: in
+// rationals.
+template <class P>
+std::optional<std::pair<Point3, Point3>> Engine<P>::segment(const Tri& x, const Tri& y) const {
+  if constexpr (!std::is_same_v<P, Fast>) {
+    TriangleRef rx{{&world(x.v[0]), &world(x.v[1]), &world(x.v[2])}, x.edge};
+    TriangleRef ry{{&world(y.v[0]), &world(y.v[1]), &world(y.v[2])}, y.edge};
+    return triangle_intersection(rx, ry);
+  } else {
+    struct Pt {
+      Int128 num[3], den;
+    };
+    struct Cut {
+      Pt p[2];
+      int n = 0;
+      bool along = false;
+    };
+    auto cut = [&](const Tri& t, const Vec<P>& nrm, const Vec<P>& q, Cut& c) {
+      Int128 sv[3];
+      int sg[3], zeros = 0;
+      for (int k = 0; k < 3; ++k) {
+        sv[k] = dot<P>(nrm, sub<P>(X_[t.v[k]], q));
+        sg[k] = P::sign(sv[k]);
+        zeros += sg[k] == 0;
+      }
+      if (zeros == 3) return;
+      for (int k = 0; k < 3; ++k) {
+        const int j = (k + 1) % 3;
+        const Vec<P>&a = X_[t.v[k]], &b = X_[t.v[j]];
+        if (sg[k] == 0 && c.n < 2) c.p[c.n++] = Pt{{a[0], a[1], a[2]}, 1};
+        if (sg[k] * sg[j] < 0 && c.n < 2) {
+          Int128 d = sv[k] - sv[j];
+          const int flip = d < 0 ? -1 : 1;
+          Pt r;
+          for (int i = 0; i < 3; ++i) r.num[i] = flip * (static_cast<Int128>(a[i]) * -sv[j] + static_cast<Int128>(b[i]) * sv[k]);
+          r.den = flip * d;
+          c.p[c.n++] = r;
+        }
+        if (sg[k] == 0 && sg[j] == 0 && t.edge[k]) c.along = true;
+      }
+    };
+    const Vec<P> na = normal(x), nb = normal(y);
+    Int128 u[3];
+    for (int i = 0; i < 3; ++i) {
+      const int a = (i + 1) % 3, b = (i + 2) % 3;
+      u[i] = static_cast<Int128>(na[a]) * nb[b] - static_cast<Int128>(na[b]) * nb[a];
+    }
+    int ax = 0;
+    for (int i = 1; i < 3; ++i)
+      if (abs128(u[i]) > abs128(u[ax])) ax = i;
+    if (u[ax] == 0) return std::nullopt;  // parallel planes
+    Cut ca, cb;
+    cut(x, nb, X_[y.v[0]], ca);
+    cut(y, na, X_[x.v[0]], cb);
+    if (ca.n < 2 || cb.n < 2 || ca.along || cb.along) return std::nullopt;
+    const int dir = u[ax] > 0 ? 1 : -1;
+    auto cmp = [&](const Pt& p, const Pt& q) { return dir * compare_products(p.num[ax], q.den, q.num[ax], p.den); };
+    for (Cut* c : {&ca, &cb})
+      if (cmp(c->p[1], c->p[0]) < 0) std::swap(c->p[0], c->p[1]);
+    const Pt& lo = cmp(ca.p[0], cb.p[0]) >= 0 ? ca.p[0] : cb.p[0];
+    const Pt& hi = cmp(ca.p[1], cb.p[1]) <= 0 ? ca.p[1] : cb.p[1];
+    if (!(cmp(lo, hi) < 0)) return std::nullopt;
+    auto point = [&](const Pt& p) {
+      std::array<Rational, 3> c;
+      const mpz_class den = to_mpz(p.den);
+      for (int i = 0; i < 3; ++i) {
+        c[i] = Rational(to_mpz(p.num[i]), den);
+        c[i].canonicalize();
+        c[i] /= scale_;
+      }
+      return Point3(std::move(c[0]), std::move(c[1]), std::move(c[2]));
+    };
+    return std::make_pair(point(lo), point(hi));
   }
 }
 

@@ -5,11 +5,40 @@
 // thread count.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "algorithms/face_engine.hpp"
 #include "algorithms/parallel.hpp"
 
 namespace hlr::face_route {
+
+namespace {
+
+// Integers a and a positive d with q = a / d (d the least common multiple of the denominators).
+void common_integers(const std::array<Rational, 3>& q, std::array<mpz_class, 3>& a, mpz_class& d) {
+  d = 1;
+  for (const Rational& x : q) mpz_lcm(d.get_mpz_t(), d.get_mpz_t(), x.get_den_mpz_t());
+  for (int k = 0; k < 3; ++k) {
+    mpz_divexact(a[k].get_mpz_t(), d.get_mpz_t(), q[k].get_den_mpz_t());
+    a[k] *= q[k].get_num();
+  }
+}
+
+void set_z(mpz_ptr r, const Int128& v) { set_mpz(r, v); }
+void set_z(mpz_ptr r, const mpz_class& v) { mpz_set(r, v.get_mpz_t()); }
+
+// r += m·x for the policies' coefficient types (`tmp`: scratch).
+void addmul(mpz_ptr r, std::int64_t m, mpz_srcptr x, mpz_ptr) {
+  if (m >= 0) mpz_addmul_ui(r, x, static_cast<unsigned long>(m));
+  else mpz_submul_ui(r, x, static_cast<unsigned long>(-static_cast<Int128>(m)));
+}
+void addmul(mpz_ptr r, const Int128& m, mpz_srcptr x, mpz_ptr tmp) {
+  set_mpz(tmp, m);
+  mpz_addmul(r, tmp, x);
+}
+void addmul(mpz_ptr r, const mpz_class& m, mpz_srcptr x, mpz_ptr) { mpz_addmul(r, m.get_mpz_t(), x); }
+
+}  // namespace
 
 template <class P>
 struct Engine<P>::Work {
@@ -18,6 +47,7 @@ struct Engine<P>::Work {
   StampSet stamps;
   std::vector<int> cand;
   std::vector<std::pair<Frac<P>, Frac<P>>> spans;
+  mpz_class z[4];  // test_rational's scratch
 };
 
 // A segment lying in two side planes of an occluder runs along the sight line through their
@@ -139,16 +169,18 @@ void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk) const 
     merge(wk, hidden);
   } else {
     RationalEnds ends;
+    std::array<Rational, 3> A, B;
     for (int k = 0; k < 3; ++k) {
-      ends.A[k] = s.from()[k] * scale_;
-      ends.B[k] = s.to()[k] * scale_;
-      ends.Ad[k] = ends.A[k].get_d();
-      ends.Bd[k] = ends.B[k].get_d();
+      A[k] = s.from()[k] * scale_;
+      B[k] = s.to()[k] * scale_;
+      ends.Ad[k] = A[k].get_d();
+      ends.Bd[k] = B[k].get_d();
       for (double v : {ends.Ad[k], ends.Bd[k]})  // normal or exactly zero (see filtered_sign)
         if (!std::isfinite(v) || (v != 0 && std::fabs(v) < 0x1p-1000)) ends.filter = false;
-      if ((ends.Ad[k] == 0) != (sgn(ends.A[k]) == 0) || (ends.Bd[k] == 0) != (sgn(ends.B[k]) == 0))
-        ends.filter = false;
+      if ((ends.Ad[k] == 0) != (sgn(A[k]) == 0) || (ends.Bd[k] == 0) != (sgn(B[k]) == 0)) ends.filter = false;
     }
+    common_integers(A, ends.a, ends.da);
+    common_integers(B, ends.b, ends.db);
     for (int i : wk.cand) test_rational(occ_[i], ends, hidden, wk);
   }
   // Both ends strictly in front of the eye: no part is behind it, the depths are not needed.
@@ -246,18 +278,24 @@ void Engine<P>::test_rational(const Occluder<P>& o, const RationalEnds& e,
   ++wk.pairs;
   for (int k = 0; e.filter && k < 4; ++k)
     if (filtered_sign(o, k, e.Ad) < 0 && filtered_sign(o, k, e.Bd) < 0) return;
-  const auto& A = e.A;
-  const auto& B = e.B;
-  Rational lo = 0, hi = 1;
+  // Exact: F = m·a - c·da is f·da (da > 0), so it has f's sign; t = f0 / (f0 - f1) is
+  // F0·db / (F0·db - F1·da).
+  mpz_class& F0 = wk.z[0];
+  mpz_class& F1 = wk.z[1];
+  mpz_class& c = wk.z[2];
+  std::optional<Rational> lo, hi;
   int on_side = 0;
   for (int k = 0; k < 4; ++k) {
-    Rational f0 = -Rational(P::z(o.c[k])), f1 = f0;
+    set_z(c.get_mpz_t(), o.c[k]);
+    mpz_mul(F0.get_mpz_t(), c.get_mpz_t(), e.da.get_mpz_t());
+    mpz_mul(F1.get_mpz_t(), c.get_mpz_t(), e.db.get_mpz_t());
+    mpz_neg(F0.get_mpz_t(), F0.get_mpz_t());
+    mpz_neg(F1.get_mpz_t(), F1.get_mpz_t());
     for (int j = 0; j < 3; ++j) {
-      Rational m = P::zc(o.m[k][j]);
-      f0 += m * A[j];
-      f1 += m * B[j];
+      addmul(F0.get_mpz_t(), o.m[k][j], e.a[j].get_mpz_t(), wk.z[3].get_mpz_t());
+      addmul(F1.get_mpz_t(), o.m[k][j], e.b[j].get_mpz_t(), wk.z[3].get_mpz_t());
     }
-    int s0 = sgn(f0), s1 = sgn(f1);
+    int s0 = sgn(F0), s1 = sgn(F1);
     if (s0 > 0 && s1 > 0) continue;
     if (s0 <= 0 && s1 <= 0) {
       if (o.closed[k] && s0 == 0 && s1 == 0) {
@@ -266,12 +304,19 @@ void Engine<P>::test_rational(const Occluder<P>& o, const RationalEnds& e,
       }
       return;
     }
-    Rational t = f0 / (f0 - f1);
-    if (s0 > 0) hi = std::min(hi, t);
-    else lo = std::max(lo, t);
+    mpz_class n = F0 * e.db, d = n - F1 * e.da;
+    Rational t(n, d);
+    t.canonicalize();
+    if (s0 > 0) {
+      if (!hi || t < *hi) hi = std::move(t);
+    } else if (!lo || t > *lo) {
+      lo = std::move(t);
+    }
   }
+  if (!lo) lo.emplace(0);
+  if (!hi) hi.emplace(1);
   if (!end_on_hides(o, on_side)) return;
-  if (lo < hi) out.push_back({lo, hi});
+  if (*lo < *hi) out.push_back({std::move(*lo), std::move(*hi)});
 }
 
 template class Engine<Fast>;

@@ -73,6 +73,16 @@ mpz_class to_mpz(Int128 v) {
   return neg ? mpz_class(-r) : r;
 }
 
+void set_mpz(mpz_ptr r, Int128 v) {
+  if (v >= INT64_MIN && v <= INT64_MAX) return mpz_set_si(r, static_cast<long>(v));
+  const bool neg = v < 0;
+  const UInt128 u = neg ? static_cast<UInt128>(-v) : static_cast<UInt128>(v);
+  mpz_set_ui(r, static_cast<unsigned long>(static_cast<std::uint64_t>(u >> 64)));
+  mpz_mul_2exp(r, r, 64);
+  mpz_add_ui(r, r, static_cast<unsigned long>(static_cast<std::uint64_t>(u)));
+  if (neg) mpz_neg(r, r);
+}
+
 bool common_denominator(const Rational* const* qs, int n, std::uint64_t limit, std::uint64_t& L) {
   L = 1;
   for (int i = 0; i < n; ++i) {

@@ -25,6 +25,8 @@ int compare_products(Int128 a, Int128 b, Int128 c, Int128 d);
 
 /// Exact conversion to GMP.
 mpz_class to_mpz(Int128 v);
+/// r = v, into an existing GMP integer (no temporaries).
+void set_mpz(mpz_ptr r, Int128 v);
 
 /// Least common multiple of the denominators of `n` rationals, when it is below `limit`.
 bool common_denominator(const Rational* const* qs, int n, std::uint64_t limit, std::uint64_t& L);

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <map>
+#include <random>
 #include <set>
 
 #include "algorithms/crease_angle.hpp"
@@ -323,4 +325,60 @@ TEST(FaceOccluders, SilhouetteKinds) {
   long n1[3] = {0, 0, 1}, n2[3] = {0, 1, 1};
   EXPECT_TRUE(a.exceeds(n1, n2));  // 45 > 30
   EXPECT_THROW(CreaseAngle(Q("181")), std::invalid_argument);
+}
+
+// Intersection lines and their visibility are the same on the 64-bit path (integer segment
+// construction, filtered then integer hidden intervals), the 128-bit path and the GMP path:
+// random soups of triangles on a coarse lattice (k/4: shared vertices, coplanar and touching
+// triangles, edges through edges), the same soup with one far, tiny extra body whose
+// coordinates force the wider path (ten decimal places: 128-bit; 2^-70: GMP). Views along the
+// axes, diagonals and a perspective eye among the triangles.
+TEST(FaceOccluders, IntersectionLinesEqualOnEveryNumberPath) {
+  std::mt19937 rng(20261130);
+  std::uniform_int_distribution<int> coord(0, 8);
+  auto q = [&] { return Rational(coord(rng), 4); };
+  std::vector<Camera> views = {make_orthographic(Vector3(0, 0, 1)), make_orthographic(Vector3(1, 1, 1)),
+                               make_orthographic(Vector3(1, 0, 0)), make_orthographic(Vector3(1, 2, 3)),
+                               make_perspective(P("5/4", "3/4", "9/8"), P("0", "1", "1"))};
+  std::size_t lines = 0;
+  for (int scene = 0; scene < 30; ++scene) {
+    std::vector<Point3> vs;
+    std::vector<Face> fs;
+    for (int t = 0; t < 14; ++t) {
+      for (int k = 0; k < 3; ++k) vs.push_back(Point3(q(), q(), q()));
+      fs.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+    }
+    Polyhedron soup(vs, fs);
+    auto far = [](const char* eps) {
+      Rational e = Q(eps);
+      return Polyhedron({Point3(Rational(-40), Rational(-40), Rational(-40)), Point3(Rational(-40) + e, Rational(-40), Rational(-40)),
+                         Point3(Rational(-40), Rational(-40) + e, Rational(-40))},
+                        {{0, 1, 2}});
+    };
+    Polyhedron wide = far("0.0000000001"), big = far("1/1180591620717411303424");  // 2^-70
+    for (const Camera& cam : views) {
+      LineDrawing fast = run({&soup}, cam);
+      ASSERT_TRUE(fast.stats.faces->integer_path);
+      for (const Polyhedron* extra : {&wide, &big}) {
+        LineDrawing other = run({&soup, extra}, cam);
+        EXPECT_EQ(other.stats.faces->integer_path, extra == &wide);
+        std::vector<const Segment*> a, b;
+        for (const Segment& s : fast.segments)
+          if (s.kind == Segment::Kind::Intersection) a.push_back(&s);
+        for (const Segment& s : other.segments)
+          if (s.kind == Segment::Kind::Intersection) b.push_back(&s);
+        ASSERT_EQ(a.size(), b.size()) << "scene " << scene;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+          EXPECT_TRUE(a[i]->from() == b[i]->from() && a[i]->to() == b[i]->to()) << "scene " << scene << " line " << i;
+          EXPECT_EQ(pieces(*a[i]), pieces(*b[i])) << "scene " << scene << " line " << i;
+        }
+        // The soup's own edges: the same pieces too (the extra body hides nothing of them).
+        for (const Segment& s : fast.segments)
+          if (s.kind == Segment::Kind::Edge) EXPECT_EQ(pieces(s), pieces(edge(other, 0, s.v0, s.v1))) << "scene " << scene;
+      }
+      lines += std::count_if(fast.segments.begin(), fast.segments.end(),
+                             [](const Segment& s) { return s.kind == Segment::Kind::Intersection; });
+    }
+  }
+  EXPECT_GT(lines, 300u);  // the soups do interpenetrate
 }
