@@ -92,9 +92,24 @@ PictureToDrawing::PictureToDrawing(const PicturePlane& pp, const DrawingFrame& f
     cr_ = c.x() * pp.r().x() + c.y() * pp.r().y() + c.z() * pp.r().z();
     cu_ = c.x() * pp.u().x() + c.y() * pp.u().y() + c.z() * pp.u().z();
   }
+  // The scale factors in doubles: s / |r| and s / |u| (perspective: |d| / |r|, |d| / |u|).
+  const double rr = to_double(rr_), uu = to_double(uu_), dd = to_double(dd_), sc = to_double(scale_);
+  fx_ = persp_ ? std::sqrt(dd / rr) : sc / std::sqrt(rr);
+  fy_ = persp_ ? std::sqrt(dd / uu) : sc / std::sqrt(uu);
+  crd_ = to_double(cr_), cud_ = to_double(cu_);
+  auto normal = [](double v) { return v == 0 || (std::fabs(v) > 0x1p-400 && std::fabs(v) < 0x1p400); };
+  fast_ = normal(fx_) && normal(fy_) && fx_ != 0 && fy_ != 0 && normal(crd_) && normal(cud_);
 }
 
 std::array<double, 2> PictureToDrawing::operator()(const Exact2& q) const {
+  // Drawing coordinates only (no decision): doubles, within a few ulps of the picture's size,
+  // when every value is far from overflow and underflow; otherwise the exact route below.
+  if (fast_) {
+    const double x = q[0].get_d(), y = q[1].get_d();
+    if ((x == 0 || (std::fabs(x) > 0x1p-400 && std::fabs(x) < 0x1p400)) &&
+        (y == 0 || (std::fabs(y) > 0x1p-400 && std::fabs(y) < 0x1p400)))
+      return {(x - crd_) * fx_, (y - cud_) * fy_};
+  }
   // sign(v)·sqrt(v² / w) keeps any exact magnitude away from double overflow until the end.
   auto scaled = [](const Rational& v, const Rational& w) {
     double m = std::sqrt(to_double(v * v / w));

@@ -67,6 +67,9 @@ class PictureToDrawing {
   bool persp_;
   Rational cr_, cu_, scale_;
   Rational rr_, uu_, dd_;
+  // Doubles for points in the doubles' comfortable range: x = (X - cr)·fx, y = (Y - cu)·fy.
+  bool fast_ = false;
+  double crd_ = 0, cud_ = 0, fx_ = 0, fy_ = 0;
 };
 
 }  // namespace hlr

@@ -352,13 +352,37 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
   out.stats.seconds_clean = lap();
   std::vector<Exact2> pts(clean.points.size());
   ParallelLoop loop(options.threads);
-  loop.for_each(pts.size(), 256, [&](std::size_t i) {
+  auto source = [&](std::size_t i) -> std::pair<std::uint32_t, const Rational*> {
     std::uint32_t e = clean.point_ends[i];
-    const Polyline2D& l = d2.lines[e / 2];
-    const PieceRef& ref = d2.sources[l.first_edge];
-    const Segment& s = lines.segments[ref.segment];
-    const Piece& p = s.pieces[ref.piece];
-    pts[i] = pp.project(s.at(e & 1 ? p.t1 : p.t0));
+    const PieceRef& ref = d2.sources[d2.lines[e / 2].first_edge];
+    const Piece& p = lines.segments[ref.segment].pieces[ref.piece];
+    return {ref.segment, e & 1 ? &p.t1 : &p.t0};
+  };
+  // Each segment's ends projected once (orthographic projection is linear: a point at t is
+  // a + t·(b - a) of its ends' picture points a, b; perspective projects the point itself).
+  std::vector<std::uint32_t> slot(lines.segments.size(), UINT32_MAX), used;
+  if (!camera.perspective)
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      auto [sg, t] = source(i);
+      if (slot[sg] == UINT32_MAX) slot[sg] = static_cast<std::uint32_t>(used.size()), used.push_back(sg);
+    }
+  std::vector<std::array<Exact2, 2>> ends(used.size());
+  loop.for_each(used.size(), 256, [&](std::size_t k) {
+    const Segment& s = lines.segments[used[k]];
+    ends[k] = {pp.project(s.from()), pp.project(s.to())};
+  });
+  loop.for_each(pts.size(), 256, [&](std::size_t i) {
+    auto [sg, t] = source(i);
+    const Segment& s = lines.segments[sg];
+    if (camera.perspective) {
+      pts[i] = pp.project(*t == 0 ? s.from() : (*t == 1 ? s.to() : s.at(*t)));
+      return;
+    }
+    const auto& [a, b] = ends[slot[sg]];
+    if (*t == 0) pts[i] = a;
+    else if (*t == 1) pts[i] = b;
+    else
+      for (int k = 0; k < 2; ++k) pts[i][k] = a[k] + *t * (b[k] - a[k]);
   });
   std::vector<std::array<std::uint32_t, 2>> segs;
   segs.reserve(clean.edges.size());
