@@ -33,8 +33,33 @@ int orient2d(const Exact2& a, const Exact2& b, const Exact2& c) {
     if (det > bound) return 1;
     if (det < -bound) return -1;
   }
-  Rational det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-  return sgn(det);
+  return orient2d_exact(a, b, c);
+}
+
+// The exact sign without canonical rationals (no gcd): with u = b - a and v = c - a written
+// as n/d (d > 0), sign(ux·vy - uy·vx) = sign(ux_n·vy_n·uy_d·vx_d - uy_n·vx_n·ux_d·vy_d).
+int orient2d_exact(const Exact2& a, const Exact2& b, const Exact2& c) {
+  thread_local mpz_class un[2], ud[2], vn[2], vd[2], l, r, t;
+  auto diff = [](const Rational& p, const Rational& q, mpz_class& n, mpz_class& d) {  // p - q
+    mpz_mul(n.get_mpz_t(), p.get_num_mpz_t(), q.get_den_mpz_t());
+    mpz_submul(n.get_mpz_t(), q.get_num_mpz_t(), p.get_den_mpz_t());
+    mpz_mul(d.get_mpz_t(), p.get_den_mpz_t(), q.get_den_mpz_t());
+  };
+  for (int k = 0; k < 2; ++k) {
+    diff(b[k], a[k], un[k], ud[k]);
+    diff(c[k], a[k], vn[k], vd[k]);
+  }
+  const int sl = sgn(un[0]) * sgn(vn[1]), sr = sgn(un[1]) * sgn(vn[0]);
+  if (sl != sr) return sl > sr ? 1 : -1;  // the products' signs decide (denominators > 0)
+  if (sl == 0) return 0;
+  mpz_mul(l.get_mpz_t(), un[0].get_mpz_t(), vn[1].get_mpz_t());
+  mpz_mul(t.get_mpz_t(), ud[1].get_mpz_t(), vd[0].get_mpz_t());
+  mpz_mul(l.get_mpz_t(), l.get_mpz_t(), t.get_mpz_t());
+  mpz_mul(r.get_mpz_t(), un[1].get_mpz_t(), vn[0].get_mpz_t());
+  mpz_mul(t.get_mpz_t(), ud[0].get_mpz_t(), vd[1].get_mpz_t());
+  mpz_mul(r.get_mpz_t(), r.get_mpz_t(), t.get_mpz_t());
+  const int s = cmp(l, r);
+  return s > 0 ? 1 : (s < 0 ? -1 : 0);
 }
 
 PicturePlane::PicturePlane(const Camera& c) : persp_(c.perspective), e_(c.eye) {

@@ -19,6 +19,8 @@ using Exact2 = std::array<Rational, 2>;
 
 /// Orientation of c against the line a -> b: +1 left, -1 right, 0 on it.
 int orient2d(const Exact2& a, const Exact2& b, const Exact2& c);
+/// The same without the double filter (exact integers, no gcd).
+int orient2d_exact(const Exact2& a, const Exact2& b, const Exact2& c);
 
 /// A value linear in the picture point: c0 + cx·x + cy·y (exact).
 struct PictureLinear {

@@ -351,6 +351,49 @@ Polyhedron quad(const Point3& a, const Point3& b, const Point3& c, const Point3&
 
 // ---- named scenes
 
+// orient2d's exact route (integers without gcd) against the textbook determinant in
+// canonical rationals: random points with small and huge denominators (10^±60), exactly
+// collinear triples (c = a + t·(b - a), the T-junctions of the picture) and equal points.
+TEST(VisibleSurfaces, Orient2dExactMatchesRationalDeterminant) {
+  std::mt19937_64 rng(7);
+  auto num = [&](int digits) {
+    mpz_class z = 0;
+    for (int k = 0; k < digits; ++k) z = z * 10 + static_cast<long>(rng() % 10);
+    return rng() % 2 ? z : mpz_class(-z);
+  };
+  auto q = [&](int digits) {
+    Rational r(num(digits), mpz_class(abs(num(digits))) + 1);
+    r.canonicalize();
+    return r;
+  };
+  int zeros = 0, signs[3] = {0, 0, 0};
+  for (int i = 0; i < 3000; ++i) {
+    const int d = i % 3 == 0 ? 2 : (i % 3 == 1 ? 12 : 60);
+    Exact2 a{q(d), q(d)}, b{q(d), q(d)}, c;
+    const int kind = i % 4;
+    if (kind == 0) {
+      c = {q(d), q(d)};
+    } else if (kind == 1) {  // collinear
+      Rational t = q(d);
+      c = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
+    } else if (kind == 2) {
+      c = a;
+    } else {  // nearly collinear: off the line by 10^-30 of the extent
+      Rational t = q(d);
+      c = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]) + Rational(1, mpz_class("1000000000000000000000000000000"))};
+    }
+    const int want = sgn((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+    ASSERT_EQ(orient2d_exact(a, b, c), want) << i;
+    ASSERT_EQ(orient2d(a, b, c), want) << i;
+    ASSERT_EQ(orient2d_exact(b, a, c), -want) << i;
+    zeros += want == 0;
+    ++signs[want + 1];
+  }
+  EXPECT_GT(zeros, 1400);
+  EXPECT_GT(signs[0], 300);
+  EXPECT_GT(signs[2], 300);
+}
+
 TEST(VisibleSurfaces, SingleBoxFrontFacesWhole) {
   std::vector<Polyhedron> b{box("0", "0", "0", "1", "1", "1")};
   VisibleSurfaces vs = visible_surfaces(ptrs(b), ortho("1", "1", "1"), face_occluders(ptrs(b), ortho("1", "1", "1"), {EdgeSelection::All}));
