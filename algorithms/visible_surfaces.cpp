@@ -259,7 +259,8 @@ void regions_to_surfaces(const PlanarArrangement& arr, const std::vector<int>& l
   ParallelLoop loop(options.threads);
   std::size_t total_faces = 0;
   for (const Polyhedron* b : bodies) total_faces += b->num_faces();
-  std::vector<LabelledRegion> regions = merge_regions(arr, label, -1, options.lift);
+  std::vector<LabelledRegion> regions;
+  if (options.faces) regions = merge_regions(arr, label, -1, options.lift);
 
   // Lift each region into its face's plane.
   std::vector<std::pair<int, int>> face_of(total_faces);
@@ -269,7 +270,7 @@ void regions_to_surfaces(const PlanarArrangement& arr, const std::vector<int>& l
   std::vector<std::array<PictureLinear, 2>> ray_of(total_faces);
   {
     std::vector<char> used(total_faces, 0);
-    if (options.lift)
+    if (options.lift && options.faces)
       for (int l : label)
         if (l >= 0) used[l] = 1;
     loop.for_each(used.size(), 256, [&](std::size_t id) {
@@ -322,6 +323,7 @@ void regions_to_surfaces(const PlanarArrangement& arr, const std::vector<int>& l
       if (out.groups.empty() || out.groups.back().group != gr[i].label) out.groups.push_back(VisibleGroup{gr[i].label, {}});
       out.groups.back().polygons.push_back(std::move(gp[i]));
     }
+    out.stats.fills = gr.size();
   }
   out.stats.polygons = regions.size();
 }

@@ -21,6 +21,9 @@ struct SurfaceOptions {
   unsigned threads = 0;  // 0: all cores
   /// Label every half-edge, not only one per cycle, and count disagreements (tests).
   bool check_cycles = false;
+  /// The regions per face (VisibleSurfaces::faces). Off: only the groups' (a drawing that
+  /// fills by group needs no more), and stats.polygons stays 0.
+  bool faces = true;
   /// Optional: a group per face (indexed by body, then face), e.g. faces of one colour; the
   /// regions of equal group are merged too (VisibleSurfaces::groups): no seam between faces
   /// that are filled alike.
@@ -62,7 +65,8 @@ struct SurfaceStats {
   std::size_t cycles = 0;       // arrangement cycles (each labelled once)
   std::size_t crossings = 0, splits = 0, exact_tests = 0;
   std::size_t triangles = 0;    // scene triangles that can be seen (not edge-on)
-  std::size_t polygons = 0;     // visible polygons out
+  std::size_t polygons = 0;     // visible polygons out (per face)
+  std::size_t fills = 0;        // polygons per group (VisibleSurfaces::groups)
   std::size_t label_mismatches = 0;  // check_cycles: half-edges whose label differs from their cycle's
   bool weiler_atherton = false;      // made by the Weiler–Atherton route (surfaces_from_pieces)
   std::size_t wa_clips = 0, wa_splits = 0, wa_recursions = 0, wa_cycles = 0;

@@ -151,6 +151,7 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
     if (one.up_axis.empty()) one.up_axis = z_up ? "z" : "y";
     RenderOptions options = render_options(one);
     options.surface_corners = format == "json";
+    options.surface_faces = format == "json";
     options.tile = tile;
     options.segments_only = merge != nullptr;
     progress(view_names.empty() ? "hidden lines" : "hidden lines, view " + view_names[i]);
@@ -189,7 +190,7 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
     if (const auto& sf = results[0].surfaces)
       std::cerr << "timings: surfaces " << sf->stats.seconds << " s, visible pieces " << sf->stats.segments << ", arrangement edges "
                 << sf->stats.edges << ", cells " << sf->stats.cycles << ", crossings " << sf->stats.crossings << ", polygons "
-                << sf->stats.polygons << ", exact sign tests " << sf->stats.exact_tests << " (clean-up " << sf->stats.seconds_clean
+                << sf->stats.polygons << ", fills " << sf->stats.fills << ", exact sign tests " << sf->stats.exact_tests << " (clean-up " << sf->stats.seconds_clean
                 << " s, points " << sf->stats.seconds_points << " s, arrangement " << sf->stats.seconds_arrangement << " s, triangles " << sf->stats.seconds_triangles << " s, probes "
                 << sf->stats.seconds_probe << " s, regions " << sf->stats.seconds_regions << " s)\n";
     if (const auto& sh = results[0].shadows)

@@ -251,6 +251,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
   SurfaceOptions so;
   so.threads = o.lines.threads;
   so.lift = o.surface_corners;
+  so.faces = o.surface_faces;
   std::map<std::array<int, 3>, int> group_of;
   so.face_group.resize(r.bodies.size());
   for (std::size_t b = 0; b < r.bodies.size(); ++b)

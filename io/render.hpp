@@ -46,6 +46,8 @@ struct RenderOptions {
   /// With surfaces: lift every visible polygon to exact 3D corners (the JSON needs them; the
   /// fills of SVG, PDF and PNG do not).
   bool surface_corners = true;
+  /// The visible polygons per face (JSON, Python); off: per colour group only (SVG, PDF, PNG).
+  bool surface_faces = true;
   /// Shadows of the scene's lights on the visible surfaces, as exact polygons (shadows.hpp);
   /// implies `surfaces` (the per-face route).
   bool shadows = false;
