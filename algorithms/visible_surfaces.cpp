@@ -38,6 +38,21 @@ constexpr double kU = 0x1p-52;  // relative error of mpq_get_d
 bool in_range(double x) { return x == 0 || (std::fabs(x) >= 0x1p-400 && std::fabs(x) <= 0x1p400); }
 bool trusted(double x, const Rational& q) { return x == 0 ? sgn(q) == 0 : std::fabs(x) >= 0x1p-400 && std::fabs(x) <= 0x1p400; }
 
+// out = a + t·(b - a) with one canonicalisation: (an·bd·td + tn·(bn·ad - an·bd)) / (ad·bd·td).
+void lerp(const Rational& a, const Rational& b, const Rational& t, Rational& out) {
+  thread_local mpz_class x, y, n;
+  mpz_mul(x.get_mpz_t(), a.get_num_mpz_t(), b.get_den_mpz_t());  // an·bd
+  mpz_mul(y.get_mpz_t(), b.get_num_mpz_t(), a.get_den_mpz_t());  // bn·ad
+  mpz_sub(y.get_mpz_t(), y.get_mpz_t(), x.get_mpz_t());
+  mpz_mul(n.get_mpz_t(), x.get_mpz_t(), t.get_den_mpz_t());
+  mpz_addmul(n.get_mpz_t(), y.get_mpz_t(), t.get_num_mpz_t());
+  mpz_mul(x.get_mpz_t(), a.get_den_mpz_t(), b.get_den_mpz_t());
+  mpz_mul(x.get_mpz_t(), x.get_mpz_t(), t.get_den_mpz_t());
+  mpz_swap(out.get_num_mpz_t(), n.get_mpz_t());
+  mpz_swap(out.get_den_mpz_t(), x.get_mpz_t());
+  out.canonicalize();
+}
+
 // Lexicographic sign of f at m + e·n + e²·t.
 int lex_sign(const PictureLinear& f, const Exact2& m, const Exact2& n, const Exact2& t) {
   int s = sgn(f.at(m));
@@ -384,7 +399,7 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
     if (*t == 0) pts[i] = a;
     else if (*t == 1) pts[i] = b;
     else
-      for (int k = 0; k < 2; ++k) pts[i][k] = a[k] + *t * (b[k] - a[k]);
+      for (int k = 0; k < 2; ++k) lerp(a[k], b[k], *t, pts[i][k]);
   });
   std::vector<std::array<std::uint32_t, 2>> segs;
   segs.reserve(clean.edges.size());
