@@ -70,10 +70,45 @@ PicturePlane::PicturePlane(const Camera& c) : persp_(c.perspective), e_(c.eye) {
   rr_ = dot(r_, r_);
   uu_ = dot(u_, u_);
   dd_ = dot(d_, d_);
+  auto integers = [](const Vector3& v, std::array<mpz_class, 3>& n, mpz_class& den) {
+    den = 1;
+    for (int k = 0; k < 3; ++k) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), v[k].get_den_mpz_t());
+    for (int k = 0; k < 3; ++k) n[k] = v[k].get_num() * (den / v[k].get_den());
+  };
+  integers(r_, ri_, rden_);
+  integers(u_, ui_, uden_);
 }
 
 Exact2 PicturePlane::project(const Point3& p) const {
-  if (!persp_) return {dot3(p.x(), p.y(), p.z(), r_), dot3(p.x(), p.y(), p.z(), u_)};
+  if (!persp_) {
+    // p = pn / pden over the least common denominator of its coordinates: x = Σ pn_k·ri_k /
+    // (pden·rden), one canonicalisation (the textbook dot product canonicalises five times).
+    thread_local std::array<mpz_class, 3> pn;
+    thread_local mpz_class pden, t;
+    const bool same = p[0].get_den() == p[1].get_den() && p[0].get_den() == p[2].get_den();
+    if (same) {
+      pden = p[0].get_den();
+      for (int k = 0; k < 3; ++k) pn[k] = p[k].get_num();
+    } else {
+      pden = 1;
+      for (int k = 0; k < 3; ++k) mpz_lcm(pden.get_mpz_t(), pden.get_mpz_t(), p[k].get_den_mpz_t());
+      for (int k = 0; k < 3; ++k) {
+        mpz_divexact(t.get_mpz_t(), pden.get_mpz_t(), p[k].get_den_mpz_t());
+        mpz_mul(pn[k].get_mpz_t(), p[k].get_num_mpz_t(), t.get_mpz_t());
+      }
+    }
+    auto axis = [&](const std::array<mpz_class, 3>& a, const mpz_class& aden) {
+      Rational q;
+      mpz_ptr n = q.get_num_mpz_t();
+      mpz_mul(n, pn[0].get_mpz_t(), a[0].get_mpz_t());
+      mpz_addmul(n, pn[1].get_mpz_t(), a[1].get_mpz_t());
+      mpz_addmul(n, pn[2].get_mpz_t(), a[2].get_mpz_t());
+      mpz_mul(q.get_den_mpz_t(), pden.get_mpz_t(), aden.get_mpz_t());
+      q.canonicalize();
+      return q;
+    };
+    return {axis(ri_, rden_), axis(ui_, uden_)};
+  }
   Rational qx = p.x() - e_.x(), qy = p.y() - e_.y(), qz = p.z() - e_.z();
   Rational w = dot3(qx, qy, qz, d_);
   return {dot3(qx, qy, qz, r_) / w, dot3(qx, qy, qz, u_) / w};

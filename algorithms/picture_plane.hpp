@@ -55,6 +55,9 @@ class PicturePlane {
   Point3 e_;
   Vector3 r_, u_, d_;
   Rational rr_, uu_, dd_;  // squared lengths
+  // r = ri / rden and u = ui / uden with integers (orthographic project() without rationals).
+  std::array<mpz_class, 3> ri_, ui_;
+  mpz_class rden_, uden_;
 };
 
 /// Drawing coordinates (Projector's, in its DrawingFrame) of exact picture points, without a
