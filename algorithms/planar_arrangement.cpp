@@ -193,20 +193,40 @@ PlanarArrangement build_arrangement(std::vector<Exact2> points, const std::vecto
   std::vector<Split> splits;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> crossing_pairs;
   {
+    // On all cores, each worker into its own lists; the splits are sorted below and the
+    // crossing pairs here, so the result does not depend on the thread count.
     Signs sg(points, ap, filter);
-    for (auto [a, b] : candidate_pairs(segs, ap, options.threads)) {
-      std::uint32_t p0 = segs[a][0], p1 = segs[a][1], q0 = segs[b][0], q1 = segs[b][1];
-      for (std::uint32_t q : {q0, q1})
-        if (inside_segment(sg, p0, p1, q, &exact)) splits.push_back({a, q});
-      for (std::uint32_t p : {p0, p1})
-        if (inside_segment(sg, q0, q1, p, &exact)) splits.push_back({b, p});
-      if (p0 == q0 || p0 == q1 || p1 == q0 || p1 == q1) continue;
-      int o0 = sg.orient(p0, p1, q0, &exact), o1 = sg.orient(p0, p1, q1, &exact);
-      if (o0 == 0 || o1 == 0 || o0 == o1) continue;
-      int o2 = sg.orient(q0, q1, p0, &exact), o3 = sg.orient(q0, q1, p1, &exact);
-      if (o2 == 0 || o3 == 0 || o2 == o3) continue;
-      crossing_pairs.emplace_back(a, b);
+    const auto cand = candidate_pairs(segs, ap, options.threads);
+    ParallelLoop loop(options.threads);
+    struct Found {
+      std::vector<Split> splits;
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> crossings;
+      std::size_t exact = 0;
+    };
+    std::vector<Found> found(loop.workers());
+    loop.run(cand.size(), 1024, [&](unsigned w, std::size_t begin, std::size_t end) {
+      Found& f = found[w];
+      for (std::size_t i = begin; i < end; ++i) {
+        auto [a, b] = cand[i];
+        std::uint32_t p0 = segs[a][0], p1 = segs[a][1], q0 = segs[b][0], q1 = segs[b][1];
+        for (std::uint32_t q : {q0, q1})
+          if (inside_segment(sg, p0, p1, q, &f.exact)) f.splits.push_back({a, q});
+        for (std::uint32_t p : {p0, p1})
+          if (inside_segment(sg, q0, q1, p, &f.exact)) f.splits.push_back({b, p});
+        if (p0 == q0 || p0 == q1 || p1 == q0 || p1 == q1) continue;
+        int o0 = sg.orient(p0, p1, q0, &f.exact), o1 = sg.orient(p0, p1, q1, &f.exact);
+        if (o0 == 0 || o1 == 0 || o0 == o1) continue;
+        int o2 = sg.orient(q0, q1, p0, &f.exact), o3 = sg.orient(q0, q1, p1, &f.exact);
+        if (o2 == 0 || o3 == 0 || o2 == o3) continue;
+        f.crossings.emplace_back(a, b);
+      }
+    });
+    for (Found& f : found) {
+      splits.insert(splits.end(), f.splits.begin(), f.splits.end());
+      crossing_pairs.insert(crossing_pairs.end(), f.crossings.begin(), f.crossings.end());
+      exact += f.exact;
     }
+    std::sort(crossing_pairs.begin(), crossing_pairs.end());
   }
   // Crossing points, equal ones joined (three segments through one point).
   std::map<Exact2, std::uint32_t> crossing_id;
