@@ -60,6 +60,31 @@ std::vector<Piece> pieces_from_hidden(std::vector<std::pair<Rational, Rational>>
       merged.push_back(std::move(s));
     }
   }
+  if (!depth) {
+    // The merged spans are disjoint, in order, inside [0, 1] and not touching: the pieces
+    // alternate between the gaps (visible) and the spans (hidden), built without arithmetic.
+    std::vector<Piece> pieces;
+    pieces.reserve(2 * merged.size() + 1);
+    Rational prev = 0;
+    for (auto& m : merged) {
+      if (prev < m.first) {
+        pieces.emplace_back();
+        pieces.back().t0 = std::move(prev);
+        pieces.back().t1 = m.first;
+      }
+      pieces.emplace_back();
+      pieces.back().t0 = std::move(m.first);
+      pieces.back().t1 = m.second;
+      pieces.back().visible = false;
+      prev = std::move(m.second);
+    }
+    if (prev < 1) {
+      pieces.emplace_back();
+      pieces.back().t0 = std::move(prev);
+      pieces.back().t1 = 1;
+    }
+    return pieces;
+  }
   std::vector<Rational> cuts = {Rational(0), Rational(1)};
   for (auto& s : merged) {
     cuts.push_back(s.first);
