@@ -26,6 +26,7 @@ void join_collinear(std::vector<Line>& v) {
     return std::get<4>(p) < std::get<4>(q);
   });
   std::vector<Line> out;
+  out.reserve(v.size());
   for (auto& s : v) {
     if (!out.empty()) {
       auto& o = out.back();
@@ -87,6 +88,7 @@ void Engine<P>::add_intersections(LineDrawing& res) {
     found[i].emplace(f.body, g.body, f.face, g.face, std::move(seg->first), std::move(seg->second));
   });
   std::vector<Line> segs;
+  segs.reserve(found.size());
   for (auto& l : found)
     if (l) segs.push_back(std::move(*l));
   // The same segment from two triangles of one face (along a diagonal): once.
@@ -99,6 +101,7 @@ void Engine<P>::add_intersections(LineDrawing& res) {
     return std::get<3>(p) < std::get<3>(q);
   });
   std::vector<Line> uniq;
+  uniq.reserve(segs.size());
   for (std::size_t i = 0; i < segs.size(); ++i) {
     if (!uniq.empty() && std::get<0>(uniq.back()) == std::get<0>(segs[i]) && std::get<1>(uniq.back()) == std::get<1>(segs[i]) &&
         std::get<4>(uniq.back()) == std::get<4>(segs[i]) && std::get<5>(uniq.back()) == std::get<5>(segs[i]))

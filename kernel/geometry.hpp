@@ -25,6 +25,13 @@ class Vector3 {
  public:
   Vector3() : Vector3(Rational(0), Rational(0), Rational(0)) {}
   Vector3(Rational x, Rational y, Rational z);
+  // Moves are noexcept so that vectors move their elements when they grow (mpq_class's move
+  // is not declared noexcept, which made every reallocation copy three GMP numbers per
+  // element). It cannot throw: GMP aborts rather than throw when memory runs out.
+  Vector3(const Vector3&) = default;
+  Vector3& operator=(const Vector3&) = default;
+  Vector3(Vector3&&) noexcept = default;
+  Vector3& operator=(Vector3&&) noexcept = default;
   const Rational& x() const { return c_[0]; }
   const Rational& y() const { return c_[1]; }
   const Rational& z() const { return c_[2]; }
@@ -43,6 +50,13 @@ class Point3 {
  public:
   Point3() {}  // the origin: zeros, whose bounds are {0, 0} (no temporaries: readers resize to millions)
   Point3(Rational x, Rational y, Rational z);
+  // Moves are noexcept so that vectors move their elements when they grow (mpq_class's move
+  // is not declared noexcept, which made every reallocation copy three GMP numbers per
+  // element). It cannot throw: GMP aborts rather than throw when memory runs out.
+  Point3(const Point3&) = default;
+  Point3& operator=(const Point3&) = default;
+  Point3(Point3&&) noexcept = default;
+  Point3& operator=(Point3&&) noexcept = default;
   const Rational& x() const { return c_[0]; }
   const Rational& y() const { return c_[1]; }
   const Rational& z() const { return c_[2]; }
@@ -63,6 +77,13 @@ class Plane {
  public:
   Plane() : Plane(Rational(0), Rational(0), Rational(0), Rational(0)) {}
   Plane(Rational a, Rational b, Rational c, Rational d);
+  // Moves are noexcept so that vectors move their elements when they grow (mpq_class's move
+  // is not declared noexcept, which made every reallocation copy three GMP numbers per
+  // element). It cannot throw: GMP aborts rather than throw when memory runs out.
+  Plane(const Plane&) = default;
+  Plane& operator=(const Plane&) = default;
+  Plane(Plane&&) noexcept = default;
+  Plane& operator=(Plane&&) noexcept = default;
   const Rational& a() const { return k_[0]; }
   const Rational& b() const { return k_[1]; }
   const Rational& c() const { return k_[2]; }

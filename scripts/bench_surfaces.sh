@@ -6,7 +6,8 @@
 # 1,1.3,1.7. Per run: wall time and peak memory (GNU time), the surfaces step's stages
 # (--timings); the course's Weiler–Atherton against the fast route on 200 random triangles.
 # Writes build/bench/surfaces.md.
-# Usage: scripts/bench_surfaces.sh [--quick]   (--quick: skip the 1M sphere)
+# Usage: scripts/bench_surfaces.sh [--quick] [--peer]   (--quick: skip the 1M sphere; --peer:
+# also build and run CGAL's exact Envelope_3 on the 3,200 triangles, benchmarks/envelope3_peer.cpp)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${HLR_BUILD_DIR:-$ROOT/build}"
@@ -14,7 +15,14 @@ HLR="$BUILD/hlr"
 GEN="$BUILD/benchmarks/gen_mesh"
 OUT="$BUILD/bench"
 QUICK=0
-[ "${1:-}" = "--quick" ] && QUICK=1
+PEER=0
+for arg in "$@"; do
+  case "$arg" in
+    --quick) QUICK=1 ;;
+    --peer) PEER=1 ;;
+    *) echo "bench_surfaces: unknown option $arg" >&2; exit 2 ;;
+  esac
+done
 [ -x "$HLR" ] && [ -x "$GEN" ] || { echo "bench_surfaces: build first (scripts/setup.sh)" >&2; exit 1; }
 command -v /usr/bin/time >/dev/null || { echo "bench_surfaces: needs GNU time (apt install time)" >&2; exit 1; }
 MESHES="$("$ROOT/scripts/extract_corpus.sh")"
@@ -32,7 +40,7 @@ report="$OUT/surfaces.md"
 {
   echo "# hlr render --surfaces benchmark ($(date -u +%Y-%m-%d), $(nproc) cores)"
   echo
-  echo "| mesh | faces | lines: wall s, peak MB | surfaces: wall s, peak MB | visible polygons | surfaces step s (clean-up, points, arrangement, triangles, probes, regions) |"
+  echo "| mesh | faces | lines: wall s, peak MB | surfaces: wall s, peak MB | filled polygons (one per colour region) | surfaces step s (clean-up, points, arrangement, triangles, probes, regions) |"
   echo "|---|---|---|---|---|---|"
   for m in "${inputs[@]}"; do
     name="$(basename "$m" .off)"
@@ -40,7 +48,7 @@ report="$OUT/surfaces.md"
     read -r lw lm < <(run "$m")
     read -r sw sm < <(run "$m" --surfaces)
     line="$(grep 'timings: surfaces' "$OUT/t.err" || true)"
-    polys="$(echo "$line" | sed -n 's/.*polygons \([0-9]*\).*/\1/p')"
+    polys="$(echo "$line" | sed -n 's/.*fills \([0-9]*\).*/\1/p')"
     step="$(echo "$line" | sed -n 's/timings: surfaces \([0-9.]*\) s.*(clean-up \([0-9.]*\) s, points \([0-9.]*\) s, arrangement \([0-9.]*\) s, triangles \([0-9.]*\) s, probes \([0-9.]*\) s, regions \([0-9.]*\) s).*/\1 (\2, \3, \4, \5, \6, \7)/p')"
     echo "| $name | $faces | $lw, $lm | $sw, $sm | $polys | $step |"
   done
@@ -49,5 +57,12 @@ report="$OUT/surfaces.md"
   read -r fw fm < <(run "$small" --surfaces)
   read -r ww wm < <(run "$small" --method weiler-atherton)
   echo "200 random triangles: the fast route $fw s ($fm MB), the course's Weiler–Atherton $ww s ($wm MB)."
+  if [ "$PEER" = 1 ]; then
+    cmake --build "$BUILD" --target envelope3_peer -j "$(nproc)" >/dev/null
+    peer="$(/usr/bin/time -f "%e %M" -o "$OUT/time.txt" "$BUILD/benchmarks/envelope3_peer" "$OUT/meshes/triangles3200.off" 1,1.3,1.7)"
+    read -r pw pk < "$OUT/time.txt"
+    echo
+    echo "CGAL Envelope_3 (Epeck), the same 3,200 triangles and view: $peer; whole process $pw s, $((pk / 1024)) MB."
+  fi
 } > "$report"
 cat "$report"
