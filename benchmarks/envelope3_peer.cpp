@@ -34,6 +34,12 @@ double exact_double(const hlr::Rational& q) {
   return d;
 }
 
+// A small rational (the view's components) as num / den in exact numbers.
+FT exact_small(const hlr::Rational& q) {
+  if (!q.get_num().fits_slong_p() || !q.get_den().fits_slong_p()) throw std::invalid_argument("envelope3_peer: view components too large");
+  return FT(q.get_num().get_si()) / FT(q.get_den().get_si());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -49,7 +55,7 @@ int main(int argc, char** argv) {
     FT d[3];
     for (int k = 0; k < 3; ++k) {
       if (!std::getline(view, part, ',')) throw std::invalid_argument("envelope3_peer: view DX,DY,DZ");
-      d[k] = FT(exact_double(hlr::parse_rational(part)));
+      d[k] = exact_small(hlr::parse_rational(part));
     }
     if (d[2] == 0) throw std::invalid_argument("envelope3_peer: the view's z must not be 0");
     const FT sx = d[0] / d[2], sy = d[1] / d[2];

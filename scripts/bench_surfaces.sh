@@ -61,8 +61,17 @@ report="$OUT/surfaces.md"
     cmake --build "$BUILD" --target envelope3_peer -j "$(nproc)" >/dev/null
     peer="$(/usr/bin/time -f "%e %M" -o "$OUT/time.txt" "$BUILD/benchmarks/envelope3_peer" "$OUT/meshes/triangles3200.off" 1,1.3,1.7)"
     read -r pw pk < "$OUT/time.txt"
+    "$HLR" render "$OUT/meshes/triangles3200.off" --surfaces --view 1,1.3,1.7 --timings -o "$OUT/out.json" 2> "$OUT/t.err" >/dev/null
+    ours="$(grep 'timings: surfaces' "$OUT/t.err")"
+    oe="$(echo "$ours" | sed -n 's/.*arrangement edges \([0-9]*\).*/\1/p')"
+    op="$(echo "$ours" | sed -n 's/.*polygons \([0-9]*\).*/\1/p')"
+    pe="$(echo "$peer" | sed -n 's/.*, edges \([0-9]*\).*/\1/p')"
+    pp="$(echo "$peer" | sed -n 's/.*(covered \([0-9]*\)).*/\1/p')"
+    verdict="the same"
+    [ "$oe" = "$pe" ] && [ "$op" = "$pp" ] || verdict="DIFFERENT"
     echo
     echo "CGAL Envelope_3 (Epeck), the same 3,200 triangles and view: $peer; whole process $pw s, $((pk / 1024)) MB."
+    echo "Cells: CGAL's diagram has $pp covered faces and $pe edges, ours $op visible polygons (per face) and $oe arrangement edges: $verdict."
   fi
 } > "$report"
 cat "$report"
