@@ -391,6 +391,10 @@ std::vector<LabelledRegion> merge_regions(const PlanarArrangement& a, const std:
     std::uint32_t first_half;
   };
   std::vector<Ring> outers, holes;
+  // Every ring has at least two half-edges: room for all, so that growing never copies the
+  // rings' GMP areas (mpq_class's move is not noexcept).
+  outers.reserve(nh / 2 + 1);
+  holes.reserve(nh / 2 + 1);
   for (std::uint32_t h = 0; h < nh; ++h) {
     if (!kept[h] || seen[h] || label(h) == background) continue;
     Ring r{label(h), {}, 0, h};
