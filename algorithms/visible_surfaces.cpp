@@ -73,6 +73,60 @@ struct Near {
   bool ok;
 };
 
+// sign((q - p)·(b - a)), exact, in integers without gcd (as orient2d_exact).
+int dot_sign(const Exact2& p, const Exact2& q, const Exact2& a, const Exact2& b) {
+  thread_local mpz_class un[2], ud[2], vn[2], vd[2], l, r, t;
+  auto diff = [](const Rational& x, const Rational& y, mpz_class& n, mpz_class& d) {  // x - y
+    mpz_mul(n.get_mpz_t(), x.get_num_mpz_t(), y.get_den_mpz_t());
+    mpz_submul(n.get_mpz_t(), y.get_num_mpz_t(), x.get_den_mpz_t());
+    mpz_mul(d.get_mpz_t(), x.get_den_mpz_t(), y.get_den_mpz_t());
+  };
+  for (int k = 0; k < 2; ++k) {
+    diff(q[k], p[k], un[k], ud[k]);
+    diff(b[k], a[k], vn[k], vd[k]);
+  }
+  // ux·vx + uy·vy over the positive denominators: un0·vn0·ud1·vd1 + un1·vn1·ud0·vd0.
+  mpz_mul(l.get_mpz_t(), un[0].get_mpz_t(), vn[0].get_mpz_t());
+  mpz_mul(t.get_mpz_t(), ud[1].get_mpz_t(), vd[1].get_mpz_t());
+  mpz_mul(l.get_mpz_t(), l.get_mpz_t(), t.get_mpz_t());
+  mpz_mul(r.get_mpz_t(), un[1].get_mpz_t(), vn[1].get_mpz_t());
+  mpz_mul(t.get_mpz_t(), ud[0].get_mpz_t(), vd[0].get_mpz_t());
+  mpz_addmul(l.get_mpz_t(), r.get_mpz_t(), t.get_mpz_t());
+  return sgn(l);
+}
+
+// The probe's offset point m + e·n + e²·t of the half-edge a -> b (m the midpoint, t = b - a,
+// n = t turned left), its exact parts computed on first use.
+struct Offset {
+  const Exact2 &a, &b;
+  mutable bool ready = false;
+  mutable Exact2 m, n, t;
+  void need() const {
+    if (ready) return;
+    m = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2};
+    t = {b[0] - a[0], b[1] - a[1]};
+    n = {-t[1], t[0]};
+    ready = true;
+  }
+};
+
+// Lexicographic sign at the probe's offset point of f(X) = cross(q - p, X - p) (X left of
+// p -> q when positive). f is affine, so f(m) = (f(a) + f(b)) / 2: equal or zero signs at the
+// ends decide it. Both ends on the line p q (the probe's edge lies along the side): f(m) = 0,
+// and the next term, f along n, is (q - p)·t, non-zero since t is then parallel to q - p.
+// Ends on opposite sides: the textbook lexicographic evaluation in rationals.
+int side_sign(const Exact2& p, const Exact2& q, const Offset& off) {
+  const int sa = orient2d(p, q, off.a), sb = orient2d(p, q, off.b);
+  if (sa == sb && sa != 0) return sa;
+  if (sa == 0 && sb != 0) return sb;
+  if (sb == 0 && sa != 0) return sa;
+  if (sa == 0 && sb == 0) return dot_sign(p, q, off.a, off.b);
+  Rational ex = q[0] - p[0], ey = q[1] - p[1];
+  PictureLinear f{-(ex * p[1] - ey * p[0]), -ey, ex};
+  off.need();
+  return lex_sign(f, off.m, off.n, off.t);
+}
+
 class Prober {
  public:
   Prober(const std::vector<const Polyhedron*>& bodies, const PicturePlane& pp, const LineDrawing& lines, unsigned threads) : pp_(pp) {
@@ -153,18 +207,17 @@ class Prober {
   std::size_t triangles() const { return tris_.size(); }
   int total_faces() const { return total_faces_; }
 
-  /// The global face seen just left of the middle of a -> b, or -1.
-  int probe(const Exact2& a, const Exact2& b, std::vector<int>& scratch) const {
-    Exact2 m{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2};
-    Exact2 t{b[0] - a[0], b[1] - a[1]};
-    Exact2 n{-t[1], t[0]};
-    double mx = m[0].get_d(), my = m[1].get_d();
-    // |m - (mx, my)| <= kU·|m| per coordinate; the filters below use mag = the largest of |a|,
-    // |b| per axis, which bounds |m| too.
-    Near nr{mx, my, std::max(std::fabs(a[0].get_d()), std::fabs(b[0].get_d())) * (1 + 4 * kU),
-            std::max(std::fabs(a[1].get_d()), std::fabs(b[1].get_d())) * (1 + 4 * kU),
-            trusted(mx, m[0]) && trusted(my, m[1]) && trusted(a[0].get_d(), a[0]) && trusted(a[1].get_d(), a[1]) &&
-                trusted(b[0].get_d(), b[0]) && trusted(b[1].get_d(), b[1])};
+  /// The global face seen just left of the middle of a -> b, or -1. `ad`, `bd`: the ends'
+  /// doubles (mpq_get_d), `filters`: they may be used (PlanarArrangement::filters).
+  int probe(const Exact2& a, const Exact2& b, const std::array<double, 2>& ad, const std::array<double, 2>& bd, bool filters,
+            std::vector<int>& scratch) const {
+    // The probe point's double from the ends' doubles, within 1.5·kU·mag per axis (mag = the
+    // larger |end|; design.md); its exact value, direction and normal only when a filter
+    // cannot decide.
+    Offset off{a, b};
+    Near nr{0.5 * (ad[0] + bd[0]), 0.5 * (ad[1] + bd[1]), std::max(std::fabs(ad[0]), std::fabs(bd[0])) * (1 + 4 * kU),
+            std::max(std::fabs(ad[1]), std::fabs(bd[1])) * (1 + 4 * kU), filters};
+    const double mx = nr.x, my = nr.y;
     double pad = 1e-9 * std::max({std::fabs(mx), std::fabs(my), 1e-300});
     scratch.clear();
     if (!nr.ok) {  // doubles not trusted here: every triangle is a candidate
@@ -181,8 +234,8 @@ class Prober {
     scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
     int best = -1;
     for (int i : scratch) {
-      if (!contains(tris_[i], m, n, t, nr)) continue;
-      if (best < 0 || nearer(tris_[i], tris_[best], m, n, t, nr)) best = i;
+      if (!contains(tris_[i], off, nr)) continue;
+      if (best < 0 || nearer(tris_[i], tris_[best], off, nr)) best = i;
     }
     return best < 0 ? -1 : tris_[best].id;
   }
@@ -193,7 +246,7 @@ class Prober {
   // Is m + e·n + e²·t inside the (counter-clockwise) triangle? Each side first by the double
   // filter at m (error bound as planar_arrangement.cpp's orientation, doubled for m's own
   // rounding), then lexicographically in rationals.
-  static bool contains(const PictureTriangle& tr, const Exact2& m, const Exact2& n, const Exact2& t, const Near& nr) {
+  static bool contains(const PictureTriangle& tr, const Offset& off, const Near& nr) {
     for (int k = 0; k < 3; ++k) {
       if (nr.ok && tr.pd_ok) {
         const auto &p = tr.pd[k], &q = tr.pd[(k + 1) % 3];
@@ -204,18 +257,14 @@ class Prober {
         if (det < -bound) return false;
       }
       const Exact2 &p = *tr.p[k], &q = *tr.p[(k + 1) % 3];
-      // Left of p -> q: cross(q - p, X - p) > 0, linear in X.
-      Rational ex = q[0] - p[0], ey = q[1] - p[1];
-      PictureLinear f{-(ex * p[1] - ey * p[0]), -ey, ex};
-      if (lex_sign(f, m, n, t) <= 0) return false;
+      if (side_sign(p, q, off) <= 0) return false;
     }
     return true;
   }
 
   // Is triangle x strictly nearer the viewer than y at the offset point? Equal depth (one
   // plane): the side facing the viewer first, then the smaller face number.
-  bool nearer(const PictureTriangle& x, const PictureTriangle& y, const Exact2& m, const Exact2& n, const Exact2& t,
-              const Near& nr) const {
+  bool nearer(const PictureTriangle& x, const PictureTriangle& y, const Offset& off, const Near& nr) const {
     if (x.id == y.id) return false;
     int s;
     if (!pp_.perspective()) {
@@ -229,12 +278,15 @@ class Prober {
         if (d < -bound) return false;
       }
       PictureLinear diff{x.depth.c0 - y.depth.c0, x.depth.cx - y.depth.cx, x.depth.cy - y.depth.cy};
-      s = lex_sign(diff, m, n, t);
+      off.need();
+      s = lex_sign(diff, off.m, off.n, off.t);
     } else {
       // l = num / den(q), num constant; smaller is nearer. l_x - l_y = G / (den_x den_y) with
       // G = num_x den_y - num_y den_x linear in q.
       const auto &rx = *x.ray, &ry = *y.ray;
       PictureLinear g = scaled_minus(ry[1], rx[0].c0, rx[1], ry[0].c0);
+      off.need();
+      const Exact2 &m = off.m, &n = off.n, &t = off.t;
       int sg = lex_sign(g, m, n, t) * lex_sign(rx[1], m, n, t) * lex_sign(ry[1], m, n, t);
       s = -sg;
     }
@@ -426,13 +478,15 @@ VisibleSurfaces visible_surfaces(const std::vector<const Polyhedron*>& bodies, c
     std::vector<int> scratch;
     for (std::size_t c = begin; c < end; ++c) {
       std::uint32_t h = arr.cycle_edge[c];
-      label[c] = prober.probe(arr.points[arr.origin[h]], arr.points[arr.head(h)], scratch);
+      label[c] = prober.probe(arr.points[arr.origin[h]], arr.points[arr.head(h)], arr.approx[arr.origin[h]],
+                              arr.approx[arr.head(h)], arr.filters, scratch);
     }
   });
   if (options.check_cycles) {
     std::vector<int> scratch;
     for (std::uint32_t h = 0; h < arr.origin.size(); ++h)
-      if (prober.probe(arr.points[arr.origin[h]], arr.points[arr.head(h)], scratch) != label[arr.cycle[h]])
+      if (prober.probe(arr.points[arr.origin[h]], arr.points[arr.head(h)], arr.approx[arr.origin[h]], arr.approx[arr.head(h)],
+                       arr.filters, scratch) != label[arr.cycle[h]])
         ++out.stats.label_mismatches;
   }
   out.stats.seconds_probe = lap();
