@@ -184,6 +184,9 @@ class Prober {
         per_face[i].push_back(std::move(pt));
       }
     });
+    std::size_t count = 0;
+    for (const auto& v : per_face) count += v.size();
+    tris_.reserve(count);  // growing would copy the triangles' GMP depths (mpq_class's move is not noexcept)
     for (auto& v : per_face)
       for (auto& t : v) tris_.push_back(std::move(t));
     std::vector<ScreenRect> rects;
