@@ -161,6 +161,12 @@ PictureToDrawing::PictureToDrawing(const PicturePlane& pp, const DrawingFrame& f
   fast_ = normal(fx_) && normal(fy_) && fx_ != 0 && fy_ != 0 && normal(crd_) && normal(cud_);
 }
 
+std::array<double, 2> PictureToDrawing::operator()(const std::array<double, 2>& q) const {
+  auto in_range = [](double v) { return v == 0 || (std::fabs(v) > 0x1p-400 && std::fabs(v) < 0x1p400); };
+  if (fast_ && in_range(q[0]) && in_range(q[1])) return {(q[0] - crd_) * fx_, (q[1] - cud_) * fy_};
+  return (*this)(Exact2{Rational(q[0]), Rational(q[1])});  // the doubles' exact values, the exact route
+}
+
 std::array<double, 2> PictureToDrawing::operator()(const Exact2& q) const {
   // Drawing coordinates only (no decision): doubles, within a few ulps of the picture's size,
   // when every value is far from overflow and underflow; otherwise the exact route below.

@@ -67,6 +67,8 @@ class PictureToDrawing {
  public:
   PictureToDrawing(const PicturePlane& pp, const DrawingFrame& frame);
   std::array<double, 2> operator()(const Exact2& q) const;
+  /// The same from the picture point's doubles (mpq_get_d of an exact point).
+  std::array<double, 2> operator()(const std::array<double, 2>& q) const;
 
  private:
   bool persp_;

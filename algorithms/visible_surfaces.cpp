@@ -388,7 +388,18 @@ void regions_to_surfaces(const PlanarArrangement& arr, const std::vector<int>& l
       }
     std::vector<LabelledRegion> gr = merge_regions(arr, group_label, -1, false);
     std::vector<VisiblePolygon> gp(gr.size());
-    loop.for_each(gr.size(), 16, [&](std::size_t i) { gp[i] = polygon(gr[i], false); });
+    const bool approx = !options.exact_groups && arr.filters;
+    auto approx_polygon = [&](const LabelledRegion& r) {
+      VisiblePolygon vp;
+      auto ring = [&](const std::vector<std::uint32_t>& hs, std::vector<std::array<double, 2>>& out) {
+        out.reserve(hs.size());
+        for (std::uint32_t h : hs) out.push_back(arr.approx[arr.origin[h]]);
+      };
+      ring(r.outer, vp.outer_approx);
+      for (const auto& hole : r.holes) ring(hole, vp.holes_approx.emplace_back());
+      return vp;
+    };
+    loop.for_each(gr.size(), 16, [&](std::size_t i) { gp[i] = approx ? approx_polygon(gr[i]) : polygon(gr[i], false); });
     for (std::size_t i = 0; i < gr.size(); ++i) {
       if (out.groups.empty() || out.groups.back().group != gr[i].label) out.groups.push_back(VisibleGroup{gr[i].label, {}});
       out.groups.back().polygons.push_back(std::move(gp[i]));

@@ -24,6 +24,10 @@ struct SurfaceOptions {
   /// The regions per face (VisibleSurfaces::faces). Off: only the groups' (a drawing that
   /// fills by group needs no more), and stats.polygons stays 0.
   bool faces = true;
+  /// Exact picture corners for the groups' polygons; off: their doubles only
+  /// (VisiblePolygon::outer_approx), when the arrangement's doubles are in range (a drawing
+  /// that fills by group needs no more; the per-face polygons stay exact).
+  bool exact_groups = true;
   /// Optional: a group per face (indexed by body, then face), e.g. faces of one colour; the
   /// regions of equal group are merged too (VisibleSurfaces::groups): no seam between faces
   /// that are filled alike.
@@ -41,6 +45,10 @@ struct VisiblePolygon {
   std::vector<std::vector<Point3>> holes;
   std::vector<Exact2> outer_2d;
   std::vector<std::vector<Exact2>> holes_2d;
+  /// Groups with SurfaceOptions::exact_groups off: the picture corners as doubles (mpq_get_d
+  /// of the exact ones) instead of outer_2d and holes_2d, for drawing only.
+  std::vector<std::array<double, 2>> outer_approx;
+  std::vector<std::vector<std::array<double, 2>>> holes_approx;
   Rational area2;
 
   // Moves declared noexcept so that vectors of polygons move them when they grow (mpq_class's

@@ -252,6 +252,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
   so.threads = o.lines.threads;
   so.lift = o.surface_corners;
   so.faces = o.surface_faces;
+  so.exact_groups = false;  // the groups only feed the fills (add_surface_fills)
   std::map<std::array<int, 3>, int> group_of;
   so.face_group.resize(r.bodies.size());
   for (std::size_t b = 0; b < r.bodies.size(); ++b)
@@ -474,9 +475,10 @@ void add_surface_fills(Plot& plot, const RenderResult& r) {
   Projector proj = drawing_projector(r.drawing, r.camera);
   PictureToDrawing to_drawing(PicturePlane(r.camera), proj.frame());
   bool had = !plot.empty();
-  auto ring = [&](PlotFill& f, const std::vector<Exact2>& pts) {
+  auto ring = [&](PlotFill& f, const auto& pts) {
     std::vector<Point2> out;
-    for (const Exact2& q : pts) {
+    out.reserve(pts.size());
+    for (const auto& q : pts) {
       auto xy = to_drawing(q);
       out.push_back({xy[0], xy[1]});
       if (!had) plot.bounds = {xy[0], xy[1], xy[0], xy[1]}, had = true;
@@ -524,8 +526,13 @@ void add_surface_fills(Plot& plot, const RenderResult& r) {
     for (const VisiblePolygon& p : g.polygons) {
       PlotFill f;
       f.colour = r.group_colours[g.group];
-      ring(f, p.outer_2d);
-      for (const auto& h : p.holes_2d) ring(f, h);
+      if (p.outer_2d.empty() && !p.outer_approx.empty()) {  // SurfaceOptions::exact_groups off
+        ring(f, p.outer_approx);
+        for (const auto& h : p.holes_approx) ring(f, h);
+      } else {
+        ring(f, p.outer_2d);
+        for (const auto& h : p.holes_2d) ring(f, h);
+      }
       plot.fills.push_back(std::move(f));
     }
 }
