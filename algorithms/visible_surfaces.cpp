@@ -73,28 +73,6 @@ struct Near {
   bool ok;
 };
 
-// sign((q - p)·(b - a)), exact, in integers without gcd (as orient2d_exact).
-int dot_sign(const Exact2& p, const Exact2& q, const Exact2& a, const Exact2& b) {
-  thread_local mpz_class un[2], ud[2], vn[2], vd[2], l, r, t;
-  auto diff = [](const Rational& x, const Rational& y, mpz_class& n, mpz_class& d) {  // x - y
-    mpz_mul(n.get_mpz_t(), x.get_num_mpz_t(), y.get_den_mpz_t());
-    mpz_submul(n.get_mpz_t(), y.get_num_mpz_t(), x.get_den_mpz_t());
-    mpz_mul(d.get_mpz_t(), x.get_den_mpz_t(), y.get_den_mpz_t());
-  };
-  for (int k = 0; k < 2; ++k) {
-    diff(q[k], p[k], un[k], ud[k]);
-    diff(b[k], a[k], vn[k], vd[k]);
-  }
-  // ux·vx + uy·vy over the positive denominators: un0·vn0·ud1·vd1 + un1·vn1·ud0·vd0.
-  mpz_mul(l.get_mpz_t(), un[0].get_mpz_t(), vn[0].get_mpz_t());
-  mpz_mul(t.get_mpz_t(), ud[1].get_mpz_t(), vd[1].get_mpz_t());
-  mpz_mul(l.get_mpz_t(), l.get_mpz_t(), t.get_mpz_t());
-  mpz_mul(r.get_mpz_t(), un[1].get_mpz_t(), vn[1].get_mpz_t());
-  mpz_mul(t.get_mpz_t(), ud[0].get_mpz_t(), vd[0].get_mpz_t());
-  mpz_addmul(l.get_mpz_t(), r.get_mpz_t(), t.get_mpz_t());
-  return sgn(l);
-}
-
 // The probe's offset point m + e·n + e²·t of the half-edge a -> b (m the midpoint, t = b - a,
 // n = t turned left), its exact parts computed on first use.
 struct Offset {
@@ -120,7 +98,7 @@ int side_sign(const Exact2& p, const Exact2& q, const Offset& off) {
   if (sa == sb && sa != 0) return sa;
   if (sa == 0 && sb != 0) return sb;
   if (sb == 0 && sa != 0) return sa;
-  if (sa == 0 && sb == 0) return dot_sign(p, q, off.a, off.b);
+  if (sa == 0 && sb == 0) return dot_sign_exact(p, q, off.a, off.b);
   Rational ex = q[0] - p[0], ey = q[1] - p[1];
   PictureLinear f{-(ex * p[1] - ey * p[0]), -ey, ex};
   off.need();

@@ -351,8 +351,8 @@ Polyhedron quad(const Point3& a, const Point3& b, const Point3& c, const Point3&
 
 // ---- named scenes
 
-// orient2d's exact route (integers without gcd) against the textbook determinant in
-// canonical rationals: random points with small and huge denominators (10^±60), exactly
+// orient2d's exact route (integers without gcd), and the exact dot product's sign, against the
+// textbook formulas in canonical rationals: random points with small and huge denominators (10^±60), exactly
 // collinear triples (c = a + t·(b - a), the T-junctions of the picture) and equal points.
 TEST(VisibleSurfaces, Orient2dExactMatchesRationalDeterminant) {
   std::mt19937_64 rng(7);
@@ -386,6 +386,8 @@ TEST(VisibleSurfaces, Orient2dExactMatchesRationalDeterminant) {
     ASSERT_EQ(orient2d_exact(a, b, c), want) << i;
     ASSERT_EQ(orient2d(a, b, c), want) << i;
     ASSERT_EQ(orient2d_exact(b, a, c), -want) << i;
+    const int dot = sgn((b[0] - a[0]) * (c[0] - a[0]) + (b[1] - a[1]) * (c[1] - a[1]));
+    ASSERT_EQ(dot_sign_exact(a, b, a, c), dot) << i;
     zeros += want == 0;
     ++signs[want + 1];
   }
