@@ -33,8 +33,6 @@ struct Seg {
 // geometry is). `upper`: the maximum of the geometry; else the minimum.
 using Env = std::vector<Seg>;
 
-int sgn(const Rational& q) { return q > 0 ? 1 : q < 0 ? -1 : 0; }
-
 // The lines of one run (stable addresses).
 class Lines {
  public:

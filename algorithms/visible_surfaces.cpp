@@ -35,7 +35,6 @@ constexpr double kU = 0x1p-52;  // relative error of mpq_get_d
 
 // Doubles are trusted only in [2^-400, 2^400] (no underflow or overflow in products of two),
 // and a zero only when the value is zero.
-bool in_range(double x) { return x == 0 || (std::fabs(x) >= 0x1p-400 && std::fabs(x) <= 0x1p400); }
 bool trusted(double x, const Rational& q) { return x == 0 ? sgn(q) == 0 : std::fabs(x) >= 0x1p-400 && std::fabs(x) <= 0x1p400; }
 
 // out = a + t·(b - a) with one canonicalisation: (an·bd·td + tn·(bn·ad - an·bd)) / (ad·bd·td).
@@ -195,7 +194,7 @@ class Prober {
     // The probe point's double from the ends' doubles, within 1.5·kU·mag per axis (mag = the
     // larger |end|; design.md); its exact value, direction and normal only when a filter
     // cannot decide.
-    Offset off{a, b};
+    Offset off{a, b, false, {}, {}, {}};
     Near nr{0.5 * (ad[0] + bd[0]), 0.5 * (ad[1] + bd[1]), std::max(std::fabs(ad[0]), std::fabs(bd[0])) * (1 + 4 * kU),
             std::max(std::fabs(ad[1]), std::fabs(bd[1])) * (1 + 4 * kU), filters};
     const double mx = nr.x, my = nr.y;
