@@ -7,6 +7,10 @@
 namespace hlr {
 namespace {
 
+// Drawing coordinates may be computed in doubles from values in this range (or zero): no
+// product of two of them under- or overflows. Decides only the route, never visibility.
+bool comfortable(double v) { return v == 0 || (std::fabs(v) > 0x1p-400 && std::fabs(v) < 0x1p400); }
+
 Rational dot3(const Rational& x, const Rational& y, const Rational& z, const Vector3& a) {
   return x * a.x() + y * a.y() + z * a.z();
 }
@@ -181,13 +185,11 @@ PictureToDrawing::PictureToDrawing(const PicturePlane& pp, const DrawingFrame& f
   fx_ = persp_ ? std::sqrt(dd / rr) : sc / std::sqrt(rr);
   fy_ = persp_ ? std::sqrt(dd / uu) : sc / std::sqrt(uu);
   crd_ = to_double(cr_), cud_ = to_double(cu_);
-  auto normal = [](double v) { return v == 0 || (std::fabs(v) > 0x1p-400 && std::fabs(v) < 0x1p400); };
-  fast_ = normal(fx_) && normal(fy_) && fx_ != 0 && fy_ != 0 && normal(crd_) && normal(cud_);
+  fast_ = comfortable(fx_) && comfortable(fy_) && fx_ != 0 && fy_ != 0 && comfortable(crd_) && comfortable(cud_);
 }
 
 std::array<double, 2> PictureToDrawing::operator()(const std::array<double, 2>& q) const {
-  auto in_range = [](double v) { return v == 0 || (std::fabs(v) > 0x1p-400 && std::fabs(v) < 0x1p400); };
-  if (fast_ && in_range(q[0]) && in_range(q[1])) return {(q[0] - crd_) * fx_, (q[1] - cud_) * fy_};
+  if (fast_ && comfortable(q[0]) && comfortable(q[1])) return {(q[0] - crd_) * fx_, (q[1] - cud_) * fy_};
   return (*this)(Exact2{Rational(q[0]), Rational(q[1])});  // the doubles' exact values, the exact route
 }
 
@@ -196,9 +198,7 @@ std::array<double, 2> PictureToDrawing::operator()(const Exact2& q) const {
   // when every value is far from overflow and underflow; otherwise the exact route below.
   if (fast_) {
     const double x = q[0].get_d(), y = q[1].get_d();
-    if ((x == 0 || (std::fabs(x) > 0x1p-400 && std::fabs(x) < 0x1p400)) &&
-        (y == 0 || (std::fabs(y) > 0x1p-400 && std::fabs(y) < 0x1p400)))
-      return {(x - crd_) * fx_, (y - cud_) * fy_};
+    if (comfortable(x) && comfortable(y)) return {(x - crd_) * fx_, (y - cud_) * fy_};
   }
   // sign(v)·sqrt(v² / w) keeps any exact magnitude away from double overflow until the end.
   auto scaled = [](const Rational& v, const Rational& w) {
