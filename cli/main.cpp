@@ -9,10 +9,12 @@
 #include "cli/process.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
+#include "kernel/gmp_pool.hpp"
 #include "kernel/number.hpp"
 
 int main(int argc, char** argv) {
   hlr::cli::use_huge_pages(argv);
+  hlr::cli::use_number_pool();
   CLI::App app{"hlr: exact hidden-line removal for polyhedra"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "hlr 0.1.0");

@@ -15,6 +15,8 @@
 #include <iostream>
 #include <string>
 
+#include "kernel/gmp_pool.hpp"
+
 namespace hlr::cli {
 
 void use_huge_pages(char** argv) {
@@ -46,6 +48,14 @@ void use_huge_pages(char** argv) {
 #define HLR_SANITIZED 1
 #endif
 #endif
+
+void use_number_pool() {
+#ifndef HLR_SANITIZED  // AddressSanitizer must see every GMP block on its own
+  const char* mode = std::getenv("HLR_MALLOC");
+  if (mode && std::strcmp(mode, "system") == 0) return;
+  gmp_pool::install(true);
+#endif
+}
 
 void exit_without_teardown(int code) {
 #ifdef HLR_SANITIZED

@@ -10,6 +10,10 @@ namespace hlr::cli {
 /// restart is not possible.
 void use_huge_pages(char** argv);
 
+/// Serves GMP's small blocks from the number pool (kernel/gmp_pool.hpp), unless
+/// HLR_MALLOC=system or a sanitizer build. Call first thing, before any thread starts.
+void use_number_pool();
+
 /// Ends the process with `code` once the output is written: flushes the standard streams and
 /// exits without destroying what is still allocated (freeing a 1M-triangle model piece by piece
 /// took 0.2 s after the SVG was on disk). Sanitizer builds return normally instead, so that the
