@@ -13,9 +13,14 @@ namespace hlr {
 
 BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsigned threads) {
   BodyTopology t;
+  const ParallelLoop loop(threads);
+  // The large arrays' pages are touched on all cores before one thread fills them in order.
   std::vector<int>& fo = t.face_offset;
+  reserve_touched(fo, faces.size() + 1, loop);
   fo.resize(faces.size() + 1, 0);
   for (std::size_t f = 0; f < faces.size(); ++f) fo[f + 1] = fo[f] + static_cast<int>(faces[f].size());
+  reserve_touched(t.slot_third, fo.back(), loop);
+  reserve_touched(t.slot_edge, fo.back(), loop);
   t.slot_third.assign(fo.back(), -1);
   t.slot_edge.assign(fo.back(), -1);
   struct U {
@@ -23,7 +28,6 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
     int face, slot;
     bool forward;
   };
-  const ParallelLoop loop(threads);
   constexpr std::size_t kGrain = 8192;
   // Uses per lower vertex, then each bucket's start.
   std::vector<std::uint32_t> start(nv + 1, 0);
@@ -34,7 +38,9 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
     }
   });
   for (std::size_t i = 1; i <= nv; ++i) start[i] += start[i - 1];
-  std::vector<U> uses(start[nv]);
+  std::vector<U> uses;
+  reserve_touched(uses, start[nv], loop);
+  uses.resize(start[nv]);
   {
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     loop.for_each(faces.size(), kGrain, [&](std::size_t f) {
@@ -53,10 +59,11 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
   });
   // One edge per run of equal keys: the runs found in one pass, the edges built on all cores.
   std::vector<std::uint32_t> first;  // the first use of each edge
-  first.reserve(uses.size() / 2 + 1);
+  reserve_touched(first, uses.size() / 2 + 1, loop);
   for (std::size_t i = 0; i < uses.size(); ++i)
     if (i == 0 || uses[i].key != uses[i - 1].key) first.push_back(static_cast<std::uint32_t>(i));
   first.push_back(static_cast<std::uint32_t>(uses.size()));
+  reserve_touched(t.edges, first.size() - 1, loop);
   t.edges.resize(first.size() - 1);
   loop.for_each(t.edges.size(), kGrain, [&](std::size_t e) {
     BodyEdge& edge = t.edges[e];

@@ -105,10 +105,12 @@ class Engine {
   std::optional<std::pair<Point3, Point3>> segment(const Tri& x, const Tri& y) const;
   const Point3& world(int g) const;
   // face_engine_visibility.cpp
-  void visibility(LineDrawing& res);
+  std::vector<signed char> visibility(LineDrawing& res);
+  void release_arrays();
+  void fill_whole(LineDrawing& res, const std::vector<signed char>& whole) const;
   std::optional<std::pair<Rational, Rational>> depth_of(const Segment& s) const;
   void candidates(const Box& seg, Work& wk) const;
-  void solve(Segment& s, const std::array<int, 2>& gv, Work& wk) const;
+  void solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed char& whole) const;
   void test_integer(const Occluder<P>& o, const Vec<P>& X0, const Vec<P>& X1, Work& wk) const;
   bool end_on_hides(const Occluder<P>& o, int on_side) const;
   void merge(Work& wk, std::vector<std::pair<Rational, Rational>>& out) const;

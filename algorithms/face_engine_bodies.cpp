@@ -1,6 +1,7 @@
 // The per-face engine, bodies (see face_engine.hpp): triangles of every face, facing of
 // every face (facing.hpp), which bodies are closed solids (body_topology.hpp), inside-out
 // solids turned, an eye inside a solid refused.
+#include <algorithm>
 #include <chrono>
 
 #include "algorithms/convexity.hpp"
@@ -46,8 +47,9 @@ LineDrawing Engine<P>::run() {
   res.stats.faces->occluders = hiding_;  // a tile's too: every hiding triangle of the scene
   std::size_t total = 0;
   for (const BodyTopology& t : topo_) total += t.edges.size();
-  res.segments.reserve(total + 64);
-  gv_.reserve(total + 64);
+  const ParallelLoop loop(opt_.threads);
+  reserve_touched(res.segments, total + 64, loop);  // one thread fills them in order
+  reserve_touched(gv_, total + 64, loop);
   for (std::size_t b = 0; b < bodies_.size(); ++b) collect_edges(static_cast<int>(b), res);
   // Edge structure is no longer needed: free it before the memory-heavy stages.
   std::vector<BodyTopology>().swap(topo_);
@@ -55,7 +57,11 @@ LineDrawing Engine<P>::run() {
   auto t1 = Clock::now();
   if (opt_.intersections) add_intersections(res);
   auto t2 = Clock::now();
-  visibility(res);
+  // Most segments come out as one piece over [0, 1]: those are made once the occluders, the
+  // grid and the triangles are freed, so that the pieces do not add to the engine's peak.
+  std::vector<signed char> whole = visibility(res);
+  release_arrays();
+  fill_whole(res, whole);
   auto t3 = Clock::now();
   res.stats.setup_seconds = std::chrono::duration<double>(t1 - t0).count();
   res.stats.intersections_seconds = std::chrono::duration<double>(t2 - t1).count();
@@ -251,28 +257,37 @@ bool Engine<P>::orient_components(int b, int first, LineDrawing& res) {
   };
   for (const BodyEdge& e : topo_[b].edges)
     for (std::size_t k = 1; k < e.uses.size(); ++k) parent[find(e.uses[k].face)] = find(e.uses[0].face);
-  std::vector<std::vector<int>> comp_tris(nf);
-  for (std::size_t i = first; i < tris_.size(); ++i) comp_tris[find(tris_[i].face)].push_back(static_cast<int>(i));
-  std::vector<int> roots;
-  for (std::size_t f = 0; f < nf; ++f)
-    if (find(static_cast<int>(f)) == static_cast<int>(f) && !comp_tris[f].empty()) roots.push_back(static_cast<int>(f));
-  if (roots.size() < 2) return true;
-  std::vector<int> sign(nf, 0);
-  for (int r : roots) {
-    sign[r] = volume_sign(comp_tris[r]);
-    if (sign[r] == 0) return false;
+  // The components with triangles (most meshes have one: then nothing more to do).
+  std::vector<int> slot(nf, -1), roots;  // slot: a root's index in roots
+  for (std::size_t i = first; i < tris_.size(); ++i) {
+    const int r = find(tris_[i].face);
+    if (slot[r] < 0) slot[r] = 0;
   }
-  for (int r : roots) {
-    if (sign[r] > 0) continue;
+  for (std::size_t f = 0; f < nf; ++f)
+    if (slot[f] == 0 && find(static_cast<int>(f)) == static_cast<int>(f)) roots.push_back(static_cast<int>(f));
+  if (roots.size() < 2) return true;
+  std::sort(roots.begin(), roots.end());
+  for (std::size_t k = 0; k < roots.size(); ++k) slot[roots[k]] = static_cast<int>(k);
+  std::vector<std::vector<int>> comp(roots.size());  // the triangles of each component
+  for (std::size_t i = first; i < tris_.size(); ++i) comp[slot[find(tris_[i].face)]].push_back(static_cast<int>(i));
+  std::vector<int> sign(roots.size(), 0);
+  for (std::size_t k = 0; k < roots.size(); ++k) {
+    sign[k] = volume_sign(comp[k]);
+    if (sign[k] == 0) return false;
+  }
+  for (std::size_t k = 0; k < roots.size(); ++k) {
+    const int r = roots[k];
+    if (sign[k] > 0) continue;
+    const std::vector<int>& mine = comp[k];
     std::vector<int> others;
-    for (int q : roots)
-      if (q != r) others.insert(others.end(), comp_tris[q].begin(), comp_tris[q].end());
+    for (std::size_t q = 0; q < roots.size(); ++q)
+      if (q != k) others.insert(others.end(), comp[q].begin(), comp[q].end());
     // A cavity lies wholly inside the others: some vertex outside them all means inside out.
     bool outside = false;
-    for (std::size_t i = 0; i < comp_tris[r].size() && !outside; ++i)
-      for (int k = 0; k < 3 && !outside; ++k) outside = parity(X_[tris_[comp_tris[r][i]].v[k]], others) == 0;
+    for (std::size_t i = 0; i < mine.size() && !outside; ++i)
+      for (int j = 0; j < 3 && !outside; ++j) outside = parity(X_[tris_[mine[i]].v[j]], others) == 0;
     if (!outside) continue;  // a cavity's shell (or undecided: left as it is)
-    for (int i : comp_tris[r]) flip(tris_[i]);
+    for (int i : mine) flip(tris_[i]);
     int lowest = static_cast<int>(nf);
     for (std::size_t f = 0; f < nf; ++f)
       if (find(static_cast<int>(f)) == r) {

@@ -91,17 +91,19 @@ void Engine<P>::vertex_rules() {
 template <class P>
 void Engine<P>::build_occluders() {
   vertex_rules();
-  occ_.reserve(tris_.size() / 2 + 1);
+  const ParallelLoop loop(opt_.threads);
+  reserve_touched(occ_, tris_.size() / 2 + 1, loop);
   std::vector<Box> boxes;
-  // Drawing projections of every vertex, once.
+  reserve_touched(boxes, tris_.size() / 2 + 1, loop);
+  // Drawing projections of every vertex, once, on all cores.
   vproj_.resize(X_.size());
   vfront_.assign(X_.size(), 1);
   for (std::size_t b = 0; b < bodies_.size(); ++b)
-    for (std::size_t i = 0; i < bodies_[b]->num_vertices(); ++i) {
+    loop.for_each(bodies_[b]->num_vertices(), 4096, [&](std::size_t i) {
       const Point3& q = bodies_[b]->vertices()[i];
       vproj_[voff_[b] + i] = proj_.project(q);
       if (cam_.perspective) vfront_[voff_[b] + i] = cam_.in_front(q) == Sign::Positive;
-    }
+    });
   std::vector<int> sel;
   for (std::size_t i = 0; i < tris_.size(); ++i) {
     const Tri& t0 = tris_[i];
@@ -121,7 +123,7 @@ void Engine<P>::build_occluders() {
   }
   occ_.resize(sel.size());
   boxes.resize(sel.size());
-  ParallelLoop(opt_.threads).for_each(sel.size(), 1024, [&](std::size_t i) { make_occluder(tris_[sel[i]], occ_[i], boxes[i]); });
+  loop.for_each(sel.size(), 1024, [&](std::size_t i) { make_occluder(tris_[sel[i]], occ_[i], boxes[i]); });
   // Widen every box by a margin far above the error of the double projections (a filter
   // only: it skips work, never decides; bounds::kBoxMargin).
   double ext = 1e-300;
@@ -139,9 +141,9 @@ void Engine<P>::build_occluders() {
   }
   boxes_ = std::move(boxes);
   std::vector<ScreenRect> rects(boxes_.size());
-  for (std::size_t i = 0; i < boxes_.size(); ++i) rects[i] = {boxes_[i].x0, boxes_[i].y0, boxes_[i].x1, boxes_[i].y1};
+  loop.for_each(boxes_.size(), 8192, [&](std::size_t i) { rects[i] = {boxes_[i].x0, boxes_[i].y0, boxes_[i].x1, boxes_[i].y1}; });
   // Unbounded sides (occluders reaching the eye plane) clamp to the grid's edge cells.
-  grid_.build(rects, std::vector<char>(rects.size(), 0), 2.0, 2048);
+  grid_.build(rects, std::vector<char>(rects.size(), 0), 2.0, 2048, opt_.threads);
 }
 
 template <class P>

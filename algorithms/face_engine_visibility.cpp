@@ -61,22 +61,25 @@ bool Engine<P>::end_on_hides(const Occluder<P>& o, int on_side) const {
   return true;
 }
 
+// Returns, per segment, 0 or 1 where its pieces are one piece over [0, 1], visible or hidden
+// (fill_whole makes them later), -1 where solve() set its pieces.
 template <class P>
-void Engine<P>::visibility(LineDrawing& res) {
+std::vector<signed char> Engine<P>::visibility(LineDrawing& res) {
   const std::size_t n = res.segments.size();
   ParallelLoop loop(opt_.threads);
   std::vector<Work> work(loop.workers());
   std::vector<char> ready(work.size(), 0);
+  std::vector<signed char> whole(n, -1);
   loop.run(n, 512, [&](unsigned w, std::size_t b, std::size_t e) {
     Work& wk = work[w];
     if (!ready[w]) wk.stamps.reset(occ_.size()), ready[w] = 1;
     for (std::size_t i = b; i < e; ++i) {
       Segment& s = res.segments[i];
       if (opt_.decide && !opt_.decide(s)) {
-        s.pieces = {Piece{Rational(0), Rational(1), false}};
+        whole[i] = 1;  // a placeholder: hidden over [0, 1]
         continue;
       }
-      solve(s, gv_[i], wk);
+      solve(s, gv_[i], wk, whole[i]);
     }
   });
   FaceRouteStats& fs = *res.stats.faces;
@@ -88,6 +91,34 @@ void Engine<P>::visibility(LineDrawing& res) {
     fs.comparisons_identical += w.c.identical;
   }
   if (std::is_same_v<P, Big>) res.stats.pairs_rational = res.stats.pairs_tested;
+  return whole;
+}
+
+// Everything visibility needed, freed (the engine is done once visibility has run).
+template <class P>
+void Engine<P>::release_arrays() {
+  std::vector<Occluder<P>>().swap(occ_);
+  std::vector<Box>().swap(boxes_);
+  grid_ = ScreenGrid();
+  std::vector<Tri>().swap(tris_);
+  std::vector<std::array<double, 3>>().swap(vproj_);
+  std::vector<char>().swap(vfront_);
+  std::vector<char>().swap(vertex_closed_);
+  std::vector<Vec<P>>().swap(X_);
+  std::vector<std::array<int, 2>>().swap(gv_);
+}
+
+// The one-piece segments' pieces, on all cores.
+template <class P>
+void Engine<P>::fill_whole(LineDrawing& res, const std::vector<signed char>& whole) const {
+  ParallelLoop(opt_.threads).for_each(whole.size(), 4096, [&](std::size_t i) {
+    if (whole[i] < 0) return;
+    std::vector<Piece>& pieces = res.segments[i].pieces;
+    pieces.clear();
+    pieces.resize(1);  // built in place: a braced list would copy its GMP numbers
+    pieces[0].t1 = 1;
+    pieces[0].visible = whole[i] == 0;
+  });
 }
 
 template <class P>
@@ -117,10 +148,14 @@ void Engine<P>::candidates(const Box& seg, Work& wk) const {
 }
 
 template <class P>
-void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk) const {
+void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed char& whole) const {
   const bool hides = static_cast<std::size_t>(s.body) >= opt_.see_through.size() || !opt_.see_through[s.body];
   if (s.self_hidden && hides) {  // its own front faces hide it
     const bool front = gv[0] >= 0 && vfront_[gv[0]] && vfront_[gv[1]];
+    if (front || !cam_.perspective) {
+      whole = 1;
+      return;
+    }
     std::vector<std::pair<Rational, Rational>> all;  // built in place (a braced list copies)
     all.emplace_back(0, 1);
     s.pieces = pieces_from_hidden(std::move(all), front ? std::nullopt : depth_of(s));
@@ -184,6 +219,16 @@ void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk) const 
     for (int i : wk.cand) test_rational(occ_[i], ends, hidden, wk);
   }
   // Both ends strictly in front of the eye: no part is behind it, the depths are not needed.
+  if (front[0] && front[1]) {
+    if (hidden.empty()) {
+      whole = 0;
+      return;
+    }
+    if (hidden.size() == 1 && hidden[0].first == 0 && hidden[0].second == 1) {
+      whole = 1;
+      return;
+    }
+  }
   s.pieces = pieces_from_hidden(std::move(hidden), front[0] && front[1] ? std::nullopt : depth_of(s));
 }
 

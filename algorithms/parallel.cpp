@@ -48,6 +48,15 @@ void ParallelLoop::for_each(std::size_t n, std::size_t grain, const std::functio
   });
 }
 
+void touch_pages(void* p, std::size_t bytes, const ParallelLoop& loop) {
+  constexpr std::size_t kPage = 4096, kBlock = std::size_t{2} << 20;  // a huge page per task
+  if (bytes < kBlock) return;  // small: not worth a parallel loop
+  auto* c = static_cast<volatile char*>(p);
+  loop.run((bytes + kPage - 1) / kPage, kBlock / kPage, [&](unsigned, std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) c[i * kPage] = 0;
+  });
+}
+
 struct ThreadLimit::Control {
   tbb::global_control control;
   explicit Control(unsigned threads) : control(tbb::global_control::max_allowed_parallelism, threads) {}

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace hlr {
 
@@ -46,6 +47,21 @@ class ThreadLimit {
   struct Control;
   std::unique_ptr<Control> control_;
 };
+
+/// Touches every page of [p, p + bytes) on the loop's threads. The system zeroes a fresh page
+/// on its first touch, which on virtual machines cost up to a third of a large run; touched
+/// here, that work is shared by the cores instead of falling on the one thread that fills a
+/// big array in order. Writes zero bytes into raw storage (no object may live there yet).
+void touch_pages(void* p, std::size_t bytes, const ParallelLoop& loop);
+
+/// v.reserve(n), the new storage's pages touched on all cores (touch_pages): for large
+/// arrays that one thread then fills or constructs in order.
+template <class T>
+void reserve_touched(std::vector<T>& v, std::size_t n, const ParallelLoop& loop) {
+  if (n <= v.capacity()) return;
+  v.reserve(n);
+  touch_pages(static_cast<void*>(v.data() + v.size()), (v.capacity() - v.size()) * sizeof(T), loop);
+}
 
 class Polyhedron;
 

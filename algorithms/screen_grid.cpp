@@ -1,5 +1,8 @@
-// The screen grid (see screen_grid.hpp): counting sort of items into cells, two passes.
+// The screen grid (see screen_grid.hpp): counting sort of items into cells, two passes
+// (course notes sections 26-28).
 #include "algorithms/screen_grid.hpp"
+
+#include "algorithms/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,13 +11,16 @@
 namespace hlr {
 
 void ScreenGrid::build(const std::vector<ScreenRect>& rects, const std::vector<char>& always, double items_per_cell,
-                       int max_cells) {
+                       int max_cells, unsigned threads) {
   // The grid spans the middle 98% of the boxes' finite sides: in perspective a few boxes near
   // the eye project huge and would otherwise squeeze everything else into a few cells. Boxes
   // (and queries) beyond clamp to the edge cells; clamping keeps every overlap, so the grid
   // never loses a candidate. Unbounded sides (occluders reaching the eye plane) clamp too.
+  // Large inputs: the span from every k-th box (the grid's extent is a heuristic; any extent
+  // keeps every candidate), so that a million boxes cost no four selections over millions.
   std::vector<double> xs, ys;
   std::size_t count = 0;
+  const std::size_t every = std::max<std::size_t>(1, rects.size() / 65536);
   always_.clear();
   for (std::size_t i = 0; i < rects.size(); ++i) {
     if (always[i]) {
@@ -22,6 +28,7 @@ void ScreenGrid::build(const std::vector<ScreenRect>& rects, const std::vector<c
       continue;
     }
     ++count;
+    if (i % every) continue;
     for (double v : {rects[i].x0, rects[i].x1})
       if (std::isfinite(v)) xs.push_back(v);
     for (double v : {rects[i].y0, rects[i].y1})
@@ -47,23 +54,26 @@ void ScreenGrid::build(const std::vector<ScreenRect>& rects, const std::vector<c
   y0_ = Y0;
   cell_ = std::max({(X1 - X0) / n_, (Y1 - Y0) / n_, 1e-300});
   start_.assign(static_cast<std::size_t>(n_) * n_ + 1, 0);
-  for (int pass = 0; pass < 2; ++pass) {
-    std::vector<std::uint32_t> fill;
-    if (pass == 1) {
-      for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
-      items_.resize(start_.back());
-      fill.assign(start_.begin(), start_.end() - 1);
-    }
-    for (std::size_t i = 0; i < rects.size(); ++i) {
-      if (always[i]) continue;
-      auto [cx0, cy0, cx1, cy1] = range(rects[i]);
-      for (int cy = cy0; cy <= cy1; ++cy)
-        for (int cx = cx0; cx <= cx1; ++cx) {
-          std::size_t cellid = static_cast<std::size_t>(cy) * n_ + cx;
-          if (pass == 0) ++start_[cellid + 1];
-          else items_[fill[cellid]++] = static_cast<std::uint32_t>(i);
-        }
-    }
+  // Each item's cell range on all cores, then two passes in item order (counts, then the
+  // items in order of index within each cell: the same grid on any number of threads).
+  std::vector<std::array<int, 4>> ranges(rects.size());
+  ParallelLoop(threads).for_each(rects.size(), 8192, [&](std::size_t i) {
+    if (!always[i]) ranges[i] = range(rects[i]);
+  });
+  for (std::size_t i = 0; i < rects.size(); ++i) {
+    if (always[i]) continue;
+    auto [cx0, cy0, cx1, cy1] = ranges[i];
+    for (int cy = cy0; cy <= cy1; ++cy)
+      for (int cx = cx0; cx <= cx1; ++cx) ++start_[static_cast<std::size_t>(cy) * n_ + cx + 1];
+  }
+  for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
+  items_.resize(start_.back());
+  std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+  for (std::size_t i = 0; i < rects.size(); ++i) {
+    if (always[i]) continue;
+    auto [cx0, cy0, cx1, cy1] = ranges[i];
+    for (int cy = cy0; cy <= cy1; ++cy)
+      for (int cx = cx0; cx <= cx1; ++cx) items_[fill[static_cast<std::size_t>(cy) * n_ + cx]++] = static_cast<std::uint32_t>(i);
   }
 }
 

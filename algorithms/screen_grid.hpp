@@ -38,9 +38,10 @@ void open_toward(R& r, const std::array<int, 2>& signs) {
 class ScreenGrid {
  public:
   /// Builds the grid over `rects` (items with always[i] set are skipped and visited always);
-  /// about `items_per_cell` items per cell, at most `max_cells` cells a side.
+  /// about `items_per_cell` items per cell, at most `max_cells` cells a side; on `threads`
+  /// cores (0: all; the same grid on any number).
   void build(const std::vector<ScreenRect>& rects, const std::vector<char>& always, double items_per_cell,
-             int max_cells);
+             int max_cells, unsigned threads = 0);
 
   /// Calls f(i) for every "always" item and for every item whose cell range meets the query
   /// (items may come more than once: callers deduplicate with stamps).

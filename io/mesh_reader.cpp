@@ -1,6 +1,8 @@
 // Mesh files by extension, and their polyhedra (see mesh_reader.hpp).
 #include "io/mesh_reader.hpp"
 
+#include "algorithms/parallel.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -29,7 +31,9 @@ MeshData read_mesh_file(const std::string& path) {
 Polyhedron make_polyhedron(MeshData data, const std::string& file) {
   std::vector<int> lines = std::move(data.face_lines);
   try {
-    return Polyhedron(std::move(data.vertices), std::move(data.faces));
+    const ParallelLoop loop;
+    return Polyhedron(std::move(data.vertices), std::move(data.faces),
+                      [&](std::size_t n, const std::function<void(std::size_t)>& body) { loop.for_each(n, 4096, body); });
   } catch (const FaceError& e) {
     int line = e.face() >= 0 && e.face() < static_cast<int>(lines.size()) ? lines[e.face()] : 0;
     throw InputError(file, line, e.what());

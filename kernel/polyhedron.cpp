@@ -14,32 +14,45 @@
 namespace hlr {
 
 Polyhedron::Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces)
+    : Polyhedron(std::move(vertices), std::move(faces), [](std::size_t n, const std::function<void(std::size_t)>& body) {
+        for (std::size_t i = 0; i < n; ++i) body(i);
+      }) {}
+
+Polyhedron::Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces,
+                       const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop)
     : vertices_(std::move(vertices)), faces_(std::move(faces)) {
   // GMP compares fractions correctly only in lowest terms: a coordinate built through the API
   // as mpq_class(836, 1024) is brought to 209/256 here, once, for every route.
-  for (Point3& p : vertices_) {
+  loop(vertices_.size(), [&](std::size_t i) {
+    Point3& p = vertices_[i];
     bool canonical = true;
     for (int k = 0; k < 3; ++k) {
       const Rational& c = p[k];
       canonical = canonical && sgn(c.get_den()) > 0 && gcd(c.get_num(), c.get_den()) == 1;
     }
-    if (canonical) continue;
+    if (canonical) return;
     std::array<Rational, 3> c{p.x(), p.y(), p.z()};
     for (Rational& q : c) q.canonicalize();
     p = Point3(c[0], c[1], c[2]);
-  }
+  });
+  // Faces checked on the loop, the first bad one (in order) reported.
   const long nv = static_cast<long>(vertices_.size());
-  for (std::size_t f = 0; f < faces_.size(); ++f) {
-    if (faces_[f].size() < 3)
-      throw FaceError(static_cast<int>(f), "face " + std::to_string(f) + " has " +
-                                               std::to_string(faces_[f].size()) +
-                                               " vertices; a face needs at least 3");
+  std::vector<char> bad(faces_.size(), 0);
+  loop(faces_.size(), [&](std::size_t f) {
+    if (faces_[f].size() < 3) bad[f] = 1;
     for (int v : faces_[f])
-      if (v < 0 || v >= nv)
-        throw FaceError(static_cast<int>(f), "face " + std::to_string(f) + " uses vertex " +
-                                                 std::to_string(v) + ", but there are only " +
-                                                 std::to_string(nv) + " vertices");
-  }
+      if (v < 0 || v >= nv) bad[f] = 1;
+  });
+  const auto first_bad = std::find(bad.begin(), bad.end(), 1);
+  if (first_bad == bad.end()) return;
+  const std::size_t f = static_cast<std::size_t>(first_bad - bad.begin());
+  if (faces_[f].size() < 3)
+    throw FaceError(static_cast<int>(f), "face " + std::to_string(f) + " has " + std::to_string(faces_[f].size()) +
+                                             " vertices; a face needs at least 3");
+  for (int v : faces_[f])
+    if (v < 0 || v >= nv)
+      throw FaceError(static_cast<int>(f), "face " + std::to_string(f) + " uses vertex " + std::to_string(v) +
+                                               ", but there are only " + std::to_string(nv) + " vertices");
 }
 
 const std::vector<std::pair<int, int>>& Polyhedron::edges() const {

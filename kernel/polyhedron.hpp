@@ -44,6 +44,10 @@ class Polyhedron {
   /// FaceError for an index out of range or a face with fewer than 3 vertices. Everything
   /// else (non-planar, non-manifold, ...) is accepted and reported by report().
   Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces);
+  /// The same, the vertices brought to lowest terms and the faces checked with `loop(n, body)`
+  /// calling body(i) for every i < n (e.g. on all cores; the same result and error on any).
+  Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces,
+             const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop);
 
   const std::vector<Point3>& vertices() const { return vertices_; }
   const std::vector<Face>& faces() const { return faces_; }
