@@ -1,6 +1,8 @@
 // Exact viewpoint and double drawing projection (see camera.hpp).
 #include "algorithms/camera.hpp"
 
+#include "algorithms/parallel.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -118,14 +120,27 @@ std::array<double, 3> DrawingFrame::to_frame(const Point3& p) const {
 DrawingFrame drawing_frame(std::size_t n, const std::function<const Point3&(std::size_t)>& point) {
   DrawingFrame f;
   if (n == 0) return f;
-  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, big = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Point3& p = point(i);
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], p.approx(k).lo);
-      hi[k] = std::max(hi[k], p.approx(k).hi);
-      big = std::max({big, std::fabs(p.approx(k).lo), std::fabs(p.approx(k).hi)});
+  // The certified boxes' hull on all cores (minima and maxima: the same on any number).
+  struct Hull {
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, big = 0;
+  };
+  const ParallelLoop loop;
+  std::vector<Hull> part(loop.workers());
+  loop.run(n, 16384, [&](unsigned w, std::size_t b, std::size_t e) {
+    Hull& h = part[w];
+    for (std::size_t i = b; i < e; ++i) {
+      const Point3& p = point(i);
+      for (int k = 0; k < 3; ++k) {
+        h.lo[k] = std::min(h.lo[k], p.approx(k).lo);
+        h.hi[k] = std::max(h.hi[k], p.approx(k).hi);
+        h.big = std::max({h.big, std::fabs(p.approx(k).lo), std::fabs(p.approx(k).hi)});
+      }
     }
+  });
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, big = 0;
+  for (const Hull& h : part) {
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], h.lo[k]), hi[k] = std::max(hi[k], h.hi[k]);
+    big = std::max(big, h.big);
   }
   double ext = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
   if (std::isfinite(big) && big < 0x1p100 && ext > 0x1p-100 && ext >= big * 0x1p-30) return f;

@@ -51,6 +51,7 @@ struct DrawingFrame {
 /// The frame for `n` points (point(i), i < n): identity unless their doubles would lose them
 /// (largest coordinate above 2^100, extent below 2^-100 or below 2^-30 of the largest
 /// coordinate; the screen boxes of the filters are floats); then the exact bounding box's centre and 1 / its largest side.
+/// point() is called from several threads at once.
 DrawingFrame drawing_frame(std::size_t n, const std::function<const Point3&(std::size_t)>& point);
 
 /// Drawing coordinates: screen x to the right, y up, and a depth that grows away from the

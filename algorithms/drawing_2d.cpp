@@ -108,23 +108,34 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
       }
     }
   });
+  // The runs joined in order, each copied into its place on all cores.
   Drawing2D d;
-  std::size_t pieces = 0;
-  for (const Drawing2D& run : runs) pieces += run.lines.size();
-  d.lines.reserve(pieces);
-  d.points.reserve(2 * pieces);
-  d.sources.reserve(pieces);
-  for (Drawing2D& run : runs) {
-    const auto points = static_cast<std::uint32_t>(d.points.size()), sources = static_cast<std::uint32_t>(d.sources.size());
-    for (Polyline2D pl : run.lines) {
+  std::vector<std::size_t> at_line(runs.size() + 1, 0), at_point(runs.size() + 1, 0), at_source(runs.size() + 1, 0);
+  for (std::size_t c = 0; c < runs.size(); ++c) {
+    at_line[c + 1] = at_line[c] + runs[c].lines.size();
+    at_point[c + 1] = at_point[c] + runs[c].points.size();
+    at_source[c + 1] = at_source[c] + runs[c].sources.size();
+  }
+  const ParallelLoop loop;
+  reserve_touched(d.lines, at_line.back(), loop);
+  reserve_touched(d.points, at_point.back(), loop);
+  reserve_touched(d.sources, at_source.back(), loop);
+  d.lines.resize(at_line.back());
+  d.points.resize(at_point.back());
+  d.sources.resize(at_source.back());
+  loop.for_each(runs.size(), 1, [&](std::size_t c) {
+    Drawing2D& run = runs[c];
+    const auto points = static_cast<std::uint32_t>(at_point[c]), sources = static_cast<std::uint32_t>(at_source[c]);
+    for (std::size_t k = 0; k < run.lines.size(); ++k) {
+      Polyline2D pl = run.lines[k];
       pl.first += points;
       pl.first_edge += sources;
-      d.lines.push_back(pl);
+      d.lines[at_line[c] + k] = pl;
     }
-    d.points.insert(d.points.end(), run.points.begin(), run.points.end());
-    d.sources.insert(d.sources.end(), run.sources.begin(), run.sources.end());
+    std::copy(run.points.begin(), run.points.end(), d.points.begin() + static_cast<std::ptrdiff_t>(at_point[c]));
+    std::copy(run.sources.begin(), run.sources.end(), d.sources.begin() + static_cast<std::ptrdiff_t>(at_source[c]));
     run = Drawing2D();
-  }
+  });
   if (opt.vertex_labels) add_vertex_labels(r, proj, camera, opt.label_base, d);
   return d;
 }

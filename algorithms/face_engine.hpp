@@ -12,6 +12,7 @@
 
 #include <array>
 #include <optional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -42,6 +43,16 @@ struct Occluder {
   int body, face;
   std::array<int, 3> v;  // global vertex ids, oriented toward the viewer (side k+1: v[k] -> v[k+1])
 };
+
+/// A drawn edge of a body (what its segment needs once the body's topology is freed).
+struct DrawnEdge {
+  int u, v, face0, face1;  // body-local vertices, the faces of its first two uses (-1: none)
+  signed char kind;        // LineKind
+  bool self_hidden;
+};
+
+/// An intersection line: the two bodies, the two faces, the exact ends.
+using CrossLine = std::tuple<int, int, int, int, Point3, Point3>;
 
 /// An occluder's screen box (float for memory, rounded outward) and its nearest depth.
 struct Box {
@@ -93,10 +104,12 @@ class Engine {
   bool closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs) const;
   void side_plane(int p, int q, Vec<P>& m, V& c) const;
   // face_engine_edges.cpp
-  void collect_edges(int b, LineDrawing& res);
+  std::vector<DrawnEdge> collect_edges(int b) const;
+  void add_edge_segments(int b, const std::vector<DrawnEdge>& drawn, LineDrawing& res);
   bool opposite_in_projection(int u, int v, int x, int y) const;
   bool crease(int b, const EdgeUse& a, const EdgeUse& c) const;
   // face_engine_intersections.cpp
+  void find_intersections(LineDrawing& res);
   void add_intersections(LineDrawing& res);
   bool pair_may_cross(std::uint32_t ta, std::uint32_t tc) const;
   bool may_meet(const Tri& x, const Tri& y) const;
@@ -151,7 +164,8 @@ class Engine {
   std::vector<std::array<double, 3>> vproj_;
   std::vector<char> vfront_;
   std::vector<char> vertex_closed_;
-  std::vector<std::array<int, 2>> gv_;  // global vertex ids of each segment's ends (-1: rational ends)
+  std::vector<std::array<int, 2>> gv_;
+  std::vector<CrossLine> cross_;  // intersection lines, found before the occluders are built  // global vertex ids of each segment's ends (-1: rational ends)
 };
 
 }  // namespace hlr::face_route

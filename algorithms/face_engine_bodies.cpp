@@ -43,29 +43,40 @@ LineDrawing Engine<P>::run() {
     res.stats.setup_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     return res;
   }
+  // Intersection lines first: their broad phase's arrays come and go before the occluders and
+  // the segments exist.
+  const auto ti0 = Clock::now();
+  if (opt_.intersections) find_intersections(res);
+  const auto ti1 = Clock::now();
   build_occluders();
   res.stats.faces->occluders = hiding_;  // a tile's too: every hiding triangle of the scene
-  std::size_t total = 0;
-  for (const BodyTopology& t : topo_) total += t.edges.size();
-  const ParallelLoop loop(opt_.threads);
-  reserve_touched(res.segments, total + 64, loop);  // one thread fills them in order
-  reserve_touched(gv_, total + 64, loop);
-  for (std::size_t b = 0; b < bodies_.size(); ++b) collect_edges(static_cast<int>(b), res);
-  // Edge structure is no longer needed: free it before the memory-heavy stages.
+  // The drawn edges as compact records; the topology is freed before the segments are made.
+  std::vector<std::vector<DrawnEdge>> drawn(bodies_.size());
+  std::size_t total = cross_.size();
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    drawn[b] = collect_edges(static_cast<int>(b));
+    total += drawn[b].size();
+  }
   std::vector<BodyTopology>().swap(topo_);
   std::vector<std::vector<Vec<P>>>().swap(face_normal_);
+  const ParallelLoop loop(opt_.threads);
+  reserve_touched(res.segments, total, loop);  // one thread fills them in order
+  reserve_touched(gv_, total, loop);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    add_edge_segments(static_cast<int>(b), drawn[b], res);
+    std::vector<DrawnEdge>().swap(drawn[b]);
+  }
+  add_intersections(res);
   auto t1 = Clock::now();
-  if (opt_.intersections) add_intersections(res);
-  auto t2 = Clock::now();
   // Most segments come out as one piece over [0, 1]: those are made once the occluders, the
   // grid and the triangles are freed, so that the pieces do not add to the engine's peak.
   std::vector<signed char> whole = visibility(res);
   release_arrays();
   fill_whole(res, whole);
   auto t3 = Clock::now();
-  res.stats.setup_seconds = std::chrono::duration<double>(t1 - t0).count();
-  res.stats.intersections_seconds = std::chrono::duration<double>(t2 - t1).count();
-  res.stats.visibility_seconds = std::chrono::duration<double>(t3 - t2).count();
+  res.stats.setup_seconds = std::chrono::duration<double>((t1 - t0) - (ti1 - ti0)).count();
+  res.stats.intersections_seconds = std::chrono::duration<double>(ti1 - ti0).count();
+  res.stats.visibility_seconds = std::chrono::duration<double>(t3 - t1).count();
   return res;
 }
 

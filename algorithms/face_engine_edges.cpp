@@ -8,8 +8,7 @@ namespace hlr::face_route {
 
 // ---- drawn edges
 template <class P>
-void Engine<P>::collect_edges(int b, LineDrawing& res) {
-  const Polyhedron& p = *bodies_[b];
+std::vector<DrawnEdge> Engine<P>::collect_edges(int b) const {
   const auto& facing = facing_[b];
   const std::vector<BodyEdge>& edges = topo_[b].edges;
   // Each edge classified on every core (-1: not drawn), then the drawn ones appended in order.
@@ -52,18 +51,33 @@ void Engine<P>::collect_edges(int b, LineDrawing& res) {
     kinds[i] = static_cast<signed char>(kind);
     hidden[i] = self_hidden;
   });
+  std::vector<DrawnEdge> out;
+  std::size_t n = 0;
+  for (signed char k : kinds) n += k >= 0;
+  out.reserve(n);
   for (std::size_t i = 0; i < edges.size(); ++i) {
     if (kinds[i] < 0) continue;
     const BodyEdge& e = edges[i];
+    out.push_back({e.u, e.v, e.uses.empty() ? -1 : e.uses[0].face, e.uses.size() > 1 ? e.uses[1].face : -1, kinds[i],
+                   hidden[i] != 0});
+  }
+  return out;
+}
+
+// The drawn edges of body b as segments (their ends borrowed from the body's vertices).
+template <class P>
+void Engine<P>::add_edge_segments(int b, const std::vector<DrawnEdge>& drawn, LineDrawing& res) {
+  const Polyhedron& p = *bodies_[b];
+  for (const DrawnEdge& e : drawn) {
     Segment s;
     s.body = b;
-    s.line = static_cast<LineKind>(kinds[i]);
+    s.line = static_cast<LineKind>(e.kind);
     s.v0 = e.u;
     s.v1 = e.v;
-    s.face0 = e.uses.empty() ? -1 : e.uses[0].face;
-    s.face1 = e.uses.size() > 1 ? e.uses[1].face : -1;
+    s.face0 = e.face0;
+    s.face1 = e.face1;
     s.borrow_ends(p.vertices()[e.u], p.vertices()[e.v]);
-    s.self_hidden = hidden[i] != 0;
+    s.self_hidden = e.self_hidden;
     ++res.stats.edges;
     if (s.self_hidden) ++res.stats.self_hidden;
     res.segments.push_back(std::move(s));

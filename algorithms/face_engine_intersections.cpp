@@ -15,7 +15,7 @@
 namespace hlr::face_route {
 namespace {
 
-using Line = std::tuple<int, int, int, int, Point3, Point3>;  // bodies, faces, ends
+using Line = CrossLine;  // bodies, faces, ends
 
 // Pieces of one face pair's line cut by face diagonals: joined where they meet end to end.
 void join_collinear(std::vector<Line>& v) {
@@ -48,7 +48,7 @@ void join_collinear(std::vector<Line>& v) {
 // Broad phase: triangles' bounding boxes hashed into cubic cells; exact integer plane-side
 // tests reject almost every pair; the segment itself is built in rationals.
 template <class P>
-void Engine<P>::add_intersections(LineDrawing& res) {
+void Engine<P>::find_intersections(LineDrawing& res) {
   const std::size_t n = tris_.size();
   if (n < 2) return;
   std::vector<Box3> bb(n);
@@ -109,7 +109,13 @@ void Engine<P>::add_intersections(LineDrawing& res) {
     uniq.push_back(std::move(segs[i]));
   }
   join_collinear(uniq);
-  for (auto& [b0, b1, f0, f1, a, b] : uniq) {
+  cross_ = std::move(uniq);
+}
+
+// The intersection lines as segments, after the edges.
+template <class P>
+void Engine<P>::add_intersections(LineDrawing& res) {
+  for (auto& [b0, b1, f0, f1, a, b] : cross_) {
     Segment s;
     s.kind = Segment::Kind::Intersection;
     s.line = LineKind::Intersection;
@@ -122,6 +128,7 @@ void Engine<P>::add_intersections(LineDrawing& res) {
     res.segments.push_back(std::move(s));
     gv_.push_back({-1, -1});
   }
+  std::vector<CrossLine>().swap(cross_);
 }
 
 // The exact segment of two triangles (triangle_intersection's rules: no line when the planes

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -33,7 +34,7 @@ struct Piece {
 /// What a drawn line is: a boundary edge of an open surface, a crease (dihedral angle over the
 /// threshold), a silhouette (one face toward the viewer, the other not), an intersection line
 /// where two surfaces cross, or any mesh edge (`--edges all`).
-enum class LineKind { Edge, Boundary, Crease, Silhouette, Intersection };
+enum class LineKind : std::uint8_t { Edge, Boundary, Crease, Silhouette, Intersection };
 const char* to_string(LineKind k);
 
 /// Which edges a renderer draws.
@@ -65,14 +66,14 @@ struct LineOptions {
 };
 
 struct Segment {
-  enum class Kind { Edge, Intersection };
+  enum class Kind : std::uint8_t { Edge, Intersection };
   Kind kind = Kind::Edge;
   LineKind line = LineKind::Edge;
+  bool self_hidden = false;      // both faces non-facing (notes' Stage 1)
   int body = -1;                 // Edge: the body; Intersection: the first body
   int body2 = -1;                // Intersection: the second body
   int v0 = -1, v1 = -1;          // Edge: input vertex indices, from v0 toward v1
   int face0 = -1, face1 = -1;    // Edge: its two faces; Intersection: the facets' faces
-  bool self_hidden = false;      // both faces non-facing (notes' Stage 1)
   std::vector<Piece> pieces;     // in order of t, covering [0, 1]
   Point3 at(const Rational& t) const;
 

@@ -66,21 +66,24 @@ double stroke_length(const Stroke& s) {
 Plot make_plot(const LineDrawing& lines, const Camera& camera, const PlotOptions& opt) {
   Project2DOptions po;
   po.hidden = opt.hidden;
-  Drawing2D d = project_drawing(lines, camera, po);
-  auto t0 = std::chrono::steady_clock::now();
-  DedupOptions dopt;
-  dopt.overlaps = opt.dedup;
-  dopt.threads = opt.threads;
   CleanDrawing c;
-  if (opt.dedup) {
-    c = dedup_drawing(d, lines, camera, dopt);
-  } else {  // every piece as it is, its own two points
-    c.pieces_in = d.lines.size();
-    for (const Polyline2D& l : d.lines) {
-      auto p = static_cast<std::uint32_t>(c.points.size());
-      c.points.push_back(d.point(l, 0));
-      c.points.push_back(d.point(l, 1));
-      c.edges.push_back(CleanEdge{p, p + 1, d.sources[l.first_edge], l.kind, l.visible, l.through, l.body});
+  auto t0 = std::chrono::steady_clock::now();
+  {  // the projected drawing is freed before the strokes are made
+    Drawing2D d = project_drawing(lines, camera, po);
+    t0 = std::chrono::steady_clock::now();
+    DedupOptions dopt;
+    dopt.overlaps = opt.dedup;
+    dopt.threads = opt.threads;
+    if (opt.dedup) {
+      c = dedup_drawing(d, lines, camera, dopt);
+    } else {  // every piece as it is, its own two points
+      c.pieces_in = d.lines.size();
+      for (const Polyline2D& l : d.lines) {
+        auto p = static_cast<std::uint32_t>(c.points.size());
+        c.points.push_back(d.point(l, 0));
+        c.points.push_back(d.point(l, 1));
+        c.edges.push_back(CleanEdge{p, p + 1, d.sources[l.first_edge], l.kind, l.visible, l.through, l.body});
+      }
     }
   }
   return plot_from_clean(c, opt, seconds_since(t0));
