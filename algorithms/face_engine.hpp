@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -99,7 +100,9 @@ class Engine {
   // face_engine_occluders.cpp
   bool neighbour(const Tri& t, int k, int& face, int& third) const;
   void vertex_rules();
-  void build_occluders();
+  void build_occluders(const std::vector<std::vector<DrawnEdge>>& drawn);
+  std::function<bool(const Tri&)> near_segments(const std::vector<std::vector<DrawnEdge>>& drawn, ScreenGrid& grid,
+                                                std::vector<ScreenRect>& rects) const;
   void make_occluder(const Tri& t0, Occluder<P>& o, Box& bx) const;
   bool closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs) const;
   void side_plane(int p, int q, Vec<P>& m, V& c) const;

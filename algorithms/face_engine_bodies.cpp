@@ -48,15 +48,16 @@ LineDrawing Engine<P>::run() {
   const auto ti0 = Clock::now();
   if (opt_.intersections) find_intersections(res);
   const auto ti1 = Clock::now();
-  build_occluders();
-  res.stats.faces->occluders = hiding_;  // a tile's too: every hiding triangle of the scene
-  // The drawn edges as compact records; the topology is freed before the segments are made.
+  // The drawn edges as compact records (the occluders may be chosen by them); the topology
+  // is freed before the segments are made.
   std::vector<std::vector<DrawnEdge>> drawn(bodies_.size());
   std::size_t total = cross_.size();
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     drawn[b] = collect_edges(static_cast<int>(b));
     total += drawn[b].size();
   }
+  build_occluders(drawn);
+  res.stats.faces->occluders = hiding_;  // a tile's too: every hiding triangle of the scene
   std::vector<BodyTopology>().swap(topo_);
   std::vector<std::vector<Vec<P>>>().swap(face_normal_);
   const ParallelLoop loop(opt_.threads);

@@ -52,7 +52,7 @@ void Engine<P>::find_intersections(LineDrawing& res) {
   const std::size_t n = tris_.size();
   if (n < 2) return;
   std::vector<Box3> bb(n);
-  for (std::size_t i = 0; i < n; ++i) {
+  ParallelLoop(opt_.threads).for_each(n, 8192, [&](std::size_t i) {
     Box3 b{INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
     for (int v : tris_[i].v) {
       const Point3& q = bodies_[tris_[i].body]->vertices()[v - voff_[tris_[i].body]];
@@ -62,7 +62,7 @@ void Engine<P>::find_intersections(LineDrawing& res) {
       }
     }
     bb[i] = b;
-  }
+  });
   BoxPairs pairs = overlapping_box_pairs(bb, ParallelLoop(opt_.threads), [&](std::uint32_t ta, std::uint32_t tc) {
     const Tri &x = tris_[ta], &y = tris_[tc];
     if (x.body == y.body) {

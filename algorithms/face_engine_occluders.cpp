@@ -3,7 +3,9 @@
 // direction or the eye); a prism side is closed where the ray just behind that polygon edge is
 // inside the solid (or crosses the open surface). Boxes of the projected prisms go into the
 // screen grid (screen_grid.hpp), a filter only.
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "algorithms/face_engine.hpp"
@@ -88,13 +90,55 @@ void Engine<P>::vertex_rules() {
   for (std::size_t g = 0; g < X_.size(); ++g) vertex_closed_[g] = state[g] == 1 || state[g] == 2;
 }
 
+// Feature lines of a large mesh are few: then only the triangles whose screen box comes near
+// some segment's box can hide anything drawn, and only those become occluders. Orthographic
+// views only. A filter (it skips work, never decides): every box is widened by
+// 4·kBoxMargin·E + 1e-6·E, E the largest projected coordinate (depth included) of any vertex
+// or segment end, so two
+// widened boxes meet whenever the occluder's box and the segment's box of visibility() can
+// (each widened there by at most kBoxMargin·E, rounded outward to floats within 2^-23·E):
+// docs/design.md, "Filters". Returns an empty function when it does not apply.
 template <class P>
-void Engine<P>::build_occluders() {
+std::function<bool(const Tri&)> Engine<P>::near_segments(const std::vector<std::vector<DrawnEdge>>& drawn, ScreenGrid& grid,
+                                                         std::vector<ScreenRect>& rects) const {
+  std::size_t n = cross_.size();
+  for (const auto& d : drawn) n += d.size();
+  if (cam_.perspective || n * 8 >= tris_.size()) return {};
+  std::vector<std::array<double, 3>> ends;  // the intersection lines' projected ends
+  for (const CrossLine& l : cross_) ends.push_back(proj_.project(std::get<4>(l))), ends.push_back(proj_.project(std::get<5>(l)));
+  double ext = 0;
+  // E covers the depths too: the margins of visibility() grow with them.
+  for (const auto& p : vproj_) ext = std::max({ext, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])});
+  for (const auto& p : ends) ext = std::max({ext, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])});
+  if (!std::isfinite(ext) || ext > 1e30) return {};
+  const double w = 4 * bounds::kBoxMargin * ext + 1e-6 * ext + 1e-300;
+  auto rect = [w](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return ScreenRect{std::min(a[0], b[0]) - w, std::min(a[1], b[1]) - w, std::max(a[0], b[0]) + w, std::max(a[1], b[1]) + w};
+  };
+  rects.clear();
+  rects.reserve(n);
+  for (std::size_t b = 0; b < drawn.size(); ++b)
+    for (const DrawnEdge& e : drawn[b]) rects.push_back(rect(vproj_[voff_[b] + e.u], vproj_[voff_[b] + e.v]));
+  for (std::size_t k = 0; k < ends.size(); k += 2) rects.push_back(rect(ends[k], ends[k + 1]));
+  grid.build(rects, std::vector<char>(rects.size(), 0), 2.0, 2048, opt_.threads);
+  return [this, w, &grid, &rects](const Tri& t) {
+    ScreenRect r{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (int v : t.v) {
+      const auto& p = vproj_[v];
+      r.x0 = std::min(r.x0, p[0]), r.y0 = std::min(r.y0, p[1]), r.x1 = std::max(r.x1, p[0]), r.y1 = std::max(r.y1, p[1]);
+    }
+    r.x0 -= w, r.y0 -= w, r.x1 += w, r.y1 += w;
+    bool meets = false;
+    grid.visit(r, [&](int i) { meets = meets || rects[i].meets(r); });
+    return meets;
+  };
+}
+
+template <class P>
+void Engine<P>::build_occluders(const std::vector<std::vector<DrawnEdge>>& drawn) {
   vertex_rules();
   const ParallelLoop loop(opt_.threads);
-  reserve_touched(occ_, tris_.size() / 2 + 1, loop);
   std::vector<Box> boxes;
-  reserve_touched(boxes, tris_.size() / 2 + 1, loop);
   // Drawing projections of every vertex, once, on all cores.
   vproj_.resize(X_.size());
   vfront_.assign(X_.size(), 1);
@@ -104,6 +148,9 @@ void Engine<P>::build_occluders() {
       vproj_[voff_[b] + i] = proj_.project(q);
       if (cam_.perspective) vfront_[voff_[b] + i] = cam_.in_front(q) == Sign::Positive;
     });
+  ScreenGrid seg_grid;
+  std::vector<ScreenRect> seg_rects;
+  const std::function<bool(const Tri&)> near = near_segments(drawn, seg_grid, seg_rects);
   std::vector<int> sel;
   for (std::size_t i = 0; i < tris_.size(); ++i) {
     const Tri& t0 = tris_[i];
@@ -115,12 +162,15 @@ void Engine<P>::build_occluders() {
     // is drawn (docs/design.md, "Occluders that reach behind the eye").
     if (cam_.perspective && !vfront_[t0.v[0]] && !vfront_[t0.v[1]] && !vfront_[t0.v[2]]) continue;
     ++hiding_;
+    if (near && !near(t0)) continue;  // no drawn segment comes near it
     if (opt_.may_occlude) {  // a tile: only the triangles that can reach it
       const int o = voff_[t0.body];
       if (!opt_.may_occlude(t0.body, {t0.v[0] - o, t0.v[1] - o, t0.v[2] - o})) continue;
     }
     sel.push_back(static_cast<int>(i));
   }
+  reserve_touched(occ_, sel.size(), loop);  // pages touched on all cores, then built on all cores
+  reserve_touched(boxes, sel.size(), loop);
   occ_.resize(sel.size());
   boxes.resize(sel.size());
   loop.for_each(sel.size(), 1024, [&](std::size_t i) { make_occluder(tris_[sel[i]], occ_[i], boxes[i]); });

@@ -44,40 +44,74 @@ BoxPairs overlapping_box_pairs(const std::vector<Box3>& bb, const ParallelLoop& 
   BoxPairs out;
   const std::size_t n = bb.size();
   if (n < 2) return out;
+  // Sums, extents and finiteness per fixed chunk on all cores, then combined in chunk order
+  // (the same cell size on any number of threads).
+  constexpr std::size_t kChunk = 16384;
+  struct Part {
+    double mean = 0, lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    bool finite = true;
+  };
+  std::vector<Part> parts((n + kChunk - 1) / kChunk);
+  loop.for_each(parts.size(), 1, [&](std::size_t c) {
+    Part& p = parts[c];
+    for (std::size_t i = c * kChunk, e = std::min(n, i + kChunk); i < e; ++i) {
+      const Box3& b = bb[i];
+      p.mean += std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]});
+      for (int k = 0; k < 3; ++k) p.lo[k] = std::min(p.lo[k], b[k]), p.hi[k] = std::max(p.hi[k], b[k + 3]);
+      for (double x : b) p.finite = p.finite && std::isfinite(x);
+    }
+  });
   double mean = 0;
   Cells g;
   double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
   for (int k = 0; k < 3; ++k) g.lo[k] = INFINITY;
-  for (const Box3& b : bb) {
-    mean += std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]});
-    for (int k = 0; k < 3; ++k) g.lo[k] = std::min(g.lo[k], b[k]), hi[k] = std::max(hi[k], b[k + 3]);
+  bool finite = true;
+  for (const Part& p : parts) {
+    mean += p.mean;
+    for (int k = 0; k < 3; ++k) g.lo[k] = std::min(g.lo[k], p.lo[k]), hi[k] = std::max(hi[k], p.hi[k]);
+    finite = finite && p.finite;
   }
   g.cell = std::max(2 * mean / static_cast<double>(n), 1e-300);
   // Doubles that lost the scene (coordinates beyond their range: infinities, NaN) or cells too
   // many to index: one coarse list. Checked before any cell index is formed.
-  bool coarse = !std::isfinite(g.cell) || !std::isfinite(mean);
-  for (const Box3& b : bb)
-    for (double x : b) coarse = coarse || !std::isfinite(x);
+  bool coarse = !std::isfinite(g.cell) || !std::isfinite(mean) || !finite;
   for (int k = 0; k < 3 && !coarse; ++k) {
     const double d = std::floor((hi[k] - g.lo[k]) / g.cell);
     if (!(d < (1 << 20))) coarse = true;
     else g.dims[k] = static_cast<std::int64_t>(d) + 1;
   }
   std::vector<Entry> entries;
-  entries.reserve(n * 2);
   // A box that spans more than 64 cells (a huge triangle among small ones) stays out of the
   // cells and is tested against every box instead: a few such boxes cost a few linear passes.
+  // Each box's cell count on all cores, then its entries into their place (item order).
   std::vector<std::uint32_t> big;
-  for (std::size_t i = 0; i < n && !coarse; ++i) {
-    std::int64_t c0[3], c1[3];
-    for (int k = 0; k < 3; ++k) c0[k] = g.key(k, bb[i][k]), c1[k] = g.key(k, bb[i][k + 3]);
-    if ((c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1) > 64) {
-      big.push_back(static_cast<std::uint32_t>(i));
-      continue;
+  if (!coarse) {
+    std::vector<std::uint32_t> at(n + 1, 0);
+    auto span = [&](std::size_t i, std::int64_t* c0, std::int64_t* c1) {
+      for (int k = 0; k < 3; ++k) c0[k] = g.key(k, bb[i][k]), c1[k] = g.key(k, bb[i][k + 3]);
+      return (c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1);
+    };
+    loop.for_each(n, 8192, [&](std::size_t i) {
+      std::int64_t c0[3], c1[3];
+      const std::int64_t cells = span(i, c0, c1);
+      at[i + 1] = cells > 64 ? 0 : static_cast<std::uint32_t>(cells);
+    });
+    for (std::size_t i = 0; i < n; ++i) {
+      std::int64_t c0[3], c1[3];
+      if (at[i + 1] == 0 && span(i, c0, c1) > 64) big.push_back(static_cast<std::uint32_t>(i));
+      at[i + 1] += at[i];
     }
-    for (std::int64_t x = c0[0]; x <= c1[0]; ++x)
-      for (std::int64_t y = c0[1]; y <= c1[1]; ++y)
-        for (std::int64_t z = c0[2]; z <= c1[2]; ++z) entries.push_back({g.id(x, y, z), static_cast<std::uint32_t>(i)});
+    reserve_touched(entries, at[n], loop);
+    entries.resize(at[n]);
+    loop.for_each(n, 8192, [&](std::size_t i) {
+      if (at[i + 1] == at[i]) return;
+      std::int64_t c0[3], c1[3];
+      span(i, c0, c1);
+      std::size_t w = at[i];
+      for (std::int64_t x = c0[0]; x <= c1[0]; ++x)
+        for (std::int64_t y = c0[1]; y <= c1[1]; ++y)
+          for (std::int64_t z = c0[2]; z <= c1[2]; ++z) entries[w++] = {g.id(x, y, z), static_cast<std::uint32_t>(i)};
+    });
   }
   if (coarse || big.size() * 8 > n) {  // unusable cells, or too many huge boxes: one coarse list
     coarse = true;

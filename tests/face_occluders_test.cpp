@@ -382,3 +382,74 @@ TEST(FaceOccluders, IntersectionLinesEqualOnEveryNumberPath) {
   }
   EXPECT_GT(lines, 300u);  // the soups do interpenetrate
 }
+
+// Feature lines of a mesh with many more triangles than drawn segments take only the
+// occluders near those segments (Engine::near_segments, a filter). Every feature segment must
+// get the same pieces as the same edge in the drawing of all edges, where every front
+// triangle is an occluder: bumpy closed spheres (jagged outlines, parts of the outline hidden
+// by bumps in front), a second body through them (intersection lines), several views.
+TEST(FaceOccluders, FeatureLinesTakeTheOccludersAllEdgesTake) {
+  std::mt19937 rng(20261130);
+  std::uniform_real_distribution<double> phase(0, 6.28);
+  auto bumpy_sphere = [&](int n, int m, const Rational& cx) {
+    std::vector<Point3> vs;
+    std::vector<Face> fs;
+    const double p1 = phase(rng), p2 = phase(rng);
+    auto at = [&](double lat, double lon) {  // smooth bumps: few creases, outlines hidden by bumps
+      Rational r = Rational(1) + Rational(std::lround(400 * 0.08 * std::sin(5 * lat + p1) * std::cos(7 * lon + p2)), 400);
+      auto q = [](double v) { return Rational(static_cast<long>(std::lround(v * 4096)), 4096); };
+      vs.push_back(Point3(cx + r * q(std::cos(lat) * std::cos(lon)), r * q(std::cos(lat) * std::sin(lon)), r * q(std::sin(lat))));
+    };
+    at(-M_PI / 2, 0);
+    for (int i = 1; i < n; ++i)
+      for (int j = 0; j < m; ++j) at(-M_PI / 2 + M_PI * i / n, 2 * M_PI * j / m);
+    at(M_PI / 2, 0);
+    const int top = static_cast<int>(vs.size()) - 1;
+    auto id = [&](int i, int j) { return 1 + (i - 1) * m + (j % m); };
+    for (int j = 0; j < m; ++j) fs.push_back({0, id(1, j + 1), id(1, j)});
+    for (int i = 1; i + 1 < n; ++i)
+      for (int j = 0; j < m; ++j) {
+        fs.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1)});
+        fs.push_back({id(i, j), id(i + 1, j + 1), id(i + 1, j)});
+      }
+    for (int j = 0; j < m; ++j) fs.push_back({top, id(n - 1, j), id(n - 1, j + 1)});
+    return Polyhedron(vs, fs);
+  };
+  const std::vector<Camera> views = {make_orthographic(Vector3(1, Q("1.3"), Q("1.7"))), make_orthographic(Vector3(0, 0, 1)),
+                                     make_orthographic(Vector3(1, 0, 0)), make_orthographic(Vector3(Q("-0.3"), 1, Q("0.2")))};
+  std::size_t compared = 0, crossings = 0, hidden = 0;
+  for (int scene = 0; scene < 3; ++scene) {
+    Polyhedron a = bumpy_sphere(60, 120, 0), b = bumpy_sphere(10, 20, Rational(3, 2));
+    const std::size_t tris = a.num_faces() + b.num_faces();
+    for (const Camera& cam : views) {
+      LineOptions fo;
+      fo.edges = EdgeSelection::Feature;
+      fo.crease_degrees = 40;
+      LineDrawing feat = face_occluders({&a, &b}, cam, fo);
+      LineOptions ao = fo;
+      ao.edges = EdgeSelection::All;
+      ao.classify_all = true;
+      LineDrawing all = face_occluders({&a, &b}, cam, ao);
+      ASSERT_LT(feat.segments.size() * 8, tris) << "the filter must apply";
+      std::vector<const Segment*> fx, ax;
+      for (const Segment& s : feat.segments) {
+        if (s.kind == Segment::Kind::Intersection) {
+          fx.push_back(&s);
+          continue;
+        }
+        EXPECT_EQ(pieces(s), pieces(edge(all, s.body, s.v0, s.v1))) << "scene " << scene << " edge " << s.v0 << "-" << s.v1;
+        ++compared;
+        if (!s.self_hidden)
+          for (const Piece& p : s.pieces) hidden += !p.visible;
+      }
+      for (const Segment& s : all.segments)
+        if (s.kind == Segment::Kind::Intersection) ax.push_back(&s);
+      ASSERT_EQ(fx.size(), ax.size());
+      for (std::size_t i = 0; i < fx.size(); ++i) EXPECT_EQ(pieces(*fx[i]), pieces(*ax[i])) << "scene " << scene << " line " << i;
+      crossings += fx.size();
+    }
+  }
+  EXPECT_GT(compared, 1000u);
+  EXPECT_GT(crossings, 50u);
+  EXPECT_GT(hidden, 100u);  // outlines hidden by bumps and by the other body: occluders at work
+}
