@@ -51,8 +51,11 @@ template <class P>
 void Engine<P>::find_intersections(LineDrawing& res) {
   const std::size_t n = tris_.size();
   if (n < 2) return;
-  std::vector<Box3> bb(n);
-  ParallelLoop(opt_.threads).for_each(n, 8192, [&](std::size_t i) {
+  std::vector<Box3> bb;
+  const ParallelLoop loop(opt_.threads);
+  reserve_touched(bb, n, loop);  // pages first touched on all cores
+  bb.resize(n);
+  loop.for_each(n, 8192, [&](std::size_t i) {
     Box3 b{INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
     for (int v : tris_[i].v) {
       const Point3& q = bodies_[tris_[i].body]->vertices()[v - voff_[tris_[i].body]];

@@ -14,16 +14,37 @@ struct Entry {
 };
 
 // Stable LSD radix sort by cell (entries arrive in item order, so ties stay sorted by item):
-// 11-bit digits over the bits the keys use.
-void radix_sort(std::vector<Entry>& v) {
+// 11-bit digits over the bits the keys use. Each pass counts digits per fixed chunk on all
+// cores, places every (digit, chunk) run after the ones before it, and scatters the chunks on
+// all cores: stable, and the same order on any number of threads.
+void radix_sort(std::vector<Entry>& v, const ParallelLoop& loop) {
+  const std::size_t n = v.size();
+  const std::size_t chunks = std::clamp<std::size_t>(n / 65536, 1, 64), per = (n + chunks - 1) / chunks;
+  std::vector<std::uint64_t> any(chunks, 0);
+  loop.for_each(chunks, 1, [&](std::size_t c) {
+    for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) any[c] |= v[i].cell;
+  });
   std::uint64_t all = 0;
-  for (const Entry& e : v) all |= e.cell;
-  std::vector<Entry> tmp(v.size());
+  for (std::uint64_t a : any) all |= a;
+  std::vector<Entry> tmp;
+  reserve_touched(tmp, n, loop);
+  tmp.resize(n);
+  std::vector<std::array<std::size_t, 2048>> at(chunks);
   for (int shift = 0; shift < 64 && (all >> shift) != 0; shift += 11) {
-    std::array<std::size_t, 2049> count{};
-    for (const Entry& e : v) ++count[((e.cell >> shift) & 2047) + 1];
-    for (int i = 1; i < 2049; ++i) count[i] += count[i - 1];
-    for (const Entry& e : v) tmp[count[(e.cell >> shift) & 2047]++] = e;
+    loop.for_each(chunks, 1, [&](std::size_t c) {
+      at[c].fill(0);
+      for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) ++at[c][(v[i].cell >> shift) & 2047];
+    });
+    std::size_t run = 0;
+    for (std::size_t d = 0; d < 2048; ++d)
+      for (std::size_t c = 0; c < chunks; ++c) {
+        const std::size_t k = at[c][d];
+        at[c][d] = run;
+        run += k;
+      }
+    loop.for_each(chunks, 1, [&](std::size_t c) {
+      for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) tmp[at[c][(v[i].cell >> shift) & 2047]++] = v[i];
+    });
     v.swap(tmp);
   }
 }
@@ -119,7 +140,7 @@ BoxPairs overlapping_box_pairs(const std::vector<Box3>& bb, const ParallelLoop& 
     entries.clear();
     for (std::size_t i = 0; i < n; ++i) entries.push_back({0, static_cast<std::uint32_t>(i)});
   }
-  radix_sort(entries);
+  radix_sort(entries, loop);
   std::vector<std::size_t> cell_start;
   for (std::size_t i = 0; i < entries.size(); ++i)
     if (i == 0 || entries[i].cell != entries[i - 1].cell) cell_start.push_back(i);
