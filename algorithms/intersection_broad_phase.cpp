@@ -106,7 +106,11 @@ BoxPairs overlapping_box_pairs(const std::vector<Box3>& bb, const ParallelLoop& 
   // cells and is tested against every box instead: a few such boxes cost a few linear passes.
   // Each box's cell count on all cores, then its entries into their place (item order).
   std::vector<std::uint32_t> big;
+  // Each box's low cell: the low corner of two boxes' overlap lies in the cell of the larger
+  // low keys (floor((x - lo) / cell) does not decrease with x), so no division per pair.
+  std::vector<std::array<std::int32_t, 3>> low;
   if (!coarse) {
+    low.resize(n);
     std::vector<std::uint32_t> at(n + 1, 0);
     auto span = [&](std::size_t i, std::int64_t* c0, std::int64_t* c1) {
       for (int k = 0; k < 3; ++k) c0[k] = g.key(k, bb[i][k]), c1[k] = g.key(k, bb[i][k + 3]);
@@ -116,6 +120,7 @@ BoxPairs overlapping_box_pairs(const std::vector<Box3>& bb, const ParallelLoop& 
       std::int64_t c0[3], c1[3];
       const std::int64_t cells = span(i, c0, c1);
       at[i + 1] = cells > 64 ? 0 : static_cast<std::uint32_t>(cells);
+      for (int k = 0; k < 3; ++k) low[i][k] = static_cast<std::int32_t>(c0[k]);  // 0 <= c0 < 2^20
     });
     for (std::size_t i = 0; i < n; ++i) {
       std::int64_t c0[3], c1[3];
@@ -164,8 +169,8 @@ BoxPairs overlapping_box_pairs(const std::vector<Box3>& bb, const ParallelLoop& 
         std::uint32_t ta = entries[a].item, tc = entries[c].item;
         if (!overlap(ta, tc)) continue;
         if (!coarse) {  // the pair only in the cell of the overlap's low corner
-          const Box3 &A = bb[ta], &B = bb[tc];
-          std::uint64_t own = g.id(g.key(0, std::max(A[0], B[0])), g.key(1, std::max(A[1], B[1])), g.key(2, std::max(A[2], B[2])));
+          const auto &A = low[ta], &B = low[tc];
+          std::uint64_t own = g.id(std::max(A[0], B[0]), std::max(A[1], B[1]), std::max(A[2], B[2]));
           if (own != entries[i].cell) continue;
         }
         take(ta, tc, w);
