@@ -1,7 +1,9 @@
 // The plotting 2D stage (see plot.hpp).
 #include "algorithms/plot.hpp"
 
+#include <array>
 #include <chrono>
+#include <iterator>
 #include <cmath>
 #include <limits>
 
@@ -101,12 +103,21 @@ Plot plot_from_clean(const CleanDrawing& c, const PlotOptions& opt, double secon
   plot.stats.exact_point_tests = c.exact_point_tests;
   plot.stats.exact_line_tests = c.exact_line_tests;
   auto t1 = std::chrono::steady_clock::now();
+  // The edges of each layer (seen as visible, through or hidden, then kind), in one pass.
+  constexpr std::size_t nk = std::size(kKinds);
+  std::array<std::vector<std::uint32_t>, 3 * nk> layer_ids;
+  for (std::uint32_t e = 0; e < c.edges.size(); ++e) {
+    const CleanEdge& ce = c.edges[e];
+    const int seen = ce.visible && !ce.through ? 0 : (!ce.visible && ce.through ? 1 : (!ce.visible ? 2 : -1));
+    if (seen < 0) continue;
+    for (std::size_t k = 0; k < nk; ++k)
+      if (ce.kind == kKinds[k]) layer_ids[seen * nk + k].push_back(e);
+  }
   for (int seen : {0, 1, 2})  // visible, through, hidden
-    for (LineKind k : kKinds) {
+    for (std::size_t ki = 0; ki < nk; ++ki) {
+      const LineKind k = kKinds[ki];
       const bool visible = seen == 0, through = seen == 1;
-      std::vector<std::uint32_t> ids;
-      for (std::uint32_t e = 0; e < c.edges.size(); ++e)
-        if (c.edges[e].visible == visible && c.edges[e].through == through && c.edges[e].kind == k) ids.push_back(e);
+      const std::vector<std::uint32_t>& ids = layer_ids[seen * nk + ki];
       if (ids.empty()) continue;
       PlotLayer layer;
       layer.visible = visible;
