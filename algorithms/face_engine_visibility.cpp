@@ -113,11 +113,9 @@ template <class P>
 void Engine<P>::fill_whole(LineDrawing& res, const std::vector<signed char>& whole) const {
   ParallelLoop(opt_.threads).for_each(whole.size(), 4096, [&](std::size_t i) {
     if (whole[i] < 0) return;
-    std::vector<Piece>& pieces = res.segments[i].pieces;
-    pieces.clear();
-    pieces.resize(1);  // built in place: a braced list would copy its GMP numbers
-    pieces[0].t1 = 1;
-    pieces[0].visible = whole[i] == 0;
+    Piece kind;
+    kind.visible = whole[i] == 0;
+    res.segments[i].pieces.set_whole(kind);
   });
 }
 

@@ -38,6 +38,79 @@ void Segment::set_ends(Point3 a, Point3 b) {
   b_ = &(*own_)[1];
 }
 
+namespace {
+
+int flags_of(const Piece& p) {
+  return (p.visible ? 1 : 0) | (p.behind_eye ? 2 : 0) | (p.clipped ? 4 : 0) | (p.through ? 8 : 0);
+}
+
+// The sixteen one-piece lists' piece [0, 1], one per combination of flags; never freed (the
+// number pool may be gone when static destructors run).
+const Piece* whole_pieces() {
+  static const Piece* table = [] {
+    auto* t = new Piece[16];
+    for (int f = 0; f < 16; ++f) {
+      t[f].t0 = 0;
+      t[f].t1 = 1;
+      t[f].visible = (f & 1) != 0;
+      t[f].behind_eye = (f & 2) != 0;
+      t[f].clipped = (f & 4) != 0;
+      t[f].through = (f & 8) != 0;
+    }
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace
+
+const Piece* PieceList::begin() const {
+  if (whole_) return whole_pieces() + (whole_ - 1);
+  return many_ ? many_->data() : nullptr;
+}
+
+bool PieceList::operator==(const PieceList& o) const {
+  if (size() != o.size()) return false;
+  for (std::size_t i = 0; i < size(); ++i) {
+    const Piece& a = (*this)[i];
+    const Piece& b = o[i];
+    if (a.t0 != b.t0 || a.t1 != b.t1 || !a.same_kind(b)) return false;
+  }
+  return true;
+}
+
+void PieceList::set_whole(const Piece& kind) {
+  whole_ = static_cast<std::uint8_t>(1 + flags_of(kind));  // before `kind` may go with many_
+  many_.reset();
+}
+
+void PieceList::assign(std::vector<Piece> v) {
+  if (v.size() == 1 && v[0].t0 == 0 && v[0].t1 == 1) {
+    set_whole(v[0]);
+    return;
+  }
+  whole_ = 0;
+  if (v.empty()) many_.reset();
+  else if (many_) *many_ = std::move(v);
+  else many_ = std::make_unique<std::vector<Piece>>(std::move(v));
+}
+
+std::vector<Piece>& PieceList::edit() {
+  if (whole_) {
+    many_ = std::make_unique<std::vector<Piece>>(1, whole_pieces()[whole_ - 1]);
+    whole_ = 0;
+  } else if (!many_) {
+    many_ = std::make_unique<std::vector<Piece>>();
+  }
+  return *many_;
+}
+
+void PieceList::compact() {
+  if (!many_) return;
+  if (many_->empty()) many_.reset();
+  else if (many_->size() == 1 && (*many_)[0].t0 == 0 && (*many_)[0].t1 == 1) set_whole((*many_)[0]);
+}
+
 std::vector<Piece> pieces_from_hidden(std::vector<std::pair<Rational, Rational>> hidden,
                                       const std::optional<std::pair<Rational, Rational>>& depth) {
   // Common cases without any arithmetic: nothing hidden, or one span over the whole edge (the

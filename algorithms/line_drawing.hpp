@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -29,6 +30,60 @@ struct Piece {
   bool same_kind(const Piece& o) const {
     return visible == o.visible && behind_eye == o.behind_eye && clipped == o.clipped && through == o.through;
   }
+};
+
+/// A segment's pieces in order of t: a vector's interface for reading, mutations named. Most
+/// segments of a large mesh are one piece over [0, 1] (wholly visible, or wholly hidden): such a
+/// list holds no numbers, only the piece's four flags, and reads as a shared [0, 1] piece. Any
+/// list that becomes one piece over [0, 1] is stored that way. 16 bytes.
+class PieceList {
+ public:
+  PieceList() = default;
+  PieceList(std::vector<Piece> v) { assign(std::move(v)); }  // NOLINT: implicit, like the vector
+  PieceList(std::initializer_list<Piece> l) { assign(std::vector<Piece>(l)); }
+  PieceList(const PieceList& o) : many_(o.many_ ? std::make_unique<std::vector<Piece>>(*o.many_) : nullptr), whole_(o.whole_) {}
+  PieceList(PieceList&&) noexcept = default;
+  PieceList& operator=(const PieceList& o) {
+    if (this != &o) *this = PieceList(o);
+    return *this;
+  }
+  PieceList& operator=(PieceList&&) noexcept = default;
+  PieceList& operator=(std::vector<Piece> v) {
+    assign(std::move(v));
+    return *this;
+  }
+  PieceList& operator=(std::initializer_list<Piece> l) {
+    assign(std::vector<Piece>(l));
+    return *this;
+  }
+
+  std::size_t size() const { return whole_ ? 1 : (many_ ? many_->size() : 0); }
+  bool empty() const { return size() == 0; }
+  const Piece* begin() const;
+  const Piece* end() const { return begin() + size(); }
+  const Piece& operator[](std::size_t i) const { return begin()[i]; }
+  const Piece& front() const { return *begin(); }
+  const Piece& back() const { return end()[-1]; }
+  /// The pieces as a vector (a copy).
+  std::vector<Piece> to_vector() const { return std::vector<Piece>(begin(), end()); }
+  bool operator==(const PieceList& o) const;
+
+  /// One piece over [0, 1] of the kind of `kind` (its t0, t1 are not read).
+  void set_whole(const Piece& kind);
+  void assign(std::vector<Piece> v);
+  void clear() {
+    many_.reset();
+    whole_ = 0;
+  }
+  void push_back(Piece p) { edit().push_back(std::move(p)); }
+  /// The pieces as a vector to change in place (a one-piece list is unpacked first); call
+  /// compact() after changing to pack a list that became one piece over [0, 1].
+  std::vector<Piece>& edit();
+  void compact();
+
+ private:
+  std::unique_ptr<std::vector<Piece>> many_;
+  std::uint8_t whole_ = 0;  // 0: many_ (or empty); else 1 + the one [0, 1] piece's flags
 };
 
 /// What a drawn line is: a boundary edge of an open surface, a crease (dihedral angle over the
@@ -74,7 +129,7 @@ struct Segment {
   int body2 = -1;                // Intersection: the second body
   int v0 = -1, v1 = -1;          // Edge: input vertex indices, from v0 toward v1
   int face0 = -1, face1 = -1;    // Edge: its two faces; Intersection: the facets' faces
-  std::vector<Piece> pieces;     // in order of t, covering [0, 1]
+  PieceList pieces;              // in order of t, covering [0, 1]
   Point3 at(const Rational& t) const;
 
   /// The ends, world coordinates (set before use).

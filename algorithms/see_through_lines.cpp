@@ -8,7 +8,7 @@
 
 namespace hlr {
 
-std::vector<Piece> refine_through(const std::vector<Piece>& full, const std::vector<Piece>& opaque) {
+std::vector<Piece> refine_through(const PieceList& full, const PieceList& opaque) {
   std::vector<Piece> out;
   std::size_t j = 0;
   for (const Piece& p : full) {

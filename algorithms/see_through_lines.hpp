@@ -23,6 +23,6 @@ std::size_t mark_see_through(LineDrawing& drawing, const std::vector<const Polyh
 
 /// The pieces of `full` refined by `opaque` (the same segment's pieces when only opaque bodies
 /// hide): where `full` is hidden and `opaque` visible, the piece is through. Exposed for tests.
-std::vector<Piece> refine_through(const std::vector<Piece>& full, const std::vector<Piece>& opaque);
+std::vector<Piece> refine_through(const PieceList& full, const PieceList& opaque);
 
 }  // namespace hlr

@@ -401,12 +401,13 @@ RenderResult HorizonDrawing::model(const std::string& name) const {
     s.v0 = e.v0;
     s.v1 = e.v1;
     s.borrow_ends(body.body.vertices()[static_cast<std::size_t>(s.v0)], body.body.vertices()[static_cast<std::size_t>(s.v1)]);
-    s.pieces.resize(e.count);
+    std::vector<Piece> pieces(e.count);
     for (std::uint32_t n = 0; n < e.count; ++n) {
       const EdgePiece& q = pieces_[e.first + n];
-      Piece& p = s.pieces[n];
+      Piece& p = pieces[n];
       p.t0 = *q.t0, p.t1 = *q.t1, p.visible = q.visible;
     }
+    s.pieces = std::move(pieces);
   });
   r.drawing.stats.edges = r.drawing.segments.size();
   return r;

@@ -189,7 +189,11 @@ void merge_tiles(LineDrawing& d, const std::vector<TileFile>& tiles, const std::
     f.comparisons += t.comparisons, f.comparisons_identical += t.comparisons_identical, f.comparisons_exact += t.comparisons_exact;
   }
   std::vector<std::string> errors(d.segments.size());
-  ParallelLoop(threads).for_each(d.segments.size(), 1024, [&](std::size_t i) { errors[i] = join_tile_pieces(d.segments[i].pieces); });
+  ParallelLoop(threads).for_each(d.segments.size(), 1024, [&](std::size_t i) {
+    PieceList& pieces = d.segments[i].pieces;
+    errors[i] = join_tile_pieces(pieces.edit());
+    pieces.compact();
+  });
   for (std::size_t i = 0; i < errors.size(); ++i)
     if (!errors[i].empty()) throw std::invalid_argument("merge: segment " + std::to_string(i) + ": " + errors[i]);
 }
