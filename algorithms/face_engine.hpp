@@ -100,20 +100,22 @@ class Engine {
   // face_engine_occluders.cpp
   bool neighbour(const Tri& t, int k, int& face, int& third) const;
   void vertex_rules();
-  void build_occluders(const std::vector<std::vector<DrawnEdge>>& drawn);
+  void project_vertices();
+  void select_occluders(const std::vector<std::vector<DrawnEdge>>& drawn);
+  void build_occluders();
   std::function<bool(const Tri&)> near_segments(const std::vector<std::vector<DrawnEdge>>& drawn, ScreenGrid& grid,
                                                 std::vector<ScreenRect>& rects) const;
-  void make_occluder(const Tri& t0, Occluder<P>& o, Box& bx) const;
+  void make_occluder(const Tri& t0, std::uint8_t closed, Occluder<P>& o, Box& bx) const;
   bool closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs) const;
   void side_plane(int p, int q, Vec<P>& m, V& c) const;
   // face_engine_edges.cpp
   std::vector<DrawnEdge> collect_edges(int b) const;
-  void add_edge_segments(int b, const std::vector<DrawnEdge>& drawn, LineDrawing& res);
+  Segment edge_segment(int b, const DrawnEdge& e) const;
   bool opposite_in_projection(int u, int v, int x, int y) const;
   bool crease(int b, const EdgeUse& a, const EdgeUse& c) const;
   // face_engine_intersections.cpp
   void find_intersections(LineDrawing& res);
-  void add_intersections(LineDrawing& res);
+  std::vector<Segment> crossing_segments(LineDrawing& res);
   bool pair_may_cross(std::uint32_t ta, std::uint32_t tc) const;
   bool may_meet(const Tri& x, const Tri& y) const;
   bool extent_on_plane(const Tri& t, const Tri& o, int axis, double out[2], double& scale) const;
@@ -121,12 +123,13 @@ class Engine {
   std::optional<std::pair<Point3, Point3>> segment(const Tri& x, const Tri& y) const;
   const Point3& world(int g) const;
   // face_engine_visibility.cpp
-  std::vector<signed char> visibility(LineDrawing& res);
+  std::vector<PieceList> visibility(const std::vector<std::vector<DrawnEdge>>& drawn, const std::vector<Segment>& crossing,
+                                    LineDrawing& res);
   void release_arrays();
-  void fill_whole(LineDrawing& res, const std::vector<signed char>& whole) const;
   std::optional<std::pair<Rational, Rational>> depth_of(const Segment& s) const;
   void candidates(const Box& seg, Work& wk) const;
   void solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed char& whole) const;
+  void solve_into(Segment& s, const std::array<int, 2>& gv, Work& wk, PieceList& out) const;
   void test_integer(const Occluder<P>& o, const Vec<P>& X0, const Vec<P>& X1, Work& wk) const;
   bool end_on_hides(const Occluder<P>& o, int on_side) const;
   void merge(Work& wk, std::vector<std::pair<Rational, Rational>>& out) const;
@@ -159,6 +162,8 @@ class Engine {
   std::vector<std::vector<char>> degenerate_;
   std::vector<std::vector<Vec<P>>> face_normal_;
   std::vector<Tri> tris_;
+  std::vector<int> sel_;               // the triangles that become occluders
+  std::vector<std::uint8_t> closed_;   // their closed sides (bit k + 1: side k)
   std::vector<Occluder<P>> occ_;
   std::size_t hiding_ = 0;  // triangles that hide (occ_ without a tile's restriction)
   std::vector<Box> boxes_;
@@ -167,8 +172,7 @@ class Engine {
   std::vector<std::array<double, 3>> vproj_;
   std::vector<char> vfront_;
   std::vector<char> vertex_closed_;
-  std::vector<std::array<int, 2>> gv_;
-  std::vector<CrossLine> cross_;  // intersection lines, found before the occluders are built  // global vertex ids of each segment's ends (-1: rational ends)
+  std::vector<CrossLine> cross_;  // intersection lines, found before the occluders are built
 };
 
 }  // namespace hlr::face_route

@@ -43,37 +43,53 @@ LineDrawing Engine<P>::run() {
     res.stats.setup_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     return res;
   }
-  // Intersection lines first: their broad phase's arrays come and go before the occluders and
-  // the segments exist.
-  const auto ti0 = Clock::now();
-  if (opt_.intersections) find_intersections(res);
-  const auto ti1 = Clock::now();
-  // The drawn edges as compact records (the occluders may be chosen by them); the topology
-  // is freed before the segments are made.
+  // The drawn edges as compact records, the occluders chosen and their closed sides read off
+  // the topology, which is then freed: before the intersection lines' broad phase when the
+  // occluders do not depend on those lines (no feature-line filter), else after it.
   std::vector<std::vector<DrawnEdge>> drawn(bodies_.size());
-  std::size_t total = cross_.size();
+  std::size_t total = 0;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     drawn[b] = collect_edges(static_cast<int>(b));
     total += drawn[b].size();
   }
-  build_occluders(drawn);
+  vertex_rules();
+  project_vertices();
+  const bool early = cam_.perspective || total * 8 >= tris_.size();  // near_segments() would not apply
+  auto free_topology = [&] {
+    std::vector<BodyTopology>().swap(topo_);
+    std::vector<std::vector<Vec<P>>>().swap(face_normal_);
+  };
+  if (early) select_occluders(drawn), free_topology();
+  const auto ti0 = Clock::now();
+  if (opt_.intersections) find_intersections(res);
+  const auto ti1 = Clock::now();
+  if (!early) select_occluders(drawn), free_topology();
+  total += cross_.size();
+  build_occluders();
   res.stats.faces->occluders = hiding_;  // a tile's too: every hiding triangle of the scene
-  std::vector<BodyTopology>().swap(topo_);
-  std::vector<std::vector<Vec<P>>>().swap(face_normal_);
+  std::vector<Segment> crossing = crossing_segments(res);
+  auto t1 = Clock::now();
+  // Visibility runs on the compact records; the segments are made once the occluders, the grid
+  // and the triangles are freed, so that they do not add to the engine's peak.
+  std::vector<PieceList> pieces = visibility(drawn, crossing, res);
+  release_arrays();
   const ParallelLoop loop(opt_.threads);
-  reserve_touched(res.segments, total, loop);  // one thread fills them in order
-  reserve_touched(gv_, total, loop);
+  reserve_touched(res.segments, total, loop);
+  res.segments.resize(total);
+  std::size_t at = 0;  // the segments on all cores, in the order of the pieces
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    add_edge_segments(static_cast<int>(b), drawn[b], res);
+    loop.for_each(drawn[b].size(), 4096, [&](std::size_t k) {
+      Segment& s = res.segments[at + k];
+      s = edge_segment(static_cast<int>(b), drawn[b][k]);
+      s.pieces = std::move(pieces[at + k]);
+    });
+    at += drawn[b].size();
     std::vector<DrawnEdge>().swap(drawn[b]);
   }
-  add_intersections(res);
-  auto t1 = Clock::now();
-  // Most segments come out as one piece over [0, 1]: those are made once the occluders, the
-  // grid and the triangles are freed, so that the pieces do not add to the engine's peak.
-  std::vector<signed char> whole = visibility(res);
-  release_arrays();
-  fill_whole(res, whole);
+  for (Segment& s : crossing) {
+    s.pieces = std::move(pieces[at]);
+    res.segments[at++] = std::move(s);
+  }
   auto t3 = Clock::now();
   res.stats.setup_seconds = std::chrono::duration<double>((t1 - t0) - (ti1 - ti0)).count();
   res.stats.intersections_seconds = std::chrono::duration<double>(ti1 - ti0).count();

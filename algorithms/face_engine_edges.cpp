@@ -64,25 +64,20 @@ std::vector<DrawnEdge> Engine<P>::collect_edges(int b) const {
   return out;
 }
 
-// The drawn edges of body b as segments (their ends borrowed from the body's vertices).
+// A drawn edge of body b as a segment (its ends borrowed from the body's vertices).
 template <class P>
-void Engine<P>::add_edge_segments(int b, const std::vector<DrawnEdge>& drawn, LineDrawing& res) {
+Segment Engine<P>::edge_segment(int b, const DrawnEdge& e) const {
   const Polyhedron& p = *bodies_[b];
-  for (const DrawnEdge& e : drawn) {
-    Segment s;
-    s.body = b;
-    s.line = static_cast<LineKind>(e.kind);
-    s.v0 = e.u;
-    s.v1 = e.v;
-    s.face0 = e.face0;
-    s.face1 = e.face1;
-    s.borrow_ends(p.vertices()[e.u], p.vertices()[e.v]);
-    s.self_hidden = e.self_hidden;
-    ++res.stats.edges;
-    if (s.self_hidden) ++res.stats.self_hidden;
-    res.segments.push_back(std::move(s));
-    gv_.push_back({voff_[b] + e.u, voff_[b] + e.v});
-  }
+  Segment s;
+  s.body = b;
+  s.line = static_cast<LineKind>(e.kind);
+  s.v0 = e.u;
+  s.v1 = e.v;
+  s.face0 = e.face0;
+  s.face1 = e.face1;
+  s.borrow_ends(p.vertices()[e.u], p.vertices()[e.v]);
+  s.self_hidden = e.self_hidden;
+  return s;
 }
 
 // The far vertices x and y of two triangles on edge (u, v) lie strictly on opposite sides of

@@ -117,7 +117,9 @@ void Engine<P>::find_intersections(LineDrawing& res) {
 
 // The intersection lines as segments, after the edges.
 template <class P>
-void Engine<P>::add_intersections(LineDrawing& res) {
+std::vector<Segment> Engine<P>::crossing_segments(LineDrawing& res) {
+  std::vector<Segment> out;
+  out.reserve(cross_.size());
   for (auto& [b0, b1, f0, f1, a, b] : cross_) {
     Segment s;
     s.kind = Segment::Kind::Intersection;
@@ -128,10 +130,10 @@ void Engine<P>::add_intersections(LineDrawing& res) {
     s.face1 = f1;
     s.set_ends(a, b);
     ++res.stats.intersection_segments;
-    res.segments.push_back(std::move(s));
-    gv_.push_back({-1, -1});
+    out.push_back(std::move(s));
   }
   std::vector<CrossLine>().swap(cross_);
+  return out;
 }
 
 // The exact segment of two triangles (triangle_intersection's rules: no line when the planes

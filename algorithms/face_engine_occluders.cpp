@@ -134,12 +134,10 @@ std::function<bool(const Tri&)> Engine<P>::near_segments(const std::vector<std::
   };
 }
 
+// Drawing projections of every vertex, once, on all cores.
 template <class P>
-void Engine<P>::build_occluders(const std::vector<std::vector<DrawnEdge>>& drawn) {
-  vertex_rules();
+void Engine<P>::project_vertices() {
   const ParallelLoop loop(opt_.threads);
-  std::vector<Box> boxes;
-  // Drawing projections of every vertex, once, on all cores.
   vproj_.resize(X_.size());
   vfront_.assign(X_.size(), 1);
   for (std::size_t b = 0; b < bodies_.size(); ++b)
@@ -148,10 +146,17 @@ void Engine<P>::build_occluders(const std::vector<std::vector<DrawnEdge>>& drawn
       vproj_[voff_[b] + i] = proj_.project(q);
       if (cam_.perspective) vfront_[voff_[b] + i] = cam_.in_front(q) == Sign::Positive;
     });
+}
+
+// The triangles that become occluders (counting the ones that hide into hiding_), and which of
+// their sides are closed (bit k+1: side k), while the topology is still there.
+template <class P>
+void Engine<P>::select_occluders(const std::vector<std::vector<DrawnEdge>>& drawn) {
   ScreenGrid seg_grid;
   std::vector<ScreenRect> seg_rects;
   const std::function<bool(const Tri&)> near = near_segments(drawn, seg_grid, seg_rects);
-  std::vector<int> sel;
+  sel_.clear();
+  hiding_ = 0;
   for (std::size_t i = 0; i < tris_.size(); ++i) {
     const Tri& t0 = tris_[i];
     int fs = facing_[t0.body][t0.face];
@@ -167,13 +172,41 @@ void Engine<P>::build_occluders(const std::vector<std::vector<DrawnEdge>>& drawn
       const int o = voff_[t0.body];
       if (!opt_.may_occlude(t0.body, {t0.v[0] - o, t0.v[1] - o, t0.v[2] - o})) continue;
     }
-    sel.push_back(static_cast<int>(i));
+    sel_.push_back(static_cast<int>(i));
   }
-  reserve_touched(occ_, sel.size(), loop);  // pages touched on all cores, then built on all cores
-  reserve_touched(boxes, sel.size(), loop);
-  occ_.resize(sel.size());
-  boxes.resize(sel.size());
-  loop.for_each(sel.size(), 1024, [&](std::size_t i) { make_occluder(tris_[sel[i]], occ_[i], boxes[i]); });
+  closed_.assign(sel_.size(), 0);
+  ParallelLoop(opt_.threads).for_each(sel_.size(), 1024, [&](std::size_t i) {
+    Tri t = tris_[sel_[i]];
+    const int fs = facing_[t.body][t.face];
+    if (fs < 0) flip(t);  // as make_occluder turns it
+    for (int k = 0; k < 3; ++k) {
+      if (!t.edge[k]) continue;  // a diagonal: make_occluder closes it
+      Vec<P> m;
+      V c;
+      if (!solid_[t.body]) {  // the open-surface rule reads the side plane, oriented inward
+        side_plane(t.v[k], t.v[(k + 1) % 3], m, c);
+        if (P::sign(dot<P>(m, X_[t.v[(k + 2) % 3]]) - c) < 0) {
+          m = neg<P>(m);
+          c = -c;
+        }
+      }
+      if (closed_side(t, k, m, c, fs)) closed_[i] |= static_cast<std::uint8_t>(1u << (k + 1));
+    }
+  });
+}
+
+// The selected triangles' occluders and boxes, and the grid over the boxes.
+template <class P>
+void Engine<P>::build_occluders() {
+  const ParallelLoop loop(opt_.threads);
+  std::vector<Box> boxes;
+  reserve_touched(occ_, sel_.size(), loop);  // pages touched on all cores, then built on all cores
+  reserve_touched(boxes, sel_.size(), loop);
+  occ_.resize(sel_.size());
+  boxes.resize(sel_.size());
+  loop.for_each(sel_.size(), 1024, [&](std::size_t i) { make_occluder(tris_[sel_[i]], closed_[i], occ_[i], boxes[i]); });
+  std::vector<int>().swap(sel_);
+  std::vector<std::uint8_t>().swap(closed_);
   // Widen every box by a margin far above the error of the double projections (a filter
   // only: it skips work, never decides; bounds::kBoxMargin).
   double ext = 1e-300;
@@ -197,7 +230,7 @@ void Engine<P>::build_occluders(const std::vector<std::vector<DrawnEdge>>& drawn
 }
 
 template <class P>
-void Engine<P>::make_occluder(const Tri& t0, Occluder<P>& o, Box& bx) const {
+void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occluder<P>& o, Box& bx) const {
   const int b = t0.body;
   const int fs = facing_[b][t0.face];
   Tri t = t0;
@@ -223,7 +256,7 @@ void Engine<P>::make_occluder(const Tri& t0, Occluder<P>& o, Box& bx) const {
     }
     o.m[k + 1] = m;
     o.c[k + 1] = c;
-    o.closed[k + 1] = !t.edge[k] || closed_side(t, k, m, c, fs);
+    o.closed[k + 1] = !t.edge[k] || (closed >> (k + 1) & 1) != 0;
   }
   const Point3* pts[3];
   const std::array<double, 3>* proj[3];

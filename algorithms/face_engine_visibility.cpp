@@ -61,25 +61,36 @@ bool Engine<P>::end_on_hides(const Occluder<P>& o, int on_side) const {
   return true;
 }
 
-// Returns, per segment, 0 or 1 where its pieces are one piece over [0, 1], visible or hidden
-// (fill_whole makes them later), -1 where solve() set its pieces.
+// The pieces of every segment: the drawn edges in order of body (each made as a segment only
+// while it is solved), then the intersection lines.
 template <class P>
-std::vector<signed char> Engine<P>::visibility(LineDrawing& res) {
-  const std::size_t n = res.segments.size();
+std::vector<PieceList> Engine<P>::visibility(const std::vector<std::vector<DrawnEdge>>& drawn, const std::vector<Segment>& crossing,
+                                             LineDrawing& res) {
+  std::vector<std::size_t> first(drawn.size() + 1, 0);  // each body's first edge
+  for (std::size_t b = 0; b < drawn.size(); ++b) {
+    first[b + 1] = first[b] + drawn[b].size();
+    res.stats.edges += drawn[b].size();
+    for (const DrawnEdge& e : drawn[b]) res.stats.self_hidden += e.self_hidden;
+  }
+  const std::size_t edges = first.back(), n = edges + crossing.size();
   ParallelLoop loop(opt_.threads);
+  std::vector<PieceList> out(n);
   std::vector<Work> work(loop.workers());
   std::vector<char> ready(work.size(), 0);
-  std::vector<signed char> whole(n, -1);
-  loop.run(n, 512, [&](unsigned w, std::size_t b, std::size_t e) {
+  loop.run(n, 512, [&](unsigned w, std::size_t lo, std::size_t hi) {
     Work& wk = work[w];
     if (!ready[w]) wk.stamps.reset(occ_.size()), ready[w] = 1;
-    for (std::size_t i = b; i < e; ++i) {
-      Segment& s = res.segments[i];
-      if (opt_.decide && !opt_.decide(s)) {
-        whole[i] = 1;  // a placeholder: hidden over [0, 1]
-        continue;
+    std::size_t b = static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), lo) - first.begin()) - 1;
+    for (std::size_t i = lo; i < hi; ++i) {
+      if (i < edges) {
+        while (i >= first[b + 1]) ++b;
+        const DrawnEdge& e = drawn[b][i - first[b]];
+        Segment s = edge_segment(static_cast<int>(b), e);
+        solve_into(s, {voff_[b] + e.u, voff_[b] + e.v}, wk, out[i]);
+      } else {
+        Segment s = crossing[i - edges];  // shares its ends
+        solve_into(s, {-1, -1}, wk, out[i]);
       }
-      solve(s, gv_[i], wk, whole[i]);
     }
   });
   FaceRouteStats& fs = *res.stats.faces;
@@ -91,7 +102,7 @@ std::vector<signed char> Engine<P>::visibility(LineDrawing& res) {
     fs.comparisons_identical += w.c.identical;
   }
   if (std::is_same_v<P, Big>) res.stats.pairs_rational = res.stats.pairs_tested;
-  return whole;
+  return out;
 }
 
 // Everything visibility needed, freed (the engine is done once visibility has run).
@@ -105,18 +116,20 @@ void Engine<P>::release_arrays() {
   std::vector<char>().swap(vfront_);
   std::vector<char>().swap(vertex_closed_);
   std::vector<Vec<P>>().swap(X_);
-  std::vector<std::array<int, 2>>().swap(gv_);
 }
 
-// The one-piece segments' pieces, on all cores.
+// One segment's pieces into `out`: a one-piece list when it is wholly visible or hidden (a
+// tile's segments it does not decide: hidden placeholders).
 template <class P>
-void Engine<P>::fill_whole(LineDrawing& res, const std::vector<signed char>& whole) const {
-  ParallelLoop(opt_.threads).for_each(whole.size(), 4096, [&](std::size_t i) {
-    if (whole[i] < 0) return;
-    Piece kind;
-    kind.visible = whole[i] == 0;
-    res.segments[i].pieces.set_whole(kind);
-  });
+void Engine<P>::solve_into(Segment& s, const std::array<int, 2>& gv, Work& wk, PieceList& out) const {
+  signed char whole = -1;
+  if (opt_.decide && !opt_.decide(s)) whole = 1;
+  else solve(s, gv, wk, whole);
+  if (whole < 0) {
+    out = std::move(s.pieces);
+    return;
+  }
+  out.set_whole(whole == 0);
 }
 
 template <class P>

@@ -70,6 +70,11 @@ class PieceList {
 
   /// One piece over [0, 1] of the kind of `kind` (its t0, t1 are not read).
   void set_whole(const Piece& kind);
+  /// One piece over [0, 1], visible or hidden (no other flag).
+  void set_whole(bool visible) {
+    many_.reset();
+    whole_ = visible ? 2 : 1;
+  }
   void assign(std::vector<Piece> v);
   void clear() {
     many_.reset();
