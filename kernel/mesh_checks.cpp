@@ -24,7 +24,7 @@ struct EdgeUse {
   int backward = 0;  // traversals b -> a
 };
 
-void check_edges(const std::vector<std::vector<int>>& faces, MeshReport& r) {
+void check_edges(const std::vector<Face>& faces, MeshReport& r) {
   std::unordered_map<std::uint64_t, EdgeUse> uses;
   uses.reserve(faces.size() * 2);
   for (const auto& f : faces)
@@ -55,7 +55,7 @@ int find(std::vector<int>& parent, int x) {
 
 // A vertex is non-manifold when the faces around it fall into more than one fan: corners of
 // faces at v are joined when they share an edge v-w.
-void check_vertices(std::size_t nv, const std::vector<std::vector<int>>& faces, MeshReport& r) {
+void check_vertices(std::size_t nv, const std::vector<Face>& faces, MeshReport& r) {
   std::vector<std::vector<std::pair<int, int>>> corners(nv);  // per vertex: (prev, next)
   std::vector<int> uses(nv, 0);
   for (const auto& f : faces)
@@ -84,7 +84,7 @@ void check_vertices(std::size_t nv, const std::vector<std::vector<int>>& faces, 
   }
 }
 
-void check_faces(const std::vector<Point3>& vs, const std::vector<std::vector<int>>& faces,
+void check_faces(const std::vector<Point3>& vs, const std::vector<Face>& faces,
                  const std::vector<Plane>& planes, MeshReport& r) {
   for (std::size_t fi = 0; fi < faces.size(); ++fi) {
     const auto& f = faces[fi];
@@ -166,7 +166,7 @@ void check_t_junctions(const std::vector<Point3>& vs, MeshReport& r) {
 
 // Planar, non-degenerate faces of 4+ vertices that are not simple polygons (simple_polygon.hpp:
 // a convex face is recognised in linear time, any other by a sweep, O(n log n)).
-void check_self_intersections(const std::vector<Point3>& vs, const std::vector<std::vector<int>>& faces,
+void check_self_intersections(const std::vector<Point3>& vs, const std::vector<Face>& faces,
                               const std::vector<Plane>& planes, MeshReport& r) {
   std::vector<char> skip(faces.size(), 0);
   for (const auto& d : r.degenerate_faces) skip[d.face] = 1;
@@ -184,7 +184,7 @@ void check_self_intersections(const std::vector<Point3>& vs, const std::vector<s
 
 // Closed, oriented meshes: the signed volume of every component (faces joined across edges);
 // a negative one is inside out or the shell of a cavity.
-void check_components(const std::vector<Point3>& vs, const std::vector<std::vector<int>>& faces, MeshReport& r) {
+void check_components(const std::vector<Point3>& vs, const std::vector<Face>& faces, MeshReport& r) {
   if (!r.closed() || !r.oriented() || faces.empty()) return;
   std::vector<int> parent(faces.size());
   std::iota(parent.begin(), parent.end(), 0);
@@ -209,7 +209,7 @@ void check_components(const std::vector<Point3>& vs, const std::vector<std::vect
 }  // namespace
 
 MeshReport check_mesh(const std::vector<Point3>& vertices,
-                      const std::vector<std::vector<int>>& faces,
+                      const std::vector<Face>& faces,
                       const std::vector<Plane>& planes) {
   MeshReport r;
   check_edges(faces, r);

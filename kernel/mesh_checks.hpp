@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "kernel/face.hpp"
 #include "kernel/geometry.hpp"
 
 namespace hlr {
@@ -57,7 +58,7 @@ struct MeshReport {
 
 /// Computes every check. `planes` are the faces' exact planes (Polyhedron::planes()).
 MeshReport check_mesh(const std::vector<Point3>& vertices,
-                      const std::vector<std::vector<int>>& faces,
+                      const std::vector<Face>& faces,
                       const std::vector<Plane>& planes);
 
 std::string to_string(const Edge& e);

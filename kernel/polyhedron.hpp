@@ -10,6 +10,8 @@
 #include <functional>
 #include <vector>
 
+#include "kernel/face.hpp"
+
 #include "kernel/geometry.hpp"
 #include "kernel/mesh_checks.hpp"
 
@@ -25,7 +27,6 @@ namespace hlr {
 struct MeshTraits;
 using Mesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
 
-using Face = std::vector<int>;
 
 /// Thrown for a face list that cannot describe a polyhedron at all (index out of range,
 /// fewer than three vertices). `face()` is the 0-based face index.
