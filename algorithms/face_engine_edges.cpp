@@ -75,7 +75,7 @@ Segment Engine<P>::edge_segment(int b, const DrawnEdge& e) const {
   s.v1 = e.v;
   s.face0 = e.face0;
   s.face1 = e.face1;
-  s.borrow_ends(p.vertices()[e.u], p.vertices()[e.v]);
+  s.borrow_ends(p.vertices());
   s.self_hidden = e.self_hidden;
   return s;
 }

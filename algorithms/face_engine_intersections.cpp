@@ -51,11 +51,8 @@ template <class P>
 void Engine<P>::find_intersections(LineDrawing& res) {
   const std::size_t n = tris_.size();
   if (n < 2) return;
-  std::vector<Box3> bb;
   const ParallelLoop loop(opt_.threads);
-  reserve_touched(bb, n, loop);  // pages first touched on all cores
-  bb.resize(n);
-  loop.for_each(n, 8192, [&](std::size_t i) {
+  auto box = [&](std::size_t i) {
     Box3 b{INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
     for (int v : tris_[i].v) {
       const Point3& q = bodies_[tris_[i].body]->vertices()[v - voff_[tris_[i].body]];
@@ -64,9 +61,9 @@ void Engine<P>::find_intersections(LineDrawing& res) {
         b[k + 3] = std::max(b[k + 3], q.approx(k).hi);
       }
     }
-    bb[i] = b;
-  });
-  BoxPairs pairs = overlapping_box_pairs(bb, ParallelLoop(opt_.threads), [&](std::uint32_t ta, std::uint32_t tc) {
+    return b;
+  };
+  const auto judge = [&](std::uint32_t ta, std::uint32_t tc) {
     const Tri &x = tris_[ta], &y = tris_[tc];
     if (x.body == y.body) {
       bool shared = false;
@@ -75,7 +72,30 @@ void Engine<P>::find_intersections(LineDrawing& res) {
       if (shared || x.face == y.face) return PairVerdict::Skip;
     }
     return straddles(x, y) && straddles(y, x) && may_meet(x, y) ? PairVerdict::Keep : PairVerdict::Reject;
-  });
+  };
+  // The boxes in floats rounded outward (half the memory; boxes only grow, so no pair is lost),
+  // in doubles when some coordinate lies beyond the floats' range.
+  BoxPairs pairs;
+  bool done = false;
+  {
+    std::vector<Box3f> bf;
+    reserve_touched(bf, n, loop);  // pages first touched on all cores
+    bf.resize(n);
+    std::vector<char> fits(n, 1);
+    loop.for_each(n, 8192, [&](std::size_t i) { fits[i] = outward_floats(box(i), bf[i]); });
+    if (std::find(fits.begin(), fits.end(), 0) == fits.end()) {
+      std::vector<char>().swap(fits);
+      pairs = overlapping_box_pairs(bf, loop, judge);
+      done = true;
+    }
+  }
+  if (!done) {  // beyond the floats' range: doubles
+    std::vector<Box3> bb;
+    reserve_touched(bb, n, loop);
+    bb.resize(n);
+    loop.for_each(n, 8192, [&](std::size_t i) { bb[i] = box(i); });
+    pairs = overlapping_box_pairs(bb, loop, judge);
+  }
   res.stats.faces->intersection_pairs = pairs.tested;
   const auto& hits = pairs.kept;
   // The exact segments on all cores, each pair into its own slot (then in pair order).

@@ -4,14 +4,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hlr {
 namespace {
 
-struct Entry {
+// 12 bytes, not 16: the entries and the radix sort's copy are the broad phase's largest arrays.
+struct __attribute__((packed)) Entry {
   std::uint64_t cell;
   std::uint32_t item;
 };
+static_assert(sizeof(Entry) == 12);
 
 // Stable LSD radix sort by cell (entries arrive in item order, so ties stay sorted by item):
 // 11-bit digits over the bits the keys use. Each pass counts digits per fixed chunk on all
@@ -58,10 +61,10 @@ struct Cells {
   }
 };
 
-}  // namespace
 
-BoxPairs overlapping_box_pairs(const std::vector<Box3>& bb, const ParallelLoop& loop,
-                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
+template <class Box>
+BoxPairs box_pairs(const std::vector<Box>& bb, const ParallelLoop& loop,
+                   const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
   BoxPairs out;
   const std::size_t n = bb.size();
   if (n < 2) return out;
@@ -76,9 +79,9 @@ BoxPairs overlapping_box_pairs(const std::vector<Box3>& bb, const ParallelLoop& 
   loop.for_each(parts.size(), 1, [&](std::size_t c) {
     Part& p = parts[c];
     for (std::size_t i = c * kChunk, e = std::min(n, i + kChunk); i < e; ++i) {
-      const Box3& b = bb[i];
-      p.mean += std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]});
-      for (int k = 0; k < 3; ++k) p.lo[k] = std::min(p.lo[k], b[k]), p.hi[k] = std::max(p.hi[k], b[k + 3]);
+      const Box& b = bb[i];
+      p.mean += std::max({double(b[3]) - b[0], double(b[4]) - b[1], double(b[5]) - b[2]});
+      for (int k = 0; k < 3; ++k) p.lo[k] = std::min<double>(p.lo[k], b[k]), p.hi[k] = std::max<double>(p.hi[k], b[k + 3]);
       for (double x : b) p.finite = p.finite && std::isfinite(x);
     }
   });
@@ -154,8 +157,8 @@ BoxPairs overlapping_box_pairs(const std::vector<Box3>& bb, const ParallelLoop& 
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop.workers());
   std::vector<std::size_t> counted(loop.workers(), 0);
   auto overlap = [&](std::uint32_t ta, std::uint32_t tc) {
-    const Box3 &A = bb[ta], &B = bb[tc];
-    return !(A[0] > B[3] || B[0] > A[3] || A[1] > B[4] || B[1] > A[4] || A[2] > B[5] || B[2] > A[5]);
+    const Box &P = bb[ta], &Q = bb[tc];
+    return !(P[0] > Q[3] || Q[0] > P[3] || P[1] > Q[4] || Q[1] > P[4] || P[2] > Q[5] || Q[2] > P[5]);
   };
   auto take = [&](std::uint32_t ta, std::uint32_t tc, unsigned w) {
     PairVerdict v = judge(ta, tc);
@@ -195,6 +198,30 @@ BoxPairs overlapping_box_pairs(const std::vector<Box3>& bb, const ParallelLoop& 
   }
   std::sort(out.kept.begin(), out.kept.end());
   return out;
+}
+
+}  // namespace
+
+BoxPairs overlapping_box_pairs(const std::vector<Box3>& boxes, const ParallelLoop& loop,
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
+  return box_pairs(boxes, loop, judge);
+}
+
+BoxPairs overlapping_box_pairs(const std::vector<Box3f>& boxes, const ParallelLoop& loop,
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
+  return box_pairs(boxes, loop, judge);
+}
+
+bool outward_floats(const Box3& b, Box3f& out) {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  for (int k = 0; k < 6; ++k) {
+    if (!(std::fabs(b[k]) < 1e38)) return false;  // NaN, infinite or near the floats' end
+    float f = static_cast<float>(b[k]);
+    if (k < 3 && f > b[k]) f = std::nextafter(f, -inf);
+    if (k >= 3 && f < b[k]) f = std::nextafter(f, inf);
+    out[k] = f;
+  }
+  return true;
 }
 
 }  // namespace hlr

@@ -17,6 +17,8 @@ namespace hlr {
 
 /// An axis-aligned box: lo x, y, z then hi x, y, z.
 using Box3 = std::array<double, 6>;
+/// The same in floats (half the memory), for boxes rounded outward from doubles.
+using Box3f = std::array<float, 6>;
 
 /// What the caller says of an overlapping pair.
 enum class PairVerdict { Skip, Reject, Keep };  // Skip: not a pair to test at all (not counted)
@@ -29,5 +31,11 @@ struct BoxPairs {
 /// Every pair of overlapping boxes is passed to `judge` (from several threads at once) once.
 BoxPairs overlapping_box_pairs(const std::vector<Box3>& boxes, const ParallelLoop& loop,
                                const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge);
+BoxPairs overlapping_box_pairs(const std::vector<Box3f>& boxes, const ParallelLoop& loop,
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge);
+
+/// `b` rounded outward to floats; false when a bound lies beyond the floats' range (or is not
+/// finite), where the doubles must be used.
+bool outward_floats(const Box3& b, Box3f& out);
 
 }  // namespace hlr

@@ -32,10 +32,22 @@ Point3 Segment::at(const Rational& t) const {
   return from() + t * (to() - from());
 }
 
+static_assert(sizeof(Segment) <= 64, "a segment of a mesh edge costs 64 bytes");
+
+// Every field; the owned ends copied (the copy owns its own).
+Segment::Segment(const Segment& o)
+    : kind(o.kind), line(o.line), self_hidden(o.self_hidden), body(o.body), body2(o.body2), v0(o.v0), v1(o.v1),
+      face0(o.face0), face1(o.face1), pieces(o.pieces),
+      own_(o.own_ ? std::make_unique<const std::array<Point3, 2>>(*o.own_) : nullptr), base_(o.base_) {}
+
+Segment& Segment::operator=(const Segment& o) {
+  if (this != &o) *this = Segment(o);
+  return *this;
+}
+
 void Segment::set_ends(Point3 a, Point3 b) {
-  own_ = std::make_shared<const std::array<Point3, 2>>(std::array<Point3, 2>{std::move(a), std::move(b)});
-  a_ = &(*own_)[0];
-  b_ = &(*own_)[1];
+  own_ = std::make_unique<const std::array<Point3, 2>>(std::array<Point3, 2>{std::move(a), std::move(b)});
+  base_ = nullptr;
 }
 
 namespace {

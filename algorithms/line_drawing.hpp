@@ -137,23 +137,29 @@ struct Segment {
   PieceList pieces;              // in order of t, covering [0, 1]
   Point3 at(const Rational& t) const;
 
+  Segment() = default;
+  Segment(const Segment& o);
+  Segment(Segment&&) noexcept = default;
+  Segment& operator=(const Segment& o);
+  Segment& operator=(Segment&&) noexcept = default;
+  ~Segment() = default;
+
   /// The ends, world coordinates (set before use).
-  const Point3& from() const { return *a_; }
-  const Point3& to() const { return *b_; }
-  /// Ends owned by the segment (shared between copies).
+  const Point3& from() const { return own_ ? (*own_)[0] : base_[v0]; }
+  const Point3& to() const { return own_ ? (*own_)[1] : base_[v1]; }
+  /// Ends owned by the segment.
   void set_ends(Point3 a, Point3 b);
-  /// Ends borrowed from storage that outlives the segment (a body's vertices): a segment of a
-  /// million-edge mesh then costs no exact numbers of its own.
-  void borrow_ends(const Point3& a, const Point3& b) {
+  /// Ends borrowed from storage that outlives the segment (a body's vertices): vertices[v0]
+  /// and vertices[v1] (set v0 and v1 first). A segment of a million-edge mesh then costs no
+  /// exact numbers of its own.
+  void borrow_ends(const std::vector<Point3>& vertices) {
     own_.reset();
-    a_ = &a;
-    b_ = &b;
+    base_ = vertices.data();
   }
 
  private:
-  std::shared_ptr<const std::array<Point3, 2>> own_;
-  const Point3* a_ = nullptr;
-  const Point3* b_ = nullptr;
+  std::unique_ptr<const std::array<Point3, 2>> own_;
+  const Point3* base_ = nullptr;
 };
 
 /// The hidden-line methods: per-face occluders (any mesh), Roberts' algorithm on convex bodies,

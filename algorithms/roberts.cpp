@@ -285,7 +285,7 @@ std::vector<Segment> body_edge_segments(const Polyhedron& p, int body, const std
     s.v1 = e.second;
     s.face0 = ff.first;
     s.face1 = ff.second;
-    s.borrow_ends(p.vertices()[e.first], p.vertices()[e.second]);
+    s.borrow_ends(p.vertices());
     s.self_hidden = facing[ff.first] < 0 && facing[ff.second] < 0;
     ++stats.edges;
     if (s.self_hidden) ++stats.self_hidden;

@@ -400,7 +400,7 @@ RenderResult HorizonDrawing::model(const std::string& name) const {
     s.body = 0;
     s.v0 = e.v0;
     s.v1 = e.v1;
-    s.borrow_ends(body.body.vertices()[static_cast<std::size_t>(s.v0)], body.body.vertices()[static_cast<std::size_t>(s.v1)]);
+    s.borrow_ends(body.body.vertices());
     std::vector<Piece> pieces(e.count);
     for (std::uint32_t n = 0; n < e.count; ++n) {
       const EdgePiece& q = pieces_[e.first + n];

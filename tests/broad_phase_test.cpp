@@ -1,0 +1,115 @@
+// The intersection lines' broad phase (algorithms/intersection_broad_phase.hpp): every
+// overlapping pair once, against a quadratic oracle, in doubles and in floats rounded outward;
+// the segment's owned and borrowed ends (algorithms/line_drawing.hpp).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <random>
+#include <set>
+
+#include "algorithms/intersection_broad_phase.hpp"
+#include "algorithms/line_drawing.hpp"
+
+using namespace hlr;
+
+namespace {
+
+std::vector<Box3> random_boxes(std::mt19937_64& rng, std::size_t n, double scale) {
+  std::uniform_real_distribution<double> at(-scale, scale), size(0, scale / 20);
+  std::vector<Box3> out(n);
+  for (Box3& b : out) {
+    for (int k = 0; k < 3; ++k) {
+      b[k] = at(rng);
+      b[k + 3] = b[k] + (rng() % 7 == 0 ? 0 : size(rng));  // some flat boxes
+    }
+    if (rng() % 50 == 0) b[3] = b[0] + 2 * scale;  // a huge one now and then
+  }
+  return out;
+}
+
+std::set<std::pair<std::uint32_t, std::uint32_t>> oracle(const std::vector<Box3>& b) {
+  std::set<std::pair<std::uint32_t, std::uint32_t>> out;
+  for (std::uint32_t i = 0; i < b.size(); ++i)
+    for (std::uint32_t j = i + 1; j < b.size(); ++j) {
+      bool meet = true;
+      for (int k = 0; k < 3; ++k) meet = meet && b[i][k] <= b[j][k + 3] && b[j][k] <= b[i][k + 3];
+      if (meet) out.insert({i, j});
+    }
+  return out;
+}
+
+}  // namespace
+
+TEST(BroadPhase, EveryOverlappingPairOnceInDoublesAndInOutwardFloats) {
+  std::mt19937_64 rng(7);
+  for (double scale : {1.0, 1e-30, 1e30}) {
+    const std::vector<Box3> boxes = random_boxes(rng, 600, scale);
+    const auto want = oracle(boxes);
+    for (unsigned threads : {1u, 2u}) {
+      std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+      std::mutex m;
+      auto keep_all = [&](std::uint32_t a, std::uint32_t b) {
+        std::lock_guard<std::mutex> lock(m);
+        EXPECT_TRUE(seen.insert({a, b}).second) << "pair twice";
+        return PairVerdict::Keep;
+      };
+      BoxPairs d = overlapping_box_pairs(boxes, ParallelLoop(threads), keep_all);
+      EXPECT_EQ(seen, want) << "doubles, scale " << scale;
+      const std::set<std::pair<std::uint32_t, std::uint32_t>> kept(d.kept.begin(), d.kept.end());
+      EXPECT_EQ(kept, want);
+      // Floats rounded outward: every true pair is still found (a few more may be).
+      std::vector<Box3f> f(boxes.size());
+      for (std::size_t i = 0; i < boxes.size(); ++i) ASSERT_TRUE(outward_floats(boxes[i], f[i]));
+      seen.clear();
+      BoxPairs fp = overlapping_box_pairs(f, ParallelLoop(threads), keep_all);
+      for (const auto& p : want) EXPECT_TRUE(seen.count(p)) << "floats lost a pair, scale " << scale;
+    }
+  }
+}
+
+TEST(BroadPhase, OutwardFloatsEncloseTheDoublesAndRefuseBeyondTheirRange) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int i = 0; i < 10000; ++i) {
+    const double e = std::ldexp(1.0, static_cast<int>(rng() % 200) - 100);
+    Box3 b{u(rng) * e, u(rng) * e, u(rng) * e, 0, 0, 0};
+    for (int k = 0; k < 3; ++k) b[k + 3] = b[k] + std::fabs(u(rng)) * e;
+    Box3f f;
+    ASSERT_TRUE(outward_floats(b, f));
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_LE(static_cast<double>(f[k]), b[k]);
+      EXPECT_GE(static_cast<double>(f[k + 3]), b[k + 3]);
+    }
+  }
+  Box3f f;
+  EXPECT_FALSE(outward_floats({0, 0, 0, 1e39, 1, 1}, f));
+  EXPECT_FALSE(outward_floats({-1e300, 0, 0, 1, 1, 1}, f));
+  EXPECT_FALSE(outward_floats({0, 0, 0, std::numeric_limits<double>::infinity(), 1, 1}, f));
+  EXPECT_FALSE(outward_floats({0, std::numeric_limits<double>::quiet_NaN(), 0, 1, 1, 1}, f));
+  // Subnormal floats still enclose (rounding toward the outside, not to zero).
+  ASSERT_TRUE(outward_floats({1e-45, 1e-45, 1e-45, 2e-45, 2e-45, 2e-45}, f));
+  EXPECT_LE(static_cast<double>(f[0]), 1e-45);
+  EXPECT_GE(static_cast<double>(f[3]), 2e-45);
+}
+
+TEST(SegmentEnds, BorrowedEndsFollowTheVertexIndicesAndOwnedEndsAreCopiedDeep) {
+  std::vector<Point3> v{Point3(0, 0, 0), Point3(1, 2, 3), Point3(4, 5, 6)};
+  Segment s;
+  s.v0 = 2, s.v1 = 1;
+  s.borrow_ends(v);
+  EXPECT_EQ(s.from(), v[2]);
+  EXPECT_EQ(&s.to(), &v[1]) << "borrowed, not copied";
+  Segment own;
+  own.set_ends(Point3(7, 8, 9), Point3(1, 1, 1));
+  Segment copy = own;
+  EXPECT_NE(&copy.from(), &own.from());
+  EXPECT_EQ(copy.from(), Point3(7, 8, 9));
+  Segment moved = std::move(copy);
+  EXPECT_EQ(moved.to(), Point3(1, 1, 1));
+  moved = s;  // owned ends given up for borrowed ones
+  EXPECT_EQ(&moved.from(), &v[2]);
+  EXPECT_EQ(moved.at(Rational(1, 2)), Point3(Rational(5, 2), Rational(7, 2), Rational(9, 2)));
+  EXPECT_LE(sizeof(Segment), 64u);
+}
