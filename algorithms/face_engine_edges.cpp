@@ -51,16 +51,28 @@ std::vector<DrawnEdge> Engine<P>::collect_edges(int b) const {
     kinds[i] = static_cast<signed char>(kind);
     hidden[i] = self_hidden;
   });
+  // The drawn ones in order, on all cores: counted per fixed chunk, then each chunk written
+  // after the ones before it.
+  constexpr std::size_t kChunk = 16384;
+  const std::size_t chunks = (edges.size() + kChunk - 1) / kChunk;
+  std::vector<std::size_t> at(chunks + 1, 0);
+  const ParallelLoop loop(opt_.threads);
+  loop.for_each(chunks, 1, [&](std::size_t c) {
+    for (std::size_t i = c * kChunk, e = std::min(edges.size(), i + kChunk); i < e; ++i) at[c + 1] += kinds[i] >= 0;
+  });
+  for (std::size_t c = 0; c < chunks; ++c) at[c + 1] += at[c];
   std::vector<DrawnEdge> out;
-  std::size_t n = 0;
-  for (signed char k : kinds) n += k >= 0;
-  out.reserve(n);
-  for (std::size_t i = 0; i < edges.size(); ++i) {
-    if (kinds[i] < 0) continue;
-    const BodyEdge& e = edges[i];
-    out.push_back({e.u, e.v, e.uses.empty() ? -1 : e.uses[0].face, e.uses.size() > 1 ? e.uses[1].face : -1, kinds[i],
-                   hidden[i] != 0});
-  }
+  reserve_touched(out, at[chunks], loop);
+  out.resize(at[chunks]);
+  loop.for_each(chunks, 1, [&](std::size_t c) {
+    std::size_t w = at[c];
+    for (std::size_t i = c * kChunk, end = std::min(edges.size(), i + kChunk); i < end; ++i) {
+      if (kinds[i] < 0) continue;
+      const BodyEdge& e = edges[i];
+      out[w++] = {e.u, e.v, e.uses.empty() ? -1 : e.uses[0].face, e.uses.size() > 1 ? e.uses[1].face : -1, kinds[i],
+                  hidden[i] != 0};
+    }
+  });
   return out;
 }
 

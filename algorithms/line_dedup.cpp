@@ -34,7 +34,7 @@ class Dedup {
     CleanDrawing out;
     out.pieces_in = d_.lines.size();
     tolerance();
-    join_same_keys();
+    join_same_keys(opt.threads);
     join_close_points();
     std::vector<std::uint32_t> point_of(points_.parent.size(), UINT32_MAX);
     auto point = [&](std::uint32_t e) {
@@ -102,14 +102,20 @@ class Dedup {
 
   // Ends that are the same mesh vertex, or the same boundary between two pieces of a segment,
   // are the same point without arithmetic.
-  void join_same_keys() {
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;
-    keys.reserve(points_.parent.size());
-    for (std::uint32_t e = 0; e < points_.parent.size(); ++e) {
-      if (pulled(e)) continue;
+  void join_same_keys(unsigned threads) {
+    const ParallelLoop loop(threads);
+    const std::size_t n = points_.parent.size();
+    constexpr std::uint64_t kNone = UINT64_MAX;  // a pulled end: no key
+    std::vector<std::uint64_t> key(n);
+    loop.for_each(n, 8192, [&](std::size_t i) {
+      const auto e = static_cast<std::uint32_t>(i);
+      if (pulled(e)) {
+        key[e] = kNone;
+        return;
+      }
       if (keys_) {
-        keys.emplace_back((*keys_)[e], e);
-        continue;
+        key[e] = (*keys_)[e];
+        return;
       }
       const Polyline2D& l = line(e);
       const PieceRef& ref = d_.sources[l.first_edge];
@@ -117,33 +123,43 @@ class Dedup {
       const Piece& p = s.pieces[ref.piece];
       const Rational& t = e & 1 ? p.t1 : p.t0;
       int v = s.kind == Segment::Kind::Edge ? (t == 0 ? s.v0 : t == 1 ? s.v1 : -1) : -1;
-      std::uint64_t key = v >= 0 ? (std::uint64_t{1} << 63) | (static_cast<std::uint64_t>(s.body) << 32) | static_cast<std::uint32_t>(v)
-                                 : (static_cast<std::uint64_t>(ref.segment) << 32) | static_cast<std::uint32_t>(ref.piece + (e & 1));
-      keys.emplace_back(key, e);
-    }
-    // The vertices of the first body by a table (the partition is the sort's, and a set's root
-    // is its smallest end either way); the rest sorted.
+      key[e] = v >= 0 ? (std::uint64_t{1} << 63) | (static_cast<std::uint64_t>(s.body) << 32) | static_cast<std::uint32_t>(v)
+                      : (static_cast<std::uint64_t>(ref.segment) << 32) | static_cast<std::uint32_t>(ref.piece + (e & 1));
+    });
+    // The vertices of the first body by a table: each end's parent is the smallest end of its
+    // vertex (the sets are fresh here, so that is their union-find forest, the root being the
+    // smallest end as any order of unions gives); the rest sorted and united.
     constexpr std::uint64_t kBody0 = std::uint64_t{1} << 63;
+    auto body0 = [&](std::uint64_t k) { return k != kNone && (k >> 32) == (kBody0 >> 32); };
     std::uint64_t top = 0;
-    for (const auto& [key, e] : keys)
-      if ((key >> 32) == (kBody0 >> 32)) top = std::max(top, key & 0xffffffffu);
-    if (top < 8 * static_cast<std::uint64_t>(keys.size()) + 1024) {
-      std::vector<std::uint32_t> first(static_cast<std::size_t>(top) + 1, UINT32_MAX);
-      std::size_t rest = 0;
-      for (const auto& [key, e] : keys) {
-        if ((key >> 32) != (kBody0 >> 32)) {
-          keys[rest++] = {key, e};
-          continue;
-        }
-        std::uint32_t& f = first[static_cast<std::size_t>(key & 0xffffffffu)];
-        if (f == UINT32_MAX) f = e;
-        else points_.unite(f, e);
-      }
-      keys.resize(rest);
+    std::size_t with_key = 0;
+    for (std::uint64_t k : key) {
+      if (body0(k)) top = std::max(top, k & 0xffffffffu);
+      with_key += k != kNone;
     }
-    std::sort(std::execution::par, keys.begin(), keys.end());
-    for (std::size_t i = 1; i < keys.size(); ++i)
-      if (keys[i].first == keys[i - 1].first) points_.unite(keys[i].second, keys[i - 1].second);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> rest;
+    if (top < 8 * static_cast<std::uint64_t>(with_key) + 1024) {
+      std::vector<std::uint32_t> first(static_cast<std::size_t>(top) + 1, UINT32_MAX);
+      loop.for_each(n, 8192, [&](std::size_t e) {
+        if (!body0(key[e])) return;
+        std::atomic_ref<std::uint32_t> f(first[static_cast<std::size_t>(key[e] & 0xffffffffu)]);
+        std::uint32_t cur = f.load(std::memory_order_relaxed);
+        while (e < cur && !f.compare_exchange_weak(cur, static_cast<std::uint32_t>(e), std::memory_order_relaxed)) {
+        }
+      });
+      loop.for_each(n, 8192, [&](std::size_t e) {
+        if (body0(key[e])) points_.parent[e] = first[static_cast<std::size_t>(key[e] & 0xffffffffu)];
+      });
+      for (std::uint32_t e = 0; e < n; ++e)
+        if (key[e] != kNone && !body0(key[e])) rest.emplace_back(key[e], e);
+    } else {
+      for (std::uint32_t e = 0; e < n; ++e)
+        if (key[e] != kNone) rest.emplace_back(key[e], e);
+    }
+    std::vector<std::uint64_t>().swap(key);
+    std::sort(std::execution::par, rest.begin(), rest.end());
+    for (std::size_t i = 1; i < rest.size(); ++i)
+      if (rest[i].first == rest[i - 1].first) points_.unite(rest[i].second, rest[i - 1].second);
   }
 
   // Ends within delta in both coordinates are compared exactly; farther ones differ. Ends

@@ -102,12 +102,11 @@ std::optional<MeshData> read_in_chunks(std::string_view bytes, const std::string
   TokenStream rest(bytes, file, at, line);
   if (!rest.at_end()) return std::nullopt;
   MeshData m;
-  m.vertices.resize(static_cast<std::size_t>(h.nv));
   m.faces.resize(static_cast<std::size_t>(h.nf));
   m.face_lines.resize(static_cast<std::size_t>(h.nf));
   const std::size_t vchunks = vm.size() - 1, fchunks = fm.size() - 1;
   std::vector<char> ok(vchunks + fchunks, 1);
-  ParallelLoop().for_each(vchunks + fchunks, 1, [&](std::size_t c) {
+  auto chunk = [&](std::size_t c) {
     const bool faces = c >= vchunks;
     const std::vector<Mark>& mk = faces ? fm : vm;
     const std::size_t k = faces ? c - vchunks : c;
@@ -122,7 +121,15 @@ std::optional<MeshData> read_in_chunks(std::string_view bytes, const std::string
     } catch (const std::exception&) {
       ok[c] = 0;
     }
+  };
+  // The vertices' construction (three GMP numbers each, one thread) runs beside the faces'
+  // chunks, then the vertices' chunks.
+  const ParallelLoop loop;
+  loop.for_each(1 + fchunks, 1, [&](std::size_t c) {
+    if (c == 0) m.vertices.resize(static_cast<std::size_t>(h.nv));
+    else chunk(vchunks + c - 1);
   });
+  loop.for_each(vchunks, 1, chunk);
   if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return std::nullopt;
   return m;
 }
