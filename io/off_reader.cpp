@@ -125,6 +125,7 @@ std::optional<MeshData> read_in_chunks(std::string_view bytes, const std::string
   // The vertices' construction (three GMP numbers each, one thread) runs beside the faces'
   // chunks, then the vertices' chunks.
   const ParallelLoop loop;
+  reserve_touched(m.vertices, static_cast<std::size_t>(h.nv), loop);  // fresh pages zeroed on all cores
   loop.for_each(1 + fchunks, 1, [&](std::size_t c) {
     if (c == 0) m.vertices.resize(static_cast<std::size_t>(h.nv));
     else chunk(vchunks + c - 1);
