@@ -135,7 +135,7 @@ int Engine<P>::triangulate_body(int b) {
   // each face writes its own slots), then the triangles listed in face order.
   ParallelLoop(opt_.threads).for_each(faces.size(), 4096, [&](std::size_t f) {
     const Face& face = faces[f];
-    if (face.size() != 3) return;
+    if (face.size() != 3) return;  // after the triangulation below
     Tri probe{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}};
     Vec<P> n = normal(probe);
     if (P::sign(n[0]) == 0 && P::sign(n[1]) == 0 && P::sign(n[2]) == 0) {
@@ -145,6 +145,32 @@ int Engine<P>::triangulate_body(int b) {
     facing[f] = facing_sign<P>(n, X_[probe.v[0]], view_, cam_.perspective);
     face_normal_[b][f] = std::move(n);
   });
+  const ParallelLoop loop(opt_.threads);
+  if (std::all_of(faces.begin(), faces.end(), [](const Face& f) { return f.size() == 3; })) {
+    // Only triangles (most large meshes): listed on all cores, each chunk of faces after the
+    // ones before it (the order of the loop below).
+    constexpr std::size_t kChunk = 16384;
+    const std::size_t chunks = (faces.size() + kChunk - 1) / kChunk;
+    std::vector<std::size_t> at(chunks + 1, 0);
+    loop.for_each(chunks, 1, [&](std::size_t c) {
+      for (std::size_t f = c * kChunk, e = std::min(faces.size(), f + kChunk); f < e; ++f) at[c + 1] += !degenerate_[b][f];
+    });
+    at[0] = tris_.size();
+    for (std::size_t c = 0; c < chunks; ++c) at[c + 1] += at[c];
+    reserve_touched(tris_, at[chunks], loop);
+    tris_.resize(at[chunks]);
+    loop.for_each(chunks, 1, [&](std::size_t c) {
+      std::size_t w = at[c];
+      for (std::size_t f = c * kChunk, e = std::min(faces.size(), f + kChunk); f < e; ++f) {
+        if (degenerate_[b][f]) continue;
+        const Face& face = faces[f];
+        Tri tri{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}};
+        for (int k = 0; k < 3; ++k) topo.slot_third[fo[f] + k] = tri.v[(k + 2) % 3];
+        tris_[w++] = tri;
+      }
+    });
+    return first_tri;
+  }
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const Face& face = faces[f];
     static const std::vector<FaceTriangle> kTriangle = {{{0, 1, 2}, {true, true, true}}};
