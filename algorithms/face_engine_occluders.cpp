@@ -4,6 +4,7 @@
 // inside the solid (or crosses the open surface). Boxes of the projected prisms go into the
 // screen grid (screen_grid.hpp), a filter only.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -70,24 +71,32 @@ bool Engine<P>::neighbour(const Tri& t, int k, int& face, int& third) const {
 // edge-on or turn away around a vertex: not closed (a ray along the boundary).
 template <class P>
 void Engine<P>::vertex_rules() {
-  // 0 unset, 1 all facing, 2 all non-facing, 3 mixed or edge-on or boundary.
+  // 0 unset, 1 all facing, 2 all non-facing, 3 mixed or edge-on or boundary: a join (0 with s
+  // is s, s with s is s, any other pair 3), so the faces mark on all cores in any order.
   std::vector<char> state(X_.size(), 0);
   auto mark = [&](int g, char st) {
-    char& x = state[g];
-    x = (x == 0 || x == st) ? st : 3;
+    std::atomic_ref<char> x(state[g]);
+    char cur = x.load(std::memory_order_relaxed);
+    for (;;) {
+      const char next = (cur == 0 || cur == st) ? st : 3;
+      if (next == cur || x.compare_exchange_weak(cur, next, std::memory_order_relaxed)) return;
+    }
   };
+  const ParallelLoop loop(opt_.threads);
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const auto& faces = bodies_[b]->faces();
-    for (std::size_t f = 0; f < faces.size(); ++f) {
+    loop.for_each(faces.size(), 8192, [&](std::size_t f) {
       int fs = facing_[b][f];
       char st = degenerate_[b][f] || fs == 0 ? 3 : (fs > 0 ? 1 : (solid_[b] && !eye_on_[b] ? 3 : 2));
       for (int v : faces[f]) mark(voff_[b] + v, st);
-    }
-    for (const BodyEdge& e : topo_[b].edges)
-      if (e.uses.size() != 2) mark(voff_[b] + e.u, 3), mark(voff_[b] + e.v, 3);
+    });
+    const std::vector<BodyEdge>& edges = topo_[b].edges;
+    loop.for_each(edges.size(), 8192, [&](std::size_t i) {
+      if (edges[i].uses.size() != 2) mark(voff_[b] + edges[i].u, 3), mark(voff_[b] + edges[i].v, 3);
+    });
   }
   vertex_closed_.resize(X_.size());
-  for (std::size_t g = 0; g < X_.size(); ++g) vertex_closed_[g] = state[g] == 1 || state[g] == 2;
+  loop.for_each(X_.size(), 16384, [&](std::size_t g) { vertex_closed_[g] = state[g] == 1 || state[g] == 2; });
 }
 
 // Feature lines of a large mesh are few: then only the triangles whose screen box comes near

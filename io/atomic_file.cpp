@@ -1,12 +1,15 @@
 // Atomic file output: temporary file in the target's folder, then rename (see atomic_file.hpp).
 #include "io/atomic_file.hpp"
 
+#include "algorithms/parallel.hpp"
+
 #include <iostream>
 
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
@@ -73,15 +76,31 @@ void write_file_atomically(const std::string& path, const std::string& content) 
     ::unlink(tmp.c_str());
     throw OutputError(what + ": " + step + ": " + std::strerror(err));
   };
-  std::size_t done = 0;
-  while (done < content.size()) {
-    ssize_t n = ::write(fd, content.data() + done, content.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
+  // Large outputs in 4 MiB pieces on all cores (the copy into the page cache was a serial
+  // 10-20 ms of a 1M-triangle drawing); each piece at its own offset.
+  constexpr std::size_t kPiece = std::size_t(4) << 20;
+  const std::size_t pieces = (content.size() + kPiece - 1) / kPiece;
+  std::vector<int> error(pieces, 0);
+  auto write_piece = [&](std::size_t k) {
+    std::size_t at = k * kPiece;
+    const std::size_t end = std::min(content.size(), at + kPiece);
+    while (at < end) {
+      const ssize_t n = ::pwrite(fd, content.data() + at, end - at, static_cast<off_t>(at));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        error[k] = n < 0 ? errno : EIO;
+        return;
+      }
+      at += static_cast<std::size_t>(n);
+    }
+  };
+  if (pieces > 1) ParallelLoop().for_each(pieces, 1, write_piece);
+  else if (pieces == 1) write_piece(0);
+  for (int e : error)
+    if (e != 0) {
+      errno = e;
       fail("write failed");
     }
-    done += static_cast<std::size_t>(n);
-  }
   ::fchmod(fd, 0644);
   if (::fsync(fd) != 0 && errno != EINVAL) fail("fsync failed");
   if (::close(fd) != 0) {

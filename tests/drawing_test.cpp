@@ -11,6 +11,7 @@
 #include "algorithms/roberts.hpp"
 #include "io/drawing.hpp"
 #include "io/scene.hpp"
+#include "io/text_reader.hpp"
 
 using namespace hlr;
 
@@ -129,6 +130,22 @@ TEST(AtomicFile, WritesAndReplaces) {
   EXPECT_EQ(s, "two");
   for (const auto& e : std::filesystem::directory_iterator(temp_dir()))
     EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << "stray temporary file";
+}
+
+TEST(AtomicFile, LargeContentWrittenInPiecesComesBackByteForByte) {
+  // Over two 4 MiB pieces and a partial third: every byte at its offset.
+  std::string content(9u << 20, '\0');
+  for (std::size_t i = 0; i < content.size(); ++i) content[i] = static_cast<char>('a' + (i * 7919 + i / 4096) % 26);
+  std::string path = temp_dir() + "/large.svg";
+  write_file_atomically(path, content);
+  std::ifstream in(path, std::ios::binary);
+  std::string s((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(s.size(), content.size());
+  EXPECT_TRUE(s == content);
+  // And read back through the parallel reader (16 MiB and more): a file of 17 MiB.
+  content.append(8u << 20, 'z');
+  write_file_atomically(path, content);
+  EXPECT_TRUE(read_file_bytes(path) == content);
 }
 
 TEST(AtomicFile, DirectoryAndUnwritablePathsFailCleanly) {
