@@ -123,7 +123,7 @@ class Engine {
   std::optional<std::pair<Point3, Point3>> segment(const Tri& x, const Tri& y) const;
   const Point3& world(int g) const;
   // face_engine_visibility.cpp
-  std::vector<PieceList> visibility(const std::vector<std::vector<DrawnEdge>>& drawn, const std::vector<Segment>& crossing,
+  std::vector<PieceList> visibility(const std::vector<std::vector<DrawnEdge>>& drawn, std::vector<Segment>& crossing,
                                     LineDrawing& res);
   void release_arrays();
   std::optional<std::pair<Rational, Rational>> depth_of(const Segment& s) const;

@@ -64,7 +64,7 @@ bool Engine<P>::end_on_hides(const Occluder<P>& o, int on_side) const {
 // The pieces of every segment: the drawn edges in order of body (each made as a segment only
 // while it is solved), then the intersection lines.
 template <class P>
-std::vector<PieceList> Engine<P>::visibility(const std::vector<std::vector<DrawnEdge>>& drawn, const std::vector<Segment>& crossing,
+std::vector<PieceList> Engine<P>::visibility(const std::vector<std::vector<DrawnEdge>>& drawn, std::vector<Segment>& crossing,
                                              LineDrawing& res) {
   std::vector<std::size_t> first(drawn.size() + 1, 0);  // each body's first edge
   for (std::size_t b = 0; b < drawn.size(); ++b) {
@@ -88,8 +88,7 @@ std::vector<PieceList> Engine<P>::visibility(const std::vector<std::vector<Drawn
         Segment s = edge_segment(static_cast<int>(b), e);
         solve_into(s, {voff_[b] + e.u, voff_[b] + e.v}, wk, out[i]);
       } else {
-        Segment s = crossing[i - edges];  // shares its ends
-        solve_into(s, {-1, -1}, wk, out[i]);
+        solve_into(crossing[i - edges], {-1, -1}, wk, out[i]);  // in place: its pieces move to out[i]
       }
     }
   });
