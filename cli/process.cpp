@@ -1,17 +1,27 @@
 // The hlr process (see process.hpp). Exact geometry allocates much (GMP numbers, per-piece
 // vectors, strip envelopes): on a machine whose page faults are costly (virtual machines) the
 // first touch of fresh memory took half the time of a 1M-triangle render. glibc reads its
-// malloc settings only when a process starts, so the tool sets them and starts itself again
-// (one exec, a few milliseconds). The output does not depend on it; HLR_MALLOC=system turns it
-// off, HLR_MALLOC=show prints the settings in effect (tests/thread_identity.sh). At the end,
+// malloc settings only when a process starts, so for a large job the tool sets them and starts
+// itself again (one exec: 10-20 ms, an eighth of a small job); a small one sets what mallopt can
+// and advises its heap's first 256 MiB itself. The output does not depend on it;
+// HLR_MALLOC=system turns it off, =restart and =inprocess choose, =show prints the settings in
+// effect (tests/thread_identity.sh). At the end,
 // exit_without_teardown() leaves the freeing to the system.
 #include "cli/process.hpp"
 
+#include <malloc.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cctype>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <iostream>
 #include <string>
 
@@ -19,12 +29,92 @@
 
 namespace hlr::cli {
 
+namespace {
+
+constexpr std::uintmax_t kSmallJob = std::uintmax_t{8} << 20;  // input bytes: see use_huge_pages
+constexpr int kTopPad = 256 << 20;
+
+bool ends_with(const std::string& s, const char* tail) {
+  const std::size_t n = std::strlen(tail);
+  return s.size() >= n && s.compare(s.size() - n, n, tail) == 0;
+}
+
+// The bytes of the mesh files a scene file names (its `mesh:` values, relative to its folder),
+// and its own; a name that cannot be read counts nothing (its error comes later). A guess for
+// choosing the heap's settings only: scenes over 1 MiB count as large.
+std::uintmax_t scene_bytes(const std::string& path, std::uintmax_t own) {
+  if (own > (std::uintmax_t{1} << 20)) return kSmallJob + 1;
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  std::uintmax_t bytes = own;
+  for (std::size_t at = text.find("mesh"); at != std::string::npos; at = text.find("mesh", at + 4)) {
+    std::size_t i = at + 4;
+    while (i < text.size() && (text[i] == '"' || text[i] == '\'' || text[i] == ' ' || text[i] == ':')) ++i;
+    std::size_t j = i;
+    while (j < text.size() && std::strchr("\"'\r\n,}", text[j]) == nullptr) ++j;
+    if (j == i || j - i > 4096) continue;
+    std::filesystem::path mesh = text.substr(i, j - i);
+    while (!mesh.empty() && mesh.string().back() == ' ') mesh = mesh.string().substr(0, mesh.string().size() - 1);
+    if (mesh.is_relative()) mesh = dir / mesh;
+    struct stat st {};
+    if (stat(mesh.c_str(), &st) == 0 && S_ISREG(st.st_mode)) bytes += static_cast<std::uintmax_t>(st.st_size);
+  }
+  return bytes;
+}
+
+// Whether the command line is a small job: a command whose memory follows its input files, and
+// input of kSmallJob bytes at most (mesh files, scene files with the meshes they name).
+// Existing files only; an output file that already exists counts too (a larger guess, never a
+// smaller one).
+bool small_job(char** argv) {
+  if (!argv[0] || !argv[1]) return true;  // no command: usage
+  const std::string command = argv[1];
+  if (command != "render" && command != "info" && command != "explain" && command != "clip" && command != "decompose")
+    return command.empty() || command[0] == '-';  // --version, --help
+  std::uintmax_t bytes = 0;
+  for (char** a = argv + 2; *a; ++a) {
+    struct stat st {};
+    if ((*a)[0] == '-' || stat(*a, &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    std::string name = *a;
+    for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const auto own = static_cast<std::uintmax_t>(st.st_size);
+    const bool scene = ends_with(name, ".yaml") || ends_with(name, ".yml") || ends_with(name, ".json");
+    bytes += scene ? scene_bytes(*a, own) : own;
+  }
+  return bytes <= kSmallJob;
+}
+
+// The restart's settings made with mallopt, and the heap grown once by top_pad and advised onto
+// huge pages: what glibc.malloc.hugetlb does as the heap grows, here for its first 256 MiB
+// only (the main arena's; the number pool advises its own slabs).
+void tune_in_process() {
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TOP_PAD, kTopPad);
+  mallopt(M_TRIM_THRESHOLD, 2147483647);
+  const auto before = reinterpret_cast<std::uintptr_t>(sbrk(0));
+  void* volatile block = std::malloc(1 << 20);  // volatile: the pair must not be optimised away
+  std::free(block);
+  const auto after = reinterpret_cast<std::uintptr_t>(sbrk(0));
+  const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const std::uintptr_t lo = (before + page - 1) & ~(page - 1);
+  if (after > lo) madvise(reinterpret_cast<void*>(lo), after - lo, MADV_HUGEPAGE);
+}
+
+}  // namespace
+
 void use_huge_pages(char** argv) {
   const char* mode = std::getenv("HLR_MALLOC");
   if (mode && std::strcmp(mode, "system") == 0) return;
+  const bool show = mode && std::strcmp(mode, "show") == 0;
   const char* old = std::getenv("GLIBC_TUNABLES");
   if (old && std::strstr(old, "glibc.malloc.hugetlb")) {  // set by the user, or by the restart
-    if (mode && std::strcmp(mode, "show") == 0) std::fprintf(stderr, "hlr: GLIBC_TUNABLES=%s\n", old);
+    if (show) std::fprintf(stderr, "hlr: GLIBC_TUNABLES=%s\n", old);
+    return;
+  }
+  if ((mode && std::strcmp(mode, "inprocess") == 0) || ((!mode || show) && small_job(argv))) {
+    tune_in_process();
+    if (show) std::fprintf(stderr, "hlr: in process: mmap_threshold=33554432 top_pad=268435456 trim_threshold=2147483647, heap advised\n");
     return;
   }
   // hugetlb=1: madvise(MADV_HUGEPAGE) on the heap as it grows; top_pad: grow it 256 MiB at a

@@ -6,8 +6,11 @@ namespace hlr::cli {
 /// Restarts the process once with glibc's malloc set to back its heap with transparent huge
 /// pages, to grow it in large steps and to keep what it freed (GLIBC_TUNABLES
 /// glibc.malloc.hugetlb, top_pad, trim_threshold, mmap_threshold), unless the environment
-/// already sets glibc.malloc.hugetlb or HLR_MALLOC=system. Returns (doing nothing) where the
-/// restart is not possible.
+/// already sets glibc.malloc.hugetlb or HLR_MALLOC=system. A small job (render, info, explain,
+/// clip or decompose of mesh files of 8 MiB at most) is not restarted: it sets the same
+/// settings with mallopt and advises the first 256 MiB of its heap onto huge pages itself.
+/// HLR_MALLOC=restart or =inprocess chooses; =show prints what was done. Returns (doing
+/// nothing more) where the restart is not possible.
 void use_huge_pages(char** argv);
 
 /// Serves GMP's small blocks from the number pool (kernel/gmp_pool.hpp), unless

@@ -3,8 +3,9 @@
 # and 8 for line drawings (SVG with hidden lines, exact JSON) of a sphere, a cloud of
 # interpenetrating cubes and 400 random triangles (intersection lines, many cuts), the
 # visible surfaces (--surfaces), a raster (PNG and face ids) and a horizon (SVG and JSON).
-# The same bytes again with HLR_MALLOC=system (no huge pages), and the restart's settings are
-# the ones cli/process.cpp names, a user's own left alone.
+# The same bytes again with HLR_MALLOC=system (no huge pages) and =restart (the settings a
+# large job gets, here for small ones), and the restart's settings are the ones
+# cli/process.cpp names, for large jobs only, a user's own left alone.
 # Usage: tests/thread_identity.sh HLR GEN_MESH DATA_DIR
 set -euo pipefail
 hlr="$1"; gen="$2"; data="$3"
@@ -25,6 +26,8 @@ same() {  # name, then the command with THREADS where the count goes
   # glibc's own malloc settings instead of the huge pages hlr sets for itself (cli/process.cpp)
   HLR_MALLOC=system "${@//THREADS/2}" > "$work/$name.system" 2> "$work/err" || { echo "$name: HLR_MALLOC=system failed"; fail=1; return; }
   cmp -s "$first" "$work/$name.system" || { echo "$name: HLR_MALLOC=system differs"; fail=1; }
+  HLR_MALLOC=restart "${@//THREADS/2}" > "$work/$name.restart" 2> "$work/err" || { echo "$name: HLR_MALLOC=restart failed"; fail=1; return; }
+  cmp -s "$first" "$work/$name.restart" || { echo "$name: HLR_MALLOC=restart differs"; fail=1; }
   echo "$name: identical on 1, 2 and 8 threads ($(wc -c < "$first") bytes)"
 }
 for m in sphere cubes tris; do
@@ -42,12 +45,29 @@ done
 echo "raster PNG and face ids: compared on 1, 2 and 8 threads"
 same "horizon.svg" "$hlr" horizon --expr "sin(5*x)*cos(4*z)/3" --x -1:1:200 --z -1:1:60 --hidden dashed --threads THREADS
 same "horizon.json" "$hlr" horizon --expr "sin(5*x)*cos(4*z)/3" --x -1:1:60 --z -1:1:20 --format json --threads THREADS
-# The restart: hlr's settings when none are given; a user's glibc.malloc.hugetlb left as it is.
-shown="$(HLR_MALLOC=show "$hlr" --version 2>&1 >/dev/null || true)"
+# The restart: hlr's settings when none are given, for a large job (an input over 8 MiB: a
+# sparse file is enough, the settings are chosen before it is read); a small job sets them in
+# process; a user's glibc.malloc.hugetlb left as it is.
+truncate -s 9M "$work/large.off"
+shown="$(HLR_MALLOC=show "$hlr" info "$work/large.off" 2>&1 >/dev/null | head -1 || true)"
 case "$shown" in
-  *"glibc.malloc.hugetlb=1:glibc.malloc.top_pad=268435456:glibc.malloc.trim_threshold=4294967295"*) echo "huge pages: $shown" ;;
-  *) echo "huge pages: not set by the restart: '$shown'"; fail=1 ;;
+  *"glibc.malloc.hugetlb=1:glibc.malloc.top_pad=268435456:glibc.malloc.trim_threshold=4294967295"*) echo "huge pages, large job: $shown" ;;
+  *) echo "huge pages: not set by the restart for a large job: '$shown'"; fail=1 ;;
 esac
+printf 'bodies:\n  - mesh: "large.off"\n' > "$work/large.yaml"
+shown="$(HLR_MALLOC=show "$hlr" info "$work/large.yaml" 2>&1 >/dev/null | head -1 || true)"
+case "$shown" in
+  *"glibc.malloc.hugetlb=1"*) echo "huge pages, scene naming a large mesh: restarted" ;;
+  *) echo "huge pages: a scene naming a large mesh was not restarted: '$shown'"; fail=1 ;;
+esac
+for small in "--version" "info $work/sphere.off" "render $data/demo.yaml -o $work/demo.svg"; do
+  shown="$(HLR_MALLOC=show "$hlr" $small 2>&1 >/dev/null | head -1 || true)"
+  case "$shown" in
+    "hlr: in process: mmap_threshold=33554432 top_pad=268435456"*) ;;
+    *) echo "huge pages: small job 'hlr $small' not set in process: '$shown'"; fail=1 ;;
+  esac
+done
+echo "huge pages, small jobs: set in process"
 shown="$(GLIBC_TUNABLES=glibc.malloc.hugetlb=0 HLR_MALLOC=show "$hlr" --version 2>&1 >/dev/null || true)"
 [ "$shown" = "hlr: GLIBC_TUNABLES=glibc.malloc.hugetlb=0" ] || { echo "huge pages: a user's setting changed: '$shown'"; fail=1; }
 [ "$fail" = 0 ] && echo "thread identity: all identical"
