@@ -147,6 +147,8 @@ std::function<bool(const Tri&)> Engine<P>::near_segments(const std::vector<std::
 template <class P>
 void Engine<P>::project_vertices() {
   const ParallelLoop loop(opt_.threads);
+  reserve_touched(vproj_, X_.size(), loop);  // fresh pages zeroed on all cores, not by resize alone
+  reserve_touched(vfront_, X_.size(), loop);
   vproj_.resize(X_.size());
   vfront_.assign(X_.size(), 1);
   for (std::size_t b = 0; b < bodies_.size(); ++b)

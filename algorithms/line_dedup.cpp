@@ -2,6 +2,7 @@
 #include "algorithms/line_dedup.hpp"
 
 #include "algorithms/parallel.hpp"
+#include "algorithms/parallel_scan.hpp"
 #include "algorithms/picture_plane.hpp"
 #include "algorithms/union_find.hpp"
 
@@ -9,6 +10,8 @@
 #include <atomic>
 #include <execution>
 #include <functional>
+#include <map>
+#include <stdexcept>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -32,47 +35,106 @@ class Dedup {
 
   CleanDrawing run(const DedupOptions& opt) {
     CleanDrawing out;
-    out.pieces_in = d_.lines.size();
-    tolerance();
+    const ParallelLoop loop(opt.threads);
+    const std::size_t nl = d_.lines.size(), ne = points_.parent.size();
+    out.pieces_in = nl;
+    tolerance(loop);
     join_same_keys(opt.threads);
-    join_close_points();
-    std::vector<std::uint32_t> point_of(points_.parent.size(), UINT32_MAX);
-    auto point = [&](std::uint32_t e) {
-      std::uint32_t root = points_.find(e);
-      if (point_of[root] == UINT32_MAX) {
-        point_of[root] = static_cast<std::uint32_t>(out.points.size());
-        out.points.push_back(xy(root));
-        out.point_ends.push_back(root);
-      }
-      return point_of[root];
-    };
-    std::vector<char> degenerate(d_.lines.size(), 0);
-    for (std::uint32_t k = 0; k < d_.lines.size(); ++k)
-      if (!d_.lines[k].pulled && points_.find(2 * k) == points_.find(2 * k + 1)) degenerate[k] = 1, ++out.zero_length;
-    UnionFind groups(d_.lines.size());
+    join_close_points(loop);
+    // Every end's point (its set's smallest end), read on all cores; pieces seen end-on.
+    std::vector<std::uint32_t> root(ne);
+    loop.for_each(ne, 8192, [&](std::size_t e) { root[e] = root_of(points_.parent, e); });
+    std::vector<char> degenerate(nl, 0);
+    loop.for_each(nl, 8192, [&](std::size_t k) { degenerate[k] = !d_.lines[k].pulled && root[2 * k] == root[2 * k + 1]; });
+    out.zero_length = static_cast<std::size_t>(std::count(degenerate.begin(), degenerate.end(), 1));
+    UnionFind groups(nl);
     if (opt.overlaps) find_overlaps(degenerate, groups, opt.threads);
-    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> members;  // groups of two or more, by root
-    for (std::uint32_t k = 0; k < d_.lines.size(); ++k)
-      if (!degenerate[k] && groups.find(k) != k) members[groups.find(k)].push_back(k);
-    for (std::uint32_t k = 0; k < d_.lines.size(); ++k) {
-      if (degenerate[k] || groups.find(k) != k) continue;
-      auto it = members.find(k);
-      if (it == members.end()) {
-        out.edges.push_back(edge(k, point(2 * k), point(2 * k + 1)));
-        continue;
-      }
-      std::vector<std::uint32_t>& m = it->second;
-      m.insert(m.begin(), k);  // the root is the group's smallest piece
+    // Groups of two or more pieces (few): resolved in the order of their roots (the smallest
+    // piece), one at a time (they share the cache of exact points).
+    std::vector<std::uint32_t> group(nl);
+    loop.for_each(nl, 8192, [&](std::size_t k) { group[k] = root_of(groups.parent, k); });
+    std::map<std::uint32_t, std::vector<std::uint32_t>> members;
+    for (std::uint32_t k : parallel_select(nl, [&](std::size_t k) { return !degenerate[k] && group[k] != k; }, loop))
+      members[group[k]].push_back(k);
+    std::vector<std::uint32_t> group_roots;
+    std::vector<std::vector<Part>> group_parts;
+    for (auto& [r, m] : members) {
+      m.insert(m.begin(), r);
       ++out.overlap_groups;
       out.overlapped_pieces += m.size();
-      resolve(m, out, point);
+      group_roots.push_back(r);
+      group_parts.push_back(resolve(m, root, out.duplicate_length));
     }
+    auto group_of = [&](std::size_t k) -> std::ptrdiff_t {
+      auto it = std::lower_bound(group_roots.begin(), group_roots.end(), k);
+      return it != group_roots.end() && *it == k ? it - group_roots.begin() : -1;
+    };
+    // Each piece's edges, in piece order: none (seen end-on, or in another piece's group), its
+    // own, or its group's parts; their ends first as points' root ends.
+    const std::vector<std::size_t> at = parallel_offsets(nl, [&](std::size_t k) -> std::size_t {
+      if (degenerate[k] || group[k] != k) return 0;
+      const std::ptrdiff_t g = group_roots.empty() ? -1 : group_of(k);
+      return g < 0 ? 1 : group_parts[static_cast<std::size_t>(g)].size();
+    }, loop);
+    const std::size_t n_edges = at[nl];
+    if (n_edges >= (std::size_t{1} << 31)) throw std::length_error("2D stage: more than 2^31 edges");
+    out.edges.resize(n_edges);
+    loop.for_each(nl, 4096, [&](std::size_t k) {
+      std::size_t w = at[k];
+      if (at[k + 1] == w) return;
+      const std::ptrdiff_t g = group_roots.empty() ? -1 : group_of(k);
+      if (g < 0) {
+        out.edges[w] = edge(static_cast<std::uint32_t>(k), root[2 * k], root[2 * k + 1]);
+        return;
+      }
+      for (const Part& part : group_parts[static_cast<std::size_t>(g)]) out.edges[w++] = edge(part.piece, part.p, part.q);
+    });
+    number_points(out, loop);
     out.exact_point_tests = point_tests_;
     out.exact_line_tests = line_tests_;
     return out;
   }
 
  private:
+  // A drawn part of an overlap group: the piece that wins it, and its ends' root ends.
+  struct Part {
+    std::uint32_t piece, p, q;
+  };
+
+  static std::uint32_t root_of(const std::vector<std::uint32_t>& parent, std::size_t a) {  // no path changes: any thread
+    while (parent[a] != a) a = parent[a];
+    return static_cast<std::uint32_t>(a);
+  }
+
+  // The edges' ends, given as root ends, become point numbers: points numbered in the order of
+  // their first use (edge by edge, start before end), on all cores: each root's first position
+  // by an atomic minimum, the first positions listed in order, then every end renumbered.
+  void number_points(CleanDrawing& out, const ParallelLoop& loop) {
+    const std::size_t uses = 2 * out.edges.size();
+    auto root_at = [&](std::size_t u) { const CleanEdge& c = out.edges[u / 2]; return u & 1 ? c.q : c.p; };
+    std::vector<std::uint32_t> first(points_.parent.size(), UINT32_MAX);
+    loop.for_each(uses, 8192, [&](std::size_t u) {
+      std::atomic_ref<std::uint32_t> f(first[root_at(u)]);
+      std::uint32_t cur = f.load(std::memory_order_relaxed);
+      while (u < cur && !f.compare_exchange_weak(cur, static_cast<std::uint32_t>(u), std::memory_order_relaxed)) {
+      }
+    });
+    const std::vector<std::uint32_t> firsts = parallel_select(uses, [&](std::size_t u) { return first[root_at(u)] == u; }, loop);
+    out.points.resize(firsts.size());
+    out.point_ends.resize(firsts.size());
+    std::vector<std::uint32_t>& number = first;  // each root's entry read above, now its number
+    loop.for_each(firsts.size(), 8192, [&](std::size_t i) {
+      const std::uint32_t r = root_at(firsts[i]);
+      out.points[i] = xy(r);
+      out.point_ends[i] = r;
+      number[r] = static_cast<std::uint32_t>(i);
+    });
+    loop.for_each(out.edges.size(), 8192, [&](std::size_t i) {
+      out.edges[i].p = number[out.edges[i].p];
+      out.edges[i].q = number[out.edges[i].q];
+    });
+  }
+
   const Polyline2D& line(std::uint32_t e) const { return d_.lines[e / 2]; }
   std::array<double, 2> xy(std::uint32_t e) const { return d_.points[line(e).first + (e & 1)]; }
   bool pulled(std::uint32_t e) const { return line(e).pulled; }
@@ -91,12 +153,17 @@ class Dedup {
   // Doubles of the picture carry errors near 1e-15 of its largest coordinate (a few roundings
   // from exact values in a frame of unit size or of the input's size; perspective divides by
   // depths at least 1e-4 of the largest): delta = 1e-9 of it leaves a margin above 1e3.
-  void tolerance() {
-    double m = 0;
-    for (std::uint32_t e = 0; e < points_.parent.size(); ++e) {
-      auto p = xy(e);
-      m = std::max({m, std::fabs(p[0]), std::fabs(p[1])});
-    }
+  void tolerance(const ParallelLoop& loop) {
+    std::vector<double> most(loop.workers(), 0.0);
+    loop.run(points_.parent.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
+      double m = most[w];
+      for (std::size_t e = begin; e < end; ++e) {
+        auto p = xy(static_cast<std::uint32_t>(e));
+        m = std::max({m, std::fabs(p[0]), std::fabs(p[1])});
+      }
+      most[w] = m;
+    });
+    const double m = *std::max_element(most.begin(), most.end());
     delta_ = 1e-9 * std::max(m, 1e-300);
   }
 
@@ -166,20 +233,22 @@ class Dedup {
   // already joined by their keys are one exact point: of each such group only the ends whose
   // doubles differ from its root's take part (the root stands for the rest), so the groups
   // found, and their roots (the smallest end), are those of comparing every end.
-  void join_close_points() {
+  void join_close_points(const ParallelLoop& loop) {
     struct End {
       double x, y;
       std::uint32_t e;
     };
-    std::vector<End> order;
-    order.reserve(points_.parent.size());
-    for (std::uint32_t e = 0; e < points_.parent.size(); ++e)
-      if (!pulled(e)) {
-        auto p = xy(e);
-        const std::uint32_t root = points_.find(e);
-        if (root != e && xy(root) == p) continue;
-        order.push_back({p[0], p[1], e});
-      }
+    const std::vector<std::uint32_t> taking = parallel_select(points_.parent.size(), [&](std::size_t i) {
+      const auto e = static_cast<std::uint32_t>(i);
+      if (pulled(e)) return false;
+      const std::uint32_t root = root_of(points_.parent, e);
+      return root == e || xy(root) != xy(e);
+    }, loop);
+    std::vector<End> order(taking.size());
+    loop.for_each(taking.size(), 8192, [&](std::size_t i) {
+      auto p = xy(taking[i]);
+      order[i] = {p[0], p[1], taking[i]};
+    });
     std::sort(std::execution::par, order.begin(), order.end(), [](const End& a, const End& b) {
       return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.e < b.e)));
     });
@@ -194,27 +263,35 @@ class Dedup {
     }
   }
 
-  // Can pieces a and b lie on one line of the picture and overlap in more than a point? A
-  // double filter with margin 8 delta (exact overlap passes it), then the exact test.
-  bool overlap(std::uint32_t a, std::uint32_t b) {
-    if (!maybe_overlap(a, b)) return false;
-    return exact_overlap(a, b);
-  }
+  // A piece in the overlap search: its picture ends, length and unit direction (worked out
+  // once per piece and cell, not once per pair), and the piece and segment it is.
+  struct Near {
+    std::array<double, 2> a, b;
+    double len, nx, ny;
+    std::uint32_t piece;
+    int segment;
+  };
 
-  bool maybe_overlap(std::uint32_t a, std::uint32_t b) const {
-    auto A0 = xy(2 * a), A1 = xy(2 * a + 1), B0 = xy(2 * b), B1 = xy(2 * b + 1);
+  static Near near_piece(const std::array<double, 2>& a, const std::array<double, 2>& b, std::uint32_t piece, int segment) {
     // Plain square roots (within 2 ulp; drawing coordinates are below 2^100): far inside the
     // margin of 8·delta = 8e-9 of the drawing, and faster than hypot.
-    auto length = [](double dx, double dy) { return std::sqrt(dx * dx + dy * dy); };
-    double la = length(A1[0] - A0[0], A1[1] - A0[1]), lb = length(B1[0] - B0[0], B1[1] - B0[1]);
-    if (lb > la) std::swap(A0, B0), std::swap(A1, B1), std::swap(la, lb);
+    const double dx = b[0] - a[0], dy = b[1] - a[1], len = std::sqrt(dx * dx + dy * dy);
+    return {a, b, len, len > 0 ? dx / len : 0.0, len > 0 ? dy / len : 0.0, piece, segment};
+  }
+
+  // Can two pieces lie on one line of the picture and overlap in more than a point? A double
+  // filter with margin 8 delta measured from the longer one (exact overlap passes it); the
+  // exact test follows.
+  bool maybe_overlap(const Near& first, const Near& second) const {
+    const bool swap = second.len > first.len;
+    const Near& A = swap ? second : first;
+    const Near& B = swap ? first : second;
     const double m = 8 * delta_;
-    if (la > 4 * delta_) {
-      double nx = (A1[0] - A0[0]) / la, ny = (A1[1] - A0[1]) / la;
-      auto off = [&](const std::array<double, 2>& p) { return std::fabs(nx * (p[1] - A0[1]) - ny * (p[0] - A0[0])); };
-      if (off(B0) > m || off(B1) > m) return false;
-      double s0 = nx * (B0[0] - A0[0]) + ny * (B0[1] - A0[1]), s1 = nx * (B1[0] - A0[0]) + ny * (B1[1] - A0[1]);
-      if (std::max(s0, s1) <= -m || std::min(s0, s1) >= la + m) return false;
+    if (A.len > 4 * delta_) {
+      auto off = [&](const std::array<double, 2>& p) { return std::fabs(A.nx * (p[1] - A.a[1]) - A.ny * (p[0] - A.a[0])); };
+      if (off(B.a) > m || off(B.b) > m) return false;
+      double s0 = A.nx * (B.a[0] - A.a[0]) + A.ny * (B.a[1] - A.a[1]), s1 = A.nx * (B.b[0] - A.a[0]) + A.ny * (B.b[1] - A.a[1]);
+      if (std::max(s0, s1) <= -m || std::min(s0, s1) >= A.len + m) return false;
     }
     return true;
   }
@@ -229,19 +306,33 @@ class Dedup {
     return std::max(alo, blo) < std::min(ahi, bhi);
   }
 
-  // A grid over the picture; each piece goes into every cell within delta of it (walking the
+  // A grid over the picture; each piece goes into every cell within 8 delta of it (walking the
   // columns of its major axis), and pieces sharing a cell are tested.
   void find_overlaps(const std::vector<char>& degenerate, UnionFind& groups, unsigned threads) {
-    std::vector<std::uint32_t> live;
-    for (std::uint32_t k = 0; k < d_.lines.size(); ++k)
-      if (!degenerate[k] && !d_.lines[k].pulled) live.push_back(k);
+    const ParallelLoop loop(threads);
+    const std::vector<std::uint32_t> live =
+        parallel_select(d_.lines.size(), [&](std::size_t k) { return !degenerate[k] && !d_.lines[k].pulled; }, loop);
     if (live.size() < 2) return;
-    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-    for (std::uint32_t k : live)
-      for (std::uint32_t e : {2 * k, 2 * k + 1}) {
-        auto p = xy(e);
-        x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]), y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
+    // Each live piece's ends and segment in one record, in the order of `live`: a cell's
+    // pieces are read from here (one record each) instead of from the drawing's three arrays.
+    struct Rec {
+      std::array<double, 2> a, b;
+      std::uint32_t piece;
+      int segment;
+    };
+    std::vector<Rec> rec(live.size());
+    std::vector<std::array<double, 4>> boxes(loop.workers(), {INFINITY, INFINITY, -INFINITY, -INFINITY});
+    loop.run(live.size(), 8192, [&](unsigned w, std::size_t begin, std::size_t end) {
+      std::array<double, 4>& bx = boxes[w];
+      for (std::size_t i = begin; i < end; ++i) {
+        const Polyline2D& l = d_.lines[live[i]];
+        rec[i] = {d_.points[l.first], d_.points[l.first + 1], live[i], d_.sources[l.first_edge].segment};
+        for (const auto& p : {rec[i].a, rec[i].b})
+          bx = {std::min(bx[0], p[0]), std::min(bx[1], p[1]), std::max(bx[2], p[0]), std::max(bx[3], p[1])};
       }
+    });
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    for (const auto& bx : boxes) x0 = std::min(x0, bx[0]), y0 = std::min(y0, bx[1]), x1 = std::max(x1, bx[2]), y1 = std::max(y1, bx[3]);
     const double pad = 16 * delta_;
     x0 -= pad, y0 -= pad, x1 += pad, y1 += pad;
     const int g = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(live.size()))), 1, 2048);
@@ -250,8 +341,8 @@ class Dedup {
     auto cy = [&](double y) { return std::clamp(static_cast<int>((y - y0) / ch), 0, g - 1); };
     const double m = 8 * delta_;
     // The cells of each piece (conservative: every cell within 8 delta of it).
-    auto for_cells = [&](std::uint32_t k, auto&& visit) {
-      auto a = xy(2 * k), b = xy(2 * k + 1);
+    auto for_cells = [&](const Rec& r, auto&& visit) {
+      auto a = r.a, b = r.b;
       bool by_x = std::fabs(b[0] - a[0]) >= std::fabs(b[1] - a[1]);
       int u = by_x ? 0 : 1, v = 1 - u;
       if (a[u] > b[u]) std::swap(a, b);
@@ -267,20 +358,19 @@ class Dedup {
       }
     };
     const std::size_t n_cells = static_cast<std::size_t>(g) * g;
-    ParallelLoop loop(threads);
     // Each piece's cells on all cores (counted, then written at the piece's offset), then
     // grouped by cell in piece order: each cell lists its pieces in the order of `live`.
     std::vector<std::uint32_t> count(live.size() + 1, 0);
     loop.for_each(live.size(), 4096, [&](std::size_t i) {
       std::uint32_t n = 0;
-      for_cells(live[i], [&](std::size_t) { ++n; });
+      for_cells(rec[i], [&](std::size_t) { ++n; });
       count[i + 1] = n;
     });
     for (std::size_t i = 0; i < live.size(); ++i) count[i + 1] += count[i];
     std::vector<std::uint32_t> cell_of(count.back());
     loop.for_each(live.size(), 4096, [&](std::size_t i) {
       std::uint32_t at = count[i];
-      for_cells(live[i], [&](std::size_t cell) { cell_of[at++] = static_cast<std::uint32_t>(cell); });
+      for_cells(rec[i], [&](std::size_t cell) { cell_of[at++] = static_cast<std::uint32_t>(cell); });
     });
     // Grouped by cell on all cores: a cell's pieces come in any order (the pairs are sorted
     // before the exact tests, so nothing depends on it).
@@ -296,20 +386,27 @@ class Dedup {
       loop.run(live.size(), 4096, [&](unsigned, std::size_t b, std::size_t e) {
         for (std::size_t i = b; i < e; ++i)
           for (std::uint32_t at = count[i]; at < count[i + 1]; ++at)
-            items[n[cell_of[at]].fetch_add(1, std::memory_order_relaxed)] = live[i];
+            items[n[cell_of[at]].fetch_add(1, std::memory_order_relaxed)] = static_cast<std::uint32_t>(i);
       });
     }
     // Pairs that pass the double filter, found on all cores; the exact tests in a fixed order.
     std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop.workers());
     loop.run(n_cells, 256, [&](unsigned worker, std::size_t begin, std::size_t end) {
-      for (std::size_t c = begin; c < end; ++c)
-        for (std::uint32_t i = start[c]; i < start[c + 1]; ++i)
-          for (std::uint32_t j = i + 1; j < start[c + 1]; ++j) {
-            std::uint32_t a = items[i], b = items[j];
-            if (a == b) continue;
-            if (d_.sources[d_.lines[a].first_edge].segment == d_.sources[d_.lines[b].first_edge].segment) continue;
-            if (maybe_overlap(a, b)) found[worker].emplace_back(std::min(a, b), std::max(a, b));
+      std::vector<Near> cell;
+      for (std::size_t c = begin; c < end; ++c) {
+        if (start[c + 1] - start[c] < 2) continue;
+        cell.clear();
+        for (std::uint32_t i = start[c]; i < start[c + 1]; ++i) {
+          const Rec& r = rec[items[i]];
+          cell.push_back(near_piece(r.a, r.b, r.piece, r.segment));
+        }
+        for (std::size_t i = 0; i < cell.size(); ++i)
+          for (std::size_t j = i + 1; j < cell.size(); ++j) {
+            const Near &A = cell[i], &B = cell[j];
+            if (A.piece == B.piece || A.segment == B.segment) continue;
+            if (maybe_overlap(A, B)) found[worker].emplace_back(std::min(A.piece, B.piece), std::max(A.piece, B.piece));
           }
+      }
     });
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     for (auto& f : found) pairs.insert(pairs.end(), f.begin(), f.end());
@@ -327,8 +424,8 @@ class Dedup {
   // Pieces on one line of the picture: cut at every end (exact order along the line), draw
   // each part once with the piece that wins it (visible first, then the stronger kind, then
   // the first piece).
-  template <class PointOf>
-  void resolve(const std::vector<std::uint32_t>& m, CleanDrawing& out, PointOf& point) {
+  std::vector<Part> resolve(const std::vector<std::uint32_t>& m, const std::vector<std::uint32_t>& root, double& duplicate_length) {
+    std::vector<Part> parts;
     const Exact2 &f0 = exact(2 * m[0]), &f1 = exact(2 * m[0] + 1);
     const int ax = f0[0] != f1[0] ? 0 : 1;
     std::vector<std::uint32_t> ends;
@@ -357,10 +454,11 @@ class Dedup {
         if (best < 0 || wins(d_.lines[k], d_.lines[best])) best = static_cast<int>(k);
       }
       if (best < 0) continue;
-      out.edges.push_back(edge(static_cast<std::uint32_t>(best), point(breaks[i]), point(breaks[i + 1])));
+      parts.push_back({static_cast<std::uint32_t>(best), root[breaks[i]], root[breaks[i + 1]]});
       after += len(breaks[i], breaks[i + 1]);
     }
-    out.duplicate_length += std::max(0.0, before - after);
+    duplicate_length += std::max(0.0, before - after);
+    return parts;
   }
 
   static bool wins(const Polyline2D& a, const Polyline2D& b) {

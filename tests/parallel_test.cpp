@@ -12,6 +12,7 @@
 
 #include "algorithms/body_topology.hpp"
 #include "algorithms/parallel.hpp"
+#include "algorithms/parallel_scan.hpp"
 
 using namespace hlr;
 
@@ -97,4 +98,29 @@ TEST(Parallel, BodyTopologyEqualsTheMapOfEdgeUsesOnAnyThreadCount) {
   }
   EXPECT_EQ(edge_of_slot[0], edge_of_slot[1]);
   EXPECT_EQ(edge_of_slot[0], edge_of_slot[2]);
+}
+
+// The order-keeping scans (parallel_scan.hpp) against a plain loop: sizes around the chunk
+// (0, 1, one chunk, one more, several), 1, 2 and 8 threads, the same result every time.
+TEST(ParallelScan, SelectAndOffsetsMatchAPlainLoopOnAnyThreadCount) {
+  for (std::size_t n : {std::size_t{0}, std::size_t{1}, kScanChunk - 1, kScanChunk, kScanChunk + 1, 5 * kScanChunk + 77}) {
+    auto keep = [](std::size_t i) { return (i * 2654435761u) % 7 < 3; };
+    auto count = [](std::size_t i) -> std::size_t { return (i * 40503u) % 5; };
+    std::vector<std::uint32_t> want_sel;
+    std::vector<std::size_t> want_off(1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (keep(i)) want_sel.push_back(static_cast<std::uint32_t>(i));
+      want_off.push_back(want_off.back() + count(i));
+    }
+    for (unsigned t : {1u, 2u, 8u}) {
+      const ParallelLoop loop(t);
+      EXPECT_EQ(parallel_select(n, keep, loop), want_sel) << "n " << n << ", threads " << t;
+      EXPECT_EQ(parallel_offsets(n, count, loop), want_off) << "n " << n << ", threads " << t;
+    }
+  }
+  // Nothing kept, everything kept.
+  const ParallelLoop loop(2);
+  EXPECT_TRUE(parallel_select(100000, [](std::size_t) { return false; }, loop).empty());
+  EXPECT_EQ(parallel_select(100000, [](std::size_t) { return true; }, loop).size(), 100000u);
+  EXPECT_EQ(parallel_offsets(100000, [](std::size_t) -> std::size_t { return 3; }, loop).back(), 300000u);
 }

@@ -1,0 +1,65 @@
+// Order-keeping scans on all cores (the parallel loop of parallel.hpp): which indices pass a
+// test, and where each index's output starts when each writes a known count. Both count per
+// fixed chunk, add the chunks' counts in order, then write each chunk after the ones before
+// it, so the result does not depend on the thread count.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/parallel.hpp"
+
+namespace hlr {
+
+inline constexpr std::size_t kScanChunk = 16384;
+
+/// The indices i in [0, n) with keep(i) (called twice per index: it must be pure), in
+/// increasing order.
+template <class Keep>
+std::vector<std::uint32_t> parallel_select(std::size_t n, const Keep& keep, const ParallelLoop& loop) {
+  const std::size_t chunks = (n + kScanChunk - 1) / kScanChunk;
+  std::vector<std::size_t> at(chunks + 1, 0);
+  loop.for_each(chunks, 1, [&](std::size_t c) {
+    std::size_t s = 0;
+    for (std::size_t i = c * kScanChunk, e = std::min(n, i + kScanChunk); i < e; ++i) s += keep(i) ? 1 : 0;
+    at[c + 1] = s;
+  });
+  for (std::size_t c = 0; c < chunks; ++c) at[c + 1] += at[c];
+  std::vector<std::uint32_t> out(at[chunks]);
+  loop.for_each(chunks, 1, [&](std::size_t c) {
+    std::size_t w = at[c];
+    for (std::size_t i = c * kScanChunk, e = std::min(n, i + kScanChunk); i < e; ++i)
+      if (keep(i)) out[w++] = static_cast<std::uint32_t>(i);
+  });
+  return out;
+}
+
+/// Exclusive prefix sums: offsets[i] = count(0) + ... + count(i - 1) for i in [0, n], so
+/// offsets[n] is the total (count is called once per index).
+template <class Count>
+std::vector<std::size_t> parallel_offsets(std::size_t n, const Count& count, const ParallelLoop& loop) {
+  std::vector<std::size_t> out(n + 1, 0);
+  const std::size_t chunks = (n + kScanChunk - 1) / kScanChunk;
+  std::vector<std::size_t> at(chunks + 1, 0);
+  loop.for_each(chunks, 1, [&](std::size_t c) {
+    std::size_t s = 0;
+    for (std::size_t i = c * kScanChunk, e = std::min(n, i + kScanChunk); i < e; ++i) {
+      out[i + 1] = count(i);
+      s += out[i + 1];
+    }
+    at[c + 1] = s;
+  });
+  for (std::size_t c = 0; c < chunks; ++c) at[c + 1] += at[c];
+  loop.for_each(chunks, 1, [&](std::size_t c) {
+    std::size_t s = at[c];
+    for (std::size_t i = c * kScanChunk, e = std::min(n, i + kScanChunk); i < e; ++i) {
+      s += out[i + 1];
+      out[i + 1] = s;
+    }
+  });
+  return out;
+}
+
+}  // namespace hlr
