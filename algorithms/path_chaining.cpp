@@ -13,42 +13,58 @@ constexpr std::uint32_t kNone = UINT32_MAX;
 
 using Components = UnionFind;
 
-// Odd-degree vertices of each component (by root), in index order; degree per vertex.
-void odd_vertices(std::size_t n, const std::vector<std::array<std::uint32_t, 2>>& edges, Components& comp,
-                  std::vector<std::uint32_t>& degree, std::vector<std::vector<std::uint32_t>>& odd) {
-  degree.assign(n, 0);
+// Degree per vertex, components, and the odd-degree vertices of each component in index order,
+// flat: those of root r are odd[at[r] .. at[r + 1]).
+struct OddVertices {
+  std::vector<std::uint32_t> degree, at, odd;
+};
+
+void odd_vertices(std::size_t n, const std::vector<std::array<std::uint32_t, 2>>& edges, Components& comp, OddVertices& o) {
+  o.degree.assign(n, 0);
   for (const auto& e : edges) {
-    ++degree[e[0]], ++degree[e[1]];
+    ++o.degree[e[0]], ++o.degree[e[1]];
     comp.unite(e[0], e[1]);
   }
-  odd.assign(n, {});
+  o.at.assign(n + 1, 0);
   for (std::uint32_t v = 0; v < n; ++v)
-    if (degree[v] % 2) odd[comp.find(v)].push_back(v);
+    if (o.degree[v] % 2) ++o.at[comp.find(v) + 1];
+  for (std::size_t v = 0; v < n; ++v) o.at[v + 1] += o.at[v];
+  o.odd.resize(o.at[n]);
+  std::vector<std::uint32_t> fill(o.at.begin(), o.at.end() - 1);
+  for (std::uint32_t v = 0; v < n; ++v)
+    if (o.degree[v] % 2) o.odd[fill[comp.find(v)]++] = v;
+}
+
+// Per component (by root) max(1, odd vertices / 2): the fewest strokes.
+std::size_t bound(std::size_t n, Components& comp, const OddVertices& o) {
+  std::size_t count = 0;
+  for (std::uint32_t v = 0; v < n; ++v)
+    if (o.degree[v] > 0 && comp.find(v) == v) count += std::max<std::size_t>(1, (o.at[v + 1] - o.at[v]) / 2);
+  return count;
 }
 
 }  // namespace
 
 std::size_t minimum_chain_count(std::size_t n, const std::vector<std::array<std::uint32_t, 2>>& edges) {
   Components comp(n);
-  std::vector<std::uint32_t> degree;
-  std::vector<std::vector<std::uint32_t>> odd;
-  odd_vertices(n, edges, comp, degree, odd);
-  std::size_t count = 0;
-  for (std::uint32_t v = 0; v < n; ++v)
-    if (degree[v] > 0 && comp.find(v) == v) count += std::max<std::size_t>(1, odd[v].size() / 2);
-  return count;
+  OddVertices o;
+  odd_vertices(n, edges, comp, o);
+  return bound(n, comp, o);
 }
 
-std::vector<Chain> chain_edges(std::size_t n, const std::vector<std::array<std::uint32_t, 2>>& input) {
+std::vector<Chain> chain_edges(std::size_t n, const std::vector<std::array<std::uint32_t, 2>>& input, std::size_t* minimum) {
   Components comp(n);
-  std::vector<std::uint32_t> degree;
-  std::vector<std::vector<std::uint32_t>> odd;
-  odd_vertices(n, input, comp, degree, odd);
+  OddVertices o;
+  odd_vertices(n, input, comp, o);
+  if (minimum) *minimum = bound(n, comp, o);
+  const std::vector<std::uint32_t>& degree = o.degree;
   // All edges: the input's, then the virtual ones pairing odd vertices of a component.
-  std::vector<std::array<std::uint32_t, 2>> edges = input;
+  std::vector<std::array<std::uint32_t, 2>> edges;
+  edges.reserve(input.size() + o.odd.size() / 2);
+  edges = input;
   const std::size_t real = input.size();
   for (std::uint32_t v = 0; v < n; ++v)
-    for (std::size_t i = 0; i + 1 < odd[v].size(); i += 2) edges.push_back({odd[v][i], odd[v][i + 1]});
+    for (std::uint32_t i = o.at[v]; i + 1 < o.at[v + 1]; i += 2) edges.push_back({o.odd[i], o.odd[i + 1]});
   // Adjacency (CSR), in edge order: deterministic.
   std::vector<std::uint32_t> start(n + 1, 0);
   for (const auto& e : edges) ++start[e[0] + 1], ++start[e[1] + 1];
@@ -61,7 +77,7 @@ std::vector<Chain> chain_edges(std::size_t n, const std::vector<std::array<std::
   std::vector<std::pair<std::uint32_t, std::uint32_t>> stack, circuit;  // (vertex, edge that reached it)
   for (std::uint32_t root = 0; root < n; ++root) {
     if (degree[root] == 0 || comp.find(root) != root) continue;
-    std::uint32_t s = odd[root].empty() ? root : odd[root][0];
+    std::uint32_t s = o.at[root] == o.at[root + 1] ? root : o.odd[o.at[root]];
     stack.assign(1, {s, kNone});
     circuit.clear();
     while (!stack.empty()) {

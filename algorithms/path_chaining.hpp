@@ -22,8 +22,10 @@ struct Chain {
 };
 
 /// Chains `edges` (pairs of point indices below `points`; p != q) into the fewest strokes.
-/// Deterministic: the same input gives the same strokes.
-std::vector<Chain> chain_edges(std::size_t points, const std::vector<std::array<std::uint32_t, 2>>& edges);
+/// Deterministic: the same input gives the same strokes. `minimum`, when given, receives
+/// minimum_chain_count() of the same graph (worked out from the same components).
+std::vector<Chain> chain_edges(std::size_t points, const std::vector<std::array<std::uint32_t, 2>>& edges,
+                               std::size_t* minimum = nullptr);
 
 /// The lower bound the chaining reaches: the sum over connected components of
 /// max(1, odd-degree vertices / 2).

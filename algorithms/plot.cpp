@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "algorithms/parallel.hpp"
 #include "algorithms/path_chaining.hpp"
 
 namespace hlr {
@@ -35,13 +36,15 @@ std::vector<Stroke> layer_strokes(const CleanDrawing& c, const std::vector<std::
     return local[p];
   };
   for (std::uint32_t e : edge_ids) edges.push_back({id(c.edges[e].p), id(c.edges[e].q)});
-  min_count += minimum_chain_count(global.size(), edges);
-  for (const Chain& ch : chain_edges(global.size(), edges)) {
+  std::size_t minimum = 0;
+  for (const Chain& ch : chain_edges(global.size(), edges, &minimum)) {
     Stroke s;
     s.closed = ch.closed;
+    s.points.reserve(ch.points.size());
     for (std::uint32_t p : ch.points) s.points.push_back(c.points[global[p]]);
     out.push_back(std::move(s));
   }
+  min_count += minimum;
   return out;
 }
 
@@ -128,12 +131,24 @@ Plot plot_from_clean(const CleanDrawing& c, const PlotOptions& opt, double secon
       plot.layers.push_back(std::move(layer));
     }
   plot.stats.seconds_chain = seconds_since(t1);
-  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  // Each stroke's length and box on all cores; the lengths added in stroke order (the same
+  // sum on any number of threads).
+  std::vector<const Stroke*> all;
   for (const PlotLayer& l : plot.layers)
-    for (const Stroke& s : l.strokes) {
-      plot.stats.pen_down_length += stroke_length(s);
-      for (const Point2& p : s.points) x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]), y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
-    }
+    for (const Stroke& s : l.strokes) all.push_back(&s);
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> length(all.size());
+  std::vector<std::array<double, 4>> box(all.size(), {inf, inf, -inf, -inf});
+  ParallelLoop(opt.threads).for_each(all.size(), 64, [&](std::size_t i) {
+    length[i] = stroke_length(*all[i]);
+    auto& b = box[i];
+    for (const Point2& p : all[i]->points) b = {std::min(b[0], p[0]), std::min(b[1], p[1]), std::max(b[2], p[0]), std::max(b[3], p[1])};
+  });
+  double x0 = inf, y0 = inf, x1 = -inf, y1 = -inf;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    plot.stats.pen_down_length += length[i];
+    x0 = std::min(x0, box[i][0]), y0 = std::min(y0, box[i][1]), x1 = std::max(x1, box[i][2]), y1 = std::max(y1, box[i][3]);
+  }
   if (x1 >= x0) plot.bounds = {x0, y0, x1, y1};
   return plot;
 }
