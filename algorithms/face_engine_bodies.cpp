@@ -2,6 +2,8 @@
 // every face (facing.hpp), which bodies are closed solids (body_topology.hpp), inside-out
 // solids turned, an eye inside a solid refused.
 #include <algorithm>
+#include <atomic>
+#include <numeric>
 #include <chrono>
 
 #include "algorithms/convexity.hpp"
@@ -9,6 +11,8 @@
 #include "algorithms/face_triangles.hpp"
 #include "algorithms/facing.hpp"
 #include "algorithms/parallel.hpp"
+#include "algorithms/parallel_scan.hpp"
+#include "algorithms/union_find.hpp"
 
 namespace hlr::face_route {
 namespace {
@@ -198,19 +202,35 @@ int Engine<P>::triangulate_body(int b) {
   return first_tri;
 }
 
-// Sign of six times the volume of the triangles `ids`; Fast40's terms reach 2^123, so its sum
-// is kept in GMP.
+// Sign of six times the volume of the triangles `ids`, summed on all cores (exact integers:
+// the sum is the same in any order); Fast40's terms reach 2^123, so its sums are kept in GMP.
 template <class P>
 int Engine<P>::volume_sign(const std::vector<int>& ids) const {
+  const ParallelLoop loop(opt_.threads);
   if constexpr (std::is_same_v<P, Fast40>) {
-    mpz_class v6 = 0;
+    std::vector<mpz_class> part(loop.workers(), 0);
     const Vec<P>& o = X_[tris_[ids[0]].v[0]];
-    for (int i : ids)
-      v6 += P::z(dot<P>(sub<P>(X_[tris_[i].v[0]], o), cross<P>(sub<P>(X_[tris_[i].v[1]], o), sub<P>(X_[tris_[i].v[2]], o))));
+    loop.run(ids.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k) {
+        const int i = ids[k];
+        part[w] += P::z(dot<P>(sub<P>(X_[tris_[i].v[0]], o), cross<P>(sub<P>(X_[tris_[i].v[1]], o), sub<P>(X_[tris_[i].v[2]], o))));
+      }
+    });
+    mpz_class v6 = 0;
+    for (const mpz_class& x : part) v6 += x;
     return sgn(v6);
   } else {
+    std::vector<V> part(loop.workers(), V(0));
+    loop.run(ids.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
+      V sum = 0;
+      for (std::size_t k = begin; k < end; ++k) {
+        const int i = ids[k];
+        sum += dot<P>(X_[tris_[i].v[0]], cross<P>(X_[tris_[i].v[1]], X_[tris_[i].v[2]]));
+      }
+      part[w] += sum;
+    });
     V volume6 = 0;
-    for (int i : ids) volume6 += dot<P>(X_[tris_[i].v[0]], cross<P>(X_[tris_[i].v[1]], X_[tris_[i].v[2]]));
+    for (const V& x : part) volume6 += x;
     return P::sign(volume6);
   }
 }
@@ -220,10 +240,14 @@ void Engine<P>::prepare_body(int b, LineDrawing& res) {
   topo_[b] = body_topology(bodies_[b]->faces(), bodies_[b]->num_vertices(), opt_.threads);
   const int first_tri = triangulate_body(b);
   // A closed solid: every edge in exactly two faces, traversed in opposite directions.
-  bool closed = true;
-  for (const BodyEdge& e : topo_[b].edges) closed = closed && e.closed_pair();
-  std::vector<int> ids;
-  for (std::size_t i = first_tri; i < tris_.size(); ++i) ids.push_back(static_cast<int>(i));
+  const ParallelLoop loop(opt_.threads);
+  std::vector<char> open(loop.workers(), 0);
+  loop.run(topo_[b].edges.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end && !open[w]; ++i) open[w] = !topo_[b].edges[i].closed_pair();
+  });
+  const bool closed = std::find(open.begin(), open.end(), 1) == open.end();
+  std::vector<int> ids(tris_.size() - static_cast<std::size_t>(first_tri));
+  std::iota(ids.begin(), ids.end(), first_tri);
   // Orientation per component first (an inside-out one is turned, with a note); then the sign
   // of the whole.
   const bool components_ok = closed && !ids.empty() && orient_components(b, first_tri, res);
@@ -303,22 +327,26 @@ bool Engine<P>::eye_inside(int first) const {
 template <class P>
 bool Engine<P>::orient_components(int b, int first, LineDrawing& res) {
   const std::size_t nf = bodies_[b]->faces().size();
-  std::vector<int> parent(nf);
-  for (std::size_t f = 0; f < nf; ++f) parent[f] = static_cast<int>(f);
-  auto find = [&](int f) {
-    while (parent[f] != f) f = parent[f] = parent[parent[f]];
-    return f;
-  };
-  for (const BodyEdge& e : topo_[b].edges)
-    for (std::size_t k = 1; k < e.uses.size(); ++k) parent[find(e.uses[k].face)] = find(e.uses[0].face);
+  // Faces joined across edges, on all cores: each set's root is its smallest face.
+  const ParallelLoop loop(opt_.threads);
+  ConcurrentUnionFind faces(nf);
+  loop.for_each(topo_[b].edges.size(), 8192, [&](std::size_t i) {
+    const BodyEdge& e = topo_[b].edges[i];
+    for (std::size_t k = 1; k < e.uses.size(); ++k) faces.unite(static_cast<std::uint32_t>(e.uses[k].face), static_cast<std::uint32_t>(e.uses[0].face));
+  });
+  std::vector<int> root(nf);
+  loop.for_each(nf, 8192, [&](std::size_t f) { root[f] = static_cast<int>(faces.root(static_cast<std::uint32_t>(f))); });
+  auto find = [&](int f) { return root[f]; };
   // The components with triangles (most meshes have one: then nothing more to do).
+  std::vector<char> has(nf, 0);
+  loop.for_each(tris_.size() - static_cast<std::size_t>(first), 8192, [&](std::size_t i) {
+    std::atomic_ref<char>(has[root[tris_[first + i].face]]).store(1, std::memory_order_relaxed);
+  });
   std::vector<int> slot(nf, -1), roots;  // slot: a root's index in roots
-  for (std::size_t i = first; i < tris_.size(); ++i) {
-    const int r = find(tris_[i].face);
-    if (slot[r] < 0) slot[r] = 0;
+  for (std::uint32_t f : parallel_select(nf, [&](std::size_t f) { return has[f] != 0; }, loop)) {
+    roots.push_back(static_cast<int>(f));
+    slot[f] = 0;
   }
-  for (std::size_t f = 0; f < nf; ++f)
-    if (slot[f] == 0 && find(static_cast<int>(f)) == static_cast<int>(f)) roots.push_back(static_cast<int>(f));
   if (roots.size() < 2) return true;
   std::sort(roots.begin(), roots.end());
   for (std::size_t k = 0; k < roots.size(); ++k) slot[roots[k]] = static_cast<int>(k);

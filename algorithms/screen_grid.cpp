@@ -5,6 +5,7 @@
 #include "algorithms/parallel.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -54,27 +55,35 @@ void ScreenGrid::build(const std::vector<ScreenRect>& rects, const std::vector<c
   y0_ = Y0;
   cell_ = std::max({(X1 - X0) / n_, (Y1 - Y0) / n_, 1e-300});
   start_.assign(static_cast<std::size_t>(n_) * n_ + 1, 0);
-  // Each item's cell range on all cores, then two passes in item order (counts, then the
-  // items in order of index within each cell: the same grid on any number of threads).
+  // Each item's cell range, the cells' counts and their items, all on all cores: the items
+  // land in a cell in any order and each cell is then sorted (by index: the same grid on any
+  // number of threads).
+  const ParallelLoop loop(threads);
   std::vector<std::array<int, 4>> ranges(rects.size());
-  ParallelLoop(threads).for_each(rects.size(), 8192, [&](std::size_t i) {
-    if (!always[i]) ranges[i] = range(rects[i]);
-  });
-  for (std::size_t i = 0; i < rects.size(); ++i) {
-    if (always[i]) continue;
+  loop.for_each(rects.size(), 8192, [&](std::size_t i) {
+    if (always[i]) return;
+    ranges[i] = range(rects[i]);
     auto [cx0, cy0, cx1, cy1] = ranges[i];
     for (int cy = cy0; cy <= cy1; ++cy)
-      for (int cx = cx0; cx <= cx1; ++cx) ++start_[static_cast<std::size_t>(cy) * n_ + cx + 1];
-  }
+      for (int cx = cx0; cx <= cx1; ++cx)
+        std::atomic_ref<std::uint32_t>(start_[static_cast<std::size_t>(cy) * n_ + cx + 1]).fetch_add(1, std::memory_order_relaxed);
+  });
   for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
+  reserve_touched(items_, start_.back(), loop);
   items_.resize(start_.back());
   std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-  for (std::size_t i = 0; i < rects.size(); ++i) {
-    if (always[i]) continue;
+  loop.for_each(rects.size(), 8192, [&](std::size_t i) {
+    if (always[i]) return;
     auto [cx0, cy0, cx1, cy1] = ranges[i];
     for (int cy = cy0; cy <= cy1; ++cy)
-      for (int cx = cx0; cx <= cx1; ++cx) items_[fill[static_cast<std::size_t>(cy) * n_ + cx]++] = static_cast<std::uint32_t>(i);
-  }
+      for (int cx = cx0; cx <= cx1; ++cx) {
+        const std::size_t cell = static_cast<std::size_t>(cy) * n_ + cx;
+        items_[std::atomic_ref<std::uint32_t>(fill[cell]).fetch_add(1, std::memory_order_relaxed)] = static_cast<std::uint32_t>(i);
+      }
+  });
+  loop.for_each(start_.size() - 1, 4096, [&](std::size_t c) {
+    if (start_[c + 1] - start_[c] > 1) std::sort(items_.begin() + start_[c], items_.begin() + start_[c + 1]);
+  });
 }
 
 std::array<int, 4> ScreenGrid::range(const ScreenRect& r) const {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <numeric>
 #include <vector>
@@ -21,6 +22,42 @@ struct UnionFind {
     a = find(a), b = find(b);
     if (a != b) parent[std::max(a, b)] = std::min(a, b);
   }
+};
+
+/// Disjoint sets that threads unite at the same time (lock-free: a root is linked under the
+/// smaller one by compare-and-swap, paths halved with relaxed atomic writes that only ever
+/// point a node higher in its tree). Each set's root is its smallest index, as in UnionFind,
+/// so the result does not depend on the order of the unions or the number of threads.
+/// root() may be called once the unions are done.
+class ConcurrentUnionFind {
+ public:
+  explicit ConcurrentUnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    for (;;) {
+      a = find(a), b = find(b);
+      if (a == b) return;
+      if (a < b) std::swap(a, b);  // link the larger root under the smaller
+      std::uint32_t expected = a;
+      if (std::atomic_ref<std::uint32_t>(parent_[a]).compare_exchange_strong(expected, b, std::memory_order_acq_rel)) return;
+    }
+  }
+  std::uint32_t root(std::uint32_t a) const {
+    while (parent_[a] != a) a = parent_[a];
+    return a;
+  }
+
+ private:
+  std::uint32_t find(std::uint32_t a) {
+    for (;;) {
+      const std::uint32_t p = std::atomic_ref<std::uint32_t>(parent_[a]).load(std::memory_order_acquire);
+      if (p == a) return a;
+      const std::uint32_t g = std::atomic_ref<std::uint32_t>(parent_[p]).load(std::memory_order_acquire);
+      std::uint32_t expected = p;
+      if (g != p) std::atomic_ref<std::uint32_t>(parent_[a]).compare_exchange_weak(expected, g, std::memory_order_acq_rel);
+      a = g;
+    }
+  }
+  std::vector<std::uint32_t> parent_;
 };
 
 }  // namespace hlr

@@ -102,6 +102,9 @@ std::optional<MeshData> read_in_chunks(std::string_view bytes, const std::string
   TokenStream rest(bytes, file, at, line);
   if (!rest.at_end()) return std::nullopt;
   MeshData m;
+  const ParallelLoop loop;
+  reserve_touched(m.faces, static_cast<std::size_t>(h.nf), loop);  // fresh pages zeroed on all cores
+  reserve_touched(m.face_lines, static_cast<std::size_t>(h.nf), loop);
   m.faces.resize(static_cast<std::size_t>(h.nf));
   m.face_lines.resize(static_cast<std::size_t>(h.nf));
   const std::size_t vchunks = vm.size() - 1, fchunks = fm.size() - 1;
@@ -124,7 +127,6 @@ std::optional<MeshData> read_in_chunks(std::string_view bytes, const std::string
   };
   // The vertices' construction (three GMP numbers each, one thread) runs beside the faces'
   // chunks, then the vertices' chunks.
-  const ParallelLoop loop;
   reserve_touched(m.vertices, static_cast<std::size_t>(h.nv), loop);  // fresh pages zeroed on all cores
   loop.for_each(1 + fchunks, 1, [&](std::size_t c) {
     if (c == 0) m.vertices.resize(static_cast<std::size_t>(h.nv));

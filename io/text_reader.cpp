@@ -27,11 +27,15 @@ std::optional<std::string> read_in_parallel(const std::string& path, std::size_t
     int fd;
     ~Close() { ::close(fd); }
   } close_it{fd};
-  std::string out(size, '\0');
+  const ParallelLoop loop;
+  std::string out;
+  out.reserve(size);
+  touch_pages(out.data(), size, loop);  // fresh pages zeroed on all cores, not by the resize alone
+  out.resize(size);
   constexpr std::size_t kPiece = std::size_t(4) << 20;
   const std::size_t pieces = (size + kPiece - 1) / kPiece;
   std::vector<char> ok(pieces, 1);
-  ParallelLoop().for_each(pieces, 1, [&](std::size_t k) {
+  loop.for_each(pieces, 1, [&](std::size_t k) {
     std::size_t at = k * kPiece;
     const std::size_t end = std::min(size, at + kPiece);
     while (at < end) {

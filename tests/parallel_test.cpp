@@ -13,6 +13,7 @@
 #include "algorithms/body_topology.hpp"
 #include "algorithms/parallel.hpp"
 #include "algorithms/parallel_scan.hpp"
+#include "algorithms/union_find.hpp"
 
 using namespace hlr;
 
@@ -123,4 +124,30 @@ TEST(ParallelScan, SelectAndOffsetsMatchAPlainLoopOnAnyThreadCount) {
   EXPECT_TRUE(parallel_select(100000, [](std::size_t) { return false; }, loop).empty());
   EXPECT_EQ(parallel_select(100000, [](std::size_t) { return true; }, loop).size(), 100000u);
   EXPECT_EQ(parallel_offsets(100000, [](std::size_t) -> std::size_t { return 3; }, loop).back(), 300000u);
+}
+
+// Unions made by many threads at once give the sets, and the roots (each set's smallest
+// index), that one thread's UnionFind gives: random pairs, chains (long paths to halve) and
+// a star, on 1, 2 and 8 threads.
+TEST(ConcurrentUnionFind, SameSetsAndRootsAsTheSequentialOneOnAnyThreadCount) {
+  const std::size_t n = 50000;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  std::uint64_t x = 88172645463325252ull;
+  auto next = [&] { x ^= x << 13, x ^= x >> 7, x ^= x << 17; return static_cast<std::uint32_t>(x % 40000); };  // random pairs below 40000
+  for (int i = 0; i < 30000; ++i) pairs.emplace_back(next(), next());
+  for (std::uint32_t i = 40000; i + 1 < 45000; ++i) pairs.emplace_back(i + 1, i);  // a chain, linked from its far end
+  for (std::uint32_t i = 45001; i < 46000; ++i) pairs.emplace_back(i, 45999);       // a star around its largest index
+  UnionFind want(n);
+  for (auto [a, b] : pairs) want.unite(a, b);
+  for (unsigned t : {1u, 2u, 8u}) {
+    for (int round = 0; round < 3; ++round) {
+      ConcurrentUnionFind got(n);
+      ParallelLoop(t).for_each(pairs.size(), 64, [&](std::size_t i) { got.unite(pairs[i].first, pairs[i].second); });
+      std::size_t differ = 0;
+      for (std::uint32_t v = 0; v < n; ++v) differ += got.root(v) != want.find(v);
+      EXPECT_EQ(differ, 0u) << "threads " << t << ", round " << round;
+    }
+  }
+  EXPECT_EQ(want.find(44999), 40000u);
+  EXPECT_EQ(want.find(45001), 45001u);
 }
