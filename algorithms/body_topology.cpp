@@ -8,6 +8,7 @@
 #include <atomic>
 
 #include "algorithms/parallel.hpp"
+#include "algorithms/parallel_scan.hpp"
 
 namespace hlr {
 
@@ -15,10 +16,8 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
   BodyTopology t;
   const ParallelLoop loop(threads);
   // The large arrays' pages are touched on all cores before one thread fills them in order.
-  std::vector<int>& fo = t.face_offset;
-  reserve_touched(fo, faces.size() + 1, loop);
-  fo.resize(faces.size() + 1, 0);
-  for (std::size_t f = 0; f < faces.size(); ++f) fo[f + 1] = fo[f] + static_cast<int>(faces[f].size());
+  t.face_offset = parallel_offsets<int>(faces.size(), [&](std::size_t f) { return faces[f].size(); }, loop);
+  const std::vector<int>& fo = t.face_offset;
   reserve_touched(t.slot_third, fo.back(), loop);
   reserve_touched(t.slot_edge, fo.back(), loop);
   t.slot_third.assign(fo.back(), -1);
@@ -58,10 +57,8 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
     if (start[i + 1] - start[i] > 1) std::sort(uses.begin() + start[i], uses.begin() + start[i + 1], less);
   });
   // One edge per run of equal keys: the runs found in one pass, the edges built on all cores.
-  std::vector<std::uint32_t> first;  // the first use of each edge
-  reserve_touched(first, uses.size() / 2 + 1, loop);
-  for (std::size_t i = 0; i < uses.size(); ++i)
-    if (i == 0 || uses[i].key != uses[i - 1].key) first.push_back(static_cast<std::uint32_t>(i));
+  std::vector<std::uint32_t> first =  // the first use of each edge
+      parallel_select(uses.size(), [&](std::size_t i) { return i == 0 || uses[i].key != uses[i - 1].key; }, loop, 1);
   first.push_back(static_cast<std::uint32_t>(uses.size()));
   reserve_touched(t.edges, first.size() - 1, loop);
   t.edges.resize(first.size() - 1);

@@ -16,9 +16,9 @@ namespace hlr {
 inline constexpr std::size_t kScanChunk = 16384;
 
 /// The indices i in [0, n) with keep(i) (called twice per index: it must be pure), in
-/// increasing order.
+/// increasing order; room for `spare` more is reserved.
 template <class Keep>
-std::vector<std::uint32_t> parallel_select(std::size_t n, const Keep& keep, const ParallelLoop& loop) {
+std::vector<std::uint32_t> parallel_select(std::size_t n, const Keep& keep, const ParallelLoop& loop, std::size_t spare = 0) {
   const std::size_t chunks = (n + kScanChunk - 1) / kScanChunk;
   std::vector<std::size_t> at(chunks + 1, 0);
   loop.for_each(chunks, 1, [&](std::size_t c) {
@@ -27,7 +27,9 @@ std::vector<std::uint32_t> parallel_select(std::size_t n, const Keep& keep, cons
     at[c + 1] = s;
   });
   for (std::size_t c = 0; c < chunks; ++c) at[c + 1] += at[c];
-  std::vector<std::uint32_t> out(at[chunks]);
+  std::vector<std::uint32_t> out;
+  reserve_touched(out, at[chunks] + spare, loop);
+  out.resize(at[chunks]);
   loop.for_each(chunks, 1, [&](std::size_t c) {
     std::size_t w = at[c];
     for (std::size_t i = c * kScanChunk, e = std::min(n, i + kScanChunk); i < e; ++i)
@@ -37,17 +39,19 @@ std::vector<std::uint32_t> parallel_select(std::size_t n, const Keep& keep, cons
 }
 
 /// Exclusive prefix sums: offsets[i] = count(0) + ... + count(i - 1) for i in [0, n], so
-/// offsets[n] is the total (count is called once per index).
-template <class Count>
-std::vector<std::size_t> parallel_offsets(std::size_t n, const Count& count, const ParallelLoop& loop) {
-  std::vector<std::size_t> out(n + 1, 0);
+/// offsets[n] is the total (count is called once per index), in T (which must hold the total).
+template <class T = std::size_t, class Count>
+std::vector<T> parallel_offsets(std::size_t n, const Count& count, const ParallelLoop& loop) {
+  std::vector<T> out;
+  reserve_touched(out, n + 1, loop);
+  out.resize(n + 1, T(0));
   const std::size_t chunks = (n + kScanChunk - 1) / kScanChunk;
   std::vector<std::size_t> at(chunks + 1, 0);
   loop.for_each(chunks, 1, [&](std::size_t c) {
     std::size_t s = 0;
     for (std::size_t i = c * kScanChunk, e = std::min(n, i + kScanChunk); i < e; ++i) {
-      out[i + 1] = count(i);
-      s += out[i + 1];
+      out[i + 1] = static_cast<T>(count(i));
+      s += static_cast<std::size_t>(out[i + 1]);
     }
     at[c + 1] = s;
   });
@@ -55,8 +59,8 @@ std::vector<std::size_t> parallel_offsets(std::size_t n, const Count& count, con
   loop.for_each(chunks, 1, [&](std::size_t c) {
     std::size_t s = at[c];
     for (std::size_t i = c * kScanChunk, e = std::min(n, i + kScanChunk); i < e; ++i) {
-      s += out[i + 1];
-      out[i + 1] = s;
+      s += static_cast<std::size_t>(out[i + 1]);
+      out[i + 1] = static_cast<T>(s);
     }
   });
   return out;

@@ -61,31 +61,73 @@ MeshData read_in_order(TokenStream& ts, const Header& h) {
   return m;
 }
 
-// The start (offset, line) of every k-th line holding a token, from `at` (line `line`), for
-// `count` such lines; the last entry is where the line after them starts. False when the text
-// has fewer.
+// The start (offset, line) of every k-th line holding a token (TokenStream skips blanks and
+// '#' comments) among the first `nv` such lines from `at` (line `line`), the vertices', and among
+// the `nf` after them, the faces'; each list ends with where the line after its last record
+// starts. Lines are counted on all cores: blocks of about a MiB cut at line starts, each
+// block's records and newlines counted, then marked from the sums before it. False when the
+// text has fewer such lines than nv + nf, or more (a token after the faces).
 struct Mark {
   std::size_t at;
   int line;
 };
-bool mark_lines(std::string_view t, std::size_t& at, int& line, long count, long k, std::vector<Mark>& marks) {
-  for (long n = 0; n < count; ++n) {
-    // Find the next line with a token (TokenStream skips blanks and '#' comments).
-    for (;;) {
-      if (at >= t.size()) return false;
-      std::size_t p = at;
-      while (p < t.size() && (t[p] == ' ' || t[p] == '\t' || t[p] == '\r' || t[p] == '\f' || t[p] == '\v')) ++p;
-      if (p < t.size() && t[p] != '\n' && t[p] != '#') break;
-      const std::size_t eol = t.find('\n', at);
-      if (eol == std::string_view::npos) return false;
-      at = eol + 1, ++line;
-    }
-    if (n % k == 0) marks.push_back({at, line});
-    const std::size_t eol = t.find('\n', at);
-    at = eol == std::string_view::npos ? t.size() : eol + 1;
-    ++line;
+bool mark_records(std::string_view t, std::size_t at, int line, long nv, long nf, long k, std::vector<Mark>& vm,
+                  std::vector<Mark>& fm, const ParallelLoop& loop) {
+  constexpr std::size_t kBlock = std::size_t{1} << 20;
+  std::vector<std::size_t> starts{at};
+  for (std::size_t s = at + kBlock; s < t.size();) {
+    const std::size_t eol = t.find('\n', s);
+    if (eol == std::string_view::npos || eol + 1 >= t.size()) break;
+    starts.push_back(eol + 1);
+    s = eol + 1 + kBlock;
   }
-  marks.push_back({at, line});
+  starts.push_back(t.size());
+  const std::size_t blocks = starts.size() - 1;
+  auto holds_token = [&](std::size_t p) {
+    while (p < t.size() && (t[p] == ' ' || t[p] == '\t' || t[p] == '\r' || t[p] == '\f' || t[p] == '\v')) ++p;
+    return p < t.size() && t[p] != '\n' && t[p] != '#';
+  };
+  // Calls line_at(start, next line's start, has a newline) for each line of block b.
+  auto each_line = [&](std::size_t b, auto&& line_at) {
+    for (std::size_t p = starts[b]; p < starts[b + 1];) {
+      const std::size_t eol = t.find('\n', p);
+      const std::size_t next = eol == std::string_view::npos ? t.size() : eol + 1;
+      line_at(p, next);
+      p = next;
+    }
+  };
+  std::vector<long> records(blocks + 1, 0), lines(blocks + 1, 0);
+  loop.for_each(blocks, 1, [&](std::size_t b) {
+    long r = 0, n = 0;
+    each_line(b, [&](std::size_t p, std::size_t) {
+      r += holds_token(p);
+      ++n;
+    });
+    records[b + 1] = r, lines[b + 1] = n;
+  });
+  for (std::size_t b = 0; b < blocks; ++b) records[b + 1] += records[b], lines[b + 1] += lines[b];
+  if (records[blocks] != nv + nf) return false;
+  vm.assign(static_cast<std::size_t>((nv + k - 1) / k + 1), Mark{at, line});
+  fm.assign(static_cast<std::size_t>((nf + k - 1) / k + 1), Mark{at, line});
+  loop.for_each(blocks, 1, [&](std::size_t b) {
+    long r = records[b];
+    int l = line + static_cast<int>(lines[b]);
+    each_line(b, [&](std::size_t p, std::size_t next) {
+      if (holds_token(p)) {
+        if (r < nv) {
+          if (r % k == 0) vm[static_cast<std::size_t>(r / k)] = {p, l};
+          if (r == nv - 1) vm.back() = {next, l + 1};
+        } else {
+          const long f = r - nv;
+          if (f % k == 0) fm[static_cast<std::size_t>(f / k)] = {p, l};
+        }
+        if (r == nv + nf - 1 && nf > 0) fm.back() = {next, l + 1};
+        ++r;
+      }
+      ++l;
+    });
+  });
+  if (nf == 0) fm.front() = vm.back();  // no faces: they end where the vertices do
   return true;
 }
 
@@ -94,15 +136,12 @@ constexpr long kParallelFrom = 8 * kChunk;
 
 // The chunks, or nullopt when a surprise sends the file to the sequential reader.
 std::optional<MeshData> read_in_chunks(std::string_view bytes, const std::string& file, std::size_t at, int line, const Header& h) {
-  std::vector<Mark> vm, fm;
-  if (!mark_lines(bytes, at, line, h.nv, kChunk, vm)) return std::nullopt;
-  if (!mark_lines(bytes, at, line, h.nf, kChunk, fm)) return std::nullopt;
   // The rest of the file must hold no token (the sequential reader ignores it too, but a
   // record spread over lines would end there: leave such files to it).
-  TokenStream rest(bytes, file, at, line);
-  if (!rest.at_end()) return std::nullopt;
-  MeshData m;
   const ParallelLoop loop;
+  std::vector<Mark> vm, fm;
+  if (!mark_records(bytes, at, line, h.nv, h.nf, kChunk, vm, fm, loop)) return std::nullopt;
+  MeshData m;
   reserve_touched(m.faces, static_cast<std::size_t>(h.nf), loop);  // fresh pages zeroed on all cores
   reserve_touched(m.face_lines, static_cast<std::size_t>(h.nf), loop);
   m.faces.resize(static_cast<std::size_t>(h.nf));

@@ -232,6 +232,27 @@ TEST(MeshIO, LargeOffReadInChunksExactly) {
   expect_big(read_off(split.text, "big.off"), split, n);
 }
 
+// The chunks' line marks are counted on all cores in blocks of about a MiB (mark_records):
+// blocks that end inside the vertices, at their last line and inside the faces, a last line
+// without its newline, comments and blank lines after the faces, and a token after them
+// (left to the in-order reader, which ignores it) read as the in-order reader does.
+TEST(MeshIO, LargeOffTailsReadExactly) {
+  const int n = 120000;  // about 5 MB: several blocks
+  BigOff plain = big_off(n, -1, "", -1, -1);
+  BigOff no_newline = plain;
+  no_newline.text.pop_back();
+  expect_big(read_off(no_newline.text, "big.off"), no_newline, n);
+  BigOff tail = plain;
+  tail.text += "\n# the end\n   \n\r\n";
+  expect_big(read_off(tail.text, "big.off"), tail, n);
+  BigOff extra = plain;
+  extra.text += "# more\n7 7 7\n";
+  expect_big(read_off(extra.text, "big.off"), extra, n);
+  BigOff short_file = plain;
+  short_file.text.resize(short_file.text.rfind("3 ", short_file.text.size() - 2));  // the last face missing
+  EXPECT_NE(off_error(short_file.text), "");
+}
+
 TEST(MeshIO, LargeOffErrorsNameTheLine) {
   const int n = 40000;
   BigOff bad = big_off(n, -1, "0.5.5", 30001, -1);
