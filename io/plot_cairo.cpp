@@ -1,6 +1,7 @@
 // The sheet as PDF and PNG through cairo (see plot_output.hpp). Drawn in millimetres: the
 // same strokes, weights and dashes as the SVG.
 #include <cairo-pdf.h>
+#include <dlfcn.h>
 #include <ctime>
 #include <cstdlib>
 #include <cairo.h>
@@ -14,65 +15,105 @@
 namespace hlr {
 namespace {
 
+// cairo is loaded when the first PDF or PNG is made, not at every start of hlr: its library
+// and the sixteen it needs took 5-6 ms of each start (a third of `hlr --version`, a twentieth
+// of a small drawing). The functions are looked up once; a system without cairo gets an error
+// naming it when PDF or PNG is asked for, and everything else works.
+#define HLR_CAIRO_FUNCTIONS(X) \
+  X(cairo_close_path) X(cairo_create) X(cairo_destroy) X(cairo_fill_preserve) \
+  X(cairo_image_surface_create) X(cairo_line_to) X(cairo_move_to) X(cairo_paint) \
+  X(cairo_pdf_surface_create_for_stream) X(cairo_pdf_surface_set_metadata) X(cairo_scale) \
+  X(cairo_select_font_face) X(cairo_set_dash) X(cairo_set_fill_rule) X(cairo_set_font_size) \
+  X(cairo_set_line_cap) X(cairo_set_line_join) X(cairo_set_line_width) X(cairo_set_source_rgb) \
+  X(cairo_show_text) X(cairo_status) X(cairo_status_to_string) X(cairo_stroke) \
+  X(cairo_surface_destroy) X(cairo_surface_finish) X(cairo_surface_status) \
+  X(cairo_surface_write_to_png_stream) X(cairo_text_extents)
+
+struct Cairo {
+#define HLR_CAIRO_POINTER(name) decltype(&::name) name = nullptr;
+  HLR_CAIRO_FUNCTIONS(HLR_CAIRO_POINTER)
+#undef HLR_CAIRO_POINTER
+};
+
+Cairo load_cairo() {
+  void* handle = dlopen("libcairo.so.2", RTLD_NOW | RTLD_LOCAL);
+  if (!handle) {
+    const char* why = dlerror();
+    throw std::runtime_error(std::string("PDF and PNG output need the cairo library (Debian: apt install libcairo2): ") + (why ? why : "libcairo.so.2 not found"));
+  }
+  Cairo c;
+#define HLR_CAIRO_LOOKUP(name)                                                                       \
+  c.name = reinterpret_cast<decltype(c.name)>(dlsym(handle, #name));                                 \
+  if (!c.name) throw std::runtime_error("the cairo library found has no " #name ": PDF and PNG output need cairo 1.16 or later");
+  HLR_CAIRO_FUNCTIONS(HLR_CAIRO_LOOKUP)
+#undef HLR_CAIRO_LOOKUP
+  return c;  // the library stays loaded for the process
+}
+
+const Cairo& lib() {
+  static const Cairo c = load_cairo();
+  return c;
+}
+
 cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
   static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
   return CAIRO_STATUS_SUCCESS;
 }
 
 void draw_fills(cairo_t* cr, const Sheet& sheet) {
-  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-  cairo_set_line_width(cr, 0.08);  // edged in its own colour: no seams between regions
+  lib().cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+  lib().cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  lib().cairo_set_line_width(cr, 0.08);  // edged in its own colour: no seams between regions
   for (const SheetView& v : sheet.views)
     for (const PlotFill& fl : v.plot->fills) {
       for (const auto& ring : fl.rings) {
         for (std::size_t i = 0; i < ring.size(); ++i) {
           Point2 p = v.page(ring[i]);
           if (i == 0)
-            cairo_move_to(cr, p[0], p[1]);
+            lib().cairo_move_to(cr, p[0], p[1]);
           else
-            cairo_line_to(cr, p[0], p[1]);
+            lib().cairo_line_to(cr, p[0], p[1]);
         }
-        cairo_close_path(cr);
+        lib().cairo_close_path(cr);
       }
-      cairo_set_source_rgb(cr, fl.colour[0], fl.colour[1], fl.colour[2]);
-      cairo_set_line_width(cr, fl.edge_mm);
-      cairo_fill_preserve(cr);
-      cairo_stroke(cr);
+      lib().cairo_set_source_rgb(cr, fl.colour[0], fl.colour[1], fl.colour[2]);
+      lib().cairo_set_line_width(cr, fl.edge_mm);
+      lib().cairo_fill_preserve(cr);
+      lib().cairo_stroke(cr);
     }
 }
 
 void draw_sheet(cairo_t* cr, const Sheet& sheet, const PlotStyle& style) {
   draw_fills(cr, sheet);
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  lib().cairo_set_source_rgb(cr, 0, 0, 0);
+  lib().cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  lib().cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   for (const std::string& name : sheet_layer_names(sheet))
     for (const SheetView& v : sheet.views)
       for (const PlotLayer& l : v.plot->layers) {
         if (l.name() != name) continue;
-        cairo_set_line_width(cr, style.weight(l));
+        lib().cairo_set_line_width(cr, style.weight(l));
         auto pat = style.dash_pattern(l);
-        if (l.through) cairo_set_source_rgb(cr, 0.5, 0.5, 0.5);  // seen through transparent faces: grey
-        else cairo_set_source_rgb(cr, 0, 0, 0);
+        if (l.through) lib().cairo_set_source_rgb(cr, 0.5, 0.5, 0.5);  // seen through transparent faces: grey
+        else lib().cairo_set_source_rgb(cr, 0, 0, 0);
         const bool dashed = !l.visible && !l.through && style.hidden_dashed && style.dashes == DashMode::Pattern;
-        cairo_set_dash(cr, pat.data(), dashed ? 2 : 0, 0);
+        lib().cairo_set_dash(cr, pat.data(), dashed ? 2 : 0, 0);
         std::vector<char> closed;
         auto strokes = page_strokes(v, l, style, &closed);
         for (std::size_t s = 0; s < strokes.size(); ++s) {
-          cairo_move_to(cr, strokes[s][0][0], strokes[s][0][1]);
-          for (std::size_t i = 1; i < strokes[s].size(); ++i) cairo_line_to(cr, strokes[s][i][0], strokes[s][i][1]);
-          if (closed[s]) cairo_close_path(cr);
-          cairo_stroke(cr);
+          lib().cairo_move_to(cr, strokes[s][0][0], strokes[s][0][1]);
+          for (std::size_t i = 1; i < strokes[s].size(); ++i) lib().cairo_line_to(cr, strokes[s][i][0], strokes[s][i][1]);
+          if (closed[s]) lib().cairo_close_path(cr);
+          lib().cairo_stroke(cr);
         }
       }
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, 3.5);
+  lib().cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  lib().cairo_set_font_size(cr, 3.5);
   auto text = [&](const std::string& t, double x, double y, double anchor) {
     cairo_text_extents_t e;
-    cairo_text_extents(cr, t.c_str(), &e);
-    cairo_move_to(cr, x - anchor * e.x_advance, y);
-    cairo_show_text(cr, t.c_str());
+    lib().cairo_text_extents(cr, t.c_str(), &e);
+    lib().cairo_move_to(cr, x - anchor * e.x_advance, y);
+    lib().cairo_show_text(cr, t.c_str());
   };
   for (const SheetView& v : sheet.views) {
     if (v.label.empty() || v.plot->empty()) continue;
@@ -84,7 +125,7 @@ void draw_sheet(cairo_t* cr, const Sheet& sheet, const PlotStyle& style) {
 }
 
 void check(cairo_status_t st) {
-  if (st != CAIRO_STATUS_SUCCESS) throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(st));
+  if (st != CAIRO_STATUS_SUCCESS) throw std::runtime_error(std::string("cairo: ") + lib().cairo_status_to_string(st));
 }
 
 // SOURCE_DATE_EPOCH (seconds since 1970) as ISO 8601, or "" when it is not set or not a number.
@@ -107,20 +148,20 @@ std::string source_date() {
 std::string sheet_to_pdf(const Sheet& sheet, const PlotStyle& style) {
   std::string out;
   const double pt = 72.0 / 25.4;
-  cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(append, &out, sheet.width_mm * pt, sheet.height_mm * pt);
-  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, "exact-hlr drawing");
-  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "exact-hlr");
+  cairo_surface_t* surface = lib().cairo_pdf_surface_create_for_stream(append, &out, sheet.width_mm * pt, sheet.height_mm * pt);
+  lib().cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, "exact-hlr drawing");
+  lib().cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "exact-hlr");
   // The same drawing gives the same bytes: no creation date from the clock (cairo writes none
   // for a date it cannot read), or SOURCE_DATE_EPOCH's when set (reproducible builds).
-  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, source_date().c_str());
-  cairo_t* cr = cairo_create(surface);
-  cairo_scale(cr, pt, pt);
+  lib().cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, source_date().c_str());
+  cairo_t* cr = lib().cairo_create(surface);
+  lib().cairo_scale(cr, pt, pt);
   draw_sheet(cr, sheet, style);
-  cairo_status_t st = cairo_status(cr);
-  cairo_destroy(cr);
-  cairo_surface_finish(surface);
-  cairo_status_t sst = cairo_surface_status(surface);
-  cairo_surface_destroy(surface);
+  cairo_status_t st = lib().cairo_status(cr);
+  lib().cairo_destroy(cr);
+  lib().cairo_surface_finish(surface);
+  cairo_status_t sst = lib().cairo_surface_status(surface);
+  lib().cairo_surface_destroy(surface);
   check(st);
   check(sst);
   return out;
@@ -130,17 +171,17 @@ std::string sheet_to_png(const Sheet& sheet, const PlotStyle& style, double dpi)
   const double px = dpi / 25.4;
   int w = std::max(1, static_cast<int>(std::lround(sheet.width_mm * px))), h = std::max(1, static_cast<int>(std::lround(sheet.height_mm * px)));
   if (static_cast<double>(w) * h > 4e8) throw std::invalid_argument("the PNG would have over 400 million pixels: lower --dpi");
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
-  cairo_t* cr = cairo_create(surface);
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
-  cairo_scale(cr, px, px);
+  cairo_surface_t* surface = lib().cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
+  cairo_t* cr = lib().cairo_create(surface);
+  lib().cairo_set_source_rgb(cr, 1, 1, 1);
+  lib().cairo_paint(cr);
+  lib().cairo_scale(cr, px, px);
   draw_sheet(cr, sheet, style);
-  cairo_status_t st = cairo_status(cr);
-  cairo_destroy(cr);
+  cairo_status_t st = lib().cairo_status(cr);
+  lib().cairo_destroy(cr);
   std::string out;
-  if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_write_to_png_stream(surface, append, &out);
-  cairo_surface_destroy(surface);
+  if (st == CAIRO_STATUS_SUCCESS) st = lib().cairo_surface_write_to_png_stream(surface, append, &out);
+  lib().cairo_surface_destroy(surface);
   check(st);
   return out;
 }
