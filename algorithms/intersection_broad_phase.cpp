@@ -166,21 +166,35 @@ BoxPairs box_pairs(const std::vector<Box>& bb, const ParallelLoop& loop,
     ++counted[w];
     if (v == PairVerdict::Keep) found[w].push_back({std::min(ta, tc), std::max(ta, tc)});
   };
-  auto cell_pairs = [&](std::size_t i, std::size_t j, unsigned w) {
-    for (std::size_t a = i; a < j; ++a)
-      for (std::size_t c = a + 1; c < j; ++c) {
-        std::uint32_t ta = entries[a].item, tc = entries[c].item;
-        if (!overlap(ta, tc)) continue;
+  // A cell's boxes and low cells are read once into a local list (the items lie far apart in
+  // the arrays; reading them for every pair cost more than the tests).
+  struct Local {
+    Box box;
+    std::array<std::int32_t, 3> low;
+    std::uint32_t item;
+  };
+  auto cell_pairs = [&](std::size_t i, std::size_t j, unsigned w, std::vector<Local>& cell) {
+    cell.clear();
+    for (std::size_t a = i; a < j; ++a) {
+      const std::uint32_t t = entries[a].item;
+      cell.push_back({bb[t], coarse ? std::array<std::int32_t, 3>{} : low[t], t});
+    }
+    for (std::size_t a = 0; a < cell.size(); ++a)
+      for (std::size_t c = a + 1; c < cell.size(); ++c) {
+        const Box &P = cell[a].box, &Q = cell[c].box;
+        if (P[0] > Q[3] || Q[0] > P[3] || P[1] > Q[4] || Q[1] > P[4] || P[2] > Q[5] || Q[2] > P[5]) continue;
         if (!coarse) {  // the pair only in the cell of the overlap's low corner
-          const auto &A = low[ta], &B = low[tc];
+          const auto &A = cell[a].low, &B = cell[c].low;
           std::uint64_t own = g.id(std::max(A[0], B[0]), std::max(A[1], B[1]), std::max(A[2], B[2]));
           if (own != entries[i].cell) continue;
         }
-        take(ta, tc, w);
+        take(cell[a].item, cell[c].item, w);
       }
   };
   loop.run(ncells, 256, [&](unsigned w, std::size_t b, std::size_t e) {
-    for (std::size_t c = b; c < e; ++c) cell_pairs(cell_start[c], cell_start[c + 1], w);
+    std::vector<Local> cell;
+    for (std::size_t c = b; c < e; ++c)
+      if (cell_start[c + 1] - cell_start[c] > 1) cell_pairs(cell_start[c], cell_start[c + 1], w, cell);
   });
   // Huge boxes against every other box (a pair of two huge boxes once, from the lower index).
   std::vector<char> is_big(big.empty() ? 0 : n, 0);
