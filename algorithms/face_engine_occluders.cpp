@@ -11,6 +11,7 @@
 
 #include "algorithms/face_engine.hpp"
 #include "algorithms/parallel.hpp"
+#include "algorithms/parallel_scan.hpp"
 
 namespace hlr::face_route {
 
@@ -166,27 +167,37 @@ void Engine<P>::select_occluders(const std::vector<std::vector<DrawnEdge>>& draw
   ScreenGrid seg_grid;
   std::vector<ScreenRect> seg_rects;
   const std::function<bool(const Tri&)> near = near_segments(drawn, seg_grid, seg_rects);
-  sel_.clear();
-  hiding_ = 0;
-  for (std::size_t i = 0; i < tris_.size(); ++i) {
-    const Tri& t0 = tris_[i];
-    int fs = facing_[t0.body][t0.face];
-    if (fs == 0) continue;                       // edge-on: sight rays graze it
-    if (static_cast<std::size_t>(t0.body) < opt_.see_through.size() && opt_.see_through[t0.body]) continue;  // hides nothing
-    if (solid_[t0.body] && fs < 0 && !eye_on_[t0.body]) continue;  // a closed solid is hidden by its front faces
-    // No point strictly in front of the eye: its sight cone lies behind the eye, where nothing
-    // is drawn (docs/design.md, "Occluders that reach behind the eye").
-    if (cam_.perspective && !vfront_[t0.v[0]] && !vfront_[t0.v[1]] && !vfront_[t0.v[2]]) continue;
-    ++hiding_;
-    if (near && !near(t0)) continue;  // no drawn segment comes near it
-    if (opt_.may_occlude) {  // a tile: only the triangles that can reach it
-      const int o = voff_[t0.body];
-      if (!opt_.may_occlude(t0.body, {t0.v[0] - o, t0.v[1] - o, t0.v[2] - o})) continue;
+  // Each triangle's state on all cores (0: hides nothing, 1: hides, 2: hides and is taken),
+  // then the taken ones in order.
+  const ParallelLoop loop(opt_.threads);
+  std::vector<char> state(tris_.size(), 0);
+  std::vector<std::size_t> hiding(loop.workers(), 0);
+  loop.run(tris_.size(), 4096, [&](unsigned w, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const Tri& t0 = tris_[i];
+      int fs = facing_[t0.body][t0.face];
+      if (fs == 0) continue;  // edge-on: sight rays graze it
+      if (static_cast<std::size_t>(t0.body) < opt_.see_through.size() && opt_.see_through[t0.body]) continue;  // hides nothing
+      if (solid_[t0.body] && fs < 0 && !eye_on_[t0.body]) continue;  // a closed solid is hidden by its front faces
+      // No point strictly in front of the eye: its sight cone lies behind the eye, where nothing
+      // is drawn (docs/design.md, "Occluders that reach behind the eye").
+      if (cam_.perspective && !vfront_[t0.v[0]] && !vfront_[t0.v[1]] && !vfront_[t0.v[2]]) continue;
+      ++hiding[w];
+      state[i] = 1;
+      if (near && !near(t0)) continue;  // no drawn segment comes near it
+      if (opt_.may_occlude) {           // a tile: only the triangles that can reach it
+        const int o = voff_[t0.body];
+        if (!opt_.may_occlude(t0.body, {t0.v[0] - o, t0.v[1] - o, t0.v[2] - o})) continue;
+      }
+      state[i] = 2;
     }
-    sel_.push_back(static_cast<int>(i));
-  }
+  });
+  hiding_ = 0;
+  for (std::size_t h : hiding) hiding_ += h;
+  const std::vector<std::uint32_t> taken = parallel_select(tris_.size(), [&](std::size_t i) { return state[i] == 2; }, loop);
+  sel_.assign(taken.begin(), taken.end());
   closed_.assign(sel_.size(), 0);
-  ParallelLoop(opt_.threads).for_each(sel_.size(), 1024, [&](std::size_t i) {
+  loop.for_each(sel_.size(), 1024, [&](std::size_t i) {
     Tri t = tris_[sel_[i]];
     const int fs = facing_[t.body][t.face];
     if (fs < 0) flip(t);  // as make_occluder turns it

@@ -120,7 +120,8 @@ struct LineOptions {
   /// those away, a merge puts the tiles' pieces in: picture_tiles.hpp).
   std::function<bool(const Segment&)> decide;
   /// Per-face route: when set, a face triangle (its body and the body's vertex indices) hides
-  /// only when this returns true: a tile leaves out the triangles that cannot reach it.
+  /// only when this returns true: a tile leaves out the triangles that cannot reach it. Called
+  /// from several threads at once: it must only read.
   std::function<bool(int body, const std::array<int, 3>& vertices)> may_occlude;
   unsigned threads = 0;                           // 0: all cores
 };
