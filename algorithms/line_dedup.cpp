@@ -41,14 +41,17 @@ class Dedup {
     tolerance(loop);
     join_same_keys(opt.threads);
     join_close_points(loop);
-    // Every end's point (its set's smallest end), read on all cores; pieces seen end-on.
-    std::vector<std::uint32_t> root(ne);
-    loop.for_each(ne, 8192, [&](std::size_t e) { root[e] = root_of(points_.parent, e); });
+    // Pieces seen end-on (both ends one point), read on all cores.
     std::vector<char> degenerate(nl, 0);
-    loop.for_each(nl, 8192, [&](std::size_t k) { degenerate[k] = !d_.lines[k].pulled && root[2 * k] == root[2 * k + 1]; });
+    loop.for_each(nl, 8192, [&](std::size_t k) {
+      degenerate[k] = !d_.lines[k].pulled && root_of(points_.parent, 2 * k) == root_of(points_.parent, 2 * k + 1);
+    });
     out.zero_length = static_cast<std::size_t>(std::count(degenerate.begin(), degenerate.end(), 1));
     UnionFind groups(nl);
     if (opt.overlaps) find_overlaps(degenerate, groups, opt.threads);
+    // Every end's point: its set's smallest end (after the overlap search, whose arrays are gone).
+    std::vector<std::uint32_t> root(ne);
+    loop.for_each(ne, 8192, [&](std::size_t e) { root[e] = root_of(points_.parent, e); });
     // Groups of two or more pieces (few): resolved in the order of their roots (the smallest
     // piece), one at a time (they share the cache of exact points).
     std::vector<std::uint32_t> group(nl);
@@ -238,17 +241,20 @@ class Dedup {
       double x, y;
       std::uint32_t e;
     };
-    const std::vector<std::uint32_t> taking = parallel_select(points_.parent.size(), [&](std::size_t i) {
-      const auto e = static_cast<std::uint32_t>(i);
-      if (pulled(e)) return false;
-      const std::uint32_t root = root_of(points_.parent, e);
-      return root == e || xy(root) != xy(e);
-    }, loop);
-    std::vector<End> order(taking.size());
-    loop.for_each(taking.size(), 8192, [&](std::size_t i) {
-      auto p = xy(taking[i]);
-      order[i] = {p[0], p[1], taking[i]};
-    });
+    std::vector<End> order;
+    {  // (the list of taken ends is freed before the sort)
+      const std::vector<std::uint32_t> taking = parallel_select(points_.parent.size(), [&](std::size_t i) {
+        const auto e = static_cast<std::uint32_t>(i);
+        if (pulled(e)) return false;
+        const std::uint32_t root = root_of(points_.parent, e);
+        return root == e || xy(root) != xy(e);
+      }, loop);
+      order.resize(taking.size());
+      loop.for_each(taking.size(), 8192, [&](std::size_t i) {
+        auto p = xy(taking[i]);
+        order[i] = {p[0], p[1], taking[i]};
+      });
+    }
     std::sort(std::execution::par, order.begin(), order.end(), [](const End& a, const End& b) {
       return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.e < b.e)));
     });
@@ -264,19 +270,18 @@ class Dedup {
   }
 
   // A piece in the overlap search: its picture ends, length and unit direction (worked out
-  // once per piece and cell, not once per pair), and the piece and segment it is.
+  // once per piece and cell, not once per pair), and the piece it is.
   struct Near {
     std::array<double, 2> a, b;
     double len, nx, ny;
     std::uint32_t piece;
-    int segment;
   };
 
-  static Near near_piece(const std::array<double, 2>& a, const std::array<double, 2>& b, std::uint32_t piece, int segment) {
+  static Near near_piece(const std::array<double, 2>& a, const std::array<double, 2>& b, std::uint32_t piece) {
     // Plain square roots (within 2 ulp; drawing coordinates are below 2^100): far inside the
     // margin of 8·delta = 8e-9 of the drawing, and faster than hypot.
     const double dx = b[0] - a[0], dy = b[1] - a[1], len = std::sqrt(dx * dx + dy * dy);
-    return {a, b, len, len > 0 ? dx / len : 0.0, len > 0 ? dy / len : 0.0, piece, segment};
+    return {a, b, len, len > 0 ? dx / len : 0.0, len > 0 ? dy / len : 0.0, piece};
   }
 
   // Can two pieces lie on one line of the picture and overlap in more than a point? A double
@@ -313,12 +318,10 @@ class Dedup {
     const std::vector<std::uint32_t> live =
         parallel_select(d_.lines.size(), [&](std::size_t k) { return !degenerate[k] && !d_.lines[k].pulled; }, loop);
     if (live.size() < 2) return;
-    // Each live piece's ends and segment in one record, in the order of `live`: a cell's
+    // Each live piece's ends in one record, in the order of `live`: a cell's
     // pieces are read from here (one record each) instead of from the drawing's three arrays.
     struct Rec {
-      std::array<double, 2> a, b;
-      std::uint32_t piece;
-      int segment;
+      std::array<double, 2> a, b;  // the piece is live[i], its segment read only for a pair the filter passes
     };
     std::vector<Rec> rec(live.size());
     std::vector<std::array<double, 4>> boxes(loop.workers(), {INFINITY, INFINITY, -INFINITY, -INFINITY});
@@ -326,7 +329,7 @@ class Dedup {
       std::array<double, 4>& bx = boxes[w];
       for (std::size_t i = begin; i < end; ++i) {
         const Polyline2D& l = d_.lines[live[i]];
-        rec[i] = {d_.points[l.first], d_.points[l.first + 1], live[i], d_.sources[l.first_edge].segment};
+        rec[i] = {d_.points[l.first], d_.points[l.first + 1]};
         for (const auto& p : {rec[i].a, rec[i].b})
           bx = {std::min(bx[0], p[0]), std::min(bx[1], p[1]), std::max(bx[2], p[0]), std::max(bx[3], p[1])};
       }
@@ -398,13 +401,14 @@ class Dedup {
         cell.clear();
         for (std::uint32_t i = start[c]; i < start[c + 1]; ++i) {
           const Rec& r = rec[items[i]];
-          cell.push_back(near_piece(r.a, r.b, r.piece, r.segment));
+          cell.push_back(near_piece(r.a, r.b, live[items[i]]));
         }
+        auto segment = [&](std::uint32_t k) { return d_.sources[d_.lines[k].first_edge].segment; };
         for (std::size_t i = 0; i < cell.size(); ++i)
           for (std::size_t j = i + 1; j < cell.size(); ++j) {
             const Near &A = cell[i], &B = cell[j];
-            if (A.piece == B.piece || A.segment == B.segment) continue;
-            if (maybe_overlap(A, B)) found[worker].emplace_back(std::min(A.piece, B.piece), std::max(A.piece, B.piece));
+            if (A.piece == B.piece || !maybe_overlap(A, B) || segment(A.piece) == segment(B.piece)) continue;
+            found[worker].emplace_back(std::min(A.piece, B.piece), std::max(A.piece, B.piece));
           }
       }
     });
