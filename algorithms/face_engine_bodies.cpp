@@ -203,22 +203,39 @@ int Engine<P>::triangulate_body(int b) {
 }
 
 // Sign of six times the volume of the triangles `ids`, summed on all cores (exact integers:
-// the sum is the same in any order); Fast40's terms reach 2^123, so its sums are kept in GMP.
+// the sum is the same in any order); Fast40's terms reach 2^123, so its sum carries into a
+// third word.
 template <class P>
 int Engine<P>::volume_sign(const std::vector<int>& ids) const {
   const ParallelLoop loop(opt_.threads);
   if constexpr (std::is_same_v<P, Fast40>) {
-    std::vector<mpz_class> part(loop.workers(), 0);
+    // Each term fits in Int128, their sum may not: high·2^128 + low, a carry counted on each
+    // wrap of low (its direction is the term's sign), exact for fewer than 2^63 terms.
+    struct WideSum {
+      Int128 low = 0;
+      std::int64_t high = 0;
+      void add(Int128 t) {
+        Int128 r;
+        if (__builtin_add_overflow(low, t, &r)) high += t > 0 ? 1 : -1;
+        low = r;
+      }
+    };
+    std::vector<WideSum> part(loop.workers());
     const Vec<P>& o = X_[tris_[ids[0]].v[0]];
     loop.run(ids.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
+      WideSum sum = part[w];
       for (std::size_t k = begin; k < end; ++k) {
         const int i = ids[k];
-        part[w] += P::z(dot<P>(sub<P>(X_[tris_[i].v[0]], o), cross<P>(sub<P>(X_[tris_[i].v[1]], o), sub<P>(X_[tris_[i].v[2]], o))));
+        sum.add(dot<P>(sub<P>(X_[tris_[i].v[0]], o), cross<P>(sub<P>(X_[tris_[i].v[1]], o), sub<P>(X_[tris_[i].v[2]], o))));
       }
+      part[w] = sum;
     });
-    mpz_class v6 = 0;
-    for (const mpz_class& x : part) v6 += x;
-    return sgn(v6);
+    WideSum v6;
+    for (const WideSum& x : part) {
+      v6.add(x.low);
+      v6.high += x.high;
+    }
+    return v6.high != 0 ? (v6.high > 0 ? 1 : -1) : P::sign(v6.low);
   } else {
     std::vector<V> part(loop.workers(), V(0));
     loop.run(ids.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {

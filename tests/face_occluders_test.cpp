@@ -453,3 +453,28 @@ TEST(FaceOccluders, FeatureLinesTakeTheOccludersAllEdgesTake) {
   EXPECT_GT(crossings, 50u);
   EXPECT_GT(hidden, 100u);  // outlines hidden by bumps and by the other body: occluders at work
 }
+
+// The wide (Int128) path's volume sum passes Int128: 128 coincident copies of the cube
+// [-2^39, 2^39]^3, one body, six times the volume 6·2^120 each, 3·2^128 in all. A sum kept in
+// Int128 wraps to exactly 0 (the body would be "zero volume", a surface); the carried sum is
+// positive: a closed solid, no note.
+TEST(FaceOccluders, VolumeSumCarriesPastInt128OnTheWidePath) {
+  const Rational h(mpz_class(1) << 39);
+  const Polyhedron cube = make_box(Point3(-h, -h, -h), Point3(h, h, h));
+  std::vector<Point3> vs;
+  std::vector<Face> fs;
+  for (int copy = 0; copy < 128; ++copy) {
+    const int o = static_cast<int>(vs.size());
+    for (std::size_t v = 0; v < cube.num_vertices(); ++v) vs.push_back(cube.vertices()[v]);
+    for (const Face& f : cube.faces()) {
+      Face g = f;
+      for (int& i : g) i += o;
+      fs.push_back(g);
+    }
+  }
+  const Polyhedron body(std::move(vs), std::move(fs));
+  LineDrawing r = run({&body}, make_orthographic(Vector3(1, 2, 3)));
+  for (const auto& n : r.notes) EXPECT_EQ(n.text.find("zero volume"), std::string::npos) << n.text;
+  EXPECT_TRUE(r.notes.empty());
+  EXPECT_EQ(r.segments.size(), 128u * 12u);  // every edge of every copy
+}
