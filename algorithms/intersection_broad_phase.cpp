@@ -113,8 +113,11 @@ BoxPairs box_pairs(const std::vector<Box>& bb, const ParallelLoop& loop,
   // low keys (floor((x - lo) / cell) does not decrease with x), so no division per pair.
   std::vector<std::array<std::int32_t, 3>> low;
   if (!coarse) {
+    reserve_touched(low, n, loop);  // fresh pages zeroed on all cores, not by the resize alone
     low.resize(n);
-    std::vector<std::uint32_t> at(n + 1, 0);
+    std::vector<std::uint32_t> at;
+    reserve_touched(at, n + 1, loop);
+    at.resize(n + 1, 0);
     auto span = [&](std::size_t i, std::int64_t* c0, std::int64_t* c1) {
       for (int k = 0; k < 3; ++k) c0[k] = g.key(k, bb[i][k]), c1[k] = g.key(k, bb[i][k + 3]);
       return (c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1);
@@ -150,6 +153,7 @@ BoxPairs box_pairs(const std::vector<Box>& bb, const ParallelLoop& loop,
   }
   radix_sort(entries, loop);
   std::vector<std::size_t> cell_start;
+  reserve_touched(cell_start, entries.size() / 2 + 2, loop);  // a guess: most cells hold more than one entry
   for (std::size_t i = 0; i < entries.size(); ++i)
     if (i == 0 || entries[i].cell != entries[i - 1].cell) cell_start.push_back(i);
   cell_start.push_back(entries.size());
