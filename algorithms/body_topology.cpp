@@ -6,11 +6,38 @@
 
 #include <algorithm>
 #include <atomic>
+#include <memory>
+#include <new>
+#include <utility>
 
 #include "algorithms/parallel.hpp"
 #include "algorithms/parallel_scan.hpp"
 
 namespace hlr {
+namespace {
+
+// Leaves new elements uninitialised (every one is written after): a resize of millions of
+// records is then no serial pass of zeroes.
+template <class T>
+struct Uninitialised : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = Uninitialised<U>;
+  };
+  Uninitialised() = default;
+  template <class U>
+  Uninitialised(const Uninitialised<U>&) {}
+  template <class U>
+  void construct(U* p) {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... A>
+  void construct(U* p, A&&... a) {
+    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+  }
+};
+
+}  // namespace
 
 BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsigned threads) {
   BodyTopology t;
@@ -37,8 +64,9 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
     }
   });
   for (std::size_t i = 1; i <= nv; ++i) start[i] += start[i - 1];
-  std::vector<U> uses;
-  reserve_touched(uses, start[nv], loop);
+  std::vector<U, Uninitialised<U>> uses;
+  uses.reserve(start[nv]);
+  touch_pages(uses.data(), start[nv] * sizeof(U), loop);  // fresh pages on all cores; each use is written below
   uses.resize(start[nv]);
   {
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);

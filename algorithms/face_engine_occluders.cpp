@@ -231,19 +231,28 @@ void Engine<P>::build_occluders() {
   std::vector<std::uint8_t>().swap(closed_);
   // Widen every box by a margin far above the error of the double projections (a filter
   // only: it skips work, never decides; bounds::kBoxMargin).
-  double ext = 1e-300;
-  for (const Box& bx : boxes)
-    for (double v : {static_cast<double>(bx.x0), static_cast<double>(bx.x1), static_cast<double>(bx.y0),
-                     static_cast<double>(bx.y1), bx.dmin})
-      if (std::isfinite(v)) ext = std::max(ext, std::fabs(v));
+  // (The largest magnitude per worker, then over the workers: a maximum in any order.)
+  std::vector<double> exts(loop.workers(), 1e-300);
+  loop.run(boxes.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
+    double ext = exts[w];
+    for (std::size_t i = begin; i < end; ++i) {
+      const Box& bx = boxes[i];
+      for (double v : {static_cast<double>(bx.x0), static_cast<double>(bx.x1), static_cast<double>(bx.y0),
+                       static_cast<double>(bx.y1), bx.dmin})
+        if (std::isfinite(v)) ext = std::max(ext, std::fabs(v));
+    }
+    exts[w] = ext;
+  });
+  const double ext = *std::max_element(exts.begin(), exts.end());
   margin_ = bounds::kBoxMargin * ext;
-  for (Box& bx : boxes) {
+  loop.for_each(boxes.size(), 16384, [&](std::size_t i) {
+    Box& bx = boxes[i];
     bx.x0 -= static_cast<float>(margin_);
     bx.y0 -= static_cast<float>(margin_);
     bx.x1 += static_cast<float>(margin_);
     bx.y1 += static_cast<float>(margin_);
     bx.dmin -= margin_;
-  }
+  });
   boxes_ = std::move(boxes);
   std::vector<ScreenRect> rects(boxes_.size());
   loop.for_each(boxes_.size(), 8192, [&](std::size_t i) { rects[i] = {boxes_[i].x0, boxes_[i].y0, boxes_[i].x1, boxes_[i].y1}; });
