@@ -3,6 +3,7 @@
 // are self-hidden (both faces non-facing, the notes' Stage 1).
 #include "algorithms/face_engine.hpp"
 #include "algorithms/parallel.hpp"
+#include "algorithms/parallel_scan.hpp"
 
 namespace hlr::face_route {
 
@@ -51,27 +52,16 @@ std::vector<DrawnEdge> Engine<P>::collect_edges(int b) const {
     kinds[i] = static_cast<signed char>(kind);
     hidden[i] = self_hidden;
   });
-  // The drawn ones in order, on all cores: counted per fixed chunk, then each chunk written
-  // after the ones before it.
-  constexpr std::size_t kChunk = 16384;
-  const std::size_t chunks = (edges.size() + kChunk - 1) / kChunk;
-  std::vector<std::size_t> at(chunks + 1, 0);
+  // The drawn ones in order, on all cores.
   const ParallelLoop loop(opt_.threads);
-  loop.for_each(chunks, 1, [&](std::size_t c) {
-    for (std::size_t i = c * kChunk, e = std::min(edges.size(), i + kChunk); i < e; ++i) at[c + 1] += kinds[i] >= 0;
-  });
-  for (std::size_t c = 0; c < chunks; ++c) at[c + 1] += at[c];
+  const std::vector<std::uint32_t> drawn = parallel_select(edges.size(), [&](std::size_t i) { return kinds[i] >= 0; }, loop);
   std::vector<DrawnEdge> out;
-  reserve_touched(out, at[chunks], loop);
-  out.resize(at[chunks]);
-  loop.for_each(chunks, 1, [&](std::size_t c) {
-    std::size_t w = at[c];
-    for (std::size_t i = c * kChunk, end = std::min(edges.size(), i + kChunk); i < end; ++i) {
-      if (kinds[i] < 0) continue;
-      const BodyEdge& e = edges[i];
-      out[w++] = {e.u, e.v, e.uses.empty() ? -1 : e.uses[0].face, e.uses.size() > 1 ? e.uses[1].face : -1, kinds[i],
-                  hidden[i] != 0};
-    }
+  reserve_touched(out, drawn.size(), loop);
+  out.resize(drawn.size());
+  loop.for_each(drawn.size(), 8192, [&](std::size_t k) {
+    const std::uint32_t i = drawn[k];
+    const BodyEdge& e = edges[i];
+    out[k] = {e.u, e.v, e.uses.empty() ? -1 : e.uses[0].face, e.uses.size() > 1 ? e.uses[1].face : -1, kinds[i], hidden[i] != 0};
   });
   return out;
 }

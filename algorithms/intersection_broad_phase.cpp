@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "algorithms/parallel_scan.hpp"
+
 namespace hlr {
 namespace {
 
@@ -115,24 +117,22 @@ BoxPairs box_pairs(const std::vector<Box>& bb, const ParallelLoop& loop,
   if (!coarse) {
     reserve_touched(low, n, loop);  // fresh pages zeroed on all cores, not by the resize alone
     low.resize(n);
-    std::vector<std::uint32_t> at;
-    reserve_touched(at, n + 1, loop);
-    at.resize(n + 1, 0);
     auto span = [&](std::size_t i, std::int64_t* c0, std::int64_t* c1) {
       for (int k = 0; k < 3; ++k) c0[k] = g.key(k, bb[i][k]), c1[k] = g.key(k, bb[i][k + 3]);
       return (c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1);
     };
-    loop.for_each(n, 8192, [&](std::size_t i) {
+    // Where each box's entries start (a box over 64 cells has none); count is called once per
+    // box, so it also records the box's low cell.
+    const std::vector<std::size_t> at = parallel_offsets(n, [&](std::size_t i) -> std::size_t {
       std::int64_t c0[3], c1[3];
       const std::int64_t cells = span(i, c0, c1);
-      at[i + 1] = cells > 64 ? 0 : static_cast<std::uint32_t>(cells);
       for (int k = 0; k < 3; ++k) low[i][k] = static_cast<std::int32_t>(c0[k]);  // 0 <= c0 < 2^20
-    });
-    for (std::size_t i = 0; i < n; ++i) {
+      return cells > 64 ? 0 : static_cast<std::size_t>(cells);
+    }, loop);
+    big = parallel_select(n, [&](std::size_t i) {
       std::int64_t c0[3], c1[3];
-      if (at[i + 1] == 0 && span(i, c0, c1) > 64) big.push_back(static_cast<std::uint32_t>(i));
-      at[i + 1] += at[i];
-    }
+      return at[i + 1] == at[i] && span(i, c0, c1) > 64;
+    }, loop);
     reserve_touched(entries, at[n], loop);
     entries.resize(at[n]);
     loop.for_each(n, 8192, [&](std::size_t i) {
@@ -152,10 +152,9 @@ BoxPairs box_pairs(const std::vector<Box>& bb, const ParallelLoop& loop,
     for (std::size_t i = 0; i < n; ++i) entries.push_back({0, static_cast<std::uint32_t>(i)});
   }
   radix_sort(entries, loop);
-  std::vector<std::size_t> cell_start;
-  reserve_touched(cell_start, entries.size() / 2 + 2, loop);  // a guess: most cells hold more than one entry
-  for (std::size_t i = 0; i < entries.size(); ++i)
-    if (i == 0 || entries[i].cell != entries[i - 1].cell) cell_start.push_back(i);
+  std::vector<std::size_t> cell_start = parallel_select<std::size_t>(entries.size(), [&](std::size_t i) {
+    return i == 0 || entries[i].cell != entries[i - 1].cell;
+  }, loop, 1);
   cell_start.push_back(entries.size());
   const std::size_t ncells = cell_start.size() - 1;
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop.workers());

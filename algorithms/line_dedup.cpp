@@ -201,14 +201,18 @@ class Dedup {
     // smallest end as any order of unions gives); the rest sorted and united.
     constexpr std::uint64_t kBody0 = std::uint64_t{1} << 63;
     auto body0 = [&](std::uint64_t k) { return k != kNone && (k >> 32) == (kBody0 >> 32); };
-    std::uint64_t top = 0;
-    std::size_t with_key = 0;
-    for (std::uint64_t k : key) {
-      if (body0(k)) top = std::max(top, k & 0xffffffffu);
-      with_key += k != kNone;
-    }
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> rest;
-    if (top < 8 * static_cast<std::uint64_t>(with_key) + 1024) {
+    std::vector<std::uint64_t> tops(loop.workers(), 0);
+    std::vector<std::size_t> counts(loop.workers(), 0);
+    loop.run(n, 65536, [&](unsigned w, std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) {
+        if (body0(key[i])) tops[w] = std::max(tops[w], key[i] & 0xffffffffu);
+        counts[w] += key[i] != kNone;
+      }
+    });
+    const std::uint64_t top = *std::max_element(tops.begin(), tops.end());
+    const std::size_t with_key = std::accumulate(counts.begin(), counts.end(), std::size_t{0});
+    const bool table = top < 8 * static_cast<std::uint64_t>(with_key) + 1024;
+    if (table) {
       std::vector<std::uint32_t> first(static_cast<std::size_t>(top) + 1, UINT32_MAX);
       loop.for_each(n, 8192, [&](std::size_t e) {
         if (!body0(key[e])) return;
@@ -220,11 +224,14 @@ class Dedup {
       loop.for_each(n, 8192, [&](std::size_t e) {
         if (body0(key[e])) points_.parent[e] = first[static_cast<std::size_t>(key[e] & 0xffffffffu)];
       });
-      for (std::uint32_t e = 0; e < n; ++e)
-        if (key[e] != kNone && !body0(key[e])) rest.emplace_back(key[e], e);
-    } else {
-      for (std::uint32_t e = 0; e < n; ++e)
-        if (key[e] != kNone) rest.emplace_back(key[e], e);
+    }
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> rest;
+    {
+      const std::vector<std::uint32_t> ends =
+          parallel_select(n, [&](std::size_t e) { return key[e] != kNone && !(table && body0(key[e])); }, loop);
+      reserve_touched(rest, ends.size(), loop);
+      rest.resize(ends.size());
+      loop.for_each(ends.size(), 8192, [&](std::size_t i) { rest[i] = {key[ends[i]], ends[i]}; });
     }
     std::vector<std::uint64_t>().swap(key);
     std::sort(std::execution::par, rest.begin(), rest.end());

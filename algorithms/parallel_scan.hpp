@@ -16,9 +16,9 @@ namespace hlr {
 inline constexpr std::size_t kScanChunk = 16384;
 
 /// The indices i in [0, n) with keep(i) (called twice per index: it must be pure), in
-/// increasing order; room for `spare` more is reserved.
-template <class Keep>
-std::vector<std::uint32_t> parallel_select(std::size_t n, const Keep& keep, const ParallelLoop& loop, std::size_t spare = 0) {
+/// increasing order, as Index (which must hold n - 1); room for `spare` more is reserved.
+template <class Index = std::uint32_t, class Keep>
+std::vector<Index> parallel_select(std::size_t n, const Keep& keep, const ParallelLoop& loop, std::size_t spare = 0) {
   const std::size_t chunks = (n + kScanChunk - 1) / kScanChunk;
   std::vector<std::size_t> at(chunks + 1, 0);
   loop.for_each(chunks, 1, [&](std::size_t c) {
@@ -27,13 +27,13 @@ std::vector<std::uint32_t> parallel_select(std::size_t n, const Keep& keep, cons
     at[c + 1] = s;
   });
   for (std::size_t c = 0; c < chunks; ++c) at[c + 1] += at[c];
-  std::vector<std::uint32_t> out;
+  std::vector<Index> out;
   reserve_touched(out, at[chunks] + spare, loop);
   out.resize(at[chunks]);
   loop.for_each(chunks, 1, [&](std::size_t c) {
     std::size_t w = at[c];
     for (std::size_t i = c * kScanChunk, e = std::min(n, i + kScanChunk); i < e; ++i)
-      if (keep(i)) out[w++] = static_cast<std::uint32_t>(i);
+      if (keep(i)) out[w++] = static_cast<Index>(i);
   });
   return out;
 }

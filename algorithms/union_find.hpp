@@ -25,8 +25,8 @@ struct UnionFind {
 };
 
 /// Disjoint sets that threads unite at the same time (lock-free: a root is linked under the
-/// smaller one by compare-and-swap, paths halved with relaxed atomic writes that only ever
-/// point a node higher in its tree). Each set's root is its smallest index, as in UnionFind,
+/// smaller one by compare-and-swap, paths halved by compare-and-swap writes that only ever
+/// point a node higher in its tree; all with acquire-release order). Each set's root is its smallest index, as in UnionFind,
 /// so the result does not depend on the order of the unions or the number of threads.
 /// root() may be called once the unions are done.
 class ConcurrentUnionFind {
