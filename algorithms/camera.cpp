@@ -125,9 +125,9 @@ DrawingFrame drawing_frame(std::size_t n, const std::function<const Point3&(std:
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, big = 0;
   };
   const ParallelLoop loop;
-  std::vector<Hull> part(loop.workers());
+  PerWorker<Hull> part(loop);
   loop.run(n, 16384, [&](unsigned w, std::size_t b, std::size_t e) {
-    Hull& h = part[w];
+    Hull h = part[w];  // in registers while the range runs
     for (std::size_t i = b; i < e; ++i) {
       const Point3& p = point(i);
       for (int k = 0; k < 3; ++k) {
@@ -136,9 +136,11 @@ DrawingFrame drawing_frame(std::size_t n, const std::function<const Point3&(std:
         h.big = std::max({h.big, std::fabs(p.approx(k).lo), std::fabs(p.approx(k).hi)});
       }
     }
+    part[w] = h;
   });
   double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, big = 0;
-  for (const Hull& h : part) {
+  for (unsigned w = 0; w < part.size(); ++w) {
+    const Hull& h = part[w];
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], h.lo[k]), hi[k] = std::max(hi[k], h.hi[k]);
     big = std::max(big, h.big);
   }

@@ -2,9 +2,11 @@
 #include "algorithms/drawing_2d.hpp"
 
 #include "algorithms/parallel.hpp"
+#include "algorithms/parallel_scan.hpp"
 
 #include <algorithm>
 #include <limits>
+#include <numeric>
 #include <set>
 #include <string>
 
@@ -59,6 +61,24 @@ void add_vertex_labels(const LineDrawing& r, const Projector& proj, const Camera
   }
 }
 
+// The runs' lines moved together (run c holds kept[c] lines from at[c]), in order.
+void close_gaps(const std::vector<std::size_t>& at, const std::vector<std::size_t>& kept, Drawing2D& d) {
+  std::size_t w = 0;
+  for (std::size_t c = 0; c + 1 < at.size(); ++c)
+    for (std::size_t k = at[c]; k < at[c] + kept[c]; ++k, ++w) {
+      Polyline2D pl = d.lines[k];
+      pl.first = static_cast<std::uint32_t>(2 * w);
+      pl.first_edge = static_cast<std::uint32_t>(w);
+      d.lines[w] = pl;
+      d.points[2 * w] = d.points[2 * k];
+      d.points[2 * w + 1] = d.points[2 * k + 1];
+      d.sources[w] = d.sources[k];
+    }
+  d.lines.resize(w);
+  d.points.resize(2 * w);
+  d.sources.resize(w);
+}
+
 }  // namespace
 
 Projector drawing_projector(const LineDrawing& r, const Camera& camera) {
@@ -70,30 +90,56 @@ Projector drawing_projector(const LineDrawing& r, const Camera& camera) {
 
 Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Project2DOptions& opt) {
   Projector proj = drawing_projector(r, camera);
+  const ParallelLoop loop;
   double near = 0;
-  if (camera.perspective) {
+  if (camera.perspective) {  // the farthest end's depth (a maximum: the same on any number of threads)
+    PerWorker<double> most(loop, 0.0);
+    loop.run(r.segments.size(), 8192, [&](unsigned w, std::size_t b, std::size_t e) {
+      double far = most[w];
+      for (std::size_t i = b; i < e; ++i)
+        for (const Point3* p : {&r.segments[i].from(), &r.segments[i].to()}) far = std::max(far, proj.project(*p)[2]);
+      most[w] = far;
+    });
     double far = 0;
-    for (const Segment& s : r.segments)
-      for (const Point3* p : {&s.from(), &s.to()}) far = std::max(far, proj.project(*p)[2]);
+    for (unsigned w = 0; w < most.size(); ++w) far = std::max(far, most[w]);
     near = 1e-4 * std::max(far, 1e-300);
   }
-  // Runs of segments on every core, each into its own lists; joined in segment order.
+  // Runs of segments on every core. Each run's pieces that may be drawn are counted first, so
+  // that every run writes straight into its place in the drawing's arrays (made on this
+  // thread from memory already in use: a worker's own fresh allocations cost page clearing);
+  // the few pieces wholly behind the near depth (perspective) leave gaps, closed afterwards.
+  const std::vector<Segment>& segs = r.segments;
+  auto drawn = [&](const Piece& p) { return !(p.behind_eye || p.clipped || (!p.visible && !(p.through ? opt.through : opt.hidden))); };
   constexpr std::size_t kRun = 4096;
-  std::vector<Drawing2D> runs((r.segments.size() + kRun - 1) / kRun);
-  ParallelLoop().for_each(runs.size(), 1, [&](std::size_t c) {
-    Drawing2D& d = runs[c];
-    for (std::size_t si = c * kRun, end = std::min(r.segments.size(), si + kRun); si < end; ++si) {
-      const Segment& s = r.segments[si];
+  const std::size_t n_runs = (segs.size() + kRun - 1) / kRun;
+  const std::vector<std::size_t> at = parallel_offsets(n_runs, [&](std::size_t c) {
+    std::size_t k = 0;
+    for (std::size_t si = c * kRun, end = std::min(segs.size(), si + kRun); si < end; ++si)
+      for (const Piece& p : segs[si].pieces) k += drawn(p);
+    return k;
+  }, loop);
+  Drawing2D d;
+  reserve_touched(d.lines, at.back(), loop);
+  reserve_touched(d.points, 2 * at.back(), loop);
+  reserve_touched(d.sources, at.back(), loop);
+  d.lines.resize(at.back());
+  d.points.resize(2 * at.back());
+  d.sources.resize(at.back());
+  std::vector<std::size_t> kept(n_runs);
+  loop.for_each(n_runs, 1, [&](std::size_t c) {
+    std::size_t w = at[c];
+    for (std::size_t si = c * kRun, end = std::min(segs.size(), si + kRun); si < end; ++si) {
+      const Segment& s = segs[si];
       for (std::size_t pi = 0; pi < s.pieces.size(); ++pi) {
         const Piece& p = s.pieces[pi];
-        if (p.behind_eye || p.clipped || (!p.visible && !(p.through ? opt.through : opt.hidden))) continue;
+        if (!drawn(p)) continue;
         std::array<double, 4> l;
         bool pulled = false;
         if (!piece_line(s, p, proj, camera.perspective, near, l, pulled)) continue;
-        Polyline2D pl;
-        pl.first = static_cast<std::uint32_t>(d.points.size());
+        Polyline2D& pl = d.lines[w];
+        pl.first = static_cast<std::uint32_t>(2 * w);
         pl.count = 2;
-        pl.first_edge = static_cast<std::uint32_t>(d.sources.size());
+        pl.first_edge = static_cast<std::uint32_t>(w);
         pl.kind = s.line;
         pl.visible = p.visible;
         pl.through = p.through;
@@ -101,41 +147,15 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
         pl.body = s.body;
         pl.body2 = s.body2;
         pl.pulled = pulled;
-        d.points.push_back({l[0], l[1]});
-        d.points.push_back({l[2], l[3]});
-        d.sources.push_back(PieceRef{static_cast<int>(si), static_cast<int>(pi)});
-        d.lines.push_back(pl);
+        d.points[2 * w] = {l[0], l[1]};
+        d.points[2 * w + 1] = {l[2], l[3]};
+        d.sources[w] = PieceRef{static_cast<int>(si), static_cast<int>(pi)};
+        ++w;
       }
     }
+    kept[c] = w - at[c];
   });
-  // The runs joined in order, each copied into its place on all cores.
-  Drawing2D d;
-  std::vector<std::size_t> at_line(runs.size() + 1, 0), at_point(runs.size() + 1, 0), at_source(runs.size() + 1, 0);
-  for (std::size_t c = 0; c < runs.size(); ++c) {
-    at_line[c + 1] = at_line[c] + runs[c].lines.size();
-    at_point[c + 1] = at_point[c] + runs[c].points.size();
-    at_source[c + 1] = at_source[c] + runs[c].sources.size();
-  }
-  const ParallelLoop loop;
-  reserve_touched(d.lines, at_line.back(), loop);
-  reserve_touched(d.points, at_point.back(), loop);
-  reserve_touched(d.sources, at_source.back(), loop);
-  d.lines.resize(at_line.back());
-  d.points.resize(at_point.back());
-  d.sources.resize(at_source.back());
-  loop.for_each(runs.size(), 1, [&](std::size_t c) {
-    Drawing2D& run = runs[c];
-    const auto points = static_cast<std::uint32_t>(at_point[c]), sources = static_cast<std::uint32_t>(at_source[c]);
-    for (std::size_t k = 0; k < run.lines.size(); ++k) {
-      Polyline2D pl = run.lines[k];
-      pl.first += points;
-      pl.first_edge += sources;
-      d.lines[at_line[c] + k] = pl;
-    }
-    std::copy(run.points.begin(), run.points.end(), d.points.begin() + static_cast<std::ptrdiff_t>(at_point[c]));
-    std::copy(run.sources.begin(), run.sources.end(), d.sources.begin() + static_cast<std::ptrdiff_t>(at_source[c]));
-    run = Drawing2D();
-  });
+  if (std::accumulate(kept.begin(), kept.end(), std::size_t{0}) != at.back()) close_gaps(at, kept, d);
   if (opt.vertex_labels) add_vertex_labels(r, proj, camera, opt.label_base, d);
   return d;
 }

@@ -258,11 +258,17 @@ void Engine<P>::prepare_body(int b, LineDrawing& res) {
   const int first_tri = triangulate_body(b);
   // A closed solid: every edge in exactly two faces, traversed in opposite directions.
   const ParallelLoop loop(opt_.threads);
-  std::vector<char> open(loop.workers(), 0);
+  PerWorker<char> open(loop, 0);
   loop.run(topo_[b].edges.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end && !open[w]; ++i) open[w] = !topo_[b].edges[i].closed_pair();
+    if (open[w]) return;
+    for (std::size_t i = begin; i < end; ++i)
+      if (!topo_[b].edges[i].closed_pair()) {
+        open[w] = 1;
+        return;
+      }
   });
-  const bool closed = std::find(open.begin(), open.end(), 1) == open.end();
+  bool closed = true;
+  for (unsigned w = 0; w < open.size(); ++w) closed = closed && !open[w];
   std::vector<int> ids(tris_.size() - static_cast<std::size_t>(first_tri));
   std::iota(ids.begin(), ids.end(), first_tri);
   // Orientation per component first (an inside-out one is turned, with a note); then the sign

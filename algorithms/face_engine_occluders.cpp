@@ -171,7 +171,7 @@ void Engine<P>::select_occluders(const std::vector<std::vector<DrawnEdge>>& draw
   // then the taken ones in order.
   const ParallelLoop loop(opt_.threads);
   std::vector<char> state(tris_.size(), 0);
-  std::vector<std::size_t> hiding(loop.workers(), 0);
+  PerWorker<std::size_t> hiding(loop, 0);
   loop.run(tris_.size(), 4096, [&](unsigned w, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       const Tri& t0 = tris_[i];
@@ -193,7 +193,7 @@ void Engine<P>::select_occluders(const std::vector<std::vector<DrawnEdge>>& draw
     }
   });
   hiding_ = 0;
-  for (std::size_t h : hiding) hiding_ += h;
+  for (unsigned w = 0; w < hiding.size(); ++w) hiding_ += hiding[w];
   const std::vector<std::uint32_t> taken = parallel_select(tris_.size(), [&](std::size_t i) { return state[i] == 2; }, loop);
   sel_.assign(taken.begin(), taken.end());
   closed_.assign(sel_.size(), 0);

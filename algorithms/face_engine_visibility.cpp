@@ -41,7 +41,7 @@ void addmul(mpz_ptr r, const mpz_class& m, mpz_srcptr x, mpz_ptr) { mpz_addmul(r
 }  // namespace
 
 template <class P>
-struct Engine<P>::Work {
+struct alignas(128) Engine<P>::Work {  // its own cache lines: workers update theirs constantly
   ComparisonCounters c;
   std::size_t pairs = 0, skipped = 0;
   StampSet stamps;

@@ -157,8 +157,11 @@ BoxPairs box_pairs(const std::vector<Box>& bb, const ParallelLoop& loop,
   }, loop, 1);
   cell_start.push_back(entries.size());
   const std::size_t ncells = cell_start.size() - 1;
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop.workers());
-  std::vector<std::size_t> counted(loop.workers(), 0);
+  struct Found {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> kept;
+    std::size_t tested = 0;
+  };
+  PerWorker<Found> found(loop);
   auto overlap = [&](std::uint32_t ta, std::uint32_t tc) {
     const Box &P = bb[ta], &Q = bb[tc];
     return !(P[0] > Q[3] || Q[0] > P[3] || P[1] > Q[4] || Q[1] > P[4] || P[2] > Q[5] || Q[2] > P[5]);
@@ -166,8 +169,9 @@ BoxPairs box_pairs(const std::vector<Box>& bb, const ParallelLoop& loop,
   auto take = [&](std::uint32_t ta, std::uint32_t tc, unsigned w) {
     PairVerdict v = judge(ta, tc);
     if (v == PairVerdict::Skip) return;
-    ++counted[w];
-    if (v == PairVerdict::Keep) found[w].push_back({std::min(ta, tc), std::max(ta, tc)});
+    Found& f = found[w];
+    ++f.tested;
+    if (v == PairVerdict::Keep) f.kept.push_back({std::min(ta, tc), std::max(ta, tc)});
   };
   // A cell's boxes and low cells are read once into a local list (the items lie far apart in
   // the arrays; reading them for every pair cost more than the tests).
@@ -209,9 +213,9 @@ BoxPairs box_pairs(const std::vector<Box>& bb, const ParallelLoop& loop,
         if (j != i && !(is_big[j] && j < i) && overlap(i, j)) take(std::min(i, j), std::max(i, j), w);
     }
   });
-  for (std::size_t w = 0; w < found.size(); ++w) {
-    out.kept.insert(out.kept.end(), found[w].begin(), found[w].end());
-    out.tested += counted[w];
+  for (unsigned w = 0; w < found.size(); ++w) {
+    out.kept.insert(out.kept.end(), found[w].kept.begin(), found[w].kept.end());
+    out.tested += found[w].tested;
   }
   std::sort(out.kept.begin(), out.kept.end());
   return out;

@@ -201,16 +201,20 @@ class Dedup {
     // smallest end as any order of unions gives); the rest sorted and united.
     constexpr std::uint64_t kBody0 = std::uint64_t{1} << 63;
     auto body0 = [&](std::uint64_t k) { return k != kNone && (k >> 32) == (kBody0 >> 32); };
-    std::vector<std::uint64_t> tops(loop.workers(), 0);
-    std::vector<std::size_t> counts(loop.workers(), 0);
+    PerWorker<std::uint64_t> tops(loop, 0);
+    PerWorker<std::size_t> counts(loop, 0);
     loop.run(n, 65536, [&](unsigned w, std::size_t b, std::size_t e) {
+      std::uint64_t t = tops[w];
+      std::size_t c = counts[w];
       for (std::size_t i = b; i < e; ++i) {
-        if (body0(key[i])) tops[w] = std::max(tops[w], key[i] & 0xffffffffu);
-        counts[w] += key[i] != kNone;
+        if (body0(key[i])) t = std::max(t, key[i] & 0xffffffffu);
+        c += key[i] != kNone;
       }
+      tops[w] = t, counts[w] = c;
     });
-    const std::uint64_t top = *std::max_element(tops.begin(), tops.end());
-    const std::size_t with_key = std::accumulate(counts.begin(), counts.end(), std::size_t{0});
+    std::uint64_t top = 0;
+    std::size_t with_key = 0;
+    for (unsigned w = 0; w < tops.size(); ++w) top = std::max(top, tops[w]), with_key += counts[w];
     const bool table = top < 8 * static_cast<std::uint64_t>(with_key) + 1024;
     if (table) {
       std::vector<std::uint32_t> first(static_cast<std::size_t>(top) + 1, UINT32_MAX);
@@ -331,7 +335,7 @@ class Dedup {
       std::array<double, 2> a, b;  // the piece is live[i], its segment read only for a pair the filter passes
     };
     std::vector<Rec> rec(live.size());
-    std::vector<std::array<double, 4>> boxes(loop.workers(), {INFINITY, INFINITY, -INFINITY, -INFINITY});
+    PerWorker<std::array<double, 4>> boxes(loop, {INFINITY, INFINITY, -INFINITY, -INFINITY});
     loop.run(live.size(), 8192, [&](unsigned w, std::size_t begin, std::size_t end) {
       std::array<double, 4>& bx = boxes[w];
       for (std::size_t i = begin; i < end; ++i) {
@@ -342,7 +346,10 @@ class Dedup {
       }
     });
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-    for (const auto& bx : boxes) x0 = std::min(x0, bx[0]), y0 = std::min(y0, bx[1]), x1 = std::max(x1, bx[2]), y1 = std::max(y1, bx[3]);
+    for (unsigned w = 0; w < boxes.size(); ++w) {
+      const auto& bx = boxes[w];
+      x0 = std::min(x0, bx[0]), y0 = std::min(y0, bx[1]), x1 = std::max(x1, bx[2]), y1 = std::max(y1, bx[3]);
+    }
     const double pad = 16 * delta_;
     x0 -= pad, y0 -= pad, x1 += pad, y1 += pad;
     const int g = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(live.size()))), 1, 2048);
@@ -400,7 +407,7 @@ class Dedup {
       });
     }
     // Pairs that pass the double filter, found on all cores; the exact tests in a fixed order.
-    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop.workers());
+    PerWorker<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop);
     loop.run(n_cells, 256, [&](unsigned worker, std::size_t begin, std::size_t end) {
       std::vector<Near> cell;
       for (std::size_t c = begin; c < end; ++c) {
@@ -420,7 +427,7 @@ class Dedup {
       }
     });
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-    for (auto& f : found) pairs.insert(pairs.end(), f.begin(), f.end());
+    for (unsigned w = 0; w < found.size(); ++w) pairs.insert(pairs.end(), found[w].begin(), found[w].end());
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     for (auto [a, b] : pairs)

@@ -34,6 +34,24 @@ class ParallelLoop {
   std::unique_ptr<Arena> arena_;
 };
 
+/// One T per worker of a loop, each on cache lines of its own: a worker that updates its slot
+/// inside a loop does not slow the others by sharing a line with them (false sharing: two
+/// workers' adjacent counters made a stage slower on two threads than on one).
+template <class T>
+class PerWorker {
+ public:
+  explicit PerWorker(const ParallelLoop& loop, const T& init = T()) : slots_(loop.workers(), Slot{init}) {}
+  T& operator[](unsigned w) { return slots_[w].value; }
+  const T& operator[](unsigned w) const { return slots_[w].value; }
+  unsigned size() const { return static_cast<unsigned>(slots_.size()); }
+
+ private:
+  struct alignas(128) Slot {  // two lines: the prefetcher fetches lines in pairs
+    T value;
+  };
+  std::vector<Slot> slots_;
+};
+
 /// While it lives, no parallel work of the process (ParallelLoop, parallel sorts, any oneTBB
 /// use) runs on more than `threads` threads (0: no limit): `--threads N` of the commands.
 class ThreadLimit {

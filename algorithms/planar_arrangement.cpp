@@ -133,7 +133,7 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> candidate_pairs(const std::
   std::vector<std::uint32_t> items(start[n_cells]), fill(start.begin(), start.end() - 1);
   for (std::uint32_t k = 0; k < segs.size(); ++k) cells(k, [&](std::size_t c) { items[fill[c]++] = k; });
   ParallelLoop loop(threads);
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop.workers());
+  PerWorker<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop);
   loop.run(n_cells, 256, [&](unsigned w, std::size_t begin, std::size_t end) {
     for (std::size_t c = begin; c < end; ++c)
       for (std::uint32_t i = start[c]; i < start[c + 1]; ++i)
@@ -146,7 +146,7 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> candidate_pairs(const std::
           found[w].emplace_back(std::min(a, b), std::max(a, b));
         }
   });
-  for (auto& f : found) pairs.insert(pairs.end(), f.begin(), f.end());
+  for (unsigned w = 0; w < found.size(); ++w) pairs.insert(pairs.end(), found[w].begin(), found[w].end());
   std::sort(std::execution::par, pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   return pairs;
@@ -203,7 +203,7 @@ PlanarArrangement build_arrangement(std::vector<Exact2> points, const std::vecto
       std::vector<std::pair<std::uint32_t, std::uint32_t>> crossings;
       std::size_t exact = 0;
     };
-    std::vector<Found> found(loop.workers());
+    PerWorker<Found> found(loop);
     loop.run(cand.size(), 1024, [&](unsigned w, std::size_t begin, std::size_t end) {
       Found& f = found[w];
       for (std::size_t i = begin; i < end; ++i) {
@@ -221,7 +221,8 @@ PlanarArrangement build_arrangement(std::vector<Exact2> points, const std::vecto
         f.crossings.emplace_back(a, b);
       }
     });
-    for (Found& f : found) {
+    for (unsigned w = 0; w < found.size(); ++w) {
+      const Found& f = found[w];
       splits.insert(splits.end(), f.splits.begin(), f.splits.end());
       crossing_pairs.insert(crossing_pairs.end(), f.crossings.begin(), f.crossings.end());
       exact += f.exact;
@@ -289,8 +290,8 @@ PlanarArrangement build_arrangement(std::vector<Exact2> points, const std::vecto
   for (std::size_t i = 0; i < points.size(); ++i) start[i + 1] += start[i];
   std::vector<std::uint32_t> around(2 * ne), fill(start.begin(), start.end() - 1);
   for (std::uint32_t h = 0; h < 2 * ne; ++h) around[fill[out.origin[h]]++] = h;
-  std::vector<std::size_t> exact_per(ParallelLoop(options.threads).workers(), 0);
   ParallelLoop loop(options.threads);
+  PerWorker<std::size_t> exact_per(loop, 0);
   std::vector<std::uint32_t> position(2 * ne);
   loop.run(points.size(), 1024, [&](unsigned w, std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v) {
@@ -307,7 +308,7 @@ PlanarArrangement build_arrangement(std::vector<Exact2> points, const std::vecto
       for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) position[around[i]] = i;
     }
   });
-  for (std::size_t x : exact_per) exact += x;
+  for (unsigned w = 0; w < exact_per.size(); ++w) exact += exact_per[w];
   // next(h) for h = a -> b: the half-edge leaving b just clockwise of b -> a.
   out.next.resize(2 * ne);
   for (std::uint32_t h = 0; h < 2 * ne; ++h) {
