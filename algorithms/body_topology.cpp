@@ -6,49 +6,21 @@
 
 #include <algorithm>
 #include <atomic>
-#include <memory>
 #include <new>
-#include <utility>
 
 #include "algorithms/parallel.hpp"
 #include "algorithms/parallel_scan.hpp"
 
 namespace hlr {
-namespace {
-
-// Leaves new elements uninitialised (every one is written after): a resize of millions of
-// records is then no serial pass of zeroes.
-template <class T>
-struct Uninitialised : std::allocator<T> {
-  template <class U>
-  struct rebind {
-    using other = Uninitialised<U>;
-  };
-  Uninitialised() = default;
-  template <class U>
-  Uninitialised(const Uninitialised<U>&) {}
-  template <class U>
-  void construct(U* p) {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... A>
-  void construct(U* p, A&&... a) {
-    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
-  }
-};
-
-}  // namespace
-
 BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsigned threads) {
   BodyTopology t;
   const ParallelLoop loop(threads);
   // The large arrays' pages are touched on all cores before one thread fills them in order.
   t.face_offset = parallel_offsets<int>(faces.size(), [&](std::size_t f) { return faces[f].size(); }, loop);
   const std::vector<int>& fo = t.face_offset;
-  reserve_touched(t.slot_third, fo.back(), loop);
-  reserve_touched(t.slot_edge, fo.back(), loop);
-  t.slot_third.assign(fo.back(), -1);
-  t.slot_edge.assign(fo.back(), -1);
+  t.slot_third.resize(fo.back());  // fresh pages: written (and so touched) on all cores
+  t.slot_edge.resize(fo.back());
+  loop.for_each(t.slot_edge.size(), 1 << 16, [&](std::size_t i) { t.slot_third[i] = t.slot_edge[i] = -1; });
   struct U {
     std::uint64_t key;
     int face, slot;
@@ -56,7 +28,8 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
   };
   constexpr std::size_t kGrain = 8192;
   // Uses per lower vertex, then each bucket's start.
-  std::vector<std::uint32_t> start(nv + 1, 0);
+  RawVector<std::uint32_t> start(nv + 1);
+  loop.for_each(start.size(), 1 << 16, [&](std::size_t i) { start[i] = 0; });
   loop.for_each(faces.size(), kGrain, [&](std::size_t f) {
     for (std::size_t k = 0; k < faces[f].size(); ++k) {
       const int u = faces[f][k], v = faces[f][(k + 1) % faces[f].size()];
@@ -64,7 +37,7 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
     }
   });
   for (std::size_t i = 1; i <= nv; ++i) start[i] += start[i - 1];
-  std::vector<U, Uninitialised<U>> uses;
+  RawVector<U> uses;
   uses.reserve(start[nv]);
   touch_pages(uses.data(), start[nv] * sizeof(U), loop);  // fresh pages on all cores; each use is written below
   uses.resize(start[nv]);
@@ -88,9 +61,9 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
   std::vector<std::uint32_t> first =  // the first use of each edge
       parallel_select(uses.size(), [&](std::size_t i) { return i == 0 || uses[i].key != uses[i - 1].key; }, loop, 1);
   first.push_back(static_cast<std::uint32_t>(uses.size()));
-  reserve_touched(t.edges, first.size() - 1, loop);
-  t.edges.resize(first.size() - 1);
-  loop.for_each(t.edges.size(), kGrain, [&](std::size_t e) {
+  t.edges.resize(first.size() - 1);  // unconstructed: each edge made below, on all cores
+  loop.for_each(t.edges.size(), kGrain, [&](std::size_t e) { ::new (static_cast<void*>(&t.edges[e])) BodyEdge; });
+  loop.for_each(t.edges.size(), kGrain, [&](std::size_t e) {  // (may throw: every edge is constructed by now)
     BodyEdge& edge = t.edges[e];
     edge.u = static_cast<int>(uses[first[e]].key >> 32);
     edge.v = static_cast<int>(uses[first[e]].key & 0xffffffffu);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "algorithms/uninitialised.hpp"
 #include "kernel/polyhedron.hpp"
 
 namespace hlr {
@@ -47,9 +48,10 @@ struct BodyEdge {
 
 struct BodyTopology {
   std::vector<int> face_offset;  // first slot of each face; size faces + 1
-  std::vector<BodyEdge> edges;   // sorted by (u, v)
-  std::vector<int> slot_edge;    // slot -> index in edges (-1 for a repeated vertex)
-  std::vector<int> slot_third;   // slot -> the third vertex of the triangle on that side (caller's)
+  // (RawVector: built on all cores without a serial pass of constructors; read as vectors.)
+  RawVector<BodyEdge> edges;     // sorted by (u, v)
+  RawVector<int> slot_edge;      // slot -> index in edges (-1 for a repeated vertex)
+  RawVector<int> slot_third;     // slot -> the third vertex of the triangle on that side (caller's)
 };
 
 /// Groups the edge uses of `faces` (vertex ids below `num_vertices`) by undirected edge, on

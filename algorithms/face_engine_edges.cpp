@@ -11,7 +11,7 @@ namespace hlr::face_route {
 template <class P>
 std::vector<DrawnEdge> Engine<P>::collect_edges(int b) const {
   const auto& facing = facing_[b];
-  const std::vector<BodyEdge>& edges = topo_[b].edges;
+  const RawVector<BodyEdge>& edges = topo_[b].edges;
   // Each edge classified on every core (-1: not drawn), then the drawn ones appended in order.
   std::vector<signed char> kinds(edges.size()), hidden(edges.size());
   ParallelLoop(opt_.threads).for_each(edges.size(), 4096, [&](std::size_t i) {

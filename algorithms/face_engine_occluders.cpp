@@ -91,7 +91,7 @@ void Engine<P>::vertex_rules() {
       char st = degenerate_[b][f] || fs == 0 ? 3 : (fs > 0 ? 1 : (solid_[b] && !eye_on_[b] ? 3 : 2));
       for (int v : faces[f]) mark(voff_[b] + v, st);
     });
-    const std::vector<BodyEdge>& edges = topo_[b].edges;
+    const RawVector<BodyEdge>& edges = topo_[b].edges;
     loop.for_each(edges.size(), 8192, [&](std::size_t i) {
       if (edges[i].uses.size() != 2) mark(voff_[b] + edges[i].u, 3), mark(voff_[b] + edges[i].v, 3);
     });

@@ -92,7 +92,7 @@ TEST(Parallel, BodyTopologyEqualsTheMapOfEdgeUsesOnAnyThreadCount) {
       }
       ++e;
     }
-    edge_of_slot.push_back(t.slot_edge);
+    edge_of_slot.emplace_back(t.slot_edge.begin(), t.slot_edge.end());
     auto fin = std::find_if(t.edges.begin(), t.edges.end(), [&](const BodyEdge& x) { return x.u == id(1, 1) && x.v == id(2, 2); });
     ASSERT_NE(fin, t.edges.end());
     EXPECT_EQ(fin->uses.size(), 3u) << "the fin's edge has three uses";
