@@ -4,6 +4,7 @@
 #include "algorithms/parallel.hpp"
 #include "algorithms/parallel_scan.hpp"
 #include "algorithms/picture_plane.hpp"
+#include "algorithms/uninitialised.hpp"
 #include "algorithms/union_find.hpp"
 
 #include <algorithm>
@@ -115,7 +116,8 @@ class Dedup {
   void number_points(CleanDrawing& out, const ParallelLoop& loop) {
     const std::size_t uses = 2 * out.edges.size();
     auto root_at = [&](std::size_t u) { const CleanEdge& c = out.edges[u / 2]; return u & 1 ? c.q : c.p; };
-    std::vector<std::uint32_t> first(points_.parent.size(), UINT32_MAX);
+    RawVector<std::uint32_t> first(points_.parent.size());
+    loop.for_each(first.size(), 1 << 16, [&](std::size_t r) { first[r] = UINT32_MAX; });
     loop.for_each(uses, 8192, [&](std::size_t u) {
       std::atomic_ref<std::uint32_t> f(first[root_at(u)]);
       std::uint32_t cur = f.load(std::memory_order_relaxed);
@@ -125,7 +127,7 @@ class Dedup {
     const std::vector<std::uint32_t> firsts = parallel_select(uses, [&](std::size_t u) { return first[root_at(u)] == u; }, loop);
     out.points.resize(firsts.size());
     out.point_ends.resize(firsts.size());
-    std::vector<std::uint32_t>& number = first;  // each root's entry read above, now its number
+    RawVector<std::uint32_t>& number = first;  // each root's entry read above, now its number
     loop.for_each(firsts.size(), 8192, [&](std::size_t i) {
       const std::uint32_t r = root_at(firsts[i]);
       out.points[i] = xy(r);
@@ -269,15 +271,23 @@ class Dedup {
     std::sort(std::execution::par, order.begin(), order.end(), [](const End& a, const End& b) {
       return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.e < b.e)));
     });
-    for (std::size_t i = 0; i < order.size(); ++i) {
-      for (std::size_t j = i + 1; j < order.size(); ++j) {
-        if (order[j].x - order[i].x > delta_) break;
-        if (std::fabs(order[j].y - order[i].y) > delta_) continue;
-        if (points_.find(order[i].e) == points_.find(order[j].e)) continue;
+    // The pairs within delta on all cores, listed per fixed chunk of i (so in the order of
+    // (i, j) whatever the thread count); then compared exactly in that order.
+    constexpr std::size_t kChunk = 16384;
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> close((order.size() + kChunk - 1) / kChunk);
+    loop.for_each(close.size(), 1, [&](std::size_t c) {
+      for (std::size_t i = c * kChunk, end = std::min(order.size(), i + kChunk); i < end; ++i)
+        for (std::size_t j = i + 1; j < order.size(); ++j) {
+          if (order[j].x - order[i].x > delta_) break;
+          if (std::fabs(order[j].y - order[i].y) <= delta_) close[c].emplace_back(order[i].e, order[j].e);
+        }
+    });
+    for (const auto& list : close)
+      for (auto [a, b] : list) {
+        if (points_.find(a) == points_.find(b)) continue;
         ++point_tests_;
-        if (exact(order[i].e) == exact(order[j].e)) points_.unite(order[i].e, order[j].e);
+        if (exact(a) == exact(b)) points_.unite(a, b);
       }
-    }
   }
 
   // A piece in the overlap search: its picture ends, length and unit direction (worked out
@@ -334,7 +344,7 @@ class Dedup {
     struct Rec {
       std::array<double, 2> a, b;  // the piece is live[i], its segment read only for a pair the filter passes
     };
-    std::vector<Rec> rec(live.size());
+    RawVector<Rec> rec(live.size());  // (each written below, on all cores)
     PerWorker<std::array<double, 4>> boxes(loop, {INFINITY, INFINITY, -INFINITY, -INFINITY});
     loop.run(live.size(), 8192, [&](unsigned w, std::size_t begin, std::size_t end) {
       std::array<double, 4>& bx = boxes[w];
@@ -377,28 +387,27 @@ class Dedup {
     const std::size_t n_cells = static_cast<std::size_t>(g) * g;
     // Each piece's cells on all cores (counted, then written at the piece's offset), then
     // grouped by cell in piece order: each cell lists its pieces in the order of `live`.
-    std::vector<std::uint32_t> count(live.size() + 1, 0);
-    loop.for_each(live.size(), 4096, [&](std::size_t i) {
+    const std::vector<std::uint32_t> count = parallel_offsets<std::uint32_t>(live.size(), [&](std::size_t i) {
       std::uint32_t n = 0;
       for_cells(rec[i], [&](std::size_t) { ++n; });
-      count[i + 1] = n;
-    });
-    for (std::size_t i = 0; i < live.size(); ++i) count[i + 1] += count[i];
-    std::vector<std::uint32_t> cell_of(count.back());
+      return n;
+    }, loop);
+    RawVector<std::uint32_t> cell_of(count.back());
     loop.for_each(live.size(), 4096, [&](std::size_t i) {
       std::uint32_t at = count[i];
       for_cells(rec[i], [&](std::size_t cell) { cell_of[at++] = static_cast<std::uint32_t>(cell); });
     });
     // Grouped by cell on all cores: a cell's pieces come in any order (the pairs are sorted
     // before the exact tests, so nothing depends on it).
-    std::vector<std::uint32_t> start(n_cells + 1, 0), items;
+    std::vector<std::uint32_t> start;
+    RawVector<std::uint32_t> items;
     {
       std::vector<std::atomic<std::uint32_t>> n(n_cells);
       loop.run(cell_of.size(), 1 << 16, [&](unsigned, std::size_t b, std::size_t e) {
         for (std::size_t i = b; i < e; ++i) n[cell_of[i]].fetch_add(1, std::memory_order_relaxed);
       });
-      for (std::size_t c = 0; c < n_cells; ++c) start[c + 1] = start[c] + n[c].load(std::memory_order_relaxed);
-      for (std::size_t c = 0; c < n_cells; ++c) n[c].store(start[c], std::memory_order_relaxed);
+      start = parallel_offsets<std::uint32_t>(n_cells, [&](std::size_t c) { return n[c].load(std::memory_order_relaxed); }, loop);
+      loop.for_each(n_cells, 1 << 16, [&](std::size_t c) { n[c].store(start[c], std::memory_order_relaxed); });
       items.resize(start[n_cells]);
       loop.run(live.size(), 4096, [&](unsigned, std::size_t b, std::size_t e) {
         for (std::size_t i = b; i < e; ++i)
