@@ -2,7 +2,6 @@
 #include "algorithms/drawing_2d.hpp"
 
 #include "algorithms/parallel.hpp"
-#include "algorithms/parallel_scan.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -112,12 +111,14 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
   auto drawn = [&](const Piece& p) { return !(p.behind_eye || p.clipped || (!p.visible && !(p.through ? opt.through : opt.hidden))); };
   constexpr std::size_t kRun = 4096;
   const std::size_t n_runs = (segs.size() + kRun - 1) / kRun;
-  const std::vector<std::size_t> at = parallel_offsets(n_runs, [&](std::size_t c) {
+  std::vector<std::size_t> at(n_runs + 1, 0);  // (a run per task: the scans' chunks are too coarse here)
+  loop.for_each(n_runs, 1, [&](std::size_t c) {
     std::size_t k = 0;
     for (std::size_t si = c * kRun, end = std::min(segs.size(), si + kRun); si < end; ++si)
       for (const Piece& p : segs[si].pieces) k += drawn(p);
-    return k;
-  }, loop);
+    at[c + 1] = k;
+  });
+  std::partial_sum(at.begin(), at.end(), at.begin());
   Drawing2D d;
   reserve_touched(d.lines, at.back(), loop);
   reserve_touched(d.points, 2 * at.back(), loop);

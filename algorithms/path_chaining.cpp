@@ -69,8 +69,13 @@ std::vector<Chain> chain_edges(std::size_t n, const std::vector<std::array<std::
   std::vector<std::uint32_t> start(n + 1, 0);
   for (const auto& e : edges) ++start[e[0] + 1], ++start[e[1] + 1];
   for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
-  std::vector<std::uint32_t> adj(2 * edges.size()), fill(start.begin(), start.end() - 1);
-  for (std::uint32_t i = 0; i < edges.size(); ++i) adj[fill[edges[i][0]]++] = i, adj[fill[edges[i][1]]++] = i;
+  // Each entry holds the edge and the vertex at its other end (one read per step, not two).
+  struct Adj {
+    std::uint32_t edge, other;
+  };
+  std::vector<Adj> adj(2 * edges.size());
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (std::uint32_t i = 0; i < edges.size(); ++i) adj[fill[edges[i][0]]++] = {i, edges[i][1]}, adj[fill[edges[i][1]]++] = {i, edges[i][0]};
   std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
   std::vector<char> used(edges.size(), 0);
   std::vector<Chain> chains;
@@ -82,15 +87,17 @@ std::vector<Chain> chain_edges(std::size_t n, const std::vector<std::array<std::
     circuit.clear();
     while (!stack.empty()) {
       std::uint32_t v = stack.back().first;
-      while (next[v] < start[v + 1] && used[adj[next[v]]]) ++next[v];
-      if (next[v] == start[v + 1]) {
+      std::uint32_t k = next[v];
+      const std::uint32_t end = start[v + 1];
+      while (k < end && used[adj[k].edge]) ++k;
+      next[v] = k;
+      if (k == end) {
         circuit.push_back(stack.back());
         stack.pop_back();
         continue;
       }
-      std::uint32_t e = adj[next[v]];
-      used[e] = 1;
-      stack.push_back({edges[e][0] == v ? edges[e][1] : edges[e][0], e});
+      used[adj[k].edge] = 1;
+      stack.push_back({adj[k].other, adj[k].edge});
     }
     std::reverse(circuit.begin(), circuit.end());  // v0 (no edge), then (v_i, e_i joining v_{i-1} and v_i)
     const std::size_t m = circuit.size() - 1;     // edges in the circuit

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "algorithms/parallel.hpp"
+#include "algorithms/parallel_scan.hpp"
 #include "algorithms/path_chaining.hpp"
 
 namespace hlr {
@@ -108,13 +109,29 @@ Plot plot_from_clean(const CleanDrawing& c, const PlotOptions& opt, double secon
   auto t1 = std::chrono::steady_clock::now();
   // The edges of each layer (seen as visible, through or hidden, then kind), in one pass.
   constexpr std::size_t nk = std::size(kKinds);
+  // Each edge's layer on all cores, then each used layer's edges in order (selected).
+  const ParallelLoop loop(opt.threads);
+  std::vector<std::uint8_t> layer_of(c.edges.size());
+  PerWorker<std::array<bool, 3 * nk>> used(loop, {});
+  loop.run(c.edges.size(), 16384, [&](unsigned w, std::size_t b, std::size_t e) {
+    std::array<bool, 3 * nk> u = used[w];
+    for (std::size_t i = b; i < e; ++i) {
+      const CleanEdge& ce = c.edges[i];
+      const int seen = ce.visible && !ce.through ? 0 : (!ce.visible && ce.through ? 1 : (!ce.visible ? 2 : -1));
+      std::size_t layer = 3 * nk;  // none
+      if (seen >= 0)
+        for (std::size_t k = 0; k < nk; ++k)
+          if (ce.kind == kKinds[k]) layer = seen * nk + k;
+      layer_of[i] = static_cast<std::uint8_t>(layer);
+      if (layer < 3 * nk) u[layer] = true;
+    }
+    used[w] = u;
+  });
   std::array<std::vector<std::uint32_t>, 3 * nk> layer_ids;
-  for (std::uint32_t e = 0; e < c.edges.size(); ++e) {
-    const CleanEdge& ce = c.edges[e];
-    const int seen = ce.visible && !ce.through ? 0 : (!ce.visible && ce.through ? 1 : (!ce.visible ? 2 : -1));
-    if (seen < 0) continue;
-    for (std::size_t k = 0; k < nk; ++k)
-      if (ce.kind == kKinds[k]) layer_ids[seen * nk + k].push_back(e);
+  for (std::size_t layer = 0; layer < 3 * nk; ++layer) {
+    bool any = false;
+    for (unsigned w = 0; w < used.size(); ++w) any = any || used[w][layer];
+    if (any) layer_ids[layer] = parallel_select(c.edges.size(), [&](std::size_t i) { return layer_of[i] == layer; }, loop);
   }
   for (int seen : {0, 1, 2})  // visible, through, hidden
     for (std::size_t ki = 0; ki < nk; ++ki) {
