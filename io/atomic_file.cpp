@@ -76,9 +76,9 @@ void write_file_atomically(const std::string& path, const std::string& content) 
     ::unlink(tmp.c_str());
     throw OutputError(what + ": " + step + ": " + std::strerror(err));
   };
-  // Large outputs in 4 MiB pieces on all cores (the copy into the page cache was a serial
+  // Large outputs in 1 MiB pieces on all cores (the copy into the page cache was a serial
   // 10-20 ms of a 1M-triangle drawing); each piece at its own offset.
-  constexpr std::size_t kPiece = std::size_t(4) << 20;
+  constexpr std::size_t kPiece = std::size_t(1) << 20;  // (4 MiB pieces left one core copying alone)
   const std::size_t pieces = (content.size() + kPiece - 1) / kPiece;
   std::vector<int> error(pieces, 0);
   auto write_piece = [&](std::size_t k) {
