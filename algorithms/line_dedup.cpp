@@ -295,14 +295,15 @@ class Dedup {
   struct Near {
     std::array<double, 2> a, b;
     double len, nx, ny;
-    std::uint32_t piece;
+    std::uint32_t piece, ra, rb;  // ra, rb: the root ends of its start and end (its exact points)
   };
 
-  static Near near_piece(const std::array<double, 2>& a, const std::array<double, 2>& b, std::uint32_t piece) {
+  static Near near_piece(const std::array<double, 2>& a, const std::array<double, 2>& b, std::uint32_t piece, std::uint32_t ra,
+                         std::uint32_t rb) {
     // Plain square roots (within 2 ulp; drawing coordinates are below 2^100): far inside the
     // margin of 8·delta = 8e-9 of the drawing, and faster than hypot.
     const double dx = b[0] - a[0], dy = b[1] - a[1], len = std::sqrt(dx * dx + dy * dy);
-    return {a, b, len, len > 0 ? dx / len : 0.0, len > 0 ? dy / len : 0.0, piece};
+    return {a, b, len, len > 0 ? dx / len : 0.0, len > 0 ? dy / len : 0.0, piece, ra, rb};
   }
 
   // Can two pieces lie on one line of the picture and overlap in more than a point? A double
@@ -318,6 +319,11 @@ class Dedup {
       if (off(B.a) > m || off(B.b) > m) return false;
       double s0 = A.nx * (B.a[0] - A.a[0]) + A.ny * (B.a[1] - A.a[1]), s1 = A.nx * (B.b[0] - A.a[0]) + A.ny * (B.b[1] - A.a[1]);
       if (std::max(s0, s1) <= -m || std::min(s0, s1) >= A.len + m) return false;
+      // An end of B that is exactly an end of A (the same root): B overlaps A in more than a
+      // point only if its other end lies on A's side of that point (pieces meeting end to end
+      // on one line, as the edges of boxes in a row seen along an axis, need no exact test).
+      if ((B.ra == A.ra && s1 <= -m) || (B.rb == A.ra && s0 <= -m)) return false;
+      if ((B.ra == A.rb && s1 >= A.len + m) || (B.rb == A.rb && s0 >= A.len + m)) return false;
     }
     return true;
   }
@@ -343,6 +349,7 @@ class Dedup {
     // pieces are read from here (one record each) instead of from the drawing's three arrays.
     struct Rec {
       std::array<double, 2> a, b;  // the piece is live[i], its segment read only for a pair the filter passes
+      std::uint32_t ra, rb;        // its ends' roots
     };
     RawVector<Rec> rec(live.size());  // (each written below, on all cores)
     PerWorker<std::array<double, 4>> boxes(loop, {INFINITY, INFINITY, -INFINITY, -INFINITY});
@@ -350,7 +357,8 @@ class Dedup {
       std::array<double, 4>& bx = boxes[w];
       for (std::size_t i = begin; i < end; ++i) {
         const Polyline2D& l = d_.lines[live[i]];
-        rec[i] = {d_.points[l.first], d_.points[l.first + 1]};
+        rec[i] = {d_.points[l.first], d_.points[l.first + 1], root_of(points_.parent, 2 * std::size_t{live[i]}),
+                  root_of(points_.parent, 2 * std::size_t{live[i]} + 1)};
         for (const auto& p : {rec[i].a, rec[i].b})
           bx = {std::min(bx[0], p[0]), std::min(bx[1], p[1]), std::max(bx[2], p[0]), std::max(bx[3], p[1])};
       }
@@ -424,7 +432,7 @@ class Dedup {
         cell.clear();
         for (std::uint32_t i = start[c]; i < start[c + 1]; ++i) {
           const Rec& r = rec[items[i]];
-          cell.push_back(near_piece(r.a, r.b, live[items[i]]));
+          cell.push_back(near_piece(r.a, r.b, live[items[i]], r.ra, r.rb));
         }
         auto segment = [&](std::uint32_t k) { return d_.sources[d_.lines[k].first_edge].segment; };
         for (std::size_t i = 0; i < cell.size(); ++i)

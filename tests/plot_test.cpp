@@ -276,6 +276,36 @@ TEST(PlotCleanUp, PerspectiveAndRandomBoxes) {
   }
 }
 
+// Pieces that meet end to end on one line of the picture (a row of boxes seen along an axis:
+// every edge of the row touches the next at an exact point) are told apart by the filter, not
+// by exact tests: the shared end is the same exact point and the other ends lie on opposite
+// sides of it. Nothing is drawn twice, nothing is lost, and the exact line tests stay few.
+TEST(PlotCleanUp, PiecesMeetingEndToEndNeedNoExactTest) {
+  Scene scene;
+  for (int b = 0; b < 40; ++b) {  // a row of touching boxes along x, alternately taller
+    Polyhedron box = make_box(Point3(b, 0, 0), Point3(b + 1, 1 + b % 2, 1));
+    scene.bodies.push_back(SceneBody{"box" + std::to_string(b), "row", std::move(box), identity_transform(), {}, {}, {}});
+  }
+  for (const char* v : {"front", "top"}) {
+    RenderOptions ro;
+    auto sv = standard_view(v, false);
+    ro.view.direction = sv->direction;
+    ro.view.up = sv->up;
+    RenderResult r = render({scene}, ro);
+    PlotOptions po;
+    po.hidden = true;
+    Plot p = make_plot(r.drawing, r.camera, po);
+    EXPECT_EQ(overlap_length(p), 0) << v;
+    PlotOptions raw = po;
+    raw.dedup = raw.chain = false;
+    Plot q = make_plot(r.drawing, r.camera, raw);
+    EXPECT_NEAR(q.stats.pen_down_length, p.stats.pen_down_length + p.stats.duplicate_length, 1e-9 * q.stats.pen_down_length) << v;
+    // Without the end-to-end rule every pair of neighbouring collinear pieces (hundreds here)
+    // went to an exact test; now only pieces that may overlap in more than a point do.
+    EXPECT_LT(p.stats.exact_line_tests, p.stats.pieces / 2) << v << ": " << p.stats.exact_line_tests << " of " << p.stats.pieces;
+  }
+}
+
 // Visible wins: where a visible and a hidden piece overlap only the visible one is drawn, and
 // every visible piece of the raw drawing is covered by visible strokes.
 TEST(PlotCleanUp, VisibleLengthIsKept) {
