@@ -150,14 +150,24 @@ int Engine<P>::triangulate_body(int b) {
     face_normal_[b][f] = std::move(n);
   });
   const ParallelLoop loop(opt_.threads);
-  if (std::all_of(faces.begin(), faces.end(), [](const Face& f) { return f.size() == 3; })) {
+  PerWorker<char> polygon(loop, 0);  // some face is not a triangle
+  loop.run(faces.size(), 16384, [&](unsigned w, std::size_t b0, std::size_t e) {
+    bool any = false;
+    for (std::size_t f = b0; f < e; ++f) any = any || faces[f].size() != 3;
+    if (any) polygon[w] = 1;
+  });
+  bool triangles = true;
+  for (unsigned w = 0; w < polygon.size(); ++w) triangles = triangles && !polygon[w];
+  if (triangles) {
     // Only triangles (most large meshes): listed on all cores, each chunk of faces after the
     // ones before it (the order of the loop below).
     constexpr std::size_t kChunk = 16384;
     const std::size_t chunks = (faces.size() + kChunk - 1) / kChunk;
     std::vector<std::size_t> at(chunks + 1, 0);
     loop.for_each(chunks, 1, [&](std::size_t c) {
-      for (std::size_t f = c * kChunk, e = std::min(faces.size(), f + kChunk); f < e; ++f) at[c + 1] += !degenerate_[b][f];
+      std::size_t k = 0;  // (a local: neighbouring chunks' counts share a cache line)
+      for (std::size_t f = c * kChunk, e = std::min(faces.size(), f + kChunk); f < e; ++f) k += !degenerate_[b][f];
+      at[c + 1] = k;
     });
     at[0] = tris_.size();
     for (std::size_t c = 0; c < chunks; ++c) at[c + 1] += at[c];

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "algorithms/face_engine.hpp"
+#include "algorithms/uninitialised.hpp"
 #include "algorithms/intersection_broad_phase.hpp"
 #include "algorithms/intersection_lines.hpp"
 #include "algorithms/parallel.hpp"
@@ -78,21 +79,22 @@ void Engine<P>::find_intersections(LineDrawing& res) {
   BoxPairs pairs;
   bool done = false;
   {
-    std::vector<Box3f> bf;
-    reserve_touched(bf, n, loop);  // pages first touched on all cores
-    bf.resize(n);
-    std::vector<char> fits(n, 1);
-    loop.for_each(n, 8192, [&](std::size_t i) { fits[i] = outward_floats(box(i), bf[i]); });
-    if (std::find(fits.begin(), fits.end(), 0) == fits.end()) {
-      std::vector<char>().swap(fits);
+    RawVector<Box3f> bf(n);  // each written below, on all cores (its pages first touched there)
+    PerWorker<char> beyond(loop, 0);
+    loop.run(n, 8192, [&](unsigned w, std::size_t b, std::size_t e) {
+      bool out = false;
+      for (std::size_t i = b; i < e; ++i) out = !outward_floats(box(i), bf[i]) || out;
+      if (out) beyond[w] = 1;
+    });
+    bool fits = true;
+    for (unsigned w = 0; w < beyond.size(); ++w) fits = fits && !beyond[w];
+    if (fits) {
       pairs = overlapping_box_pairs(bf, loop, judge);
       done = true;
     }
   }
   if (!done) {  // beyond the floats' range: doubles
-    std::vector<Box3> bb;
-    reserve_touched(bb, n, loop);
-    bb.resize(n);
+    RawVector<Box3> bb(n);
     loop.for_each(n, 8192, [&](std::size_t i) { bb[i] = box(i); });
     pairs = overlapping_box_pairs(bb, loop, judge);
   }

@@ -27,7 +27,9 @@ void radix_sort(std::vector<Entry>& v, const ParallelLoop& loop) {
   const std::size_t chunks = std::clamp<std::size_t>(n / 65536, 1, 64), per = (n + chunks - 1) / chunks;
   std::vector<std::uint64_t> any(chunks, 0);
   loop.for_each(chunks, 1, [&](std::size_t c) {
-    for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) any[c] |= v[i].cell;
+    std::uint64_t a = 0;  // (a local: neighbouring chunks' slots share a cache line)
+    for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) a |= v[i].cell;
+    any[c] = a;
   });
   std::uint64_t all = 0;
   for (std::uint64_t a : any) all |= a;
@@ -65,7 +67,7 @@ struct Cells {
 
 
 template <class Box>
-BoxPairs box_pairs(const std::vector<Box>& bb, const ParallelLoop& loop,
+BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop,
                    const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
   BoxPairs out;
   const std::size_t n = bb.size();
@@ -223,12 +225,12 @@ BoxPairs box_pairs(const std::vector<Box>& bb, const ParallelLoop& loop,
 
 }  // namespace
 
-BoxPairs overlapping_box_pairs(const std::vector<Box3>& boxes, const ParallelLoop& loop,
+BoxPairs overlapping_box_pairs(std::span<const Box3> boxes, const ParallelLoop& loop,
                                const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
   return box_pairs(boxes, loop, judge);
 }
 
-BoxPairs overlapping_box_pairs(const std::vector<Box3f>& boxes, const ParallelLoop& loop,
+BoxPairs overlapping_box_pairs(std::span<const Box3f> boxes, const ParallelLoop& loop,
                                const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
   return box_pairs(boxes, loop, judge);
 }

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <utility>
+#include <span>
 #include <vector>
 
 #include "algorithms/parallel.hpp"
@@ -29,9 +30,9 @@ struct BoxPairs {
 };
 
 /// Every pair of overlapping boxes is passed to `judge` (from several threads at once) once.
-BoxPairs overlapping_box_pairs(const std::vector<Box3>& boxes, const ParallelLoop& loop,
+BoxPairs overlapping_box_pairs(std::span<const Box3> boxes, const ParallelLoop& loop,
                                const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge);
-BoxPairs overlapping_box_pairs(const std::vector<Box3f>& boxes, const ParallelLoop& loop,
+BoxPairs overlapping_box_pairs(std::span<const Box3f> boxes, const ParallelLoop& loop,
                                const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge);
 
 /// `b` rounded outward to floats; false when a bound lies beyond the floats' range (or is not
