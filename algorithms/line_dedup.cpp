@@ -445,7 +445,7 @@ class Dedup {
     });
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     for (unsigned w = 0; w < found.size(); ++w) pairs.insert(pairs.end(), found[w].begin(), found[w].end());
-    std::sort(pairs.begin(), pairs.end());
+    std::sort(std::execution::par, pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     for (auto [a, b] : pairs)
       if (groups.find(a) != groups.find(b) && exact_overlap(a, b)) groups.unite(a, b);
