@@ -43,4 +43,21 @@ run "10,000 box bodies, Roberts, eye inside the cloud" "$scene" --method roberts
 torus=$(gen torus200k.off torus 316 316)
 run "torus 200k triangles, --edges all, outside view" "$torus" --view 1,1.3,1.7 --edges all
 run "torus 200k triangles, --edges all, eye in the hole" "$torus" --eye 0,0,0 --target 1,0,0 --edges all
+# Touching unit cubes on a grid (every other one: (x + 2y + 3z) mod 2), seen along an axis: the
+# 2D clean-up meets thousands of collinear pieces that touch end to end.
+touching="$OUT/meshes/touching-cubes.off"
+[ -s "$touching" ] || awk 'BEGIN {
+  nv = 0; nf = 0
+  for (x = 0; x < 18; x++) for (y = 0; y < 18; y++) for (z = 0; z < 18; z++) if ((x + 2 * y + 3 * z) % 2 == 0) {
+    for (k = 0; k < 8; k++) v[nv + k] = (x + (k == 1 || k == 2 || k == 5 || k == 6)) " " (y + (k == 2 || k == 3 || k == 6 || k == 7)) " " (z + (k >= 4))
+    f[nf++] = nv " " nv + 3 " " nv + 2 " " nv + 1; f[nf++] = nv + 4 " " nv + 5 " " nv + 6 " " nv + 7
+    f[nf++] = nv " " nv + 1 " " nv + 5 " " nv + 4; f[nf++] = nv + 2 " " nv + 3 " " nv + 7 " " nv + 6
+    f[nf++] = nv + 1 " " nv + 2 " " nv + 6 " " nv + 5; f[nf++] = nv " " nv + 4 " " nv + 7 " " nv + 3
+    nv += 8
+  }
+  print "OFF"; print nv, nf, 0
+  for (i = 0; i < nv; i++) print v[i]
+  for (i = 0; i < nf; i++) print 4, f[i]
+}' > "$touching"
+run "2,916 touching cubes, front view, hidden dashed (2D clean-up)" "$touching" --view front --hidden dashed
 echo "wrote $report"
