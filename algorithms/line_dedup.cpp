@@ -423,6 +423,24 @@ class Dedup {
             items[n[cell_of[at]].fetch_add(1, std::memory_order_relaxed)] = static_cast<std::uint32_t>(i);
       });
     }
+    // The cell where a pair is tested: the cell of P, the start of the shorter piece's span
+    // along the longer one's line (clamped to the longer piece; its start when both are
+    // shorter than 4 delta). Two pieces that overlap in more than a point both lie within
+    // rounding of P (far inside the 8-delta margin of their cells), so both are entered in
+    // P's cell; a pair found in other cells they share is left to it. Longer piece: by
+    // length, then by index (the same choice in every cell).
+    auto meet_cell = [&](const Near& first, const Near& second) -> std::size_t {
+      const bool swap = second.len > first.len || (second.len == first.len && second.piece < first.piece);
+      const Near& L = swap ? second : first;
+      const Near& S = swap ? first : second;
+      std::array<double, 2> p = L.a;
+      if (L.len > 4 * delta_) {
+        const double s0 = L.nx * (S.a[0] - L.a[0]) + L.ny * (S.a[1] - L.a[1]), s1 = L.nx * (S.b[0] - L.a[0]) + L.ny * (S.b[1] - L.a[1]);
+        const double t = std::clamp(std::min(s0, s1), 0.0, L.len);
+        p = {L.a[0] + L.nx * t, L.a[1] + L.ny * t};
+      }
+      return static_cast<std::size_t>(cy(p[1])) * g + static_cast<std::size_t>(cx(p[0]));
+    };
     // Pairs that pass the double filter, found on all cores; the exact tests in a fixed order.
     PerWorker<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop);
     loop.run(n_cells, 256, [&](unsigned worker, std::size_t begin, std::size_t end) {
@@ -439,6 +457,7 @@ class Dedup {
           for (std::size_t j = i + 1; j < cell.size(); ++j) {
             const Near &A = cell[i], &B = cell[j];
             if (A.piece == B.piece || !maybe_overlap(A, B) || segment(A.piece) == segment(B.piece)) continue;
+            if (meet_cell(A, B) != c) continue;  // the pair's own cell tests it (not every cell the two share)
             found[worker].emplace_back(std::min(A.piece, B.piece), std::max(A.piece, B.piece));
           }
       }
