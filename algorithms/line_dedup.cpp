@@ -276,11 +276,13 @@ class Dedup {
     constexpr std::size_t kChunk = 16384;
     std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> close((order.size() + kChunk - 1) / kChunk);
     loop.for_each(close.size(), 1, [&](std::size_t c) {
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> list;  // (a local: neighbouring chunks' lists share a cache line)
       for (std::size_t i = c * kChunk, end = std::min(order.size(), i + kChunk); i < end; ++i)
         for (std::size_t j = i + 1; j < order.size(); ++j) {
           if (order[j].x - order[i].x > delta_) break;
-          if (std::fabs(order[j].y - order[i].y) <= delta_) close[c].emplace_back(order[i].e, order[j].e);
+          if (std::fabs(order[j].y - order[i].y) <= delta_) list.emplace_back(order[i].e, order[j].e);  // a filter: exact test below
         }
+      close[c] = std::move(list);
     });
     for (const auto& list : close)
       for (auto [a, b] : list) {
