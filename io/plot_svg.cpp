@@ -4,12 +4,87 @@
 #include "io/plot_output.hpp"
 #include "io/svg_writer.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "algorithms/lighting.hpp"
 #include "algorithms/parallel.hpp"
 
 namespace hlr {
+namespace {
+
+// Points per piece of path text: a piece is formatted by one core, so that one long stroke
+// (a sphere's edges chain into a few strokes of hundreds of thousands of points) is shared by
+// all of them.
+constexpr std::size_t kPiecePoints = 4096;
+
+// A piece: points [begin, end) of one stroke.
+struct PathPiece {
+  std::size_t stroke, begin, end;
+};
+
+template <class Size>
+std::vector<PathPiece> path_pieces(std::size_t strokes, const Size& size) {
+  std::vector<PathPiece> pieces;
+  for (std::size_t s = 0; s < strokes; ++s) {
+    const std::size_t n = size(s);
+    for (std::size_t b = 0; b == 0 || b < n; b += kPiecePoints) pieces.push_back({s, b, std::min(n, b + kPiecePoints)});
+  }
+  return pieces;
+}
+
+// One <path> per stroke, "  <path d=\"Mx y Lx y x y ...[Z]\"/>", appended to `out` in order:
+// each piece's text made on all cores, then copied into place on all cores. Stroke s has
+// size(s) points, point(s, i) on the page, closed(s).
+template <class Size, class PointAt, class Closed>
+void append_paths(std::string& out, std::size_t strokes, const Size& size, const PointAt& point, const Closed& closed) {
+  const std::vector<PathPiece> pieces = path_pieces(strokes, size);
+  std::vector<std::string> text(pieces.size());
+  const ParallelLoop loop;
+  loop.for_each(pieces.size(), 1, [&](std::size_t k) {
+    const PathPiece& pc = pieces[k];
+    std::string& d = text[k];
+    d.reserve(16 + 20 * (pc.end - pc.begin));
+    if (pc.begin == 0) d += "  <path d=\"M";
+    for (std::size_t i = pc.begin; i < pc.end; ++i) {
+      if (i > 1) d += ' ';
+      const Point2 p = point(pc.stroke, i);
+      d += svg_number(p[0]);
+      d += ' ';
+      d += svg_number(p[1]);
+      if (i == 0) d += 'L';
+    }
+    if (pc.end == size(pc.stroke)) {
+      if (closed(pc.stroke)) d += 'Z';
+      d += "\"/>\n";
+    }
+  });
+  std::vector<std::size_t> at(pieces.size() + 1, out.size());
+  for (std::size_t k = 0; k < pieces.size(); ++k) at[k + 1] = at[k] + text[k].size();
+  out.resize(at.back());
+  loop.for_each(pieces.size(), 1, [&](std::size_t k) { std::copy(text[k].begin(), text[k].end(), out.begin() + at[k]); });
+}
+
+// A layer's strokes as paths: straight from the plot's strokes, or through page_strokes when
+// hidden lines are cut into dashes.
+void append_layer(std::string& out, const SheetView& v, const PlotLayer& l, const PlotStyle& style) {
+  const bool cut = !l.visible && !l.through && style.hidden_dashed && style.dashes == DashMode::Geometry;
+  if (!cut) {
+    const std::vector<Stroke>& st = l.strokes;
+    append_paths(
+        out, st.size(), [&](std::size_t s) { return st[s].points.size(); },
+        [&](std::size_t s, std::size_t i) { return v.page(st[s].points[i]); }, [&](std::size_t s) { return st[s].closed; });
+    return;
+  }
+  std::vector<char> closed;
+  const auto strokes = page_strokes(v, l, style, &closed);
+  append_paths(
+      out, strokes.size(), [&](std::size_t s) { return strokes[s].size(); },
+      [&](std::size_t s, std::size_t i) { return strokes[s][i]; }, [&](std::size_t s) { return closed[s] != 0; });
+}
+
+}  // namespace
+
 std::string sheet_to_svg(const Sheet& sheet, const PlotStyle& style) {
   auto f = svg_number;
   std::string out;
@@ -31,7 +106,10 @@ std::string sheet_to_svg(const Sheet& sheet, const PlotStyle& style) {
         for (const auto& ring : fl.rings) {
           for (std::size_t i = 0; i < ring.size(); ++i) {
             Point2 p = v.page(ring[i]);
-            d += (i == 0 ? "M" : " ") + f(p[0]) + " " + f(p[1]);
+            d += i == 0 ? 'M' : ' ';
+            d += f(p[0]);
+            d += ' ';
+            d += f(p[1]);
           }
           d += "Z";
         }
@@ -59,26 +137,7 @@ std::string sheet_to_svg(const Sheet& sheet, const PlotStyle& style) {
     for (const SheetView& v : sheet.views)
       for (const PlotLayer& l : v.plot->layers) {
         if (l.name() != names[n]) continue;
-        std::vector<char> closed;
-        auto strokes = page_strokes(v, l, style, &closed);
-        // Each stroke's path text on every core, appended in order.
-        std::vector<std::string> paths(strokes.size());
-        ParallelLoop().for_each(strokes.size(), 8, [&](std::size_t s) {
-          const auto& pts = strokes[s];
-          std::string& d = paths[s];
-          d.reserve(16 + 20 * pts.size());
-          d += "  <path d=\"M";
-          for (std::size_t i = 0; i < pts.size(); ++i) {
-            if (i > 1) d += ' ';
-            d += f(pts[i][0]);
-            d += ' ';
-            d += f(pts[i][1]);
-            if (i == 0) d += 'L';
-          }
-          if (closed[s]) d += 'Z';
-          d += "\"/>\n";
-        });
-        for (const std::string& d : paths) out += d;
+        append_layer(out, v, l, style);
       }
     out += "</g>\n";
   }

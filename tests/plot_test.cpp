@@ -19,6 +19,8 @@
 #include "io/plot_output.hpp"
 #include "io/render.hpp"
 #include "io/standard_views.hpp"
+#include "io/svg_writer.hpp"
+#include "algorithms/parallel.hpp"
 
 namespace hlr {
 namespace {
@@ -397,6 +399,60 @@ TEST(PlotOutput, SvgHasInkscapeLayersAndOnePathPerStroke) {
   EXPECT_NE(svg.find("inkscape:groupmode=\"layer\" inkscape:label=\"1 visible-silhouette\""), std::string::npos);
   EXPECT_NE(svg.find("id=\"hidden-crease\""), std::string::npos);
   EXPECT_EQ(svg.find("<line"), std::string::npos);
+}
+
+
+// Long strokes are formatted in pieces on all cores (plot_svg.cpp): every path, whatever its
+// length (pieces end at 4096 points) and whether closed, must read exactly as formatted point
+// by point, with 1, 2 and 8 threads; hidden strokes cut into dashes go through the same code.
+TEST(PlotOutput, SvgPathsOfLongStrokesReadPointByPoint) {
+  Plot p;
+  PlotLayer vis, hid;
+  hid.visible = false;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-50, 50);
+  for (std::size_t n : {1u, 2u, 3u, 4095u, 4096u, 4097u, 8192u, 8193u, 20000u}) {
+    for (bool closed : {false, true}) {
+      Stroke s;
+      s.closed = closed && n > 2;
+      for (std::size_t i = 0; i < n; ++i) s.points.push_back({u(rng), u(rng)});
+      vis.strokes.push_back(s);
+      if (n > 4097) continue;
+      for (Point2& q : s.points) q = {q[0] / 20, q[1] / 20};  // short dashes' worth
+      hid.strokes.push_back(s);
+    }
+  }
+  p.layers = {vis, hid};
+  p.bounds = {-50, -50, 50, 50};
+  const Sheet sheet = layout_single(p, PageOptions{});
+  const SheetView& v = sheet.views.at(0);
+  std::string expected;  // the visible layer's paths, point by point
+  for (const Stroke& s : vis.strokes) {
+    expected += "  <path d=\"M";
+    for (std::size_t i = 0; i < s.points.size(); ++i) {
+      const Point2 q = v.page(s.points[i]);
+      expected += (i > 1 ? " " : "") + svg_number(q[0]) + " " + svg_number(q[1]) + (i == 0 ? "L" : "");
+    }
+    expected += std::string(s.closed ? "Z" : "") + "\"/>\n";
+  }
+  PlotStyle style;
+  style.hidden_dashed = true;
+  style.dashes = DashMode::Geometry;
+  std::string first;
+  for (unsigned threads : {1u, 2u, 8u}) {
+    ThreadLimit limit(threads);
+    const std::string svg = sheet_to_svg(sheet, style);
+    const std::size_t at = svg.find("id=\"visible-edge\"");
+    ASSERT_NE(at, std::string::npos);
+    const std::size_t from = svg.find('\n', at) + 1;
+    EXPECT_EQ(svg.substr(from, expected.size()), expected) << threads << " threads";
+    EXPECT_EQ(svg.compare(from + expected.size(), 5, "</g>\n"), 0);
+    std::size_t dashes = 0;
+    for (std::size_t a = svg.find("id=\"hidden-edge\""); (a = svg.find("<path ", a)) != std::string::npos; ++a) ++dashes;
+    EXPECT_GT(dashes, 1000u);
+    if (first.empty()) first = svg;
+    EXPECT_EQ(svg, first) << threads << " threads";
+  }
 }
 
 }  // namespace
