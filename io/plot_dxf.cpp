@@ -1,9 +1,12 @@
 // The sheet as DXF through dxflib (see plot_output.hpp): AutoCAD 2000 (AC1015), one layer per
 // visibility and line kind with its lineweight, hidden layers with the DASHED linetype (or
-// their dashes cut as geometry), each stroke one POLYLINE, millimetres with y up.
+// their dashes cut as geometry), each stroke one LWPOLYLINE, millimetres with y up. dxflib
+// writes the file's frame; the entities are made on all cores in its format (stroke_text.hpp).
 #include <dxflib/dl_dxf.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +16,7 @@
 #include <stdexcept>
 
 #include "io/plot_output.hpp"
+#include "io/stroke_text.hpp"
 
 namespace hlr {
 namespace {
@@ -67,6 +71,62 @@ void write_tables(DL_Dxf& dxf, DL_WriterA& dw, const std::vector<std::string>& n
   dw.sectionEnd();
 }
 
+constexpr const char* kEntitiesMark = "hlr: the entities go here";
+
+// A number as dxflib writes it: fixed, 16 decimals, trailing zeros cut to one after the point.
+void append_real(std::string& d, double v) {
+  char buf[512];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 16);
+  char* end = r.ptr;
+  const char* dot = std::find(buf, end, '.');
+  if (dot != end)
+    while (end > dot + 2 && end[-1] == '0') --end;
+  d.append(buf, end);
+}
+
+// A group: its code right-aligned in three columns, then its value, each on its own line.
+void append_code(std::string& d, int code) {
+  d += code < 10 ? "  " : code < 100 ? " " : "";
+  d += std::to_string(code);
+  d += '\n';
+}
+
+// dxflib's writer, which counts the handles it writes, told of those written here.
+struct Writer : DL_WriterA {
+  using DL_WriterA::DL_WriterA;
+  void skip_handles(unsigned long n) const { m_handle += n; }
+};
+
+// Each stroke as one LWPOLYLINE of layer `layer` (colour, weight and linetype by layer), y up
+// from the sheet's bottom edge; handles from `handle` on, which moves past them.
+void append_entities(std::string& out, const PageStrokes& st, const std::string& layer, unsigned long& handle, double height) {
+  const unsigned long first = handle;
+  append_stroke_text(out, st.size(), [&](std::size_t s) { return st.size(s); },
+                     [&](std::string& d, std::size_t s, std::size_t begin, std::size_t end) {
+                       d.reserve(200 + 48 * (end - begin));
+                       if (begin == 0) {
+                         char hex[24];
+                         std::snprintf(hex, sizeof hex, "%lX", first + s);
+                         d += "  0\nLWPOLYLINE\n  5\n";
+                         d += hex;
+                         d += "\n100\nAcDbEntity\n  8\n" + layer + "\n 62\n256\n370\n-1\n 48\n1.0\n  6\nBYLAYER\n100\nAcDbPolyline\n";
+                         append_code(d, 90);
+                         d += std::to_string(st.size(s)) + "\n";
+                         append_code(d, 70);
+                         d += st.closed(s) ? "1\n" : "0\n";
+                       }
+                       for (std::size_t i = begin; i < end; ++i) {
+                         const Point2 p = st.point(s, i);
+                         d += " 10\n";
+                         append_real(d, p[0]);
+                         d += "\n 20\n";
+                         append_real(d, height - p[1]);
+                         d += '\n';
+                       }
+                     });
+  handle = first + st.size();
+}
+
 }  // namespace
 
 std::string sheet_to_dxf(const Sheet& sheet, const PlotStyle& style) {
@@ -91,37 +151,49 @@ std::string sheet_to_dxf(const Sheet& sheet, const PlotStyle& style) {
     std::string path;
     ~Remove() { std::remove(path.c_str()); }
   } remove_tmp{tmpl};
+  // Each layer's strokes on the page, in the order the entities are written.
+  struct LayerStrokes {
+    std::string name;
+    PageStrokes strokes;
+  };
+  std::vector<LayerStrokes> drawn;
+  std::size_t entities = 0;
+  for (const std::string& n : names)
+    for (const SheetView& v : sheet.views)
+      for (const PlotLayer& l : v.plot->layers)
+        if (l.name() == n) drawn.push_back({n, PageStrokes(v, l, style)}), entities += drawn.back().strokes.size();
+  // dxflib writes the header, tables, blocks and objects, with a comment where the entities go;
+  // the entities (each stroke a LWPOLYLINE) are made here on all cores in dxflib's format
+  // (dxflib flushes its file after every number: 4 s of a 1M-triangle sheet).
+  unsigned long handle = 0;
   {
-    DL_Dxf dxf;
-    std::unique_ptr<DL_WriterA> dw(dxf.out(tmpl.c_str(), DL_Codes::AC1015));
-    if (!dw) throw std::runtime_error("cannot write the DXF");
-    dxf.writeHeader(*dw);
-    dw->sectionEnd();
-    write_tables(dxf, *dw, names, layers, style);
-    dw->sectionEntities();
-    for (const std::string& n : names)
-      for (const SheetView& v : sheet.views)
-        for (const PlotLayer& l : v.plot->layers) {
-          if (l.name() != n) continue;
-          std::vector<char> closed;
-          DL_Attributes attr(n, 256, -1, -1, "BYLAYER");  // colour, weight and linetype by layer
-          auto strokes = page_strokes(v, l, style, &closed);
-          for (std::size_t s = 0; s < strokes.size(); ++s) {
-            dxf.writePolyline(*dw, DL_PolylineData(static_cast<int>(strokes[s].size()), 0, 0, closed[s] ? 1 : 0), attr);
-            for (const Point2& p : strokes[s]) dxf.writeVertex(*dw, DL_VertexData(p[0], sheet.height_mm - p[1], 0.0));
-            dxf.writePolylineEnd(*dw);
-          }
-        }
-    dw->sectionEnd();
-    dxf.writeObjects(*dw);
-    dxf.writeObjectsEnd(*dw);
-    dw->dxfEOF();
-    dw->close();
+    DL_Dxf dxf;  // writes AutoCAD 2000 unless told otherwise (DL_Dxf::out), as the writer does
+    Writer dw(tmpl.c_str(), DL_Codes::AC1015);
+    if (dw.openFailed()) throw std::runtime_error("cannot write the DXF");
+    dxf.writeHeader(dw);
+    dw.sectionEnd();
+    write_tables(dxf, dw, names, layers, style);
+    dw.sectionEntities();
+    dw.dxfString(999, kEntitiesMark);
+    handle = dw.getNextHandle();  // the entities' handles follow the tables', the objects' them
+    dw.skip_handles(entities);
+    dw.sectionEnd();
+    dxf.writeObjects(dw);
+    dxf.writeObjectsEnd(dw);
+    dw.dxfEOF();
+    dw.close();
   }
   std::ifstream in(tmpl, std::ios::binary);
   std::stringstream ss;
   ss << in.rdbuf();
-  return ss.str();
+  const std::string frame = ss.str();
+  const std::string mark = std::string("999\n") + kEntitiesMark + "\n";
+  const std::size_t at = frame.find(mark);
+  if (at == std::string::npos || frame.find(mark, at + 1) != std::string::npos) throw std::runtime_error("the DXF writer lost its entities' place");
+  std::string out = frame.substr(0, at);
+  for (const LayerStrokes& d : drawn) append_entities(out, d.strokes, d.name, handle, sheet.height_mm);
+  out.append(frame, at + mark.size());
+  return out;
 }
 
 }  // namespace hlr

@@ -2,6 +2,7 @@
 // (AxiDraw plots layers by their number), one <path> per stroke in pen order, line weights per
 // layer; hidden lines dashed by the pattern (continuous along each stroke) or cut into dashes.
 #include "io/plot_output.hpp"
+#include "io/stroke_text.hpp"
 #include "io/svg_writer.hpp"
 
 #include <algorithm>
@@ -13,74 +14,27 @@
 namespace hlr {
 namespace {
 
-// Points per piece of path text: a piece is formatted by one core, so that one long stroke
-// (a sphere's edges chain into a few strokes of hundreds of thousands of points) is shared by
-// all of them.
-constexpr std::size_t kPiecePoints = 4096;
-
-// A piece: points [begin, end) of one stroke.
-struct PathPiece {
-  std::size_t stroke, begin, end;
-};
-
-template <class Size>
-std::vector<PathPiece> path_pieces(std::size_t strokes, const Size& size) {
-  std::vector<PathPiece> pieces;
-  for (std::size_t s = 0; s < strokes; ++s) {
-    const std::size_t n = size(s);
-    for (std::size_t b = 0; b == 0 || b < n; b += kPiecePoints) pieces.push_back({s, b, std::min(n, b + kPiecePoints)});
-  }
-  return pieces;
-}
-
-// One <path> per stroke, "  <path d=\"Mx y Lx y x y ...[Z]\"/>", appended to `out` in order:
-// each piece's text made on all cores, then copied into place on all cores. Stroke s has
-// size(s) points, point(s, i) on the page, closed(s).
-template <class Size, class PointAt, class Closed>
-void append_paths(std::string& out, std::size_t strokes, const Size& size, const PointAt& point, const Closed& closed) {
-  const std::vector<PathPiece> pieces = path_pieces(strokes, size);
-  std::vector<std::string> text(pieces.size());
-  const ParallelLoop loop;
-  loop.for_each(pieces.size(), 1, [&](std::size_t k) {
-    const PathPiece& pc = pieces[k];
-    std::string& d = text[k];
-    d.reserve(16 + 20 * (pc.end - pc.begin));
-    if (pc.begin == 0) d += "  <path d=\"M";
-    for (std::size_t i = pc.begin; i < pc.end; ++i) {
-      if (i > 1) d += ' ';
-      const Point2 p = point(pc.stroke, i);
-      d += svg_number(p[0]);
-      d += ' ';
-      d += svg_number(p[1]);
-      if (i == 0) d += 'L';
-    }
-    if (pc.end == size(pc.stroke)) {
-      if (closed(pc.stroke)) d += 'Z';
-      d += "\"/>\n";
-    }
-  });
-  std::vector<std::size_t> at(pieces.size() + 1, out.size());
-  for (std::size_t k = 0; k < pieces.size(); ++k) at[k + 1] = at[k] + text[k].size();
-  out.resize(at.back());
-  loop.for_each(pieces.size(), 1, [&](std::size_t k) { std::copy(text[k].begin(), text[k].end(), out.begin() + at[k]); });
-}
-
-// A layer's strokes as paths: straight from the plot's strokes, or through page_strokes when
-// hidden lines are cut into dashes.
+// One <path> per stroke, "  <path d=\"Mx y Lx y x y ...[Z]\"/>", appended to `out` in order,
+// made on all cores.
 void append_layer(std::string& out, const SheetView& v, const PlotLayer& l, const PlotStyle& style) {
-  const bool cut = !l.visible && !l.through && style.hidden_dashed && style.dashes == DashMode::Geometry;
-  if (!cut) {
-    const std::vector<Stroke>& st = l.strokes;
-    append_paths(
-        out, st.size(), [&](std::size_t s) { return st[s].points.size(); },
-        [&](std::size_t s, std::size_t i) { return v.page(st[s].points[i]); }, [&](std::size_t s) { return st[s].closed; });
-    return;
-  }
-  std::vector<char> closed;
-  const auto strokes = page_strokes(v, l, style, &closed);
-  append_paths(
-      out, strokes.size(), [&](std::size_t s) { return strokes[s].size(); },
-      [&](std::size_t s, std::size_t i) { return strokes[s][i]; }, [&](std::size_t s) { return closed[s] != 0; });
+  const PageStrokes st(v, l, style);
+  append_stroke_text(out, st.size(), [&](std::size_t s) { return st.size(s); },
+                     [&](std::string& d, std::size_t s, std::size_t begin, std::size_t end) {
+                       d.reserve(16 + 20 * (end - begin));
+                       if (begin == 0) d += "  <path d=\"M";
+                       for (std::size_t i = begin; i < end; ++i) {
+                         if (i > 1) d += ' ';
+                         const Point2 p = st.point(s, i);
+                         d += svg_number(p[0]);
+                         d += ' ';
+                         d += svg_number(p[1]);
+                         if (i == 0) d += 'L';
+                       }
+                       if (end == st.size(s)) {
+                         if (st.closed(s)) d += 'Z';
+                         d += "\"/>\n";
+                       }
+                     });
 }
 
 }  // namespace

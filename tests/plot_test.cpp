@@ -6,11 +6,13 @@
 #include <dxflib/dl_dxf.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <random>
 #include <set>
+#include <sstream>
 
 #include "algorithms/dashes.hpp"
 #include "algorithms/path_chaining.hpp"
@@ -402,16 +404,16 @@ TEST(PlotOutput, SvgHasInkscapeLayersAndOnePathPerStroke) {
 }
 
 
-// Long strokes are formatted in pieces on all cores (plot_svg.cpp): every path, whatever its
-// length (pieces end at 4096 points) and whether closed, must read exactly as formatted point
-// by point, with 1, 2 and 8 threads; hidden strokes cut into dashes go through the same code.
-TEST(PlotOutput, SvgPathsOfLongStrokesReadPointByPoint) {
+// A plot of random strokes of `sizes` points, open and closed (pieces of the writers' text
+// end at 4096 points), in a visible layer, and the shorter ones scaled down in a hidden one
+// (for dashes).
+Plot long_stroke_plot(unsigned seed, std::initializer_list<std::size_t> sizes) {
   Plot p;
   PlotLayer vis, hid;
   hid.visible = false;
-  std::mt19937 rng(7);
+  std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-50, 50);
-  for (std::size_t n : {1u, 2u, 3u, 4095u, 4096u, 4097u, 8192u, 8193u, 20000u}) {
+  for (std::size_t n : sizes) {
     for (bool closed : {false, true}) {
       Stroke s;
       s.closed = closed && n > 2;
@@ -424,6 +426,15 @@ TEST(PlotOutput, SvgPathsOfLongStrokesReadPointByPoint) {
   }
   p.layers = {vis, hid};
   p.bounds = {-50, -50, 50, 50};
+  return p;
+}
+
+// Long strokes are formatted in pieces on all cores (plot_svg.cpp): every path, whatever its
+// length (pieces end at 4096 points) and whether closed, must read exactly as formatted point
+// by point, with 1, 2 and 8 threads; hidden strokes cut into dashes go through the same code.
+TEST(PlotOutput, SvgPathsOfLongStrokesReadPointByPoint) {
+  const Plot p = long_stroke_plot(7, {1, 2, 3, 4095, 4096, 4097, 8192, 8193, 20000});
+  const PlotLayer& vis = p.layers[0];
   const Sheet sheet = layout_single(p, PageOptions{});
   const SheetView& v = sheet.views.at(0);
   std::string expected;  // the visible layer's paths, point by point
@@ -453,6 +464,85 @@ TEST(PlotOutput, SvgPathsOfLongStrokesReadPointByPoint) {
     if (first.empty()) first = svg;
     EXPECT_EQ(svg, first) << threads << " threads";
   }
+}
+
+
+// DXF numbers as dxflib writes them ("%.16f" with the trailing zeros cut to one after the
+// point): the oracle for the entities made on all cores (plot_dxf.cpp).
+std::string dxf_real(double v) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "%.16f", v);
+  std::string t = buf;
+  const std::size_t dot = t.find('.');
+  while (dot != std::string::npos && t.size() > dot + 2 && t.back() == '0') t.pop_back();
+  return t;
+}
+
+struct DxfStrokes : DL_CreationAdapter {
+  std::map<std::string, std::vector<std::vector<Point2>>> strokes;
+  std::map<std::string, std::vector<int>> flags;
+  std::string layer;
+  void addPolyline(const DL_PolylineData& d) override {
+    layer = attributes.getLayer();
+    strokes[layer].emplace_back();
+    flags[layer].push_back(d.flags);
+  }
+  void addVertex(const DL_VertexData& d) override { strokes[layer].back().push_back({d.x, d.y}); }
+};
+
+// The entities are written here, not by dxflib (which flushes its file after every number):
+// long strokes (pieces end at 4096 points), closed ones and cut dashes must read back point by
+// point, every number in dxflib's format, every handle unique, the same text on 1, 2 and 8
+// threads.
+TEST(PlotOutput, DxfLongStrokesReadBackPointByPoint) {
+  Plot p = long_stroke_plot(11, {1, 2, 3, 4095, 4096, 4097, 9000});
+  p.layers[0].strokes.push_back(Stroke{{{0, 0}, {1e-9, -2.5e-17}, {-0.0, 12345.678}}, false});  // tiny, negative zero
+  const PlotLayer& vis = p.layers[0];
+  const Sheet sheet = layout_single(p, PageOptions{});
+  const SheetView& v = sheet.views.at(0);
+  PlotStyle style;
+  style.hidden_dashed = true;
+  style.dashes = DashMode::Geometry;
+  std::string first;
+  for (unsigned threads : {1u, 2u, 8u}) {
+    ThreadLimit limit(threads);
+    const std::string dxf = sheet_to_dxf(sheet, style);
+    if (first.empty()) first = dxf;
+    EXPECT_EQ(dxf, first) << threads << " threads";
+  }
+  // Group codes and values, pair by pair: handles unique, the visible layer's x values as
+  // dxflib would write them.
+  std::istringstream lines(first);
+  std::string code, value, layer;
+  std::set<std::string> handles;
+  std::vector<std::string> xs;
+  while (std::getline(lines, code) && std::getline(lines, value)) {
+    if (code == "  5" || code == "105") EXPECT_TRUE(handles.insert(value).second) << "handle " << value << " twice";
+    if (code == "  8") layer = value;
+    if (code == " 10" && layer == "visible-edge") xs.push_back(value);
+  }
+  std::vector<std::string> want;
+  for (const Stroke& s : vis.strokes)
+    for (const Point2& q : s.points) want.push_back(dxf_real(v.page(q)[0]));
+  EXPECT_EQ(xs, want);
+  auto path = std::filesystem::temp_directory_path() / "hlr_plot_long.dxf";
+  std::ofstream(path, std::ios::binary) << first;
+  DxfStrokes c;
+  DL_Dxf reader;
+  ASSERT_TRUE(reader.in(path.string(), &c));
+  std::filesystem::remove(path);
+  ASSERT_EQ(c.strokes["visible-edge"].size(), vis.strokes.size());
+  for (std::size_t k = 0; k < vis.strokes.size(); ++k) {
+    const auto& got = c.strokes["visible-edge"][k];
+    ASSERT_EQ(got.size(), vis.strokes[k].points.size()) << k;
+    EXPECT_EQ(c.flags["visible-edge"][k] & 1, vis.strokes[k].closed ? 1 : 0) << k;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      const Point2 q = v.page(vis.strokes[k].points[i]);
+      ASSERT_NEAR(got[i][0], q[0], 1e-12) << k << " " << i;
+      ASSERT_NEAR(got[i][1], sheet.height_mm - q[1], 1e-12) << k << " " << i;
+    }
+  }
+  EXPECT_GT(c.strokes["hidden-edge"].size(), 1000u);  // the dashes
 }
 
 }  // namespace
