@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <string_view>
 #include <vector>
 
 namespace hlr {
@@ -44,9 +45,8 @@ void install_handlers() {
   }
 }
 
-}  // namespace
-
-void write_file_atomically(const std::string& path, const std::string& content) {
+// The content given in consecutive parts.
+void write_views_atomically(const std::string& path, const std::vector<std::string_view>& parts) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const std::string what = std::string("cannot write ").append(path);
@@ -76,16 +76,28 @@ void write_file_atomically(const std::string& path, const std::string& content) 
     ::unlink(tmp.c_str());
     throw OutputError(what + ": " + step + ": " + std::strerror(err));
   };
-  // Large outputs in 1 MiB pieces on all cores (the copy into the page cache was a serial
-  // 10-20 ms of a 1M-triangle drawing); each piece at its own offset.
+  // Large outputs in pieces of 1 MiB at most on all cores (the copy into the page cache was a
+  // serial 10-20 ms of a 1M-triangle drawing); each piece at its own offset.
   constexpr std::size_t kPiece = std::size_t(1) << 20;  // (4 MiB pieces left one core copying alone)
-  const std::size_t pieces = (content.size() + kPiece - 1) / kPiece;
+  struct Piece {
+    const char* data;
+    std::size_t size, offset;
+  };
+  std::vector<Piece> list;
+  std::size_t offset = 0;
+  for (std::string_view part : parts)
+    for (std::size_t at = 0; at < part.size(); at += kPiece) {
+      const std::size_t n = std::min(kPiece, part.size() - at);
+      list.push_back({part.data() + at, n, offset});
+      offset += n;
+    }
+  const std::size_t pieces = list.size();
   std::vector<int> error(pieces, 0);
   auto write_piece = [&](std::size_t k) {
-    std::size_t at = k * kPiece;
-    const std::size_t end = std::min(content.size(), at + kPiece);
+    std::size_t at = 0;
+    const std::size_t end = list[k].size;
     while (at < end) {
-      const ssize_t n = ::pwrite(fd, content.data() + at, end - at, static_cast<off_t>(at));
+      const ssize_t n = ::pwrite(fd, list[k].data + at, end - at, static_cast<off_t>(list[k].offset + at));
       if (n < 0 && errno == EINTR) continue;
       if (n <= 0) {
         error[k] = n < 0 ? errno : EIO;
@@ -114,11 +126,28 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   }
 }
 
+}  // namespace
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  write_views_atomically(path, std::vector<std::string_view>{content});
+}
+
+void write_file_atomically(const std::string& path, const std::vector<std::string>& parts) {
+  write_views_atomically(path, std::vector<std::string_view>(parts.begin(), parts.end()));
+}
+
 void write_output(const std::string& path, const std::string& content) {
   if (path.empty() || path == "-")
     std::cout << content;
   else
     write_file_atomically(path, content);
+}
+
+void write_output(const std::string& path, const std::vector<std::string>& parts) {
+  if (path.empty() || path == "-")
+    for (const std::string& part : parts) std::cout << part;
+  else
+    write_file_atomically(path, parts);
 }
 
 }  // namespace hlr

@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace hlr {
 
@@ -15,8 +16,11 @@ class OutputError : public std::runtime_error {
 
 /// Writes `content` to `path` atomically (same-folder temporary file, then rename).
 void write_file_atomically(const std::string& path, const std::string& content);
+/// The same for content given in consecutive parts (written on all cores, never joined).
+void write_file_atomically(const std::string& path, const std::vector<std::string>& parts);
 
 /// A command's output: standard output when `path` is empty or "-", else the file, atomically.
 void write_output(const std::string& path, const std::string& content);
+void write_output(const std::string& path, const std::vector<std::string>& parts);
 
 }  // namespace hlr

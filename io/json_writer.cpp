@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "algorithms/picture_plane.hpp"
+#include "io/parallel_text.hpp"
 
 namespace hlr {
 namespace {
@@ -15,6 +16,22 @@ using Json = nlohmann::ordered_json;
 
 Json exact_point(const Point3& p) { return Json::array({to_string(p.x()), to_string(p.y()), to_string(p.z())}); }
 Json exact_vector(const Vector3& v) { return Json::array({to_string(v.x()), to_string(v.y()), to_string(v.z())}); }
+
+// A body's faces as JSON strings ("facing", "non-facing", "edge-on"), comma-separated, as
+// nlohmann's dump writes an array of them; made on all cores in runs of faces.
+void append_facing(std::string& out, const std::vector<signed char>& facing) {
+  constexpr std::size_t kRun = 65536;
+  std::vector<std::string> parts((facing.size() + kRun - 1) / kRun);
+  ParallelLoop().for_each(parts.size(), 1, [&](std::size_t c) {
+    std::string& t = parts[c];
+    for (std::size_t k = c * kRun, end = std::min(facing.size(), k + kRun); k < end; ++k) {
+      if (k) t += ',';
+      const signed char e = facing[k];
+      t += e < 0 ? "\"non-facing\"" : e == 0 ? "\"edge-on\"" : "\"facing\"";
+    }
+  });
+  append_parts(out, parts);
+}
 
 }  // namespace
 
@@ -37,6 +54,39 @@ nlohmann::ordered_json piece_json(const Segment& s, const Piece& p) {
   if (p.behind_eye) o["behind_eye"] = true;
   if (p.clipped) o["clipped"] = true;
   return o;
+}
+
+namespace {
+
+void append_all(std::string&) {}
+template <class First, class... Rest>
+void append_all(std::string& out, const First& first, const Rest&... rest) {
+  out += first;
+  append_all(out, rest...);
+}
+
+void append_exact_point(std::string& out, const Point3& p) {
+  append_all(out, "[\"", to_string(p.x()), "\",\"", to_string(p.y()), "\",\"", to_string(p.z()), "\"]");
+}
+
+}  // namespace
+
+void append_piece_json(std::string& out, const Segment& s, const Piece& p) {
+  if (s.kind == Segment::Kind::Edge)
+    append_all(out, "{\"body\":", std::to_string(s.body), ",\"edge\":[", std::to_string(s.v0), ",", std::to_string(s.v1),
+               "],\"kind\":\"", to_string(s.line), "\"");
+  else
+    append_all(out, "{\"bodies\":[", std::to_string(s.body), ",", std::to_string(s.body2), "],\"kind\":\"intersection\"");
+  out += p.visible ? ",\"visible\":true,\"from\":" : ",\"visible\":false,\"from\":";
+  append_exact_point(out, s.at(p.t0));
+  out += ",\"to\":";
+  append_exact_point(out, s.at(p.t1));
+  append_all(out, ",\"t\":[\"", to_string(p.t0), "\",\"", to_string(p.t1), "\"]");
+  if (s.self_hidden) out += ",\"self_hidden\":true";
+  if (p.through) out += ",\"through\":true";
+  if (p.behind_eye) out += ",\"behind_eye\":true";
+  if (p.clipped) out += ",\"clipped\":true";
+  out += '}';
 }
 
 std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r, const Camera& camera, const PlotStats* plot) {
@@ -238,6 +288,14 @@ std::string surfaces_text(const SurfacesJson& sj, const Camera& camera) {
 
 std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r, const Camera& camera, const PlotStats* plot,
                     const SurfacesJson& surfaces) {
+  std::vector<std::string> parts = to_json_parts(bodies, r, camera, plot, surfaces);
+  std::string out;
+  append_parts(out, parts);
+  return out;
+}
+
+std::vector<std::string> to_json_parts(const std::vector<DrawingBody>& bodies, const LineDrawing& r, const Camera& camera,
+                                       const PlotStats* plot, const SurfacesJson& surfaces) {
   Json j;
   Json view;
   if (camera.perspective) {
@@ -250,18 +308,6 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r
   }
   view["up"] = exact_vector(camera.up);
   j["view"] = view;
-  Json jb = Json::array();
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    Json b;
-    b["name"] = bodies[i].name;
-    b["source"] = bodies[i].source;
-    Json nf = Json::array();
-    if (i < r.facing.size())
-      for (signed char e : r.facing[i]) nf.push_back(e < 0 ? "non-facing" : e == 0 ? "edge-on" : "facing");
-    b["faces"] = nf;
-    jb.push_back(b);
-  }
-  j["bodies"] = jb;
   Json st;
   st["edges"] = r.stats.edges;
   st["self_hidden_edges"] = r.stats.self_hidden;
@@ -281,7 +327,12 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r
   j["stats"] = st;
   // One body and one segment per line: readable, diffable and deterministic.
   std::string out = "{\n \"view\": " + j["view"].dump() + ",\n \"bodies\": [";
-  for (std::size_t i = 0; i < j["bodies"].size(); ++i) out += std::string(i ? "," : "") + "\n  " + j["bodies"][i].dump();
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    out += std::string(i ? "," : "") + "\n  {\"name\":" + Json(bodies[i].name).dump() + ",\"source\":" + Json(bodies[i].source).dump() +
+           ",\"faces\":[";
+    if (i < r.facing.size()) append_facing(out, r.facing[i]);
+    out += "]}";
+  }
   out += "\n ],\n \"segments\": [";
   // One line per piece, formatted on every core in runs of segments and joined in order (no
   // document of every piece in memory at once).
@@ -289,15 +340,22 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r
   std::vector<std::string> parts((r.segments.size() + kRun - 1) / kRun);
   ParallelLoop().for_each(parts.size(), 1, [&](std::size_t c) {
     for (std::size_t k = c * kRun, end = std::min(r.segments.size(), k + kRun); k < end; ++k)
-      for (const Piece& p : r.segments[k].pieces) parts[c] += ",\n  " + piece_json(r.segments[k], p).dump();
+      for (const Piece& p : r.segments[k].pieces) {
+        parts[c] += ",\n  ";
+        append_piece_json(parts[c], r.segments[k], p);
+      }
   });
-  bool first = true;
-  for (std::string& part : parts) {
-    if (part.empty()) continue;
-    out.append(part, first ? 1 : 0, std::string::npos);  // the first piece has no comma before it
-    first = false;
-    std::string().swap(part);
-  }
+  for (std::string& part : parts)
+    if (!part.empty()) {
+      part.erase(0, 1);  // the first piece has no comma before it
+      break;
+    }
+  std::vector<std::string> text;
+  text.reserve(parts.size() + 2);
+  text.push_back(std::move(out));
+  for (std::string& part : parts)
+    if (!part.empty()) text.push_back(std::move(part));
+  out.clear();
   out += "\n ],\n \"stats\": " + j["stats"].dump();
   if (plot) {
     Json pj;
@@ -321,7 +379,8 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r
   if (surfaces.shadows) out += shadows_text(surfaces);
   if (surfaces.transparent) out += transparency_text(surfaces);
   out += "\n}\n";
-  return out;
+  text.push_back(std::move(out));
+  return text;
 }
 
 }  // namespace hlr

@@ -44,9 +44,16 @@ struct SurfacesJson {
 };
 std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
                     const PlotStats* plot, const SurfacesJson& surfaces);
+/// The same text in consecutive parts, as made on all cores (a 1M-triangle drawing's JSON is
+/// 335 MB: written part by part, it is never held twice).
+std::vector<std::string> to_json_parts(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
+                                       const PlotStats* plot, const SurfacesJson& surfaces);
 
 /// One piece of a segment as it appears in `segments` of the JSON; also used by `hlr explain`,
 /// so both print the same.
 nlohmann::ordered_json piece_json(const Segment& segment, const Piece& piece);
+/// piece_json(segment, piece).dump(), appended to `out` without building the JSON value (the
+/// segments of a 1M-triangle drawing: 1.5 million of them).
+void append_piece_json(std::string& out, const Segment& segment, const Piece& piece);
 
 }  // namespace hlr

@@ -1,7 +1,7 @@
 // The sheet as DXF through dxflib (see plot_output.hpp): AutoCAD 2000 (AC1015), one layer per
 // visibility and line kind with its lineweight, hidden layers with the DASHED linetype (or
 // their dashes cut as geometry), each stroke one LWPOLYLINE, millimetres with y up. dxflib
-// writes the file's frame; the entities are made on all cores in its format (stroke_text.hpp).
+// writes the file's frame; the entities are made on all cores in its format (parallel_text.hpp).
 #include <dxflib/dl_dxf.h>
 #include <unistd.h>
 
@@ -16,7 +16,7 @@
 #include <stdexcept>
 
 #include "io/plot_output.hpp"
-#include "io/stroke_text.hpp"
+#include "io/parallel_text.hpp"
 
 namespace hlr {
 namespace {

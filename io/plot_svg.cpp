@@ -2,7 +2,7 @@
 // (AxiDraw plots layers by their number), one <path> per stroke in pen order, line weights per
 // layer; hidden lines dashed by the pattern (continuous along each stroke) or cut into dashes.
 #include "io/plot_output.hpp"
-#include "io/stroke_text.hpp"
+#include "io/parallel_text.hpp"
 #include "io/svg_writer.hpp"
 
 #include <algorithm>

@@ -4,12 +4,14 @@
 #include <nlohmann/json.hpp>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <regex>
 #include <unistd.h>
 
 #include "io/atomic_file.hpp"
 #include "algorithms/roberts.hpp"
 #include "io/drawing.hpp"
+#include "io/json_writer.hpp"
 #include "io/scene.hpp"
 #include "io/text_reader.hpp"
 
@@ -88,6 +90,33 @@ TEST(Json, PerspectiveView) {
   EXPECT_EQ(j["view"]["eye"], nlohmann::json({"10", "12", "9"}));
 }
 
+// The segments' lines are written straight into the text (append_piece_json), not through a
+// JSON value: every kind of segment and every flag must read exactly as piece_json's dump.
+TEST(Json, PiecesWrittenDirectlyReadAsTheJsonValue) {
+  Segment e;
+  e.kind = Segment::Kind::Edge;
+  e.body = 3, e.v0 = 17, e.v1 = 4;
+  e.set_ends(Point3(parse_rational("-1/3"), 2, parse_rational("12345678901234567890/7")), Point3(0, parse_rational("-2.5"), 1));
+  Segment x;
+  x.kind = Segment::Kind::Intersection;
+  x.body = 1, x.body2 = 2;
+  x.set_ends(Point3(1, 1, 1), Point3(-1, 0, parse_rational("1/9")));
+  int checked = 0;
+  for (Segment* s : {&e, &x})
+    for (LineKind k : {LineKind::Edge, LineKind::Boundary, LineKind::Crease, LineKind::Silhouette})
+      for (int flags = 0; flags < 32; ++flags) {
+        s->line = k;
+        s->self_hidden = flags & 16;
+        Piece p{parse_rational("1/7"), parse_rational("5/6"), (flags & 1) != 0, (flags & 2) != 0, (flags & 4) != 0, (flags & 8) != 0};
+        if (flags == 0) p.t0 = 0, p.t1 = 1;
+        std::string text = "[";
+        append_piece_json(text, *s, p);
+        EXPECT_EQ(text.substr(1), piece_json(*s, p).dump()) << "flags " << flags;
+        ++checked;
+      }
+  EXPECT_EQ(checked, 2 * 4 * 32);
+}
+
 TEST(Svg, GroupsViewBoxAndDeterminism) {
   Rendered r = render(kData + "/demo.yaml", make_orthographic(Vector3(1, parse_rational("1.3"), parse_rational("1.7"))));
   SvgOptions o;
@@ -146,6 +175,25 @@ TEST(AtomicFile, LargeContentWrittenInPiecesComesBackByteForByte) {
   content.append(8u << 20, 'z');
   write_file_atomically(path, content);
   EXPECT_TRUE(read_file_bytes(path) == content);
+}
+
+TEST(AtomicFile, PartsComeBackInOrderByteForByte) {
+  // Empty parts, parts over the 1 MiB write pieces, many small ones: the file is their join.
+  std::vector<std::string> parts;
+  std::string joined;
+  std::mt19937 rng(5);
+  for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(5u << 19), std::size_t(0), std::size_t(1u << 20), std::size_t(77)}) {
+    std::string part(n, '\0');
+    for (char& c : part) c = static_cast<char>('a' + rng() % 26);
+    parts.push_back(part);
+    joined += part;
+  }
+  for (int i = 0; i < 500; ++i) parts.push_back(std::to_string(i) + ","), joined += parts.back();
+  const std::string path = temp_dir() + "/parts.json";
+  write_file_atomically(path, parts);
+  EXPECT_TRUE(read_file_bytes(path) == joined);
+  write_file_atomically(path, std::vector<std::string>{});
+  EXPECT_EQ(read_file_bytes(path), "");
 }
 
 TEST(AtomicFile, DirectoryAndUnwritablePathsFailCleanly) {

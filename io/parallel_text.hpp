@@ -1,8 +1,7 @@
-// Text of many strokes made on all cores (the SVG and DXF writers, issue 14): each stroke's
-// points are cut into pieces of kPiecePoints, each piece's text is made by one core, and the
-// pieces are joined in order. One long stroke (a sphere's edges chain into a few strokes of
-// hundreds of thousands of points) is shared by all cores, and the text does not depend on
-// their number.
+// Text made on all cores (the SVG, DXF and JSON writers, issue 14): parts made by the cores
+// and joined in order, so that the text does not depend on their number. Strokes are cut into
+// pieces of kPiecePoints points: one long stroke (a sphere's edges chain into a few strokes of
+// hundreds of thousands of points) is shared by all cores.
 #pragma once
 
 #include <algorithm>
@@ -16,6 +15,19 @@
 namespace hlr {
 
 inline constexpr std::size_t kPiecePoints = 4096;
+
+/// Appends `parts` to `out` in order, copied on all cores into storage reserved once (a string
+/// grown part by part on one core zeroed and copied hundreds of megabytes of fresh pages
+/// alone); each part is freed once copied.
+inline void append_parts(std::string& out, std::vector<std::string>& parts) {
+  std::vector<std::size_t> at(parts.size() + 1, out.size());
+  for (std::size_t k = 0; k < parts.size(); ++k) at[k + 1] = at[k] + parts[k].size();
+  out.resize(at.back());
+  ParallelLoop().for_each(parts.size(), 1, [&](std::size_t k) {
+    std::copy(parts[k].begin(), parts[k].end(), out.begin() + static_cast<std::ptrdiff_t>(at[k]));
+    std::string().swap(parts[k]);
+  });
+}
 
 /// Appends to `out`, in order, the text of `strokes` strokes, stroke s having size(s) points:
 /// piece(text, s, begin, end) appends the text of points [begin, end) of stroke s (its head
@@ -32,12 +44,8 @@ void append_stroke_text(std::string& out, std::size_t strokes, const Size& size,
     for (std::size_t b = 0; b == 0 || b < n; b += kPiecePoints) ranges.push_back({s, b, std::min(n, b + kPiecePoints)});
   }
   std::vector<std::string> text(ranges.size());
-  const ParallelLoop loop;
-  loop.for_each(ranges.size(), 1, [&](std::size_t k) { piece(text[k], ranges[k].stroke, ranges[k].begin, ranges[k].end); });
-  std::vector<std::size_t> at(ranges.size() + 1, out.size());
-  for (std::size_t k = 0; k < ranges.size(); ++k) at[k + 1] = at[k] + text[k].size();
-  out.resize(at.back());
-  loop.for_each(ranges.size(), 1, [&](std::size_t k) { std::copy(text[k].begin(), text[k].end(), out.begin() + static_cast<std::ptrdiff_t>(at[k])); });
+  ParallelLoop().for_each(ranges.size(), 1, [&](std::size_t k) { piece(text[k], ranges[k].stroke, ranges[k].begin, ranges[k].end); });
+  append_parts(out, text);
 }
 
 /// A layer's strokes on the page of a view: the plot's own strokes mapped point by point, or,
