@@ -5,6 +5,9 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <unordered_set>
+
+#include "algorithms/hull_planes.hpp"
 
 #include "kernel/predicates.hpp"
 
@@ -92,6 +95,85 @@ class VertexTree {
   std::vector<Node> nodes_;
 };
 
+// A plane as a key: its coefficients divided by the first non-zero one of its normal, which
+// makes them unique for the plane whichever way it faces (exact rationals), hashed by their
+// doubles (equal rationals, equal doubles).
+struct PlaneKey {
+  int lead = 0;
+  std::array<Rational, 4> k;
+  explicit PlaneKey(const Plane& h) {
+    while (h[lead] == 0) ++lead;  // callers skip degenerate planes
+    for (int i = 0; i < 4; ++i) k[i] = h[i] / h[lead];
+  }
+  bool operator==(const PlaneKey& o) const { return lead == o.lead && k == o.k; }
+};
+struct PlaneKeyHash {
+  std::size_t operator()(const PlaneKey& p) const {
+    std::size_t x = static_cast<std::size_t>(p.lead);
+    for (const Rational& q : p.k) x = x * 1000003u ^ std::hash<double>()(q.get_d());
+    return x;
+  }
+};
+
+// The Hull method: a verdict from the first face (by index) whose plane is not a plane of the
+// vertices' convex hull, with the plain scan's witnesses; Flat when every vertex lies in the
+// first face plane (then in all of them).
+ConvexityResult convexity_by_hull(const Polyhedron& body) {
+  const std::vector<Plane>& planes = body.planes();
+  const std::vector<Point3>& vs = body.vertices();
+  ConvexityResult r;
+  std::size_t f0 = 0;
+  while (f0 < planes.size() && planes[f0].is_degenerate()) ++f0;
+  if (f0 == planes.size()) {
+    r.verdict = planes.empty() ? ConvexityResult::Verdict::NoFaces : ConvexityResult::Verdict::Flat;
+    return r;
+  }
+  int pos = -1, neg = -1;
+  first_witnesses(planes[f0], vs, pos, neg);
+  if (pos < 0 && neg < 0) {  // every vertex in one plane: every face plane is that plane
+    r.verdict = ConvexityResult::Verdict::Flat;
+    return r;
+  }
+  // A face that is a hull triangle (the same three vertices) lies in a hull plane; any other
+  // face plane is looked up among the hull triangles' planes.
+  const std::vector<std::array<std::size_t, 3>> triangles = hull_triangles(vs);
+  auto sorted = [](std::array<std::size_t, 3> t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  struct TripleHash {
+    std::size_t operator()(const std::array<std::size_t, 3>& t) const { return (t[0] * 1000003u ^ t[1]) * 1000003u ^ t[2]; }
+  };
+  std::unordered_set<std::array<std::size_t, 3>, TripleHash> hull_triples;
+  hull_triples.reserve(triangles.size());
+  for (const auto& t : triangles) hull_triples.insert(sorted(t));
+  std::unordered_set<PlaneKey, PlaneKeyHash> hull_planes;  // made when a face first needs them
+  const std::vector<Face>& faces = body.faces();
+  for (std::size_t f = f0; f < planes.size(); ++f) {
+    if (planes[f].is_degenerate()) continue;
+    const Face& face = faces[f];
+    if (face.size() == 3 &&
+        hull_triples.count(sorted({static_cast<std::size_t>(face[0]), static_cast<std::size_t>(face[1]), static_cast<std::size_t>(face[2])})))
+      continue;
+    if (hull_planes.empty())
+      for (const auto& t : triangles) {
+        const Point3* corners[3] = {&vs[t[0]], &vs[t[1]], &vs[t[2]]};
+        hull_planes.insert(PlaneKey(plane_of_polygon(corners, 3)));
+      }
+    if (hull_planes.count(PlaneKey(planes[f]))) continue;
+    first_witnesses(planes[f], vs, pos, neg);
+    if (pos >= 0 && neg >= 0) {  // always, for a plane through vertices that is not a hull plane
+      r.verdict = ConvexityResult::Verdict::NonConvex;
+      r.face = static_cast<int>(f);
+      r.vertex_positive = pos;
+      r.vertex_negative = neg;
+      return r;
+    }
+  }
+  r.verdict = ConvexityResult::Verdict::Convex;
+  return r;
+}
+
 }  // namespace
 
 ConvexityResult convexity(const Polyhedron& body, ConvexityMethod method) {
@@ -99,7 +181,8 @@ ConvexityResult convexity(const Polyhedron& body, ConvexityMethod method) {
   const auto& planes = body.planes();
   const auto& vs = body.vertices();
   if (method == ConvexityMethod::Automatic)
-    method = vs.size() * planes.size() > 200'000 ? ConvexityMethod::Tree : ConvexityMethod::AllPairs;
+    method = vs.size() * planes.size() > 200'000 ? ConvexityMethod::Hull : ConvexityMethod::AllPairs;
+  if (method == ConvexityMethod::Hull) return convexity_by_hull(body);
   std::optional<VertexTree> tree;
   if (method == ConvexityMethod::Tree) tree.emplace(vs);
   bool any_plane = false, any_off = false;

@@ -56,6 +56,71 @@ TEST(Convexity, DentByAnUltraSmallAmountIsCaught) {
   EXPECT_TRUE(convexity(Polyhedron(vs, f)).convex());
 }
 
+
+// The hull method (hull_planes.cpp) on the cases a convex hull treats specially: points on a
+// facet that are not hull vertices, repeated points, a vertex no face uses, faces that are not
+// hull triangles (quads, another triangulation of a flat side), non-planar faces, a flat body,
+// dents of 1e-30 and coordinates beyond the range of doubles. Verdict and witnesses as the
+// plain scan's.
+TEST(ConvexityHull, SameAsAllPairsWhereHullsAreHard) {
+  int cases = 0, convex = 0;
+  auto same = [&](const std::vector<Point3>& vs, const std::vector<Face>& faces, const std::string& what) {
+    const Polyhedron p(vs, faces);
+    const ConvexityResult a = convexity(p, ConvexityMethod::AllPairs), b = convexity(p, ConvexityMethod::Hull);
+    EXPECT_EQ(a.verdict, b.verdict) << what;
+    EXPECT_EQ(a.face, b.face) << what;
+    EXPECT_EQ(a.vertex_positive, b.vertex_positive) << what;
+    EXPECT_EQ(a.vertex_negative, b.vertex_negative) << what;
+    ++cases;
+    convex += a.convex();
+  };
+  // A cube with its top split at its centre (a vertex on a facet, not a hull vertex), as four
+  // triangles or as quads from the centre to the edge midpoints.
+  std::vector<Point3> cube = {Point3(0, 0, 0), Point3(2, 0, 0), Point3(2, 2, 0), Point3(0, 2, 0),
+                              Point3(0, 0, 2), Point3(2, 0, 2), Point3(2, 2, 2), Point3(0, 2, 2), Point3(1, 1, 2)};
+  std::vector<Face> sides = {{3, 2, 1, 0}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  std::vector<Face> fan = sides;
+  for (int k = 0; k < 4; ++k) fan.push_back({4 + k, 4 + (k + 1) % 4, 8});
+  same(cube, fan, "cube, top fanned from its centre");
+  const Rational tiny = Rational(1) / Rational("1000000000000000000000000000000");
+  for (const Rational& dz : std::vector<Rational>{tiny, -tiny}) {
+    std::vector<Point3> d = cube;
+    d[8] = Point3(1, 1, 2 + dz);  // the centre lifted out (not convex) or pushed in (convex)
+    same(d, fan, "cube, top centre moved by 1e-30");
+  }
+  // The cube's top as one quad and as the other diagonal's two triangles; a repeated corner.
+  std::vector<Face> quad = sides;
+  quad.push_back({4, 5, 6, 7});
+  same(cube, quad, "cube, an unused point on the top");
+  std::vector<Face> diag = sides;
+  diag.push_back({4, 5, 7}), diag.push_back({5, 6, 7});
+  same(cube, diag, "cube, top split along the other diagonal");
+  std::vector<Point3> rep = cube;
+  rep.push_back(cube[6]);  // vertex 9 = vertex 6
+  std::vector<Face> repf = sides;
+  repf[2] = {1, 2, 9, 5}, repf.push_back({4, 5, 6, 7});
+  same(rep, repf, "cube, a corner repeated");
+  // An unused point outside: not convex by the plain test's reading (every vertex counts).
+  std::vector<Point3> out = cube;
+  out[8] = Point3(1, 1, 3);
+  same(out, quad, "cube, an unused point above it");
+  // A non-planar quad side (one corner raised by 1/7): its Newell plane passes through none or
+  // some of its corners.
+  std::vector<Point3> bent = cube;
+  bent[6] = Point3(2, 2, 2 + Rational(1) / 7);
+  same(bent, quad, "cube, a non-planar top");
+  // A flat body, and coordinates far beyond the range of doubles.
+  same({Point3(0, 0, 0), Point3(1, 0, 0), Point3(1, 1, 0), Point3(0, 1, 0)}, {{0, 1, 2, 3}, {3, 2, 1, 0}}, "flat square");
+  const Rational big = Rational("1" + std::string(400, '0'));
+  std::vector<Point3> huge;
+  for (const Point3& c : cube) huge.emplace_back(c.x() * big, c.y() * big, c.z() * big);
+  same(huge, fan, "cube scaled by 1e400");
+  huge[8] = Point3(big, big, 2 * big + 1);
+  same(huge, fan, "cube scaled by 1e400, centre lifted by 1");
+  EXPECT_EQ(cases, 11);
+  EXPECT_GE(convex, 5);
+}
+
 namespace hlr {
 namespace {
 
@@ -70,11 +135,14 @@ TEST(ConvexityTree, SameVerdictAndWitnessesAsAllPairs) {
     if (std::filesystem::exists(std::string(HLR_CORPUS_DIR) + m)) files.push_back(std::string(HLR_CORPUS_DIR) + m);
   int convex = 0, nonconvex = 0;
   auto same = [&](const Polyhedron& p, const std::string& what) {
-    ConvexityResult a = convexity(p, ConvexityMethod::AllPairs), b = convexity(p, ConvexityMethod::Tree);
-    EXPECT_EQ(a.verdict, b.verdict) << what;
-    EXPECT_EQ(a.face, b.face) << what;
-    EXPECT_EQ(a.vertex_positive, b.vertex_positive) << what;
-    EXPECT_EQ(a.vertex_negative, b.vertex_negative) << what;
+    ConvexityResult a = convexity(p, ConvexityMethod::AllPairs);
+    for (ConvexityMethod m : {ConvexityMethod::Tree, ConvexityMethod::Hull}) {
+      ConvexityResult b = convexity(p, m);
+      EXPECT_EQ(a.verdict, b.verdict) << what;
+      EXPECT_EQ(a.face, b.face) << what;
+      EXPECT_EQ(a.vertex_positive, b.vertex_positive) << what;
+      EXPECT_EQ(a.vertex_negative, b.vertex_negative) << what;
+    }
     (a.convex() ? convex : nonconvex)++;
   };
   for (const std::string& f : files) {
