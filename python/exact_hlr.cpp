@@ -141,7 +141,7 @@ struct Drawing {
       d["polygons"] = polys;
       out.append(d);
     }
-    return std::move(out);
+    return out;
   }
   // The plotting 2D stage: strokes per layer in pen order (drawing coordinates).
   hlr::Plot make(bool hidden) const {
