@@ -5,26 +5,22 @@
 # medians, the ratio of the medians, the median of the pairs' ratios, and each stage's ratio
 # of its best times (--timings; stages under 50 ms left out). Writes build/bench/threads.md.
 #
-# --warm: before each run, touch 1 GiB of fresh memory in a throwaway process. On this
-# project's VM the host backs guest memory lazily and takes back what the guest freed a few
-# seconds earlier, so a run that follows a pause or a long run (a one-thread run lasts two
-# seconds) first waits for the host to back its pages again: 0.1-0.3 s, on one and two
-# threads alike, which halves the difference the second core makes. With --warm every run
-# starts with memory the host has backed, as on a machine of its own.
-# Usage: scripts/bench_threads.sh [--warm] [PAIRS]   (default 8 pairs)
+# On this project's VM the host backs guest memory lazily and takes back what the guest freed a
+# few seconds earlier, so a run that follows a pause or a long run (a one-thread run lasts two
+# seconds) first waits for the host to back its pages again: 0.1-0.3 s, on one and two threads
+# alike. The runs go back to back; touching memory in another process first made it worse
+# (what it freed was taken back just as the run began).
+# Usage: scripts/bench_threads.sh [PAIRS]   (default 8 pairs)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 BUILD=${HLR_BUILD:-$ROOT/build}
 OUT=$BUILD/bench
-WARM=0
-[ "${1:-}" = "--warm" ] && { WARM=1; shift; }
 PAIRS=${1:-8}
 [ -x "$BUILD/hlr" ] || { echo "bench_threads: build first (scripts/setup.sh)" >&2; exit 1; }
 command -v /usr/bin/time >/dev/null || { echo "bench_threads: needs GNU time (apt install time)" >&2; exit 1; }
 mkdir -p "$OUT/meshes"
 MESH=$OUT/meshes/sphere1m.off
 [ -s "$MESH" ] || "$BUILD/benchmarks/gen_mesh" sphere 224 > "$MESH"
-warm() { [ "$WARM" = 1 ] && python3 -c "b = bytearray(b'\x01') * (1 << 30)" || true; }
 LOG=$OUT/threads.log
 : > "$LOG"
 for job in all feature; do
@@ -34,23 +30,22 @@ for job in all feature; do
     order="1 2"
     [ $((i % 2)) = 1 ] && order="2 1"
     for t in $order; do
-      warm
       /usr/bin/time -f "TIME %e" "$BUILD/hlr" render "$MESH" --view 1,1.3,1.7 "${args[@]}" --threads "$t" --timings \
         -o "$OUT/threads.svg" 2> "$OUT/threads.run" > /dev/null
       echo "$job $i $t $(grep '^TIME' "$OUT/threads.run") $(grep '^timings' "$OUT/threads.run")" >> "$LOG"
     done
   done
 done
-python3 - "$LOG" "$PAIRS" "$WARM" > "$OUT/threads.md" <<'PY'
+python3 - "$LOG" "$PAIRS" > "$OUT/threads.md" <<'PY'
 import re, statistics, sys
-log, pairs, warm = sys.argv[1], int(sys.argv[2]), sys.argv[3] == "1"
+log, pairs = sys.argv[1], int(sys.argv[2])
 runs = {}
 for line in open(log):
     job, i, t = line.split()[:3]
     wall = float(re.search(r"TIME ([0-9.]+)", line).group(1))
     stages = {k: float(v) for k, v in re.findall(r"(load|setup|intersections|visibility|output) ([0-9.]+) s", line)}
     runs[(job, int(i), int(t))] = (wall, stages)
-print("# Thread scaling, 1M icosphere, view 1,1.3,1.7 (%d alternating pairs%s)" % (pairs, ", memory warmed before each run" if warm else ""))
+print("# Thread scaling, 1M icosphere, view 1,1.3,1.7 (%d alternating pairs)" % pairs)
 print()
 print("| job | 1 thread, median (min-max) | 2 threads, median (min-max) | ratio of medians | median of pair ratios | stages, best of each: 1 -> 2 threads |")
 print("|---|---|---|---|---|---|")
