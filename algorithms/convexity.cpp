@@ -7,7 +7,7 @@
 #include <optional>
 #include <unordered_set>
 
-#include "algorithms/hull_planes.hpp"
+#include "algorithms/hull_triangles.hpp"
 
 #include "kernel/predicates.hpp"
 

@@ -1,5 +1,5 @@
-// The convex hull as triangles of the input points (see hull_planes.hpp).
-#include "algorithms/hull_planes.hpp"
+// The convex hull as triangles of the input points (see hull_triangles.hpp).
+#include "algorithms/hull_triangles.hpp"
 
 #include <CGAL/Convex_hull_traits_3.h>
 #include <CGAL/Surface_mesh.h>
