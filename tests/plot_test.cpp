@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <random>
 #include <set>
@@ -429,6 +430,25 @@ Plot long_stroke_plot(unsigned seed, std::initializer_list<std::size_t> sizes) {
   return p;
 }
 
+// A writer's text on 1, 2 and 8 threads, which must be the same: the one-thread text.
+std::string same_on_all_thread_counts(const std::function<std::string()>& write) {
+  std::string first;
+  for (unsigned threads : {1u, 2u, 8u}) {
+    ThreadLimit limit(threads);
+    const std::string text = write();
+    if (first.empty()) first = text;
+    EXPECT_EQ(text, first) << threads << " threads";
+  }
+  return first;
+}
+
+PlotStyle hidden_cut_into_dashes() {
+  PlotStyle style;
+  style.hidden_dashed = true;
+  style.dashes = DashMode::Geometry;
+  return style;
+}
+
 // Long strokes are formatted in pieces on all cores (plot_svg.cpp): every path, whatever its
 // length (pieces end at 4096 points) and whether closed, must read exactly as formatted point
 // by point, with 1, 2 and 8 threads; hidden strokes cut into dashes go through the same code.
@@ -446,24 +466,16 @@ TEST(PlotOutput, SvgPathsOfLongStrokesReadPointByPoint) {
     }
     expected += std::string(s.closed ? "Z" : "") + "\"/>\n";
   }
-  PlotStyle style;
-  style.hidden_dashed = true;
-  style.dashes = DashMode::Geometry;
-  std::string first;
-  for (unsigned threads : {1u, 2u, 8u}) {
-    ThreadLimit limit(threads);
-    const std::string svg = sheet_to_svg(sheet, style);
-    const std::size_t at = svg.find("id=\"visible-edge\"");
-    ASSERT_NE(at, std::string::npos);
-    const std::size_t from = svg.find('\n', at) + 1;
-    EXPECT_EQ(svg.substr(from, expected.size()), expected) << threads << " threads";
-    EXPECT_EQ(svg.compare(from + expected.size(), 5, "</g>\n"), 0);
-    std::size_t dashes = 0;
-    for (std::size_t a = svg.find("id=\"hidden-edge\""); (a = svg.find("<path ", a)) != std::string::npos; ++a) ++dashes;
-    EXPECT_GT(dashes, 1000u);
-    if (first.empty()) first = svg;
-    EXPECT_EQ(svg, first) << threads << " threads";
-  }
+  const PlotStyle style = hidden_cut_into_dashes();
+  const std::string svg = same_on_all_thread_counts([&] { return sheet_to_svg(sheet, style); });
+  const std::size_t at = svg.find("id=\"visible-edge\"");
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t from = svg.find('\n', at) + 1;
+  EXPECT_EQ(svg.substr(from, expected.size()), expected);
+  EXPECT_EQ(svg.compare(from + expected.size(), 5, "</g>\n"), 0);
+  std::size_t dashes = 0;
+  for (std::size_t a = svg.find("id=\"hidden-edge\""); (a = svg.find("<path ", a)) != std::string::npos; ++a) ++dashes;
+  EXPECT_GT(dashes, 1000u);
 }
 
 
@@ -500,16 +512,8 @@ TEST(PlotOutput, DxfLongStrokesReadBackPointByPoint) {
   const PlotLayer& vis = p.layers[0];
   const Sheet sheet = layout_single(p, PageOptions{});
   const SheetView& v = sheet.views.at(0);
-  PlotStyle style;
-  style.hidden_dashed = true;
-  style.dashes = DashMode::Geometry;
-  std::string first;
-  for (unsigned threads : {1u, 2u, 8u}) {
-    ThreadLimit limit(threads);
-    const std::string dxf = sheet_to_dxf(sheet, style);
-    if (first.empty()) first = dxf;
-    EXPECT_EQ(dxf, first) << threads << " threads";
-  }
+  const PlotStyle style = hidden_cut_into_dashes();
+  const std::string first = same_on_all_thread_counts([&] { return sheet_to_dxf(sheet, style); });
   // Group codes and values, pair by pair: handles unique, the visible layer's x values as
   // dxflib would write them.
   std::istringstream lines(first);
