@@ -107,7 +107,13 @@ TileFile read_tile_text(const std::string& bytes, const std::string& path) {
   TileFile t;
   int n = 0;
   auto fail = [&](const std::string& what) { throw InputError(path, n, what); };
-  bool header = false, tile = false, segments = false, end = false;
+  bool header = false, tile = false, segments = false, counters = false, end = false;
+  // A record given twice is refused: a second 'segments' would change the count the pieces
+  // before it were checked against.
+  auto once = [&](bool& seen, const char* record) {
+    if (seen) fail(std::string("a second '") + record + "' record");
+    seen = true;
+  };
   for (std::size_t at = 0; at < bytes.size();) {
     std::size_t eol = bytes.find('\n', at);
     if (eol == std::string::npos) eol = bytes.size();
@@ -141,13 +147,15 @@ TileFile read_tile_text(const std::string& bytes, const std::string& path) {
     if (key == "arg") {
       t.args.push_back(rest);
     } else if (key == "tile") {
+      once(tile, "tile");
       long i = 0, c = 0;
       if (!(f >> i >> c) || c < 1 || i < 1 || i > c || !(f >> std::ws).eof()) fail("'tile I N' with 1 <= I <= N expected");
-      t.index = static_cast<int>(i - 1), t.count = static_cast<int>(c), tile = true;
+      t.index = static_cast<int>(i - 1), t.count = static_cast<int>(c);
     } else if (key == "segments") {
+      once(segments, "segments");
       if (!(f >> t.segments >> std::hex >> t.fingerprint) || !(f >> std::ws).eof()) fail("'segments COUNT FINGERPRINT' expected");
-      segments = true;
     } else if (key == "counters") {
+      once(counters, "counters");
       if (!(f >> t.pairs_tested >> t.pairs_skipped >> t.pairs_rational >> t.comparisons >> t.comparisons_identical >> t.comparisons_exact))
         fail("'counters' and six counts expected");
     } else if (key == "end") {

@@ -12,6 +12,8 @@
 #include "algorithms/roberts.hpp"
 #include "io/drawing.hpp"
 #include "io/json_writer.hpp"
+#include "io/tile_file.hpp"
+#include "io/input_error.hpp"
 #include "io/scene.hpp"
 #include "io/text_reader.hpp"
 
@@ -194,6 +196,21 @@ TEST(AtomicFile, PartsComeBackInOrderByteForByte) {
   EXPECT_TRUE(read_file_bytes(path) == joined);
   write_file_atomically(path, std::vector<std::string>{});
   EXPECT_EQ(read_file_bytes(path), "");
+}
+
+// A tile file whose 'tile', 'segments' or 'counters' record comes twice is refused (the fuzzer
+// found a second 'segments' that lowered the count after pieces had been checked against it).
+TEST(TileFile, RepeatedRecordsAreRefused) {
+  const std::string head = "hlr-tile 1\ntile 2 4\nsegments 68 5b94\ncounters 1 2 3 4 5 6\npiece 41 0 1 v\n";
+  EXPECT_NO_THROW(read_tile_text(head + "end\n", "t.tile"));
+  for (const std::string& again : {"segments 2 4\n", "tile 1 4\n", "counters 1 2 3 4 5 6\n"}) {
+    try {
+      read_tile_text(head + again + "end\n", "t.tile");
+      ADD_FAILURE() << again;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("a second"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(AtomicFile, DirectoryAndUnwritablePathsFailCleanly) {
