@@ -54,7 +54,7 @@ RenderOptions::Tile parse_tile(const std::string& text) {
     std::size_t used = 0, used2 = 0;
     const std::string a = text.substr(0, slash), b = slash == std::string::npos ? "" : text.substr(slash + 1);
     const long i = std::stol(a, &used), n = std::stol(b, &used2);
-    if (used == a.size() && used2 == b.size() && n >= 1 && n <= 1000000 && i >= 1 && i <= n)
+    if (used == a.size() && used2 == b.size() && n >= 1 && n <= kMaxTiles && i >= 1 && i <= n)
       return RenderOptions::Tile{static_cast<int>(i - 1), static_cast<int>(n)};
   } catch (const std::exception&) {
   }

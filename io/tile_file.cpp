@@ -5,6 +5,7 @@
 #include <charconv>
 #include <string_view>
 #include <sstream>
+#include <vector>
 
 #include "algorithms/parallel.hpp"
 #include "algorithms/picture_tiles.hpp"
@@ -52,6 +53,23 @@ bool split4(std::string_view s, std::string_view (&out)[4]) {
     if (k < 3) s = s.substr(sp + 1);
   }
   return true;
+}
+
+// Fields separated by single spaces (none empty).
+std::vector<std::string_view> fields(std::string_view s) {
+  std::vector<std::string_view> out;
+  for (;;) {
+    const std::size_t sp = s.find(' ');
+    out.push_back(s.substr(0, sp));
+    if (sp == std::string_view::npos) return out;
+    s.remove_prefix(sp + 1);
+  }
+}
+
+// A whole field as an unsigned number in `base` (no sign, no spaces) that is at most `max`.
+bool parse_count(std::string_view s, std::uint64_t max, std::uint64_t& v, int base = 10) {
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v, base);
+  return !s.empty() && ec == std::errc() && end == s.data() + s.size() && v <= max;
 }
 
 // "N/D" or "N" (get_str()'s form): digits, an optional '-' on N, D > 0.
@@ -142,22 +160,31 @@ TileFile read_tile_text(const std::string& bytes, const std::string& path) {
       t.pieces.emplace_back(seg, std::move(p));
       continue;
     }
-    const std::string rest = sp == std::string::npos ? "" : std::string(line.substr(sp + 1));
-    std::istringstream f(rest);
+    const std::string_view rest = sp == std::string_view::npos ? std::string_view() : line.substr(sp + 1);
+    const std::vector<std::string_view> f = fields(rest);
+    constexpr std::uint64_t any = ~std::uint64_t{0};
     if (key == "arg") {
-      t.args.push_back(rest);
+      t.args.emplace_back(rest);
     } else if (key == "tile") {
       once(tile, "tile");
-      long i = 0, c = 0;
-      if (!(f >> i >> c) || c < 1 || i < 1 || i > c || !(f >> std::ws).eof()) fail("'tile I N' with 1 <= I <= N expected");
+      std::uint64_t i = 0, c = 0;
+      if (f.size() != 2 || !parse_count(f[0], kMaxTiles, i) || !parse_count(f[1], kMaxTiles, c) || c < 1 || i < 1 || i > c)
+        fail("'tile I N' with 1 <= I <= N <= " + std::to_string(kMaxTiles) + " expected");
       t.index = static_cast<int>(i - 1), t.count = static_cast<int>(c);
     } else if (key == "segments") {
       once(segments, "segments");
-      if (!(f >> t.segments >> std::hex >> t.fingerprint) || !(f >> std::ws).eof()) fail("'segments COUNT FINGERPRINT' expected");
+      std::uint64_t count = 0;
+      if (f.size() != 2 || !parse_count(f[0], any, count) || !parse_count(f[1], any, t.fingerprint, 16))
+        fail("'segments COUNT FINGERPRINT' expected (a decimal count and a hexadecimal hash)");
+      t.segments = count;
     } else if (key == "counters") {
       once(counters, "counters");
-      if (!(f >> t.pairs_tested >> t.pairs_skipped >> t.pairs_rational >> t.comparisons >> t.comparisons_identical >> t.comparisons_exact))
-        fail("'counters' and six counts expected");
+      std::uint64_t c[6];
+      bool ok = f.size() == 6;
+      for (std::size_t k = 0; ok && k < 6; ++k) ok = parse_count(f[k], any, c[k]);
+      if (!ok) fail("'counters' and six counts expected");
+      t.pairs_tested = c[0], t.pairs_skipped = c[1], t.pairs_rational = c[2];
+      t.comparisons = c[3], t.comparisons_identical = c[4], t.comparisons_exact = c[5];
     } else if (key == "end") {
       end = true;
     } else {

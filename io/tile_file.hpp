@@ -22,6 +22,9 @@
 
 namespace hlr {
 
+/// The most tiles a split may have (`--tile I/N`: N at most this).
+inline constexpr int kMaxTiles = 1000000;
+
 struct TileFile {
   int index = 0, count = 1;        // 0-based index
   std::vector<std::string> args;   // the render command's arguments (inputs and options)

@@ -203,7 +203,7 @@ TEST(AtomicFile, PartsComeBackInOrderByteForByte) {
 TEST(TileFile, RepeatedRecordsAreRefused) {
   const std::string head = "hlr-tile 1\ntile 2 4\nsegments 68 5b94\ncounters 1 2 3 4 5 6\npiece 41 0 1 v\n";
   EXPECT_NO_THROW(read_tile_text(head + "end\n", "t.tile"));
-  for (const std::string& again : {"segments 2 4\n", "tile 1 4\n", "counters 1 2 3 4 5 6\n"}) {
+  for (const char* again : {"segments 2 4\n", "tile 1 4\n", "counters 1 2 3 4 5 6\n"}) {
     try {
       read_tile_text(head + again + "end\n", "t.tile");
       ADD_FAILURE() << again;
@@ -211,6 +211,42 @@ TEST(TileFile, RepeatedRecordsAreRefused) {
       EXPECT_NE(std::string(e.what()).find("a second"), std::string::npos) << e.what();
     }
   }
+}
+
+// The family of the fuzzer's second find: a number that does not fit its field ('tile 2
+// 4444444444444' was cut to an int and gave a tile index past the count) or is not a plain
+// count (a sign, a space too many) is refused, in every numeric record.
+TEST(TileFile, NumbersOutOfRangeOrMalformedAreRefused) {
+  const std::string tile = "tile 2 4\n", segments = "segments 68 5b94\n", counters = "counters 1 2 3 4 5 6\n";
+  auto text = [&](const std::string& t, const std::string& s, const std::string& c) {
+    return "hlr-tile 1\n" + t + s + c + "piece 41 0 1 v\nend\n";
+  };
+  const TileFile ok = read_tile_text(text(tile, segments, counters), "t.tile");
+  EXPECT_EQ(ok.index, 1);
+  EXPECT_EQ(ok.count, 4);
+  EXPECT_EQ(ok.segments, 68u);
+  EXPECT_EQ(ok.fingerprint, 0x5b94u);
+  EXPECT_EQ(ok.comparisons_exact, 6u);
+  const TileFile most = read_tile_text(text("tile 1000000 1000000\n", "segments 18446744073709551615 ffffffffffffffff\n", counters), "t.tile");
+  EXPECT_EQ(most.index, kMaxTiles - 1);
+  EXPECT_EQ(most.fingerprint, ~std::uint64_t{0});
+  const std::vector<std::string> bad_tiles = {"tile 2 4444444444444\n", "tile 4294967298 4294967299\n", "tile 1 1000001\n",
+                                              "tile -1 4\n", "tile +2 4\n", "tile 2  4\n", "tile 2 4 \n", "tile 2\n", "tile 0 4\n", "tile 5 4\n"};
+  const std::vector<std::string> bad_segments = {"segments -1 5b94\n", "segments 18446744073709551616 5b94\n", "segments 68 -5b94\n",
+                                                 "segments 68 10000000000000000\n", "segments 68 0x5b94\n", "segments 68\n", "segments 68 5b94 1\n"};
+  const std::vector<std::string> bad_counters = {"counters 1 2 3 4 5 -6\n", "counters 1 2 3 4 5 18446744073709551616\n",
+                                                 "counters 1 2 3 4 5\n", "counters 1 2 3 4 5 6 7\n", "counters 1 2 3 4 5 6x\n"};
+  auto refused = [&](const std::string& file, const std::string& what) {
+    try {
+      const TileFile t = read_tile_text(file, "t.tile");
+      ADD_FAILURE() << what << " was read as tile " << t.index << " of " << t.count;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("t.tile:"), std::string::npos) << e.what();
+    }
+  };
+  for (const std::string& b : bad_tiles) refused(text(b, segments, counters), b);
+  for (const std::string& b : bad_segments) refused(text(tile, b, counters), b);
+  for (const std::string& b : bad_counters) refused(text(tile, segments, b), b);
 }
 
 TEST(AtomicFile, DirectoryAndUnwritablePathsFailCleanly) {
