@@ -22,13 +22,15 @@ PageOptions page_options(const OutputArgs& a) {
   if (!a.page.empty()) p.page = parse_page_size(a.page);
   p.landscape = a.landscape;
   if (!a.margin.empty()) {
-    double m = 0;
+    double m = -1;
+    std::size_t used = 0;
     try {
-      m = std::stod(a.margin);
+      m = std::stod(a.margin, &used);
     } catch (const std::exception&) {
       m = -1;
     }
-    if (!(m >= 0) || m > 1e4) throw std::invalid_argument("--margin must be a size in millimetres");
+    if (used != a.margin.size() || !(m >= 0) || m > 1e4)
+      throw std::invalid_argument("--margin must be a size in millimetres from 0 to 10000 (got '" + a.margin + "')");
     p.margin_mm = m;
   }
   if (!a.scale.empty()) p.scale = parse_scale(a.scale);
@@ -63,8 +65,15 @@ void select_layers(const std::string& list, std::vector<Plot>& plots) {
     if (item.empty()) continue;
     bool number = std::all_of(item.begin(), item.end(), [](char c) { return c >= '0' && c <= '9'; });
     if (number) {
-      std::size_t n = std::stoul(item);
-      if (n >= 1 && n <= names.size()) keep.insert(names[n - 1]);
+      const std::size_t digits = item.find_first_not_of('0');
+      const std::size_t n = digits == std::string::npos || item.size() - digits > 9 ? 0 : std::stoul(item);
+      if (n < 1 || n > names.size()) {
+        std::string have;
+        for (std::size_t k = 0; k < names.size(); ++k) have += (k ? ", " : "") + std::to_string(k + 1) + " " + names[k];
+        throw std::invalid_argument("--layers: there is no layer " + item + "; this drawing has " + std::to_string(names.size()) + " layers" +
+                                    (names.empty() ? "" : ": " + have));
+      }
+      keep.insert(names[n - 1]);
       continue;
     }
     if (item == "visible" || item == "through" || item == "hidden") {
