@@ -1,28 +1,28 @@
-// The sheet as PDF and PNG through cairo (see plot_output.hpp). Drawn in millimetres: the
-// same strokes, weights and dashes as the SVG.
-#include <cairo-pdf.h>
+// The sheet as PNG through cairo (see plot_output.hpp), drawn in millimetres: the same
+// strokes, weights and dashes as the SVG; and the glyph outlines of the PDF's labels
+// (cairo_text.hpp).
 #include <dlfcn.h>
-#include <ctime>
-#include <cstdlib>
 #include <cairo.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "io/cairo_text.hpp"
 #include "io/plot_output.hpp"
 
 namespace hlr {
 namespace {
 
-// cairo is loaded when the first PDF or PNG is made, not at every start of hlr: its library
+// cairo is loaded when the first PNG (or PDF with labels) is made, not at every start of hlr: its library
 // and the sixteen it needs took 5-6 ms of each start (a third of `hlr --version`, a twentieth
 // of a small drawing). The functions are looked up once; a system without cairo gets an error
-// naming it when PDF or PNG is asked for, and everything else works.
+// naming it when PNG or a labelled PDF is asked for, and everything else works.
 #define HLR_CAIRO_FUNCTIONS(X) \
-  X(cairo_close_path) X(cairo_create) X(cairo_destroy) X(cairo_fill_preserve) \
-  X(cairo_image_surface_create) X(cairo_line_to) X(cairo_move_to) X(cairo_paint) \
-  X(cairo_pdf_surface_create_for_stream) X(cairo_pdf_surface_set_metadata) X(cairo_scale) \
+  X(cairo_close_path) X(cairo_copy_path) X(cairo_create) X(cairo_destroy) X(cairo_fill_preserve) \
+  X(cairo_font_options_create) X(cairo_font_options_destroy) X(cairo_font_options_set_hint_metrics) \
+  X(cairo_font_options_set_hint_style) X(cairo_image_surface_create) X(cairo_line_to) X(cairo_move_to) \
+  X(cairo_paint) X(cairo_path_destroy) X(cairo_recording_surface_create) X(cairo_scale) X(cairo_set_font_options) X(cairo_text_path) \
   X(cairo_select_font_face) X(cairo_set_dash) X(cairo_set_fill_rule) X(cairo_set_font_size) \
   X(cairo_set_line_cap) X(cairo_set_line_join) X(cairo_set_line_width) X(cairo_set_source_rgb) \
   X(cairo_show_text) X(cairo_status) X(cairo_status_to_string) X(cairo_stroke) \
@@ -39,12 +39,12 @@ Cairo load_cairo() {
   void* handle = dlopen("libcairo.so.2", RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
     const char* why = dlerror();
-    throw std::runtime_error(std::string("PDF and PNG output need the cairo library (Debian: apt install libcairo2): ") + (why ? why : "libcairo.so.2 not found"));
+    throw std::runtime_error(std::string("PNG output and PDF labels need the cairo library (Debian: apt install libcairo2): ") + (why ? why : "libcairo.so.2 not found"));
   }
   Cairo c;
 #define HLR_CAIRO_LOOKUP(name)                                                                       \
   c.name = reinterpret_cast<decltype(c.name)>(dlsym(handle, #name));                                 \
-  if (!c.name) throw std::runtime_error("the cairo library found has no " #name ": PDF and PNG output need cairo 1.16 or later");
+  if (!c.name) throw std::runtime_error("the cairo library found has no " #name ": PNG output and PDF labels need cairo 1.16 or later");
   HLR_CAIRO_FUNCTIONS(HLR_CAIRO_LOOKUP)
 #undef HLR_CAIRO_LOOKUP
   return c;  // the library stays loaded for the process
@@ -128,44 +128,7 @@ void check(cairo_status_t st) {
   if (st != CAIRO_STATUS_SUCCESS) throw std::runtime_error(std::string("cairo: ") + lib().cairo_status_to_string(st));
 }
 
-// SOURCE_DATE_EPOCH (seconds since 1970) as ISO 8601, or "" when it is not set or not a number.
-std::string source_date() {
-  const char* e = std::getenv("SOURCE_DATE_EPOCH");
-  if (!e || !*e) return "";
-  char* end = nullptr;
-  const long long t = std::strtoll(e, &end, 10);
-  if (*end != '\0' || t < 0) return "";
-  const std::time_t tt = static_cast<std::time_t>(t);
-  std::tm utc{};
-  if (!gmtime_r(&tt, &utc)) return "";
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return buf;
-}
-
 }  // namespace
-
-std::string sheet_to_pdf(const Sheet& sheet, const PlotStyle& style) {
-  std::string out;
-  const double pt = 72.0 / 25.4;
-  cairo_surface_t* surface = lib().cairo_pdf_surface_create_for_stream(append, &out, sheet.width_mm * pt, sheet.height_mm * pt);
-  lib().cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, "exact-hlr drawing");
-  lib().cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "exact-hlr");
-  // The same drawing gives the same bytes: no creation date from the clock (cairo writes none
-  // for a date it cannot read), or SOURCE_DATE_EPOCH's when set (reproducible builds).
-  lib().cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, source_date().c_str());
-  cairo_t* cr = lib().cairo_create(surface);
-  lib().cairo_scale(cr, pt, pt);
-  draw_sheet(cr, sheet, style);
-  cairo_status_t st = lib().cairo_status(cr);
-  lib().cairo_destroy(cr);
-  lib().cairo_surface_finish(surface);
-  cairo_status_t sst = lib().cairo_surface_status(surface);
-  lib().cairo_surface_destroy(surface);
-  check(st);
-  check(sst);
-  return out;
-}
 
 std::string sheet_to_png(const Sheet& sheet, const PlotStyle& style, double dpi) {
   const double px = dpi / 25.4;
@@ -182,6 +145,43 @@ std::string sheet_to_png(const Sheet& sheet, const PlotStyle& style, double dpi)
   std::string out;
   if (st == CAIRO_STATUS_SUCCESS) st = lib().cairo_surface_write_to_png_stream(surface, append, &out);
   lib().cairo_surface_destroy(surface);
+  check(st);
+  return out;
+}
+
+std::vector<OutlineOp> text_outline(const std::string& text, double x, double y, double anchor, double size) {
+  const Cairo& c = lib();
+  // An unbounded surface: on an image surface cairo drops the glyphs that fall outside it.
+  cairo_surface_t* surface = c.cairo_recording_surface_create(CAIRO_CONTENT_ALPHA, nullptr);
+  cairo_t* cr = c.cairo_create(surface);
+  // Device units of 1/100 mm: the font is scaled to 350 units, so its outline's 1/64-unit grid
+  // is 0.16 micrometres; no hinting, as on cairo's own PDF surface.
+  c.cairo_scale(cr, 100, 100);
+  cairo_font_options_t* fo = c.cairo_font_options_create();
+  c.cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
+  c.cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
+  c.cairo_set_font_options(cr, fo);
+  c.cairo_font_options_destroy(fo);
+  c.cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  c.cairo_set_font_size(cr, size);
+  cairo_text_extents_t e;
+  c.cairo_text_extents(cr, text.c_str(), &e);
+  c.cairo_move_to(cr, x - anchor * e.x_advance, y);
+  c.cairo_text_path(cr, text.c_str());
+  cairo_path_t* path = c.cairo_copy_path(cr);
+  std::vector<OutlineOp> out;
+  const cairo_status_t st = path->status;
+  for (int i = 0; st == CAIRO_STATUS_SUCCESS && i < path->num_data; i += path->data[i].header.length) {
+    const cairo_path_data_t* d = &path->data[i];
+    OutlineOp op{};
+    const int points = d->header.type == CAIRO_PATH_CURVE_TO ? 3 : d->header.type == CAIRO_PATH_CLOSE_PATH ? 0 : 1;
+    op.op = d->header.type == CAIRO_PATH_MOVE_TO ? 'm' : d->header.type == CAIRO_PATH_LINE_TO ? 'l' : d->header.type == CAIRO_PATH_CURVE_TO ? 'c' : 'h';
+    for (int k = 0; k < points; ++k) op.v[2 * k] = d[1 + k].point.x, op.v[2 * k + 1] = d[1 + k].point.y;
+    out.push_back(op);
+  }
+  c.cairo_path_destroy(path);
+  c.cairo_destroy(cr);
+  c.cairo_surface_destroy(surface);
   check(st);
   return out;
 }

@@ -13,6 +13,7 @@ PACKAGES=(build-essential cmake pkg-config
   libtbb-dev                              # oneTBB: the parallel loop
   libcairo2-dev libdxflib-dev             # PDF/PNG (cairo) and DXF (dxflib) output
   libmuparser-dev libpng-dev              # hlr horizon: expressions of x and z, PNG heightmaps
+  zlib1g-dev                              # the PDF writer's compression
   poppler-utils librsvg2-bin              # tests: pdfinfo/pdftoppm read our PDFs, rsvg-convert our SVGs
   python3-dev python3-pybind11 python3-pytest   # the Python module and its tests
   libgtest-dev libbenchmark-dev time   # time: peak memory in scripts/bench_render.sh

@@ -32,7 +32,9 @@ head -c 1 "$W/a.JSON" | grep -q '{' || { echo "JSON by upper-case extension: not
 "$HLR" render "$D/demo.yaml" --hidden dashed --dpi 96 -o "$W/a.png"
 "$HLR" render "$D/demo.yaml" --hidden dashed -o "$W/a.svg"
 rsvg-convert "$W/a.svg" -o "$W/b.png"
-python3 - "$W/a.png" "$W/b.png" <<'PY' || fail=1
+# An image against rsvg-convert's rendering of the SVG: sizes, dark pixels, each dark pixel near a
+# dark-ish one of the other.
+cat > "$W/same_picture.py" <<'PY'
 import struct, sys, zlib
 def read(path):
     data = open(path, 'rb').read()
@@ -72,10 +74,11 @@ def read(path):
             g.append(255 - (255 - v) * alpha / 255)
         rows.append(g)
     return w, h, rows
+what = sys.argv[3]
 wa, ha, A = read(sys.argv[1])
 wb, hb, B = read(sys.argv[2])
 if abs(wa - wb) > 1 or abs(ha - hb) > 1:
-    sys.exit(f"PNG preview {wa}x{ha} vs rsvg-convert {wb}x{hb}")
+    sys.exit(f"{what} {wa}x{ha} vs rsvg-convert {wb}x{hb}")
 w, h = min(wa, wb), min(ha, hb)
 dark_a = sum(1 for y in range(h) for x in range(w) if A[y][x] < 128)
 dark_b = sum(1 for y in range(h) for x in range(w) if B[y][x] < 128)
@@ -84,9 +87,22 @@ def near(I, x, y):
     return any(I[yy][xx] < 200 for yy in range(max(0, y - 1), min(h, y + 2)) for xx in range(max(0, x - 1), min(w, x + 2)))
 miss = sum(1 for y in range(h) for x in range(w) if (A[y][x] < 100 and not near(B, x, y)) or (B[y][x] < 100 and not near(A, x, y)))
 if dark_a == 0 or abs(dark_a - dark_b) > 0.15 * max(dark_a, dark_b) or miss > 0.01 * max(dark_a, dark_b):
-    sys.exit(f"PNG preview differs from rsvg-convert: dark pixels {dark_a} vs {dark_b}, unmatched {miss}")
-print(f"png: {w}x{h}, dark pixels {dark_a} vs {dark_b}, unmatched {miss}")
+    sys.exit(f"{what} differs from rsvg-convert: dark pixels {dark_a} vs {dark_b}, unmatched {miss}")
+print(f"{what}: {w}x{h}, dark pixels {dark_a} vs {dark_b}, unmatched {miss}")
 PY
+python3 "$W/same_picture.py" "$W/a.png" "$W/b.png" "PNG preview" || fail=1
+# The PDF (written by plot_pdf.cpp) as poppler draws it, against the SVG, without a word from
+# poppler on stderr; a sheet of views with labels (glyph outlines) and hidden dashes too.
+"$HLR" render "$D/demo.yaml" --hidden dashed -o "$W/p.pdf"
+pdftoppm -r 96 -png -singlefile "$W/p.pdf" "$W/p" 2>"$W/poppler.txt" || { echo "PDF: pdftoppm cannot read it"; fail=1; }
+python3 "$W/same_picture.py" "$W/p.png" "$W/b.png" "PDF" || fail=1
+"$HLR" render "$D/demo.yaml" --views front,top,right,iso --page 200x150mm --scale 1:1 --hidden dashed -o "$W/views.pdf"
+"$HLR" render "$D/demo.yaml" --views front,top,right,iso --page 200x150mm --scale 1:1 --hidden dashed -o "$W/views.svg"
+pdftoppm -r 96 -png -singlefile "$W/views.pdf" "$W/views" 2>>"$W/poppler.txt" || { echo "PDF: pdftoppm cannot read the sheet"; fail=1; }
+pdfinfo "$W/views.pdf" >/dev/null 2>>"$W/poppler.txt"
+rsvg-convert "$W/views.svg" -o "$W/views_svg.png"
+python3 "$W/same_picture.py" "$W/views.png" "$W/views_svg.png" "PDF sheet with labels" || fail=1
+[ ! -s "$W/poppler.txt" ] || { echo "PDF: poppler complains:"; cat "$W/poppler.txt"; fail=1; }
 "$HLR" render "$D/demo.yaml" --views front,top,right,iso --page A3 --landscape --scale 1:1 --hidden dashed --dashes geometry -o "$W/sheet.svg"
 grep -q ">FRONT</text>" "$W/sheet.svg" && grep -q ">ISO</text>" "$W/sheet.svg" && grep -q "scale 1:1" "$W/sheet.svg" || { echo "sheet: labels missing"; fail=1; }
 if grep -q "stroke-dasharray" "$W/sheet.svg"; then echo "sheet: --dashes geometry left a dasharray"; fail=1; fi

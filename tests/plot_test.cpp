@@ -1,6 +1,7 @@
 // The plotting 2D stage (issue 13): exact clean-up (points, end-on edges, overlaps), chaining
 // into the fewest strokes, pen order, dashes, pages, and the writers read back.
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <dxflib/dl_creationadapter.h>
 #include <dxflib/dl_dxf.h>
@@ -19,6 +20,7 @@
 #include "algorithms/path_chaining.hpp"
 #include "algorithms/pen_order.hpp"
 #include "algorithms/plot.hpp"
+#include "io/cairo_text.hpp"
 #include "io/plot_output.hpp"
 #include "io/render.hpp"
 #include "io/standard_views.hpp"
@@ -242,7 +244,9 @@ TEST(PlotCleanUp, PerspectiveAndRandomBoxes) {
     Plot p = make_plot(r.drawing, r.camera, po);
     EXPECT_EQ(overlap_length(p), 0) << what;
     EXPECT_EQ(p.stats.path_count, p.stats.min_path_count) << what;
-    if (expect_end_on) EXPECT_GT(p.stats.zero_length, 0u) << what;
+    if (expect_end_on) {
+      EXPECT_GT(p.stats.zero_length, 0u) << what;
+    }
     PlotOptions raw = po;
     raw.dedup = raw.chain = false;
     Plot q = make_plot(r.drawing, r.camera, raw);
@@ -462,7 +466,9 @@ TEST(PlotOutput, SvgPathsOfLongStrokesReadPointByPoint) {
     expected += "  <path d=\"M";
     for (std::size_t i = 0; i < s.points.size(); ++i) {
       const Point2 q = v.page(s.points[i]);
-      expected += (i > 1 ? " " : "") + svg_number(q[0]) + " " + svg_number(q[1]) + (i == 0 ? "L" : "");
+      if (i > 1) expected += ' ';
+      expected += svg_number(q[0]) + ' ' + svg_number(q[1]);
+      if (i == 0) expected += 'L';
     }
     expected += std::string(s.closed ? "Z" : "") + "\"/>\n";
   }
@@ -521,7 +527,9 @@ TEST(PlotOutput, DxfLongStrokesReadBackPointByPoint) {
   std::set<std::string> handles;
   std::vector<std::string> xs;
   while (std::getline(lines, code) && std::getline(lines, value)) {
-    if (code == "  5" || code == "105") EXPECT_TRUE(handles.insert(value).second) << "handle " << value << " twice";
+    if (code == "  5" || code == "105") {
+      EXPECT_TRUE(handles.insert(value).second) << "handle " << value << " twice";
+    }
     if (code == "  8") layer = value;
     if (code == " 10" && layer == "visible-edge") xs.push_back(value);
   }
@@ -547,6 +555,191 @@ TEST(PlotOutput, DxfLongStrokesReadBackPointByPoint) {
     }
   }
   EXPECT_GT(c.strokes["hidden-edge"].size(), 1000u);  // the dashes
+}
+
+// A PDF read back as a reader would: the cross-reference table's offsets, the objects, the
+// page's content stream inflated, its operators in order.
+struct PdfRead {
+  std::map<int, std::string> objects;  // number -> text between "N 0 obj" and "endobj"
+  std::string content;                 // the page's content stream, inflated
+  std::vector<std::string> layers;     // the optional-content groups' names, in /Order
+};
+
+PdfRead read_pdf(const std::string& pdf) {
+  PdfRead r;
+  EXPECT_EQ(pdf.rfind("%PDF-1.5\n", 0), 0u);
+  EXPECT_EQ(pdf.substr(pdf.size() - 6), "%%EOF\n");
+  const std::size_t sx = pdf.rfind("startxref\n");
+  const std::size_t xref = std::stoul(pdf.substr(sx + 10));
+  EXPECT_EQ(pdf.compare(xref, 5, "xref\n"), 0);
+  std::istringstream table(pdf.substr(xref + 5));
+  int first = -1, count = 0;
+  table >> first >> count;
+  EXPECT_EQ(first, 0);
+  table.ignore(1);
+  for (int k = 0; k < count; ++k) {
+    std::string entry(20, ' ');
+    table.read(entry.data(), 20);
+    EXPECT_EQ(entry.substr(17), k == 0 ? "f \n" : "n \n") << k;
+    if (k == 0) continue;
+    const std::size_t at = std::stoul(entry.substr(0, 10));
+    const std::string head = std::to_string(k) + " 0 obj\n";
+    EXPECT_EQ(pdf.compare(at, head.size(), head), 0) << "object " << k << " is not at its offset " << at;
+    const std::size_t end = pdf.find("\nendobj\n", at);
+    r.objects[k] = pdf.substr(at + head.size(), end - at - head.size());
+  }
+  EXPECT_NE(pdf.find("trailer\n<< /Size " + std::to_string(count) + " /Root 1 0 R"), std::string::npos);
+  const std::string& c = r.objects[4];
+  const std::size_t length = std::stoul(c.substr(c.find("/Length ") + 8));
+  const std::size_t at = c.find("stream\n") + 7;
+  EXPECT_EQ(c.compare(at + length, 10, "\nendstream"), 0) << "the stream's /Length";
+  z_stream z{};
+  EXPECT_EQ(inflateInit(&z), Z_OK);
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(c.data() + at));
+  z.avail_in = static_cast<uInt>(length);
+  std::vector<char> buf(1 << 16);
+  int rc = Z_OK;
+  while (rc == Z_OK) {
+    z.next_out = reinterpret_cast<Bytef*>(buf.data());
+    z.avail_out = static_cast<uInt>(buf.size());
+    rc = inflate(&z, Z_NO_FLUSH);
+    r.content.append(buf.data(), buf.size() - z.avail_out);
+  }
+  EXPECT_EQ(rc, Z_STREAM_END) << "the content stream is not one whole zlib stream (checksum included)";
+  EXPECT_EQ(z.avail_in, 0u);
+  inflateEnd(&z);
+  const std::string& catalog = r.objects[1];
+  const std::size_t order = catalog.find("/Order [");
+  if (order != std::string::npos) {
+    std::istringstream refs(catalog.substr(order + 8, catalog.find(']', order) - order - 8));
+    int n = 0;
+    std::string zero, R;
+    while (refs >> n >> zero >> R) {
+      const std::string& g = r.objects[n];
+      const std::size_t name = g.find("/Name (") + 7;
+      r.layers.push_back(g.substr(name, g.find(") >>", name) - name));
+    }
+  }
+  return r;
+}
+
+// The strokes of the content's layer `k` (its "/OC /Lk BDC" ... "EMC"): each "x y m", "x y l"
+// ..., "h" when closed, "S", as the coordinates' text.
+struct PdfStroke {
+  std::vector<std::string> xy;  // "x y" per point
+  bool closed = false;
+};
+std::vector<PdfStroke> pdf_layer_strokes(const std::string& content, std::size_t k) {
+  const std::string tag = "/OC /L" + std::to_string(k) + " BDC\n";
+  const std::size_t from = content.find(tag);
+  EXPECT_NE(from, std::string::npos) << tag;
+  std::istringstream lines(content.substr(from + tag.size(), content.find("EMC\n", from) - from - tag.size()));
+  std::vector<PdfStroke> out;
+  PdfStroke s;
+  for (std::string line; std::getline(lines, line);) {
+    const char op = line.back();
+    if (line.size() > 2 && line[line.size() - 2] == ' ' && (op == 'm' || op == 'l')) {
+      EXPECT_EQ(op == 'm', s.xy.empty()) << line;
+      s.xy.push_back(line.substr(0, line.size() - 2));
+    } else if (line == "h") {
+      s.closed = true;
+    } else if (line == "S") {
+      out.push_back(s);
+      s = PdfStroke{};
+    }
+  }
+  EXPECT_TRUE(s.xy.empty());
+  return out;
+}
+
+// The PDF is written here (plot_pdf.cpp), its content made in pieces and deflated in chunks on
+// all cores: the file must read back object by object, its stream as one zlib stream, every
+// stroke point by point as formatted (1, 2 and 8 threads, the same bytes), its layers those of
+// the SVG, and the content over a MiB (several chunks).
+TEST(PdfWriter, StrokesReadBackPointByPoint) {
+  const Plot p = long_stroke_plot(13, {1, 2, 3, 4095, 4096, 4097, 8192, 8193, 20000, 70000});
+  const PlotLayer& vis = p.layers[0];
+  const Sheet sheet = layout_single(p, PageOptions{});
+  const SheetView& v = sheet.views.at(0);
+  const PlotStyle style = hidden_cut_into_dashes();
+  const PdfRead r = read_pdf(same_on_all_thread_counts([&] { return sheet_to_pdf(sheet, style); }));
+  EXPECT_GT(r.content.size(), std::size_t{3} << 20);
+  const std::vector<std::string> names = sheet_layer_names(sheet);
+  ASSERT_EQ(r.layers.size(), names.size());
+  for (std::size_t n = 0; n < names.size(); ++n) EXPECT_EQ(r.layers[n], std::to_string(n + 1) + " " + names[n]);
+  EXPECT_EQ(r.content.rfind("q\n2.834645669291 0 0 -2.834645669291 0 " + svg_number(sheet.height_mm * 72 / 25.4) + " cm\n", 0), 0u);
+  const std::vector<PdfStroke> got = pdf_layer_strokes(r.content, 0);
+  ASSERT_EQ(got.size(), vis.strokes.size());
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    ASSERT_EQ(got[k].xy.size(), vis.strokes[k].points.size()) << k;
+    EXPECT_EQ(got[k].closed, vis.strokes[k].closed) << k;
+    for (std::size_t i = 0; i < got[k].xy.size(); ++i) {
+      const Point2 q = v.page(vis.strokes[k].points[i]);
+      ASSERT_EQ(got[k].xy[i], svg_number(q[0]) + " " + svg_number(q[1])) << k << " " << i;
+    }
+  }
+  // The hidden layer: the dashes page_strokes cuts, one path each.
+  std::vector<char> closed;
+  const auto dashes = page_strokes(v, p.layers[1], style, &closed);
+  const std::vector<PdfStroke> hidden = pdf_layer_strokes(r.content, 1);
+  ASSERT_EQ(hidden.size(), dashes.size());
+  for (std::size_t k = 0; k < dashes.size(); ++k) {
+    ASSERT_EQ(hidden[k].xy.size(), dashes[k].size()) << k;
+    EXPECT_EQ(hidden[k].xy.back(), svg_number(dashes[k].back()[0]) + " " + svg_number(dashes[k].back()[1])) << k;
+  }
+}
+
+// Pattern dashes, widths, the grey of lines seen through, fills and labels as the SVG has them.
+TEST(PdfWriter, StylesFillsAndLabels) {
+  Plot p;
+  PlotLayer vis, hid, through;
+  vis.kind = LineKind::Silhouette;
+  vis.strokes.push_back(Stroke{{{0, 0}, {10, 0}, {10, 10}}, true});
+  hid.visible = false;
+  hid.kind = through.kind = LineKind::Silhouette;
+  hid.strokes.push_back(Stroke{{{0, 5}, {10, 5}}, false});
+  through.visible = false;
+  through.through = true;
+  through.strokes.push_back(Stroke{{{5, 0}, {5, 10}}, false});
+  p.layers = {vis, through, hid};
+  PlotFill fill;
+  fill.colour = {1, 0.5, 0};
+  fill.rings = {{{0, 0}, {10, 0}, {10, 10}}};
+  p.fills.push_back(fill);
+  p.bounds = {0, 0, 10, 10};
+  Sheet sheet = layout_single(p, PageOptions{});
+  sheet.views[0].label = "FRONT";
+  sheet.caption = "scale (1:1)";
+  const PdfRead r = read_pdf(sheet_to_pdf(sheet, PlotStyle{}));
+  ASSERT_EQ(r.layers, (std::vector<std::string>{"surfaces", "1 visible-silhouette", "2 through-silhouette", "3 hidden-silhouette", "labels"}));
+  EXPECT_NE(r.content.find("/OC /L0 BDC\n1 j\n1 0.502 0 rg\n1 0.502 0 RG\n0.080 w\n"), std::string::npos) << r.content.substr(0, 300);
+  EXPECT_NE(r.content.find(" l\nh\nB*\nEMC\n"), std::string::npos);
+  EXPECT_NE(r.content.find("/OC /L1 BDC\n0.500 w\n0 0 0 RG\n[] 0 d\n"), std::string::npos);
+  EXPECT_NE(r.content.find("/OC /L2 BDC\n0.250 w\n0.502 0.502 0.502 RG\n[] 0 d\n"), std::string::npos);
+  EXPECT_NE(r.content.find("/OC /L3 BDC\n0.250 w\n0 0 0 RG\n[3.000 0.750] 0 d\n"), std::string::npos);
+  // Labels: glyph outlines filled, in the labels layer, nothing after it but the end.
+  const std::size_t labels = r.content.find("/OC /L4 BDC\n0 g\n");
+  ASSERT_NE(labels, std::string::npos);
+  const std::string text = r.content.substr(labels);
+  EXPECT_GT(std::count(text.begin(), text.end(), '\n'), 100);
+  EXPECT_NE(text.find(" c\n"), std::string::npos);  // curves: the glyphs' outlines
+  EXPECT_EQ(text.substr(text.size() - 8), "f\nEMC\nQ\n");
+  EXPECT_NE(r.objects.at(1).find("/OCProperties"), std::string::npos);
+  EXPECT_EQ(r.objects.at(3).find("/Font"), std::string::npos);  // no font: outlines
+}
+
+TEST(PdfWriter, LabelOutlinesAnywhereOnThePage) {
+  // cairo drops glyphs outside an image surface; the outlines come from an unbounded one.
+  for (double x : {0.0, 204.9, 5000.0}) {
+    const std::vector<OutlineOp> ops = text_outline("FRONT", x, x / 2, 0.5, 3.5);
+    ASSERT_GT(ops.size(), 20u) << x;
+    double lo = 1e300, hi = -1e300;
+    for (const OutlineOp& o : ops)
+      if (o.op != 'h') lo = std::min(lo, o.v[0]), hi = std::max(hi, o.v[0]);
+    EXPECT_NEAR((lo + hi) / 2, x, 0.5) << x;  // centred
+    EXPECT_GT(hi - lo, 8.0);                    // five letters of 3.5 mm
+    EXPECT_LT(hi - lo, 14.0);
+  }
 }
 
 }  // namespace
