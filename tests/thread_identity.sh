@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Output does not depend on the thread count (issue 14): the same bytes with --threads 1, 2
-# and 8 for line drawings (SVG with hidden lines, exact JSON, DXF with cut dashes) of a sphere, a cloud of
+# and 8 for line drawings (SVG with hidden lines, exact JSON, DXF with cut dashes, PDF) of a sphere, a cloud of
 # interpenetrating cubes and 400 random triangles (intersection lines, many cuts), the
 # visible surfaces (--surfaces), a raster (PNG and face ids) and a horizon (SVG and JSON).
 # The same bytes again with HLR_MALLOC=system (no huge pages) and =restart (the settings a
@@ -34,7 +34,9 @@ for m in sphere cubes tris; do
   same "$m.svg" "$hlr" render "$work/$m.off" --view 1,1.3,1.7 --hidden dashed --threads THREADS
   same "$m.json" "$hlr" render "$work/$m.off" --view 1,1.3,1.7 --format json --threads THREADS
   same "$m.dxf" "$hlr" render "$work/$m.off" --view 1,1.3,1.7 --hidden dashed --dashes geometry --format dxf --threads THREADS
+  same "$m.pdf" "$hlr" render "$work/$m.off" --view 1,1.3,1.7 --hidden dashed --format pdf --threads THREADS
 done
+same "demo-views.pdf" "$hlr" render "$data/demo.yaml" --views front,top,right,iso --page A3 --hidden dashed --format pdf --threads THREADS
 same "demo-surfaces.svg" "$hlr" render "$data/demo_lit.yaml" --surfaces --threads THREADS
 for t in 1 2 8; do
   "$hlr" raster "$work/sphere.off" --size 160x120 --samples 2 --ids "$work/ids.$t.png" --threads "$t" -o "$work/raster.$t.png" 2> "$work/err" \
