@@ -1,6 +1,7 @@
 // The plotting 2D stage (issue 13): exact clean-up (points, end-on edges, overlaps), chaining
 // into the fewest strokes, pen order, dashes, pages, and the writers read back.
 #include <gtest/gtest.h>
+#include <png.h>
 #include <zlib.h>
 
 #include <dxflib/dl_creationadapter.h>
@@ -650,6 +651,61 @@ std::vector<PdfStroke> pdf_layer_strokes(const std::string& content, std::size_t
   }
   EXPECT_TRUE(s.xy.empty());
   return out;
+}
+
+// A PNG's pixels as grey levels (libpng's simplified reader).
+std::vector<std::uint8_t> png_grey(const std::string& png, int& w, int& h) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  EXPECT_TRUE(png_image_begin_read_from_memory(&image, png.data(), png.size()));
+  image.format = PNG_FORMAT_GRAY;
+  std::vector<std::uint8_t> grey(PNG_IMAGE_SIZE(image));
+  EXPECT_TRUE(png_image_finish_read(&image, nullptr, grey.data(), 0, nullptr));
+  w = static_cast<int>(image.width), h = static_cast<int>(image.height);
+  return grey;
+}
+
+// The PNG is drawn in bands of 64 rows on all cores, each stroke cut to the parts that reach
+// its band (dashed parts stroked with the dash offset of their arc length): the picture must
+// be the one drawn on one surface, up to the arcs' polygon tolerance at the cuts, and the same
+// bytes on 1, 2 and 8 threads. Long random strokes (every band cuts them many times), pattern
+// dashes, lines seen through, fills.
+TEST(PngWriter, BandsDrawAsOneSurface) {
+  Plot p = long_stroke_plot(17, {2, 3, 40, 300});
+  for (Stroke& s : p.layers[1].strokes)
+    for (Point2& q : s.points) q = {q[0] * 20, q[1] * 20};  // hidden strokes across the page too
+  PlotLayer through = p.layers[0];
+  through.visible = false, through.through = true;
+  through.strokes.resize(3);
+  p.layers.push_back(through);
+  PlotFill fill;
+  fill.colour = {0.2, 0.6, 0.9};
+  fill.rings = {{{-40, -40}, {40, -30}, {0, 45}}, {{-5, -5}, {5, -5}, {0, 5}}};
+  p.fills.push_back(fill);
+  PlotStyle style;
+  style.hidden_dashed = true;  // pattern dashes
+  const Sheet sheet = layout_single(p, PageOptions{});
+  int w = 0, h = 0, w1 = 0, h1 = 0;
+  const std::string banded = same_on_all_thread_counts([&] { return sheet_to_png(sheet, style, 120); });
+  const std::vector<std::uint8_t> a = png_grey(banded, w, h);
+  const std::vector<std::uint8_t> b = png_grey(png_in_bands(sheet, style, 120, 1 << 30), w1, h1);
+  ASSERT_EQ(w, w1);
+  ASSERT_EQ(h, h1);
+  ASSERT_GT(h, 640);  // ten bands and more
+  // Pixels more than 16 levels apart: the arcs' polygons at the cuts, and dash ends moved by
+  // cairo's 1/256-pixel points summed along the whole stroke (the bands start each part's
+  // pattern from the exact arc length).
+  std::size_t apart = 0, dark = 0;
+  int most = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const int d = std::abs(int(a[i]) - int(b[i]));
+    apart += d > 16;
+    dark += b[i] < 128;
+    most = std::max(most, d);
+  }
+  EXPECT_GT(dark, a.size() / 20);
+  EXPECT_LE(most, 64) << apart << " pixels apart";
+  EXPECT_LT(apart, dark / 1000) << "most " << most;
 }
 
 // The PDF is written here (plot_pdf.cpp), its content made in pieces and deflated in chunks on
