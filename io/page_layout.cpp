@@ -204,4 +204,17 @@ std::vector<std::string> sheet_layer_names(const Sheet& sheet) {
   return names;
 }
 
+std::vector<SheetLayer> sheet_layers(const Sheet& sheet, const PlotStyle& style) {
+  std::vector<SheetLayer> out;
+  const std::vector<std::string> names = sheet_layer_names(sheet);
+  for (std::size_t n = 0; n < names.size(); ++n) {
+    SheetLayer l{names[n], style.numbered_layers ? std::to_string(n + 1) + " " + names[n] : names[n], nullptr};
+    for (const SheetView& v : sheet.views)
+      for (const PlotLayer& p : v.plot->layers)
+        if (!l.layer && p.name() == names[n]) l.layer = &p;
+    out.push_back(std::move(l));
+  }
+  return out;
+}
+
 }  // namespace hlr

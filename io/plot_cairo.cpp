@@ -81,7 +81,7 @@ struct PaintLayer {
   PaintLayer(const SheetView& v, const PlotLayer& l, const PlotStyle& style) : strokes(v, l, style) {
     width = style.weight(l);
     grey = l.through;
-    dashed = !l.visible && !l.through && style.hidden_dashed && style.dashes == DashMode::Pattern;
+    dashed = style.pattern_dashed(l);
     pattern = style.dash_pattern(l);
     extent.resize(strokes.size());
     ParallelLoop().for_each(strokes.size(), 64, [&](std::size_t s) {

@@ -44,7 +44,7 @@ void write_tables(DL_Dxf& dxf, DL_WriterA& dw, const std::vector<std::string>& n
   dw.tableLayers(static_cast<int>(names.size()) + 1);
   dxf.writeLayer(dw, DL_LayerData("0", 0), DL_Attributes("", 7, -1, 25, "CONTINUOUS"));
   for (std::size_t i = 0; i < names.size(); ++i) {
-    const bool dashed = !layers[i]->visible && !layers[i]->through && style.hidden_dashed && style.dashes == DashMode::Pattern;
+    const bool dashed = style.pattern_dashed(*layers[i]);
     dxf.writeLayer(dw, DL_LayerData(names[i], 0),
                    DL_Attributes("", layers[i]->visible ? 7 : 8, -1, lineweight(style.weight(*layers[i])), dashed ? "DASHED" : "CONTINUOUS"));
   }

@@ -70,6 +70,10 @@ struct PlotStyle {
   bool hidden_dashed = true;     // false: hidden lines solid (thin)
   bool numbered_layers = true;   // AxiDraw-style "1 visible-silhouette"
   double weight(const PlotLayer& l) const;
+  /// Drawn with the dash pattern (hidden lines, dashed, not cut into dash strokes).
+  bool pattern_dashed(const PlotLayer& l) const {
+    return !l.visible && !l.through && hidden_dashed && dashes == DashMode::Pattern;
+  }
   /// ISO 128 dashed narrow line: dash 12 d, gap 3 d (d: line width).
   std::array<double, 2> dash_pattern(const PlotLayer& l) const;
 };
@@ -91,5 +95,14 @@ std::string sheet_to_dxf(const Sheet& sheet, const PlotStyle& style);
 
 /// All layer names of the sheet in drawing order (visible first), for `--layers` and tests.
 std::vector<std::string> sheet_layer_names(const Sheet& sheet);
+
+/// A line layer of the sheet as the writers show it: its name, its label (AxiDraw's number
+/// first when the style numbers layers) and one of the views' layers of that name (they share
+/// kind and visibility, so width, colour and dashes).
+struct SheetLayer {
+  std::string name, label;
+  const PlotLayer* layer = nullptr;
+};
+std::vector<SheetLayer> sheet_layers(const Sheet& sheet, const PlotStyle& style);
 
 }  // namespace hlr

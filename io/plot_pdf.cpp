@@ -138,22 +138,19 @@ std::string content(const Sheet& sheet, const PlotStyle& style, std::vector<Laye
     out += "EMC\n";
   }
   out += "1 J 1 j\n";
-  const std::vector<std::string> names = sheet_layer_names(sheet);
-  for (std::size_t n = 0; n < names.size(); ++n) {
-    const PlotLayer* any = nullptr;
-    for (const SheetView& v : sheet.views)
-      for (const PlotLayer& l : v.plot->layers)
-        if (l.name() == names[n]) any = &l;
-    const bool dashed = !any->visible && !any->through && style.hidden_dashed && style.dashes == DashMode::Pattern;
-    const auto pat = style.dash_pattern(*any);
-    begin_layer(style.numbered_layers ? std::to_string(n + 1) + " " + names[n] : names[n]);
-    out += svg_number(style.weight(*any));
-    out += any->through ? " w\n0.502 0.502 0.502 RG\n[" : " w\n0 0 0 RG\n[";
-    if (dashed) out += svg_number(pat[0]) + ' ' + svg_number(pat[1]);
+  for (const SheetLayer& sl : sheet_layers(sheet, style)) {
+    const PlotLayer& any = *sl.layer;
+    begin_layer(sl.label);
+    out += svg_number(style.weight(any));
+    out += any.through ? " w\n0.502 0.502 0.502 RG\n[" : " w\n0 0 0 RG\n[";
+    if (style.pattern_dashed(any)) {
+      const auto pat = style.dash_pattern(any);
+      out += svg_number(pat[0]) + ' ' + svg_number(pat[1]);
+    }
     out += "] 0 d\n";
     for (const SheetView& v : sheet.views)
       for (const PlotLayer& l : v.plot->layers)
-        if (l.name() == names[n]) append_strokes(out, v, l, style);
+        if (l.name() == sl.name) append_strokes(out, v, l, style);
     out += "EMC\n";
   }
   bool labels = !sheet.caption.empty();

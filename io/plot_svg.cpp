@@ -75,24 +75,16 @@ std::string sheet_to_svg(const Sheet& sheet, const PlotStyle& style) {
       }
     out += "</g>\n";
   }
-  const std::vector<std::string> names = sheet_layer_names(sheet);
-  for (std::size_t n = 0; n < names.size(); ++n) {
-    const PlotLayer* any = nullptr;
+  for (const SheetLayer& sl : sheet_layers(sheet, style)) {
+    const PlotLayer& any = *sl.layer;
+    const auto pat = style.dash_pattern(any);
+    out += "<g inkscape:groupmode=\"layer\" inkscape:label=\"" + sl.label + "\" id=\"" + sl.name +
+           "\" fill=\"none\" stroke=\"" + std::string(any.through ? kThroughGrey : "#000") + "\" stroke-width=\"" + f(style.weight(any)) +
+           "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"" +
+           (style.pattern_dashed(any) ? " stroke-dasharray=\"" + f(pat[0]) + " " + f(pat[1]) + "\"" : std::string()) + ">\n";
     for (const SheetView& v : sheet.views)
       for (const PlotLayer& l : v.plot->layers)
-        if (l.name() == names[n]) any = &l;
-    const bool dashed = !any->visible && !any->through && style.hidden_dashed && style.dashes == DashMode::Pattern;
-    auto pat = style.dash_pattern(*any);
-    std::string label = style.numbered_layers ? std::to_string(n + 1) + " " + names[n] : names[n];
-    out += "<g inkscape:groupmode=\"layer\" inkscape:label=\"" + label + "\" id=\"" + names[n] +
-           "\" fill=\"none\" stroke=\"" + std::string(any->through ? kThroughGrey : "#000") + "\" stroke-width=\"" + f(style.weight(*any)) +
-           "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"" +
-           (dashed ? " stroke-dasharray=\"" + f(pat[0]) + " " + f(pat[1]) + "\"" : std::string()) + ">\n";
-    for (const SheetView& v : sheet.views)
-      for (const PlotLayer& l : v.plot->layers) {
-        if (l.name() != names[n]) continue;
-        append_layer(out, v, l, style);
-      }
+        if (l.name() == sl.name) append_layer(out, v, l, style);
     out += "</g>\n";
   }
   bool labels = !sheet.caption.empty();
