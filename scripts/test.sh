@@ -20,7 +20,8 @@ sanitize_pass() {
   CC=clang CXX=clang++ HLR_BUILD_DIR="$ROOT/build-asan" HLR_BUILD_TYPE=RelWithDebInfo \
     "$ROOT/scripts/setup.sh" -DHLR_SANITIZE=ON -DHLR_FUZZ=ON -DHLR_BUILD_BENCHMARKS=OFF
   HLR_CORPUS_DIR="$ROOT/build-asan/corpus" "$ROOT/scripts/extract_corpus.sh" >/dev/null
-  (cd "$ROOT/build-asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j "$JOBS")
+  (cd "$ROOT/build-asan" && ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$ROOT/tests/lsan.supp" \
+    UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j "$JOBS")
 }
 
 case "$mode" in
