@@ -46,7 +46,7 @@ print("|---|---|---|---|---|---|")
 for f in ("svg", "pdf", "png", "dxf", "json"):
     one, two = rows[f][1], rows[f][2]
     med = lambda xs, k: statistics.median(x[k] for x in xs)
-    print("| %s | %.2f (%.2f) | %.2f (%.2f) | %.2fx | %.0f | %.1f |" % (
+    print("| %s | %.2f (%.2f) | %.2f (%.2f) | %.2fx | %.0f | %.2f |" % (
         f.upper(), med(two, 0), med(one, 0), med(two, 1), med(one, 1), med(one, 1) / med(two, 1),
         max(x[2] for x in two + one), two[0][3] / 1e6))
 PY
