@@ -184,9 +184,9 @@ std::string check_output_args(const OutputArgs& a, bool sheet) {
   return format;
 }
 
-std::vector<std::string> drawing_text(const std::vector<RenderResult>& results, const std::vector<std::string>& view_names,
-                                      const OutputArgs& a, const std::string& format, const std::string& command) {
-  std::vector<std::string> text;
+PartText drawing_text(const std::vector<RenderResult>& results, const std::vector<std::string>& view_names, const OutputArgs& a,
+                      const std::string& format, const std::string& command) {
+  PartText text;
   std::vector<Plot> plots;
   if (format == "json") {
     // The exact pieces, and the numbers of the 2D stage a plotter would get (drawing units).
@@ -206,7 +206,7 @@ std::vector<std::string> drawing_text(const std::vector<RenderResult>& results, 
     if (r0.priority) sj = SurfacesJson{nullptr, &r0.face_colours, &*r0.priority};
     if (r0.shadows) sj.shadows = &*r0.shadows, sj.shadow_colours = &r0.shadow_colours;
     if (r0.transparent) sj.transparent = &*r0.transparent, sj.transparent_colours = &r0.transparent_colours;
-    text = to_json_parts(r0.names, r0.drawing, r0.camera, plot ? &plot->stats : nullptr, sj);
+    text = to_json_text(r0.names, r0.drawing, r0.camera, plot ? &plot->stats : nullptr, sj);
   } else {
     progress("strokes");
     const PlotOptions po = plot_options(a);
@@ -214,7 +214,7 @@ std::vector<std::string> drawing_text(const std::vector<RenderResult>& results, 
       plots.push_back(make_plot(r.drawing, r.camera, po));
       add_surface_fills(plots.back(), r);
     }
-    text.push_back(plots_text(plots, view_names, a, format, command, results[0].camera.perspective));
+    text.add(plots_text(plots, view_names, a, format, command, results[0].camera.perspective));
   }
   return text;
 }

@@ -4,6 +4,8 @@
 // 2D stage, the page layout, the writers; or the exact JSON).
 #pragma once
 
+#include "io/atomic_file.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -29,11 +31,12 @@ void add_output_options(CLI::App* cmd, OutputArgs& a, bool sheets);
 /// Checks the options (before any long work) and returns the format: svg, pdf, png, dxf, json.
 std::string check_output_args(const OutputArgs& a, bool sheet);
 
-/// The file's content, in consecutive parts: JSON of the first drawing (with the 2D stage's
+/// The file's content, in parts (the JSON's segments made as they are written: `results` must
+/// outlive the text): JSON of the first drawing (with the 2D stage's
 /// numbers), or the sheet of all drawings (`view_names` label them and place them as standard
 /// views when not empty).
-std::vector<std::string> drawing_text(const std::vector<RenderResult>& results, const std::vector<std::string>& view_names, const OutputArgs& a,
-                         const std::string& format, const std::string& command);
+PartText drawing_text(const std::vector<RenderResult>& results, const std::vector<std::string>& view_names, const OutputArgs& a,
+                      const std::string& format, const std::string& command);
 
 /// The plotting options of `a` (hidden layers, clean-up and chaining unless --raw, threads).
 PlotOptions plot_options(const OutputArgs& a);

@@ -85,7 +85,7 @@ int run_horizon(const HorizonArgs& a) {
   // The picture formats straight from the runs where the clean-up needs no exact decision
   // (HorizonDrawing::plot); JSON, --raw and the rest through the exact model.
   t0 = Clock::now();
-  std::vector<std::string> text;
+  PartText text;
   double t_model = 0;
   std::optional<Plot> plot;
   if (format != "json" && !a.raw) {
@@ -94,7 +94,7 @@ int run_horizon(const HorizonArgs& a) {
   }
   if (plot) {
     std::vector<Plot> plots{std::move(*plot)};
-    text.push_back(plots_text(plots, {}, a, format, "horizon"));
+    text.add(plots_text(plots, {}, a, format, "horizon"));
   } else {
     results.push_back(hd.model(a.grid.empty() ? "y = " + a.expression : a.grid));
     t_model = since(t0);

@@ -169,8 +169,8 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
     merge_tiles(results[0].drawing, merge->tiles, merge->paths, a.threads);
   }
   auto t_solved = Clock::now();
-  std::vector<std::string> text;
-  if (tile) text.push_back(tile_text(results[0].drawing, tile->index, tile->count, tile_args()));
+  PartText text;
+  if (tile) text.add(tile_text(results[0].drawing, tile->index, tile->count, tile_args()));
   else text = drawing_text(results, view_names, a, format, merge ? "merge" : "render");
   write_output(a.output, text);
   if (a.timings) {

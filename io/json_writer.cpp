@@ -288,14 +288,11 @@ std::string surfaces_text(const SurfacesJson& sj, const Camera& camera) {
 
 std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r, const Camera& camera, const PlotStats* plot,
                     const SurfacesJson& surfaces) {
-  std::vector<std::string> parts = to_json_parts(bodies, r, camera, plot, surfaces);
-  std::string out;
-  append_parts(out, parts);
-  return out;
+  return to_json_text(bodies, r, camera, plot, surfaces).str();
 }
 
-std::vector<std::string> to_json_parts(const std::vector<DrawingBody>& bodies, const LineDrawing& r, const Camera& camera,
-                                       const PlotStats* plot, const SurfacesJson& surfaces) {
+PartText to_json_text(const std::vector<DrawingBody>& bodies, const LineDrawing& r, const Camera& camera, const PlotStats* plot,
+                      const SurfacesJson& surfaces) {
   Json j;
   Json view;
   if (camera.perspective) {
@@ -334,28 +331,25 @@ std::vector<std::string> to_json_parts(const std::vector<DrawingBody>& bodies, c
     out += "]}";
   }
   out += "\n ],\n \"segments\": [";
-  // One line per piece, formatted on every core in runs of segments and joined in order (no
-  // document of every piece in memory at once).
+  // One line per piece, made on every core in runs of segments as the text is written (the
+  // pieces' text is never all in memory). The first piece has no comma before it.
   constexpr std::size_t kRun = 2048;
-  std::vector<std::string> parts((r.segments.size() + kRun - 1) / kRun);
-  ParallelLoop().for_each(parts.size(), 1, [&](std::size_t c) {
-    for (std::size_t k = c * kRun, end = std::min(r.segments.size(), k + kRun); k < end; ++k)
+  std::size_t first = r.segments.size();
+  for (std::size_t k = 0; k < r.segments.size() && first == r.segments.size(); ++k)
+    if (!r.segments[k].pieces.empty()) first = k;
+  PartText text;
+  text.add(std::move(out));
+  text.add_run((r.segments.size() + kRun - 1) / kRun, [&r, first](std::size_t c, std::string& part) {
+    for (std::size_t k = c * kRun, end = std::min(r.segments.size(), k + kRun); k < end; ++k) {
+      bool lead = k == first;
       for (const Piece& p : r.segments[k].pieces) {
-        parts[c] += ",\n  ";
-        append_piece_json(parts[c], r.segments[k], p);
+        part += lead ? "\n  " : ",\n  ";
+        lead = false;
+        append_piece_json(part, r.segments[k], p);
       }
-  });
-  for (std::string& part : parts)
-    if (!part.empty()) {
-      part.erase(0, 1);  // the first piece has no comma before it
-      break;
     }
-  std::vector<std::string> text;
-  text.reserve(parts.size() + 2);
-  text.push_back(std::move(out));
-  for (std::string& part : parts)
-    if (!part.empty()) text.push_back(std::move(part));
-  out.clear();
+  });
+  out = std::string();
   out += "\n ],\n \"stats\": " + j["stats"].dump();
   if (plot) {
     Json pj;
@@ -379,7 +373,7 @@ std::vector<std::string> to_json_parts(const std::vector<DrawingBody>& bodies, c
   if (surfaces.shadows) out += shadows_text(surfaces);
   if (surfaces.transparent) out += transparency_text(surfaces);
   out += "\n}\n";
-  text.push_back(std::move(out));
+  text.add(std::move(out));
   return text;
 }
 

@@ -2,6 +2,8 @@
 // exact rational in lowest terms, world coordinates; one body and one segment per line.
 #pragma once
 
+#include "io/atomic_file.hpp"
+
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -44,10 +46,10 @@ struct SurfacesJson {
 };
 std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
                     const PlotStats* plot, const SurfacesJson& surfaces);
-/// The same text in consecutive parts, as made on all cores (a 1M-triangle drawing's JSON is
-/// 335 MB: written part by part, it is never held twice).
-std::vector<std::string> to_json_parts(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
-                                       const PlotStats* plot, const SurfacesJson& surfaces);
+/// The same text, its segments' lines made on all cores as it is written (a 1M-triangle
+/// drawing's JSON is 335 MB: it is never all in memory). `drawing` must outlive the text.
+PartText to_json_text(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera, const PlotStats* plot,
+                      const SurfacesJson& surfaces);
 
 /// One piece of a segment as it appears in `segments` of the JSON; also used by `hlr explain`,
 /// so both print the same.
