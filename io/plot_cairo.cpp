@@ -69,8 +69,8 @@ cairo_status_t append(void* closure, const unsigned char* data, unsigned int len
   return CAIRO_STATUS_SUCCESS;
 }
 
-// A band of the picture: page y from y0 to y1 (mm), plus `margin` on both sides (half the
-// widest line and two pixels: nothing drawn outside it reaches the band's pixels).
+// A band of the picture: page y from y0 to y1 (mm), the band's rows widened on both sides by
+// half the widest line and two pixels (nothing drawn outside that reaches the band's pixels).
 struct Band {
   double y0, y1;
   bool meets(double lo, double hi) const { return hi >= y0 && lo <= y1; }
@@ -109,9 +109,9 @@ std::vector<std::unique_ptr<PaintLayer>> paint_layers(const Sheet& sheet, const 
   return out;
 }
 
-void draw_fills(cairo_t* cr, const Sheet& sheet, const Band& band) {
-  lib().cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
-  lib().cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+// Each fill's vertical extent on the page (edge included), in the order the views hold them.
+std::vector<std::array<double, 2>> fill_extents(const Sheet& sheet) {
+  std::vector<std::array<double, 2>> out;
   for (const SheetView& v : sheet.views)
     for (const PlotFill& fl : v.plot->fills) {
       double lo = 1e300, hi = -1e300;
@@ -120,7 +120,19 @@ void draw_fills(cairo_t* cr, const Sheet& sheet, const Band& band) {
           const double y = v.page(q)[1];
           lo = std::min(lo, y), hi = std::max(hi, y);
         }
-      if (!band.meets(lo - fl.edge_mm, hi + fl.edge_mm)) continue;
+      out.push_back({lo - fl.edge_mm, hi + fl.edge_mm});
+    }
+  return out;
+}
+
+void draw_fills(cairo_t* cr, const Sheet& sheet, const std::vector<std::array<double, 2>>& extents, const Band& band) {
+  lib().cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+  lib().cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  std::size_t f = 0;
+  for (const SheetView& v : sheet.views)
+    for (const PlotFill& fl : v.plot->fills) {
+      const auto& e = extents[f++];
+      if (!band.meets(e[0], e[1])) continue;
       for (const auto& ring : fl.rings) {
         for (std::size_t i = 0; i < ring.size(); ++i) {
           Point2 p = v.page(ring[i]);
@@ -203,8 +215,9 @@ void draw_stroke(cairo_t* cr, const PaintLayer& l, std::size_t s, const Band& ba
   c.cairo_stroke(cr);
 }
 
-void draw_band(cairo_t* cr, const Sheet& sheet, const std::vector<std::unique_ptr<PaintLayer>>& layers, const Band& band) {
-  draw_fills(cr, sheet, band);
+void draw_band(cairo_t* cr, const Sheet& sheet, const std::vector<std::array<double, 2>>& fills,
+               const std::vector<std::unique_ptr<PaintLayer>>& layers, const Band& band) {
+  draw_fills(cr, sheet, fills, band);
   lib().cairo_set_source_rgb(cr, 0, 0, 0);
   lib().cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   lib().cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
@@ -256,6 +269,7 @@ std::string png_in_bands(const Sheet& sheet, const PlotStyle& style, double dpi,
     unsigned char* data = c.cairo_image_surface_get_data(surface);
     const int stride = c.cairo_image_surface_get_stride(surface);
     const auto layers = paint_layers(sheet, style);
+    const auto fills = fill_extents(sheet);
     double widest = 0.08;
     for (const auto& l : layers) widest = std::max(widest, l->width);
     for (const SheetView& v : sheet.views)
@@ -272,7 +286,7 @@ std::string png_in_bands(const Sheet& sheet, const PlotStyle& style, double dpi,
       c.cairo_paint(cr);
       c.cairo_translate(cr, 0, -y0);
       c.cairo_scale(cr, px, px);
-      draw_band(cr, sheet, layers, Band{y0 / px - margin, (y0 + rows) / px + margin});
+      draw_band(cr, sheet, fills, layers, Band{y0 / px - margin, (y0 + rows) / px + margin});
       status[b] = c.cairo_status(cr);
       c.cairo_destroy(cr);
       c.cairo_surface_finish(part);
