@@ -1,6 +1,7 @@
 // Mesh repairs (see mesh_repair.hpp).
 #include "algorithms/mesh_repair.hpp"
 
+#include <algorithm>
 #include <atomic>
 
 #include "algorithms/parallel.hpp"
@@ -40,7 +41,9 @@ std::optional<MeshRepair> remove_zero_area_triangles(const Polyhedron& body) {
   });
   if (!any) return std::nullopt;
   std::vector<Face> faces = body.faces();
-  int removed = 0;
+  std::vector<int> input(faces.size());  // per face of `faces`: its input number
+  for (std::size_t f = 0; f < input.size(); ++f) input[f] = static_cast<int>(f);
+  std::vector<int> removed, joined;
   std::string which;
   for (std::size_t f = 0; f < faces.size();) {
     int a, m, c;
@@ -60,13 +63,23 @@ std::optional<MeshRepair> remove_zero_area_triangles(const Polyhedron& body) {
       continue;
     }
     faces[other].insert(faces[other].begin() + pos + 1, m);
-    which += (which.empty() ? "" : ", ") + std::to_string(f + removed);
+    joined.push_back(input[other]);
+    removed.push_back(input[f]);
+    which += (which.empty() ? "" : ", ") + std::to_string(input[f]);
     faces.erase(faces.begin() + static_cast<long>(f));
-    ++removed;
+    input.erase(input.begin() + static_cast<long>(f));
   }
-  if (removed == 0) return std::nullopt;
-  MeshRepair out{Polyhedron(vs, std::move(faces)), {}};
-  out.notes.push_back("has " + std::to_string(removed) + " zero-area triangle" + (removed > 1 ? "s" : "") + " (face " + which +
+  if (removed.empty()) return std::nullopt;
+  std::sort(joined.begin(), joined.end());
+  joined.erase(std::unique(joined.begin(), joined.end()), joined.end());
+  // A joined face removed later is named removed only.
+  joined.erase(std::remove_if(joined.begin(), joined.end(),
+                              [&](int g) { return std::find(removed.begin(), removed.end(), g) != removed.end(); }),
+               joined.end());
+  std::sort(removed.begin(), removed.end());
+  const std::size_t n = removed.size();
+  MeshRepair out{Polyhedron(vs, std::move(faces)), {}, std::move(input), std::move(removed), std::move(joined)};
+  out.notes.push_back("has " + std::to_string(n) + " zero-area triangle" + (n > 1 ? "s" : "") + " (face " + which +
                       ": three collinear vertices): removed, the middle vertex joined to the neighbouring face");
   return out;
 }

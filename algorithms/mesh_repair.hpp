@@ -14,6 +14,10 @@ namespace hlr {
 struct MeshRepair {
   Polyhedron body;
   std::vector<std::string> notes;  // what was changed, after the body's name: "had ...; ..."
+  /// Per face of `body`: its number in the input body (outputs name faces by these).
+  std::vector<int> input_face;
+  /// The input's numbers of the faces removed, and of the faces that took a middle vertex.
+  std::vector<int> removed, joined;
 };
 
 /// Removes every triangle whose three (distinct) vertices are collinear: its middle vertex m is

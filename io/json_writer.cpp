@@ -17,6 +17,15 @@ using Json = nlohmann::ordered_json;
 Json exact_point(const Point3& p) { return Json::array({to_string(p.x()), to_string(p.y()), to_string(p.z())}); }
 Json exact_vector(const Vector3& v) { return Json::array({to_string(v.x()), to_string(v.y()), to_string(v.z())}); }
 
+constexpr signed char kRemoved = 2;  // a face the repair removed (mesh_repair.hpp)
+
+// A repaired body's facing in its input's numbering, its removed faces kRemoved.
+std::vector<signed char> input_facing(const DrawingBody& body, const std::vector<signed char>& facing) {
+  std::vector<signed char> out(body.input_faces(facing.size()), kRemoved);
+  for (std::size_t f = 0; f < facing.size() && f < body.input_face.size(); ++f) out[static_cast<std::size_t>(body.input_face[f])] = facing[f];
+  return out;
+}
+
 // A body's faces as JSON strings ("facing", "non-facing", "edge-on"), comma-separated, as
 // nlohmann's dump writes an array of them; made on all cores in runs of faces.
 void append_facing(std::string& out, const std::vector<signed char>& facing) {
@@ -27,7 +36,7 @@ void append_facing(std::string& out, const std::vector<signed char>& facing) {
     for (std::size_t k = c * kRun, end = std::min(facing.size(), k + kRun); k < end; ++k) {
       if (k) t += ',';
       const signed char e = facing[k];
-      t += e < 0 ? "\"non-facing\"" : e == 0 ? "\"edge-on\"" : "\"facing\"";
+      t += e == kRemoved ? "\"removed\"" : e < 0 ? "\"non-facing\"" : e == 0 ? "\"edge-on\"" : "\"facing\"";
     }
   });
   append_parts(out, parts);
@@ -95,6 +104,12 @@ std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& r
 
 namespace {
 
+// The input's number of face f of body b (a repaired body's faces keep their input numbers).
+using Bodies = std::vector<DrawingBody>;
+int face_number(const Bodies& bodies, int b, int f) {
+  return b >= 0 && static_cast<std::size_t>(b) < bodies.size() ? bodies[static_cast<std::size_t>(b)].output_face(f) : f;
+}
+
 std::string hex_colour(const Rgb& colour) {
   auto c = rgb8(colour);
   char hex[8];
@@ -102,7 +117,7 @@ std::string hex_colour(const Rgb& colour) {
   return hex;
 }
 
-std::string priority_text(const SurfacesJson& sj, const Camera& camera) {
+std::string priority_text(const Bodies& bodies, const SurfacesJson& sj, const Camera& camera) {
   const PriorityResult& pr = *sj.priority;
   PicturePlane pp(camera);
   Json axes;
@@ -114,7 +129,7 @@ std::string priority_text(const SurfacesJson& sj, const Camera& camera) {
     const PriorityPolygon& p = pr.polygons[pr.order[k]];
     Json jp;
     jp["body"] = p.body;
-    jp["face"] = p.face;
+    jp["face"] = face_number(bodies, p.body, p.face);
     jp["piece"] = p.piece;
     jp["cut"] = pr.order[k] >= static_cast<int>(pr.initial);
     if (sj.colours) jp["shade"] = hex_colour((*sj.colours)[p.body][p.face]);
@@ -155,7 +170,7 @@ Json polygon_json(const VisiblePolygon& p) {
   return jp;
 }
 
-std::string shadows_text(const SurfacesJson& sj) {
+std::string shadows_text(const Bodies& bodies, const SurfacesJson& sj) {
   const Shadows& sh = *sj.shadows;
   std::string out = ",\n \"shadows\": {\n  \"lights\": " + std::to_string(sh.from_light.size()) + ",\n  \"faces\": [";
   Rational total = 0, dark = 0;
@@ -163,7 +178,7 @@ std::string shadows_text(const SurfacesJson& sj) {
     const ShadowFace& f = sh.faces[k];
     Json jf;
     jf["body"] = f.body;
-    jf["face"] = f.face;
+    jf["face"] = face_number(bodies, f.body, f.face);
     jf["side"] = f.front ? "front" : "back";
     jf["area"] = to_string(f.area2 / 2);
     jf["shadow_area"] = to_string(f.shadow_area2 / 2);
@@ -204,14 +219,14 @@ std::string shadows_text(const SurfacesJson& sj) {
   return out;
 }
 
-std::string transparency_text(const SurfacesJson& sj) {
+std::string transparency_text(const Bodies& bodies, const SurfacesJson& sj) {
   const TransparentPicture& tp = *sj.transparent;
   std::string out = ",\n \"transparency\": {\n  \"regions\": [";
   for (std::size_t k = 0; k < tp.regions.size(); ++k) {
     const TransparentRegion& r = tp.regions[k];
     Json jr;
     Json faces = Json::array();
-    for (auto [b, f] : r.faces) faces.push_back(Json::array({b, f}));
+    for (auto [b, f] : r.faces) faces.push_back(Json::array({b, face_number(bodies, b, f)}));
     jr["faces"] = faces;
     if (sj.transparent_colours) jr["colour"] = hex_colour((*sj.transparent_colours)[k]);
     auto ring = [](const std::vector<Exact2>& pts) {
@@ -234,7 +249,7 @@ std::string transparency_text(const SurfacesJson& sj) {
   return out;
 }
 
-std::string surfaces_text(const SurfacesJson& sj, const Camera& camera) {
+std::string surfaces_text(const Bodies& bodies, const SurfacesJson& sj, const Camera& camera) {
   const VisibleSurfaces& vs = *sj.surfaces;
   PicturePlane pp(camera);
   Json axes;
@@ -248,7 +263,7 @@ std::string surfaces_text(const SurfacesJson& sj, const Camera& camera) {
     const VisibleFace& f = vs.faces[i];
     Json jf;
     jf["body"] = f.body;
-    jf["face"] = f.face;
+    jf["face"] = face_number(bodies, f.body, f.face);
     jf["side"] = f.front ? "front" : "back";
     if (sj.colours) jf["shade"] = hex_colour((*sj.colours)[f.body][f.face]);
     Rational area = 0;
@@ -327,8 +342,20 @@ PartText to_json_text(const std::vector<DrawingBody>& bodies, const LineDrawing&
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     out += std::string(i ? "," : "") + "\n  {\"name\":" + Json(bodies[i].name).dump() + ",\"source\":" + Json(bodies[i].source).dump() +
            ",\"faces\":[";
-    if (i < r.facing.size()) append_facing(out, r.facing[i]);
-    out += "]}";
+    if (i < r.facing.size()) {
+      if (bodies[i].input_face.empty()) append_facing(out, r.facing[i]);
+      else append_facing(out, input_facing(bodies[i], r.facing[i]));
+    }
+    out += "]";
+    auto list = [&](const char* key, const std::vector<int>& faces) {
+      if (faces.empty()) return;
+      out += std::string(",\"") + key + "\":[";
+      for (std::size_t k = 0; k < faces.size(); ++k) out += (k ? "," : "") + std::to_string(faces[k]);
+      out += "]";
+    };
+    list("removed_faces", bodies[i].removed_faces);
+    list("repaired_faces", bodies[i].repaired_faces);
+    out += "}";
   }
   out += "\n ],\n \"segments\": [";
   // One line per piece, made on every core in runs of segments as the text is written (the
@@ -368,10 +395,10 @@ PartText to_json_text(const std::vector<DrawingBody>& bodies, const LineDrawing&
     pj["pen_up_length_unordered"] = mm(plot->pen_up_unordered);
     out += ",\n \"plot\": " + pj.dump();
   }
-  if (surfaces.surfaces) out += surfaces_text(surfaces, camera);
-  if (surfaces.priority) out += priority_text(surfaces, camera);
-  if (surfaces.shadows) out += shadows_text(surfaces);
-  if (surfaces.transparent) out += transparency_text(surfaces);
+  if (surfaces.surfaces) out += surfaces_text(bodies, surfaces, camera);
+  if (surfaces.priority) out += priority_text(bodies, surfaces, camera);
+  if (surfaces.shadows) out += shadows_text(bodies, surfaces);
+  if (surfaces.transparent) out += transparency_text(bodies, surfaces);
   out += "\n}\n";
   text.add(std::move(out));
   return text;

@@ -468,7 +468,7 @@ namespace {
 
 nlohmann::ordered_json legend(const RasterResult& r) {
   nlohmann::ordered_json faces = nlohmann::ordered_json::array();
-  for (const auto& [b, f] : r.scene.faces) faces.push_back({{"body", b}, {"name", r.render.names[b].name}, {"face", f}});
+  for (const auto& [b, f] : r.scene.faces) faces.push_back({{"body", b}, {"name", r.render.names[b].name}, {"face", r.render.names[b].output_face(f)}});
   return faces;
 }
 

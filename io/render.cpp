@@ -177,10 +177,8 @@ std::vector<char> see_through_bodies(const RenderResult& r) {
 // Transparency (issue 16): the regions of equal face lists, each composited back to front,
 // I = (1 − τ)·I_face + τ·I_behind, from white paper behind everything.
 void solve_transparency(RenderResult& r, const std::vector<const Polyhedron*>& polys, const LineDrawing& all) {
-  std::vector<char> see(polys.size(), 0);
-  bool any = false;
-  for (std::size_t b = 0; b < polys.size(); ++b) any = any || (see[b] = material_of(r, b).transparency > 0);
-  if (!any) return;
+  const std::vector<char> see = see_through_bodies(r);
+  if (std::find(see.begin(), see.end(), 1) == see.end()) return;
   r.transparent = transparent_regions(polys, r.camera, all, see);
   const std::array<double, 3> eye = d3(r.camera.eye), view = unit3(d3(r.camera.direction));
   for (const TransparentRegion& reg : r.transparent->regions) {
@@ -251,7 +249,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
   SurfaceOptions so;
   so.threads = o.lines.threads;
   so.lift = o.surface_corners;
-  so.faces = o.surface_faces;
+  so.faces = o.surface_faces || o.shadows;  // the shadows are cut from the regions of each face
   so.exact_groups = false;  // the groups only feed the fills (add_surface_fills)
   std::map<std::array<int, 3>, int> group_of;
   so.face_group.resize(r.bodies.size());
@@ -361,8 +359,12 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   for (Scene& s : *owned) {
     if (!scene_view && is_scene_file(s.file)) scene_view = &s.view;
     for (SceneBody& b : s.bodies) {
+      DrawingBody name{b.name, b.source};
       if (auto fixed = remove_zero_area_triangles(b.body)) {
         b.body = std::move(fixed->body);
+        name.input_face = std::move(fixed->input_face);
+        name.removed_faces = std::move(fixed->removed);
+        name.repaired_faces = std::move(fixed->joined);
         for (const std::string& n : fixed->notes) repairs.push_back(b.source + ": body '" + b.name + "' " + n);
         if (!b.face_texcoords.empty()) {  // the faces changed: their texture corners no longer match
           b.face_texcoords.clear();
@@ -371,7 +373,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
       }
       r.bodies.push_back(&b);
       polys.push_back(&b.body);
-      r.names.push_back({b.name, b.source});
+      r.names.push_back(std::move(name));
     }
   }
   if (o.method == RenderMethod::Roberts)
@@ -425,6 +427,8 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
 }
 
 Lighting render_lighting(const RenderResult& r) { return scene_lighting(*r.scenes, r.camera); }
+
+std::vector<LightPlace> render_light_places(const RenderResult& r) { return light_places(render_lighting(r)); }
 
 Material body_material(const RenderResult& r, std::size_t b) { return material_of(r, b); }
 

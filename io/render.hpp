@@ -122,6 +122,10 @@ void add_surface_fills(Plot& plot, const RenderResult& result);
 /// directional light, else the default lights for the camera.
 Lighting render_lighting(const RenderResult& result);
 
+/// Where those lights are, exactly, in their order (the shadow pass's lights: bit i of a
+/// ShadowRegion's `lights` is light i here).
+std::vector<LightPlace> render_light_places(const RenderResult& result);
+
 /// The material of body b (its own, else the palette's default colour).
 Material body_material(const RenderResult& result, std::size_t body);
 

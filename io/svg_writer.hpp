@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithms/drawing_2d.hpp"
@@ -12,7 +13,16 @@ namespace hlr {
 
 /// A body's name and source file, as the writers label it.
 struct DrawingBody {
+  DrawingBody() = default;
+  DrawingBody(std::string n, std::string s) : name(std::move(n)), source(std::move(s)) {}
   std::string name, source;
+  /// After a repair (mesh_repair.hpp): per face drawn, its number in the input; the input's
+  /// numbers of the faces removed and of those changed. Empty: the faces are the input's.
+  std::vector<int> input_face, removed_faces, repaired_faces;
+  /// The input's number of drawn face f: what every output calls it.
+  int output_face(int f) const { return input_face.empty() ? f : input_face[static_cast<std::size_t>(f)]; }
+  /// How many faces the input body had.
+  std::size_t input_faces(std::size_t drawn) const { return drawn + removed_faces.size(); }
 };
 
 /// A number as the SVG writers print it: three decimals, fixed (deterministic, diffable).

@@ -92,7 +92,7 @@ struct Drawing {
       const hlr::PriorityPolygon& p = r->priority->polygons[i];
       py::dict d;
       d["body"] = p.body;
-      d["face"] = p.face;
+      d["face"] = r->names[p.body].output_face(p.face);
       d["piece"] = p.piece;
       d["cut"] = i >= static_cast<int>(r->priority->initial);
       auto c = hlr::rgb8(r->face_colours[p.body][p.face]);
@@ -113,7 +113,7 @@ struct Drawing {
     for (const hlr::VisibleFace& f : r->surfaces->faces) {
       py::dict d;
       d["body"] = f.body;
-      d["face"] = f.face;
+      d["face"] = r->names[f.body].output_face(f.face);
       d["side"] = f.front ? "front" : "back";
       auto c = hlr::rgb8(r->face_colours[f.body][f.face]);
       char hex[8];
@@ -230,7 +230,7 @@ struct Image {
       for (int i = 0; i < r->ids.width; ++i) {
         int id = r->ids.at(i, j);
         if (id < 0) row.append(py::none());
-        else row.append(py::make_tuple(r->scene.faces[id][0], r->scene.faces[id][1]));
+        else row.append(py::make_tuple(r->scene.faces[id][0], r->render.names[r->scene.faces[id][0]].output_face(r->scene.faces[id][1])));
       }
       rows.append(row);
     }
