@@ -25,33 +25,14 @@ struct HorizonArgs : OutputArgs {
   bool timings = false;
 };
 
-// The notes' view: the surface turned about x (elevation) and y (azimuth): the direction toward
-// the viewer is (cos e sin a, sin e, cos e cos a). Each angle is realised exactly as the
-// rational rotation whose tangent of the half angle is the nearest multiple of 1/4096 (within
-// 0.01 degree of the angle asked for): small exact numbers, so the horizon stays fast.
-Rotation rotation_near(const Rational& degrees) {
-  const double pi = 3.14159265358979323846;
-  double d = std::fmod(to_double(degrees), 360.0);
-  if (d > 180) d -= 360;
-  if (d < -180) d += 360;
-  if (std::fabs(std::fabs(d) - 180) < 1e-12) return Rotation{-1, 0, true, 0};
-  double t = std::tan(d * pi / 360);
-  Rational q(static_cast<long>(std::llround(t * 4096)), 4096L);
-  q.canonicalize();
-  return rotation_from_tan_half(q);
-}
-
 Vector3 view_from_angles(const std::string& text) {
   auto comma = text.find(',');
   if (comma == std::string::npos) throw std::invalid_argument("--angles: '" + text + "' is not ELEVATION,AZIMUTH in degrees");
-  Rotation e, a;
   try {
-    e = rotation_near(parse_rational(text.substr(0, comma)));
-    a = rotation_near(parse_rational(text.substr(comma + 1)));
+    return horizon_view_from_angles(parse_rational(text.substr(0, comma)), parse_rational(text.substr(comma + 1)));
   } catch (const NumberError& err) {
     throw std::invalid_argument(std::string("--angles: ") + err.what());
   }
-  return Vector3(e.cos * a.sin, e.sin, e.cos * a.cos);
 }
 
 int run_horizon(const HorizonArgs& a) {
@@ -123,7 +104,7 @@ void add_horizon_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--height", a->height, "Heightmaps: the height of the brightest value (default 1/4; exact)");
   cmd->add_option("--x", a->x, "x range FROM:TO[:SAMPLES] (default -1:1:81; for --grid the columns set the count)");
   cmd->add_option("--z", a->z, "z range FROM:TO[:CUTS] (default -1:1:41; for --grid the rows set the count)");
-  cmd->add_option("--angles", a->angles, "View as the notes turn it: ELEVATION,AZIMUTH in degrees (about x, then y; default 30,30; each realised exactly within 0.01 degree)");
+  cmd->add_option("--angles", a->angles, "View as the notes turn it: ELEVATION,AZIMUTH in degrees (about x, then y; default 30,30; each realised exactly within 0.001 degree)");
   cmd->add_option("--view", a->view, "View direction X,Y,Z toward the viewer (instead of --angles; needs a z component)");
   cmd->add_option("--up", a->up, "Up direction (default 0,1,0)");
   cmd->add_option("--cuts", a->cuts, "z (default: the cuts z = const and the side edges), x (the cuts x = const) or both (a grid)")

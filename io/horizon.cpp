@@ -1,6 +1,8 @@
 // `hlr horizon` as a library (see horizon.hpp).
 #include "io/horizon.hpp"
 
+#include "kernel/rotation.hpp"
+
 #include <muParser.h>
 
 #include <png.h>
@@ -20,6 +22,13 @@
 #include "io/text_reader.hpp"
 
 namespace hlr {
+
+Vector3 horizon_view_from_angles(const Rational& elevation, const Rational& azimuth) {
+  const Rotation e = rotation_from_degrees(elevation, kHorizonAngleErrorDegrees);
+  const Rotation a = rotation_from_degrees(azimuth, kHorizonAngleErrorDegrees);
+  return Vector3(e.cos * a.sin, e.sin, e.cos * a.cos);
+}
+
 namespace {
 
 std::vector<Rational> samples(const SampleRange& r) {

@@ -14,6 +14,15 @@
 
 namespace hlr {
 
+/// How close the notes' view angles are realised (horizon_view_from_angles).
+inline constexpr double kHorizonAngleErrorDegrees = 0.001;
+
+/// The notes' view: the surface turned about x (elevation) and then y (azimuth), in degrees;
+/// the direction toward the viewer is (cos e sin a, sin e, cos e cos a). Each angle is realised
+/// exactly as the rational rotation with the smallest numbers within kHorizonAngleErrorDegrees
+/// of it (rotation_from_degrees): small exact numbers, so the horizon stays fast.
+Vector3 horizon_view_from_angles(const Rational& elevation_degrees, const Rational& azimuth_degrees);
+
 /// `count` samples from `from` to `to` (both included), evenly spaced, exact.
 struct SampleRange {
   Rational from = -1, to = 1;

@@ -2,6 +2,7 @@
 #include "kernel/rotation.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace hlr {
@@ -44,7 +45,10 @@ Rotation rotation_from_cos_sin(const Rational& c, const Rational& s) {
   return Rotation{c, s, true, 0};
 }
 
-Rotation rotation_from_degrees(const Rational& degrees) {
+Rotation rotation_from_degrees(const Rational& degrees) { return rotation_from_degrees(degrees, kRotationErrorBoundDegrees); }
+
+Rotation rotation_from_degrees(const Rational& degrees, double max_error_degrees) {
+  if (!(max_error_degrees >= kRotationErrorBoundDegrees)) max_error_degrees = kRotationErrorBoundDegrees;
   // Reduce to (-180, 180].
   mpz_class turns = degrees.get_num() / (degrees.get_den() * 360);
   Rational d = degrees - Rational(turns * 360);
@@ -65,10 +69,16 @@ Rotation rotation_from_degrees(const Rational& degrees) {
     flip = true;
   }
   // t = tan(d/2) in long double (64-bit mantissa): its error is far below 1e-17. The
-  // continued fraction keeps |t_rational - t| <= 1e-14. Since |d atan/dt| <= 1, the realised
-  // angle 2·atan(t_rational) is within 2·(1e-14 + 1e-17) rad ~ 1.2e-12 degrees of d.
-  long double half = static_cast<long double>(d.get_d()) * (3.14159265358979323846264338327950288L / 360.0L);
-  Rational t = continued_fraction(std::tan(half), 1e-14L);
+  // continued fraction keeps |t_rational - t| <= tol, tol = (bound in radians)/2 less 1e-16
+  // for the errors of t and of the check. Since |d atan/dt| <= 1, the realised angle
+  // 2·atan(t_rational) is within 2·(tol + 1e-16) rad of d: within the bound (the default's
+  // tol = 1e-14 gives 1.2e-12 degrees).
+  const long double pi = 3.14159265358979323846264338327950288L;
+  long double half = static_cast<long double>(d.get_d()) * (pi / 360.0L);
+  const long double tol = max_error_degrees == kRotationErrorBoundDegrees
+                              ? 1e-14L
+                              : static_cast<long double>(max_error_degrees) * pi / 360.0L - 1e-16L;
+  Rational t = continued_fraction(std::tan(half), tol);
   Rotation r = rotation_from_tan_half(t);
   // By Niven's theorem no rational number of degrees other than a multiple of 90 has both a
   // rational sine and a rational cosine, so this rotation is never exactly the one asked for.
@@ -77,14 +87,18 @@ Rotation rotation_from_degrees(const Rational& degrees) {
     r.sin = -r.sin;
   }
   r.exact = false;
-  r.max_error_degrees = kRotationErrorBoundDegrees;
+  r.max_error_degrees = max_error_degrees;
   return r;
 }
 
 std::string describe(const Rotation& r) {
   std::string s = (r.exact ? "exact rotation" : "rational rotation") + std::string(" cos=") +
                   to_string(r.cos) + " sin=" + to_string(r.sin);
-  if (!r.exact) s += " (angle within 1e-11 degrees of the one asked for)";
+  if (!r.exact) {
+    char bound[32];
+    std::snprintf(bound, sizeof bound, "%g", r.max_error_degrees);
+    s += std::string(" (angle within ") + bound + " degrees of the one asked for)";
+  }
   return s;
 }
 

@@ -28,6 +28,11 @@ inline constexpr double kRotationErrorBoundDegrees = 1e-11;
 /// kRotationErrorBoundDegrees of the angle, with exact = false.
 Rotation rotation_from_degrees(const Rational& degrees);
 
+/// The same with the smallest numbers whose angle is within `max_error_degrees` (at least
+/// kRotationErrorBoundDegrees) of the one asked for: the first convergent of the continued
+/// fraction of tan(angle/2) close enough. Exact for multiples of 90.
+Rotation rotation_from_degrees(const Rational& degrees, double max_error_degrees);
+
 /// Exact rotation from the tangent of the half-angle t: cos = (1-t^2)/(1+t^2),
 /// sin = 2t/(1+t^2).
 Rotation rotation_from_tan_half(const Rational& t);

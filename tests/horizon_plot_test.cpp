@@ -5,7 +5,9 @@
 // pieces of different cuts on one line seen from the side), equal heights, touching cuts.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
+#include <string>
 #include <random>
 
 #include "algorithms/plot.hpp"
@@ -102,4 +104,35 @@ TEST(HorizonPlot, FallsBackWhereTheFrameIsNotTheIdentity) {
 }
 
 }  // namespace
+}  // namespace hlr
+
+// The view angles `hlr horizon --angles` takes are realised within the bound --help states
+// (kHorizonAngleErrorDegrees), for every elevation and azimuth on a fine grid and for the
+// decimals users type: the realised angles are read back from the exact view direction.
+namespace hlr {
+TEST(HorizonAngles, RealisedWithinTheStatedBound) {
+  const long double pi = 3.14159265358979323846264338327950288L, deg = 180 / pi;
+  auto ld = [](const Rational& q) { return static_cast<long double>(q.get_d()); };
+  long double worst = 0;
+  auto check = [&](const std::string& e, const std::string& a) {
+    const Vector3 v = horizon_view_from_angles(parse_rational(e), parse_rational(a));
+    // (cos e sin a, sin e, cos e cos a), exactly of length 1.
+    EXPECT_EQ(v.x() * v.x() + v.y() * v.y() + v.z() * v.z(), 1) << e << "," << a;
+    const long double ge = std::atan2(ld(v.y()), std::hypot(ld(v.x()), ld(v.z()))) * deg;
+    const long double ga = std::atan2(ld(v.x()), ld(v.z())) * deg;
+    const long double we = std::stold(e), wa = std::stold(a);
+    long double da = std::fabs(ga - wa);
+    if (da > 180) da = 360 - da;
+    const long double err = std::max(std::fabs(ge - we), da);
+    worst = std::max(worst, err);
+    EXPECT_LE(err, kHorizonAngleErrorDegrees + 1e-9) << "--angles " << e << "," << a;
+  };
+  for (int e = -178; e <= 178; e += 3)  // elevations in (-90, 90) by 1.5 degrees
+    for (int a = -359; a <= 359; a += 7) check(std::to_string(e / 2.0), std::to_string(a / 2.0));
+  for (const char* ea : {"30,30", "35,-20", "-20,30", "35,0", "12.345,67.891", "89.99,0.01", "-0.004,179.999", "45,45", "60,-135"}) {
+    std::string t(ea);
+    check(t.substr(0, t.find(',')), t.substr(t.find(',') + 1));
+  }
+  EXPECT_GT(worst, 0);  // the angles are not exact: the check measures something
+}
 }  // namespace hlr
