@@ -261,7 +261,7 @@ std::array<Vector3, 2> horizon_axes(const HeightGrid& g, const Camera& cam) {
   return {r, u};
 }
 
-HorizonResult floating_horizon_exact(const HeightGrid& g, const Camera& cam, std::vector<HorizonStep>* trace) {
+HorizonResult floating_horizon_exact(const HeightGrid& g, const Camera& cam, std::vector<HorizonStep>* trace, HorizonRule rule) {
   const std::size_t nx = g.xs.size(), nz = g.zs.size();
   const Vector3& v = cam.direction;
   // Picture axes as the exact clean-up's (unnormalised): X = P·r, Y = P·u.
@@ -280,7 +280,8 @@ HorizonResult floating_horizon_exact(const HeightGrid& g, const Camera& cam, std
   std::vector<Lines> strip_lines(nz);
   std::vector<Env> strip_up(nz), strip_lo(nz);
   ParallelLoop loop;
-  loop.for_each(nz > 0 ? nz - 1 : 0, 1, [&](std::size_t km1) {
+  const bool strips = rule == HorizonRule::Strips;
+  loop.for_each(nz > 0 && strips ? nz - 1 : 0, 1, [&](std::size_t km1) {
     const std::size_t k = km1 + 1;
     const std::size_t j = static_cast<std::size_t>(res.order[k]), jp = static_cast<std::size_t>(res.order[k - 1]);
     const std::size_t j0 = std::min(j, jp), j1 = std::max(j, jp);
@@ -299,7 +300,7 @@ HorizonResult floating_horizon_exact(const HeightGrid& g, const Camera& cam, std
     const std::size_t j = static_cast<std::size_t>(res.order[k]);
     std::vector<P2> c(nx);
     for (std::size_t i = 0; i < nx; ++i) c[i] = project(i, j);
-    if (k > 0) {  // the strip between this cut and the previous one, in front of this cut
+    if (k > 0 && strips) {  // the strip between this cut and the previous one, in front of this cut
       U = merge(U, strip_up[k], true);
       L = merge(L, strip_lo[k], false);
       Env().swap(strip_up[k]);
@@ -338,7 +339,7 @@ HorizonResult floating_horizon_exact(const HeightGrid& g, const Camera& cam, std
                 }
           }
     }
-    if (k == 0) {  // the nearest cut is the first geometry: a strip of zero width
+    if (k == 0 || !strips) {  // the nearest cut is the first geometry: a strip of zero width
       Env cut;
       std::vector<std::size_t> idx(nx - 1);
       for (std::size_t i = 0; i + 1 < nx; ++i) idx[i] = c[0].x < c[1].x ? i : nx - 2 - i;
@@ -346,7 +347,8 @@ HorizonResult floating_horizon_exact(const HeightGrid& g, const Camera& cam, std
         const P2 &p = c[i].x < c[i + 1].x ? c[i] : c[i + 1], &q = c[i].x < c[i + 1].x ? c[i + 1] : c[i];
         push(cut, p.x, q.x, lines.through(p.x, p.y, q.x, q.y));
       }
-      U = cut, L = cut;
+      if (k == 0) U = cut, L = cut;
+      else U = merge(U, cut, true), L = merge(L, cut, false);  // the notes' rule: the cut joins the horizons
     }
     res.horizon_breakpoints = std::max({res.horizon_breakpoints, U.size(), L.size()});
   }

@@ -92,8 +92,16 @@ struct HorizonStep {
 /// floating_horizon_filtered.hpp); with one, floating_horizon_exact().
 HorizonResult floating_horizon(const HeightGrid& grid, const Camera& camera, std::vector<HorizonStep>* trace = nullptr);
 
+/// What the horizons are made of. Strips: the projected strip of the surface between each cut
+/// and the one in front of it (the exact surface; the default and the drawing's rule). Cuts: the
+/// cuts alone, as the notes' method grows them (each cut tested against the upper and lower
+/// envelopes of the cuts in front of it, then merged into them): where a strip rises above
+/// both of its cuts in the picture, it sees a far cut the surface hides (the exam page).
+enum class HorizonRule { Strips, Cuts };
+
 /// The same sweep on rationals throughout (the exam page's trace, and the tests' reference).
-HorizonResult floating_horizon_exact(const HeightGrid& grid, const Camera& camera, std::vector<HorizonStep>* trace = nullptr);
+HorizonResult floating_horizon_exact(const HeightGrid& grid, const Camera& camera, std::vector<HorizonStep>* trace = nullptr,
+                                     HorizonRule rule = HorizonRule::Strips);
 
 /// The checks both sweeps make (the grid's shape and order, an orthographic view with a z
 /// component, cuts running left to right) and the picture axes r = up × v, u = v × r. Throws

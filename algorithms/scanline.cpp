@@ -55,8 +55,11 @@ std::optional<ExactSpan> exact_span(const RasterScene& s, const RasterPolygon& p
       continue;
     }
     const Rational x = -rest / B;
-    if (B > 0 && (!has_l || x > out.xl)) out.xl = x, out.left = static_cast<int>(k), has_l = true;
-    if (B < 0 && (!has_r || x < out.xr)) out.xr = x, out.right = static_cast<int>(k), has_r = true;
+    // A row through a corner meets both sides there: the bound is the side that continues
+    // below the row (its ΔX is the change to the next row down).
+    const bool below = std::min(a[1], b[1]) < y;
+    if (B > 0 && (!has_l || x > out.xl || (x == out.xl && below))) out.xl = x, out.left = static_cast<int>(k), has_l = true;
+    if (B < 0 && (!has_r || x < out.xr || (x == out.xr && below))) out.xr = x, out.right = static_cast<int>(k), has_r = true;
   }
   if (!has_l || !has_r || out.xl > out.xr) return std::nullopt;
   return out;

@@ -24,7 +24,8 @@ struct ScanlineStats {
 };
 
 /// The exact span of polygon p on the row at picture height y: X_L <= x <= X_R, and the sides
-/// that bound it (side k runs from corner k to k + 1; -1: none). Empty when the row misses it.
+/// that bound it (side k runs from corner k to k + 1; -1: none); on a row through a corner, the
+/// side that continues below the row. Empty when the row misses it.
 struct ExactSpan {
   Rational xl, xr;
   int left = -1, right = -1;

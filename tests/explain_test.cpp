@@ -446,7 +446,7 @@ namespace {
 
 // The horizon page (issue 18): every crossing printed is the meeting of the two lines printed
 // beside it, each point's picture coordinates follow from the axes printed, and the visible
-// runs are those of the drawing (render_horizon) of the same grid.
+// runs are the notes' method's (each cut against the cuts in front).
 TEST(Explain, HorizonPageValuesFollowFromEachOther) {
   Problem pr = load_problem(std::string(HLR_DATA_DIR) + "/problems/horizon_small.yaml");
   SolutionJson s = explain(pr);
@@ -502,12 +502,38 @@ TEST(Explain, HorizonPageValuesFollowFromEachOther) {
     }
   }
   EXPECT_EQ(points, 15);
-  EXPECT_GE(crossings, 3);
+  EXPECT_GE(crossings, 2);
   // The far cut is hidden behind the peak between its crossings: t in (1/6, 5/6) of segment 1-2.
   bool found = false;
   for (const auto& v : s["result"]["visible"])
     if (v["cut"] == 0 && v["segment"] == 1 && v["t"][1] == "1/6") found = true;
   EXPECT_TRUE(found);
+}
+
+// The page answers by the notes' method: two cuts seen along (0, 1, 2) with a ridge across the
+// cell from the far cut's left end (height 1) to the near cut's right end (height 1). The notes
+// test the far cut against the near one alone, Y = 4y − 2z: the far cut runs from Y = 4 down to
+// 0, the near one from −2 up to 2, so the far cut is on one side of it everywhere: visible
+// whole. The exact surface's strip (the triangles (0,0)-(1,0)-(1,1) and (0,0)-(1,1)-(0,1), split
+// along the ridge) covers the band between Y = 4 − 2X and Y = −2 + 4X, which holds the far cut
+// for X < 3/4: the drawing sees only [3/4, 1] of it, and the page says so beside the answer.
+TEST(Explain, HorizonPageAnswersByTheNotesMethod) {
+  SolutionJson s = explain(load_problem_text("problem: horizon\nheights:\n  - [1, 0]\n  - [0, 1]\nx: [0, 1]\nz: [0, 1]\n"
+                                             "view:\n  direction: [0, 1, 2]\n",
+                                             "ridge.yaml"));
+  auto runs = [&](const char* key) {
+    std::vector<std::string> out;
+    for (const auto& v : s["result"][key])
+      if (v["cut"] == 0) out.push_back(v["t"][0].get<std::string>() + "," + v["t"][1].get<std::string>());
+    return out;
+  };
+  EXPECT_EQ(runs("visible"), std::vector<std::string>({"0,1"}));
+  EXPECT_EQ(runs("visible_exact_surface"), std::vector<std::string>({"3/4,1"}));
+  const auto& diff = table(s, "horizon_exact", "horizon_differences");
+  ASSERT_EQ(diff.size(), 1u);
+  EXPECT_EQ(diff[0][0], "0");
+  EXPECT_EQ(diff[0][2], "[0, 1]");
+  EXPECT_EQ(diff[0][3], "[3/4, 1]");
 }
 
 }  // namespace
@@ -672,6 +698,27 @@ TEST(Explain, RasterPageByHand) {
   for (const auto& r : table(s, "rs_warnock", "rs_windows"))
     filled = filled || r[3]["en"].get<std::string>().rfind("filled with A", 0) == 0;
   EXPECT_TRUE(filled) << "a window filled at once by the surrounding square";
+}
+
+// A row through a corner of a polygon (the notes: ΔX is "the change to the next row down"): on
+// row 2 (y = 7/2) the quadrilateral A(4, 1/2) B(7, 3) C(4, 11/2) D(2, 7/2) has its left corner D;
+// the side above it, C-D, changes by −1 per row, the side the row continues on, D-A, by 2/3.
+// The rows above and below D take C-D and D-A as by hand.
+TEST(Explain, ScanLineRowThroughACornerTakesTheSideBelow) {
+  SolutionJson s = explain(load_problem_text("problem: raster\n"
+                                             "bodies:\n  - name: P\n    vertices: [[4, 1/2, 0], [7, 3, 0], [4, 11/2, 0], [2, 7/2, 0]]\n"
+                                             "    faces: [[0, 1, 2, 3]]\n"
+                                             "view: {direction: [0, 0, 1], up: [0, 1, 0]}\nsize: [8, 6]\nwindow: [0, 8, 0, 6]\n",
+                                             "corner.yaml"));
+  std::map<std::string, std::pair<std::string, std::string>> left;  // row -> (X_L, ΔX_L)
+  for (const auto& r : table(s, "rs_scanline", "rs_spans")) left[r[0]] = {r[2], r[4]};
+  ASSERT_TRUE(left.count("2"));
+  EXPECT_EQ(left["2"].first, "2");
+  EXPECT_EQ(left["2"].second, "2/3");  // D-A, not C-D's −1
+  EXPECT_EQ(left["1"].second, "-1");   // row 1 (y = 9/2) lies on C-D
+  EXPECT_EQ(left["3"].second, "2/3");  // row 3 (y = 5/2) lies on D-A
+  // X_L one row down is X_L + ΔX_L, on every row that has a next one on the same side.
+  EXPECT_EQ(parse_rational(left["3"].first), parse_rational(left["2"].first) + parse_rational(left["2"].second));
 }
 
 TEST(Explain, RasterProblemErrors) {

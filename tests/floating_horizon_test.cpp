@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <random>
 #include <map>
 #include <tuple>
 
@@ -204,4 +205,70 @@ TEST(FloatingHorizon, RefusesViewsItCannotTake) {
 }
 
 }  // namespace
+
+// The notes' method (HorizonRule::Cuts, the exam page's answer) against its definition, by brute
+// force: a point of a cut is visible where no cut in front of it reaches its X, or it lies on or
+// above all of them there, or on or below all of them. Points at odd multiples of 1/14 of every
+// segment, on random integer grids in eight views; the exact rule (the strips count) must never
+// see more than the notes' and must see less somewhere.
+TEST(FloatingHorizon, NotesRuleIsEachCutAgainstTheCutsInFront) {
+  std::mt19937 rng(7);
+  long checked = 0, fewer = 0;
+  for (int trial = 0; trial < 24; ++trial) {
+    const int nx = 3 + trial % 4, nz = 2 + trial % 3;
+    HeightGrid g;
+    for (int i = 0; i < nx; ++i) g.xs.push_back(Rational(i));
+    for (int j = 0; j < nz; ++j) g.zs.push_back(Rational(j));
+    for (int k = 0; k < nx * nz; ++k) g.ys.push_back(Rational(std::uniform_int_distribution<int>(-2, 3)(rng)));
+    const int views[8][3] = {{0, 1, 2}, {1, 2, 4}, {-1, 2, 3}, {2, 1, 5}, {0, 3, -2}, {1, -1, 3}, {-3, 2, -4}, {1, 5, 1}};
+    for (const auto& vw : views) {
+      const Camera cam = make_orthographic(Vector3(vw[0], vw[1], vw[2]), Vector3(0, 1, 0));
+      const HorizonResult notes = floating_horizon_exact(g, cam, nullptr, HorizonRule::Cuts);
+      const HorizonResult exact = floating_horizon_exact(g, cam, nullptr, HorizonRule::Strips);
+      const std::array<Vector3, 2> ax = horizon_axes(g, cam);
+      auto at = [&](int i, int j) {
+        const Point3 p = g.point(i, j);
+        return std::array<Rational, 2>{p.x() * ax[0].x() + p.y() * ax[0].y() + p.z() * ax[0].z(),
+                                       p.x() * ax[1].x() + p.y() * ax[1].y() + p.z() * ax[1].z()};
+      };
+      auto seen = [](const HorizonResult& h, int j, int i, const Rational& t) {
+        for (const HorizonPiece& p : h.visible)
+          if (p.curve == j && p.segment == i && p.t0 <= t && t <= p.t1) return true;
+        return false;
+      };
+      for (std::size_t k = 0; k < notes.order.size(); ++k) {
+        const int j = notes.order[k];
+        for (int i = 0; i + 1 < nx; ++i)
+          for (int m = 1; m < 14; m += 2) {
+            Rational t(m, 14);
+            t.canonicalize();
+            const auto a = at(i, j), b = at(i + 1, j);
+            const Rational X = a[0] + t * (b[0] - a[0]), Y = a[1] + t * (b[1] - a[1]);
+            bool any = false, above = true, below = true, corner = false;
+            for (std::size_t f = 0; f < k; ++f)  // every cut in front, at X
+              for (int s2 = 0; s2 + 1 < nx; ++s2) {
+                const auto c = at(s2, notes.order[f]), d = at(s2 + 1, notes.order[f]);
+                const Rational lo = std::min(c[0], d[0]), hi = std::max(c[0], d[0]);
+                corner = corner || X == lo || X == hi;  // a run's end can fall on a corner: not sampled
+                if (X < lo || X > hi || lo == hi) continue;
+                const Rational y = c[1] + (X - c[0]) / (d[0] - c[0]) * (d[1] - c[1]);
+                any = true;
+                corner = corner || Y == y;  // on a cut in front: a run's end or a single point
+                above = above && Y >= y;
+                below = below && Y <= y;
+              }
+            if (corner) continue;
+            const bool want = !any || above || below;
+            EXPECT_EQ(seen(notes, j, i, t), want) << "trial " << trial << " view " << vw[0] << "," << vw[1] << "," << vw[2] << " cut " << j
+                                                  << " segment " << i << " t " << t;
+            if (seen(exact, j, i, t)) EXPECT_TRUE(want) << "the strips hide more, never less";
+            fewer += want && !seen(exact, j, i, t);
+            ++checked;
+          }
+      }
+    }
+  }
+  EXPECT_GT(checked, 5000);
+  EXPECT_GT(fewer, 0);
+}
 }  // namespace hlr
