@@ -48,7 +48,9 @@ PlotStyle plot_style(const OutputArgs& a) {
 }
 
 // Keeps the layers named (or numbered, from 1 in the order the writers use) in --layers.
-void select_layers(const std::string& list, std::vector<Plot>& plots) {
+// A selection that keeps nothing to draw is an error naming the drawing's layers (an empty
+// drawing with exit 0 looks like a drawing of nothing).
+void select_layers(const std::string& list, std::vector<Plot>& plots, bool hidden_drawn) {
   if (list.empty()) return;
   std::vector<std::string> names;
   {
@@ -56,7 +58,13 @@ void select_layers(const std::string& list, std::vector<Plot>& plots) {
     for (const Plot& p : plots) all.views.push_back(SheetView{&p, 1, 0, 0, ""});
     names = sheet_layer_names(all);
   }
+  auto layer_list = [&] {
+    std::string have;
+    for (std::size_t k = 0; k < names.size(); ++k) have += (k ? ", " : "") + std::to_string(k + 1) + " " + names[k];
+    return have;
+  };
   std::set<std::string> keep;
+  bool asked_hidden = false;
   std::size_t at = 0;
   while (at <= list.size()) {
     std::size_t comma = list.find(',', at);
@@ -67,15 +75,13 @@ void select_layers(const std::string& list, std::vector<Plot>& plots) {
     if (number) {
       const std::size_t digits = item.find_first_not_of('0');
       const std::size_t n = digits == std::string::npos || item.size() - digits > 9 ? 0 : std::stoul(item);
-      if (n < 1 || n > names.size()) {
-        std::string have;
-        for (std::size_t k = 0; k < names.size(); ++k) have += (k ? ", " : "") + std::to_string(k + 1) + " " + names[k];
+      if (n < 1 || n > names.size())
         throw std::invalid_argument("--layers: there is no layer " + item + "; this drawing has " + std::to_string(names.size()) + " layers" +
-                                    (names.empty() ? "" : ": " + have));
-      }
+                                    (names.empty() ? "" : ": " + layer_list()));
       keep.insert(names[n - 1]);
       continue;
     }
+    asked_hidden = asked_hidden || item.rfind("hidden", 0) == 0;
     if (item == "visible" || item == "through" || item == "hidden") {
       for (const std::string& n : names)
         if (n.rfind(item + "-", 0) == 0) keep.insert(n);
@@ -90,6 +96,14 @@ void select_layers(const std::string& list, std::vector<Plot>& plots) {
                                   "' (visible, through, hidden, visible-silhouette, hidden-crease, ... or numbers)");
     keep.insert(item);
   }
+  bool drawn = false;
+  for (const Plot& p : plots) {
+    drawn = drawn || !p.fills.empty();
+    for (const PlotLayer& l : p.layers) drawn = drawn || keep.count(l.name());
+  }
+  if (!drawn)
+    throw std::invalid_argument("--layers " + list + ": none of this drawing's layers" + (names.empty() ? std::string() : " (" + layer_list() + ")") +
+                                (asked_hidden && !hidden_drawn ? "; hidden lines are drawn with --hidden dashed or --hidden solid" : ""));
   for (Plot& p : plots) {
     std::vector<PlotLayer> kept;
     for (PlotLayer& l : p.layers)
@@ -233,7 +247,7 @@ std::string plots_text(std::vector<Plot>& plots, const std::vector<std::string>&
   const PlotStyle style = plot_style(a);
   std::string text;
   {
-    select_layers(a.layers, plots);
+    select_layers(a.layers, plots, a.hidden != "none");
     if (perspective && page.scale) throw std::invalid_argument("--scale (true scale) needs an orthographic view");
     std::vector<const Plot*> ptrs;
     for (const Plot& p : plots) ptrs.push_back(&p);
