@@ -22,7 +22,8 @@ import tempfile
 def svg_elements(path):
     text = open(path, encoding="utf-8").read()
     fills = re.findall(r'<path d="[^"]*" fill="(#[0-9a-fA-F]{6})"', text)
-    strokes = len(re.findall(r'<path d="[^"]*" fill="none"', text)) + len(re.findall(r"<(?:line|polyline) ", text))
+    # Strokes: paths without a fill of their own (the layers' groups give fill="none"), lines.
+    strokes = len(re.findall(r'<path d="[^"]*"(?! fill=)', text)) + len(re.findall(r"<(?:line|polyline) ", text))
     layers = re.findall(r'inkscape:label="([^"]*)"', text)
     colours = {}
     for f in fills:
