@@ -281,7 +281,13 @@ void run_scene(const Scene3& sc, const std::string& what, std::mt19937& rng, Cou
     for (const Body& b : sc.bodies) input.push_back(&b.p);
     for (std::size_t b = sc.bodies.size(); b < r.bodies.size(); ++b) input.push_back(&r.bodies[b]->body), glass.resize(r.bodies.size(), 0);
     const PicturePlane pp(r.camera);
-    const auto faces = test::oracle_faces(input, pp);  // the input's faces, numbered as the input
+    auto faces = test::oracle_faces(input, pp);  // the input's faces, numbered as the input
+    // A closed body's outside is where its volume is positive: an inside-out box's faces point
+    // inward, so their planes turn (the tie rule names the face whose outside faces the viewer).
+    for (test::OracleFace& f : faces) {
+      const Polyhedron& p = *input[f.body];
+      if (p.num_faces() > 1 && six_signed_volume(p.vertices(), p.faces()) < 0) f.a = -f.a, f.b = -f.b, f.c = -f.c, f.d = -f.d;
+    }
     std::vector<int> first;
     for (std::size_t b = 0, k = 0; b < input.size(); k += input[b]->num_faces(), ++b) first.push_back(static_cast<int>(k));
     for (const DrawingBody& d : r.names) n.repaired += !d.removed_faces.empty();
@@ -391,6 +397,8 @@ void run_scene(const Scene3& sc, const std::string& what, std::mt19937& rng, Cou
         }
     }
   }
+  if (::testing::Test::HasFailure() && std::getenv("HLR_TORTURE_DUMP"))  // the scene as a scene file, to run by hand
+    std::cout << "# " << what << "\n" << yaml_of(sc.bodies, sc.view, true, sc.ground);
   ++n.scenes;
 }
 
