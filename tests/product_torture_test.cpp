@@ -179,7 +179,9 @@ std::vector<Hit> sight(const std::vector<test::OracleFace>& faces, const Camera&
   }
   std::vector<Hit> hits;
   unsure = false;
+  const std::array<double, 2> qd{q[0].get_d(), q[1].get_d()};
   for (const test::OracleFace& f : faces) {
+    if (!test::in_box(f.box, qd)) continue;  // far from the point in the picture (a filter that only skips)
     Rational nd = f.a * dir[0] + f.b * dir[1] + f.c * dir[2];
     if (nd == 0) continue;
     Rational t = -(f.a * base[0] + f.b * base[1] + f.c * base[2] + f.d) / nd;
