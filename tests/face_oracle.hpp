@@ -6,8 +6,10 @@
 
 #include <array>
 #include <cmath>
+#include <algorithm>
 #include <vector>
 
+#include "algorithms/camera.hpp"
 #include "algorithms/picture_plane.hpp"
 #include "kernel/polyhedron.hpp"
 
@@ -102,6 +104,52 @@ inline int in_rings(const std::vector<Exact2>& outer, const std::vector<std::vec
     if (i > 0) return -1;
   }
   return 1;
+}
+
+/// The sight ray through picture point q: base + t·dir. Orthographic: dir is the direction
+/// toward the viewer (larger t nearer); perspective: from the eye, t > 0 in front (smaller t
+/// nearer).
+struct SightRay {
+  std::array<Rational, 3> base, dir;
+};
+inline SightRay sight_ray(const Camera& cam, const PicturePlane& pp, const Exact2& q) {
+  const Vector3 &r = pp.r(), &u = pp.u(), &d = pp.d();
+  const Rational rr = dot(r, r), uu = dot(u, u), dd = dot(d, d);
+  SightRay ray;
+  for (int k = 0; k < 3; ++k) {
+    if (cam.perspective) ray.base[k] = cam.eye[k], ray.dir[k] = q[0] * dd / rr * r[k] + q[1] * dd / uu * u[k] + d[k];
+    else ray.base[k] = q[0] / rr * r[k] + q[1] / uu * u[k], ray.dir[k] = cam.direction[k];
+  }
+  return ray;
+}
+
+/// A face the sight ray meets: how near (larger nearer), the face's id, the point, and
+/// in_face there (1 inside, 0 on its border).
+struct SightHit {
+  Rational nearness;
+  int id, in;
+  std::array<Rational, 3> at;
+};
+
+/// Every face the sight ray through q meets, far to near (faces far from q in the picture are
+/// skipped by their boxes; faces seen edge-on are not met).
+inline std::vector<SightHit> sight_hits(const std::vector<OracleFace>& faces, const Camera& cam, const PicturePlane& pp, const Exact2& q) {
+  const SightRay ray = sight_ray(cam, pp, q);
+  const std::array<double, 2> qd{q[0].get_d(), q[1].get_d()};
+  std::vector<SightHit> hits;
+  for (const OracleFace& f : faces) {
+    if (!in_box(f.box, qd)) continue;
+    const Rational nd = f.a * ray.dir[0] + f.b * ray.dir[1] + f.c * ray.dir[2];
+    if (nd == 0) continue;
+    const Rational t = -(f.a * ray.base[0] + f.b * ray.base[1] + f.c * ray.base[2] + f.d) / nd;
+    if (cam.perspective && t <= 0) continue;
+    std::array<Rational, 3> x{ray.base[0] + t * ray.dir[0], ray.base[1] + t * ray.dir[1], ray.base[2] + t * ray.dir[2]};
+    const int in = in_face(f, x);
+    if (in < 0) continue;
+    hits.push_back({cam.perspective ? Rational(-t) : t, f.id, in, std::move(x)});
+  }
+  std::sort(hits.begin(), hits.end(), [](const SightHit& a, const SightHit& b) { return a.nearness < b.nearness; });
+  return hits;
 }
 
 }  // namespace hlr::test

@@ -161,39 +161,14 @@ std::optional<Exact2> inside_point(const VisiblePolygon& p, std::mt19937& rng) {
   return q;
 }
 
-struct Hit {
-  Rational nearness;  // larger is nearer
-  int id;
-  std::array<Rational, 3> at;
-};
+using Hit = test::SightHit;
 
-// Every face the sight ray through picture point q meets, far to near; empty with `unsure`
-// when the ray grazes a face's border or two faces at one depth.
+// Every face the sight ray through picture point q meets, far to near; `unsure` when the ray
+// grazes a face's border or meets two faces at one depth.
 std::vector<Hit> sight(const std::vector<test::OracleFace>& faces, const Camera& cam, const PicturePlane& pp, const Exact2& q, bool& unsure) {
-  const Vector3 &r = pp.r(), &u = pp.u(), &d = pp.d();
-  const Rational rr = dot(r, r), uu = dot(u, u), dd = dot(d, d);
-  std::array<Rational, 3> base, dir;
-  for (int k = 0; k < 3; ++k) {
-    if (cam.perspective) base[k] = cam.eye[k], dir[k] = q[0] * dd / rr * r[k] + q[1] * dd / uu * u[k] + d[k];
-    else base[k] = q[0] / rr * r[k] + q[1] / uu * u[k], dir[k] = cam.direction[k];
-  }
-  std::vector<Hit> hits;
+  std::vector<Hit> hits = test::sight_hits(faces, cam, pp, q);
   unsure = false;
-  const std::array<double, 2> qd{q[0].get_d(), q[1].get_d()};
-  for (const test::OracleFace& f : faces) {
-    if (!test::in_box(f.box, qd)) continue;  // far from the point in the picture (a filter that only skips)
-    Rational nd = f.a * dir[0] + f.b * dir[1] + f.c * dir[2];
-    if (nd == 0) continue;
-    Rational t = -(f.a * base[0] + f.b * base[1] + f.c * base[2] + f.d) / nd;
-    if (cam.perspective && t <= 0) continue;
-    std::array<Rational, 3> x{base[0] + t * dir[0], base[1] + t * dir[1], base[2] + t * dir[2]};
-    int in = test::in_face(f, x);
-    if (in < 0) continue;
-    if (in == 0) unsure = true;
-    hits.push_back({cam.perspective ? Rational(-t) : t, f.id, x});
-  }
-  std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) { return a.nearness < b.nearness; });
-  for (std::size_t i = 1; i < hits.size(); ++i) unsure = unsure || hits[i].nearness == hits[i - 1].nearness;
+  for (std::size_t i = 0; i < hits.size(); ++i) unsure = unsure || hits[i].in == 0 || (i && hits[i].nearness == hits[i - 1].nearness);
   return hits;
 }
 
@@ -235,19 +210,16 @@ int seen_face(const std::vector<test::OracleFace>& faces, const Camera& cam, con
   if (hits.empty()) return -1;
   // Grazing a border decides nothing only when another face is as near; the rule takes ties.
   int best = -1, rank = 2;
+  const test::SightRay ray = test::sight_ray(cam, pp, q);
   for (const Hit& h : hits) {
     if (h.nearness != hits.back().nearness) continue;
     const test::OracleFace& f = faces[h.id];
-    const Vector3 &r = pp.r(), &u = pp.u(), &d = pp.d();
-    const Rational rr = dot(r, r), uu = dot(u, u), dd = dot(d, d);
-    Rational dir[3];
-    for (int k = 0; k < 3; ++k) dir[k] = cam.perspective ? Rational(q[0] * dd / rr * r[k] + q[1] * dd / uu * u[k] + d[k]) : cam.direction[k];
-    const Rational nd = f.a * dir[0] + f.b * dir[1] + f.c * dir[2];
+    const Rational nd = f.a * ray.dir[0] + f.b * ray.dir[1] + f.c * ray.dir[2];
     const int rk = (cam.perspective ? -nd : nd) > 0 ? 0 : 1;
     if (rk < rank || (rk == rank && h.id < best)) best = h.id, rank = rk;
   }
   for (const Hit& h : hits)  // a border at the nearest depth: the rule's faces may differ by the border
-    if (h.nearness == hits.back().nearness && test::in_face(faces[h.id], h.at) == 0) return -2;
+    if (h.nearness == hits.back().nearness && h.in == 0) return -2;
   return best;
 }
 

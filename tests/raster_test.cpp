@@ -62,13 +62,8 @@ void expect_same(const Frames& r) {
 
 // The independent oracle: the face seen at the centre of pixel (i, j).
 int oracle_face(const std::vector<test::OracleFace>& faces, const Camera& cam, const PicturePlane& pp, const Exact2& q) {
-  const Vector3 &r = pp.r(), &u = pp.u(), &d = pp.d();
-  const Rational rr = dot(r, r), uu = dot(u, u), dd = dot(d, d);
-  std::array<Rational, 3> base, dir;
-  for (int k = 0; k < 3; ++k) {
-    if (cam.perspective) base[k] = cam.eye[k], dir[k] = q[0] * dd / rr * r[k] + q[1] * dd / uu * u[k] + d[k];
-    else base[k] = q[0] / rr * r[k] + q[1] / uu * u[k], dir[k] = cam.direction[k];
-  }
+  const test::SightRay ray = test::sight_ray(cam, pp, q);
+  const std::array<Rational, 3> &base = ray.base, &dir = ray.dir;
   int best = -1, best_rank = 0;
   Rational best_near;
   for (const test::OracleFace& f : faces) {

@@ -163,32 +163,14 @@ long check_picture(const std::vector<const Polyhedron*>& ptrs, const Camera& cam
       }
       Exact2 q{sx / sw, sy / sw};
       if (test::in_rings(reg.polygon.outer_2d, reg.polygon.holes_2d, q) <= 0) continue;
-      // The sight ray through q (as the priority test builds it), every face it meets.
-      std::array<Rational, 3> base, dir;
-      for (int k = 0; k < 3; ++k) {
-        if (cam.perspective) base[k] = cam.eye[k], dir[k] = q[0] * dd / rr * r[k] + q[1] * dd / uu * u[k] + d[k];
-        else base[k] = q[0] / rr * r[k] + q[1] / uu * u[k], dir[k] = cam.direction[k];
-      }
-      std::vector<std::pair<Rational, int>> hits;  // nearness (larger nearer), face id
+      // Every face the sight ray through q meets, far to near.
+      const std::vector<test::SightHit> hits = test::sight_hits(faces, cam, pp, q);
       bool unsure = false;
-      const std::array<double, 2> qd{q[0].get_d(), q[1].get_d()};
-      for (const test::OracleFace& f : faces) {
-        if (!test::in_box(f.box, qd)) continue;  // far from the point in the picture (a filter that only skips)
-        Rational nd = f.a * dir[0] + f.b * dir[1] + f.c * dir[2];
-        if (nd == 0) continue;
-        Rational t = -(f.a * base[0] + f.b * base[1] + f.c * base[2] + f.d) / nd;
-        if (cam.perspective && t <= 0) continue;
-        int in = test::in_face(f, {base[0] + t * dir[0], base[1] + t * dir[1], base[2] + t * dir[2]});
-        if (in < 0) continue;
-        if (in == 0) unsure = true;
-        hits.emplace_back(cam.perspective ? Rational(-t) : t, f.id);
-      }
-      std::sort(hits.begin(), hits.end());
-      for (std::size_t i = 1; i < hits.size(); ++i) unsure = unsure || hits[i].first == hits[i - 1].first;
+      for (std::size_t i = 0; i < hits.size(); ++i) unsure = unsure || hits[i].in == 0 || (i && hits[i].nearness == hits[i - 1].nearness);
       if (unsure) continue;
       std::vector<std::pair<int, int>> want;
-      for (const auto& [depth, id] : hits) {
-        const test::OracleFace& f = faces[id];
+      for (const test::SightHit& h : hits) {
+        const test::OracleFace& f = faces[h.id];
         if (!see[f.body]) want.clear();
         want.emplace_back(f.body, f.face);
       }
