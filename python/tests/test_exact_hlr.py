@@ -164,3 +164,17 @@ def test_raster_algorithms_agree_and_centres_are_exact():
     cam = json.loads(images[0].camera())
     o, r, d = ([Fraction(v) for v in cam[k]] for k in ("origin", "right", "down"))
     assert tuple(o[k] + Fraction(21, 2) * r[k] + Fraction(15, 2) * d[k] for k in range(3)) == c
+
+
+def test_repaired_mesh_keeps_the_input_face_numbers():
+    # The seam cube's face 12 is a zero-area triangle the loader removes; its faces 11 and 13
+    # (the front, z = 1) keep their numbers in the surfaces, the painter's list and the raster.
+    seam = path("degenerate/meshes/zero_area_seam.off")
+    d = exact_hlr.render([seam], surfaces=True)
+    assert sorted(f["face"] for f in d.surfaces) == [11, 13]
+    body = json.loads(d.json())["bodies"][0]
+    assert body["faces"][12] == "removed" and body["removed_faces"] == [12] and len(body["faces"]) == 14
+    painted = {p["face"] for p in exact_hlr.render([seam], method="priority").priority}
+    assert 13 in painted and 12 not in painted
+    seen = {f for row in exact_hlr.raster(seam, width=16, height=16).faces() for f in row if f is not None}
+    assert seen == {(0, 11), (0, 13)}
