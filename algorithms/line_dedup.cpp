@@ -158,18 +158,26 @@ class Dedup {
   // Doubles of the picture carry errors near 1e-15 of its largest coordinate (a few roundings
   // from exact values in a frame of unit size or of the input's size; perspective divides by
   // depths at least 1e-4 of the largest): delta = 1e-9 of it leaves a margin above 1e3.
+  // A drawing whose doubles are not all finite (a view whose frame the doubles cannot hold,
+  // such as a point light far from a scene of 2^-1100) has no filter: every pair is compared
+  // exactly (blind_).
   void tolerance(const ParallelLoop& loop) {
     std::vector<double> most(loop.workers(), 0.0);
+    std::vector<char> finite(loop.workers(), 1);
     loop.run(points_.parent.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
       double m = most[w];
+      bool ok = true;
       for (std::size_t e = begin; e < end; ++e) {
         auto p = xy(static_cast<std::uint32_t>(e));
+        ok = ok && std::isfinite(p[0]) && std::isfinite(p[1]);
         m = std::max({m, std::fabs(p[0]), std::fabs(p[1])});
       }
       most[w] = m;
+      finite[w] = finite[w] && ok;
     });
+    blind_ = std::find(finite.begin(), finite.end(), 0) != finite.end();
     const double m = *std::max_element(most.begin(), most.end());
-    delta_ = 1e-9 * std::max(m, 1e-300);
+    delta_ = blind_ ? 0 : 1e-9 * std::max(m, 1e-300);
   }
 
   // Ends that are the same mesh vertex, or the same boundary between two pieces of a segment,
@@ -268,6 +276,16 @@ class Dedup {
         order[i] = {p[0], p[1], taking[i]};
       });
     }
+    if (blind_) {  // no filter: every pair of ends, exactly
+      for (std::size_t i = 0; i < order.size(); ++i)
+        for (std::size_t j = i + 1; j < order.size(); ++j) {
+          const std::uint32_t a = order[i].e, b = order[j].e;
+          if (points_.find(a) == points_.find(b)) continue;
+          ++point_tests_;
+          if (exact(a) == exact(b)) points_.unite(a, b);
+        }
+      return;
+    }
     std::sort(std::execution::par, order.begin(), order.end(), [](const End& a, const End& b) {
       return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.e < b.e)));
     });
@@ -312,6 +330,7 @@ class Dedup {
   // filter with margin 8 delta measured from the longer one (exact overlap passes it); the
   // exact test follows.
   bool maybe_overlap(const Near& first, const Near& second) const {
+    if (blind_) return true;
     const bool swap = second.len > first.len;
     const Near& A = swap ? second : first;
     const Near& B = swap ? first : second;
@@ -372,10 +391,11 @@ class Dedup {
     }
     const double pad = 16 * delta_;
     x0 -= pad, y0 -= pad, x1 += pad, y1 += pad;
-    const int g = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(live.size()))), 1, 2048);
+    const int g = blind_ ? 1 : std::clamp(static_cast<int>(std::sqrt(static_cast<double>(live.size()))), 1, 2048);
     const double cw = (x1 - x0) / g, ch = (y1 - y0) / g;
-    auto cx = [&](double x) { return std::clamp(static_cast<int>((x - x0) / cw), 0, g - 1); };
-    auto cy = [&](double y) { return std::clamp(static_cast<int>((y - y0) / ch), 0, g - 1); };
+    auto cell = [g](double c) { return c >= 1 ? static_cast<int>(std::min(c, static_cast<double>(g - 1))) : 0; };  // (NaN: 0)
+    auto cx = [&](double x) { return g == 1 ? 0 : cell((x - x0) / cw); };
+    auto cy = [&](double y) { return g == 1 ? 0 : cell((y - y0) / ch); };
     const double m = 8 * delta_;
     // The cells of each piece (conservative: every cell within 8 delta of it).
     auto for_cells = [&](const Rec& r, auto&& visit) {
@@ -531,6 +551,7 @@ class Dedup {
   UnionFind points_;
   std::unordered_map<std::uint32_t, Exact2> exact_;
   double delta_ = 0;
+  bool blind_ = false;  // the doubles are not all finite: no filter, every pair compared exactly
   std::size_t point_tests_ = 0, line_tests_ = 0;
 };
 

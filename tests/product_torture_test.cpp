@@ -98,7 +98,10 @@ struct Gen {
   Polyhedron tetra() {
     for (;;) {
       std::vector<Point3> v;
-      for (int i = 0; i < 4; ++i) v.emplace_back(q(0, 8, 2), q(0, 8, 2), q(0, 8, 2));
+      for (int i = 0; i < 4; ++i) {  // one coordinate at a time: the same scenes whatever the compiler's argument order
+        Rational x = q(0, 8, 2), y = q(0, 8, 2), z = q(0, 8, 2);
+        v.emplace_back(x, y, z);
+      }
       std::vector<Face> f = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
       if (six_signed_volume(v, f) == 0) continue;
       return Polyhedron(v, orient_faces(v, f));
