@@ -7,8 +7,8 @@
 
 #include <random>
 
-#include "algorithms/cyrus_beck.hpp"
-#include "algorithms/midpoint_clip.hpp"
+#include "algorithms/clip/cyrus_beck.hpp"
+#include "algorithms/clip/midpoint_clip.hpp"
 
 using namespace hlr;
 

@@ -18,7 +18,7 @@
 #include <sstream>
 #include <string>
 
-#include "io/mesh_reader.hpp"
+#include "io/readers/mesh_reader.hpp"
 
 namespace {
 

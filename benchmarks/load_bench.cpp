@@ -11,7 +11,7 @@
 #include <fstream>
 #include <map>
 
-#include "io/mesh_reader.hpp"
+#include "io/readers/mesh_reader.hpp"
 
 using namespace hlr;
 

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <random>
 
-#include "algorithms/roberts.hpp"
-#include "io/scene.hpp"
+#include "algorithms/hlr/roberts.hpp"
+#include "io/readers/scene.hpp"
 
 using namespace hlr;
 

@@ -1,13 +1,13 @@
 // Exact option values and negative numbers after a space (see arguments.hpp).
 #include "cli/arguments.hpp"
 
-#include "io/standard_views.hpp"
+#include "io/pipeline/standard_views.hpp"
 
 #include <unistd.h>
 
 #include <iostream>
 
-#include "algorithms/progress.hpp"
+#include "algorithms/support/progress.hpp"
 
 #include <cctype>
 #include <filesystem>

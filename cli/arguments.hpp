@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/view_choice.hpp"
+#include "io/pipeline/view_choice.hpp"
 #include "kernel/geometry.hpp"
 
 namespace hlr::cli {
@@ -36,7 +36,7 @@ ViewRequest parse_view_request(const std::string& view, const std::string& eye, 
 std::string output_format(const std::string& format, const std::string& output,
                           const std::vector<std::pair<std::string, std::string>>& by_extension, const std::string& fallback);
 
-/// Progress messages of the library (algorithms/progress.hpp) on one line of standard error,
+/// Progress messages of the library (algorithms/support/progress.hpp) on one line of standard error,
 /// "hlr COMMAND: message", while this object lives: when `--progress`, or when standard error
 /// is a terminal and not `--quiet`. The line is cleared at the end.
 class ProgressLine {

@@ -7,10 +7,10 @@
 #include <sstream>
 
 #include "cli/arguments.hpp"
-#include "cli/clipper_spec.hpp"
+#include "io/readers/clipper_spec.hpp"
 #include "cli/commands.hpp"
-#include "io/input_error.hpp"
-#include "io/text_reader.hpp"
+#include "io/readers/input_error.hpp"
+#include "io/readers/text_reader.hpp"
 
 namespace hlr::cli {
 namespace {

@@ -4,12 +4,12 @@
 #include <iostream>
 #include <sstream>
 
-#include "algorithms/convex_decomposition.hpp"
-#include "algorithms/progress.hpp"
+#include "algorithms/solids/convex_decomposition.hpp"
+#include "algorithms/support/progress.hpp"
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
-#include "io/atomic_file.hpp"
-#include "io/scene.hpp"
+#include "io/writers/atomic_file.hpp"
+#include "io/readers/scene.hpp"
 
 namespace hlr::cli {
 namespace {

@@ -9,10 +9,10 @@
 #include <optional>
 #include <set>
 
-#include "algorithms/progress.hpp"
+#include "algorithms/support/progress.hpp"
 #include "cli/arguments.hpp"
-#include "io/json_writer.hpp"
-#include "io/plot_output.hpp"
+#include "io/writers/json_writer.hpp"
+#include "io/writers/plot_output.hpp"
 
 namespace hlr::cli {
 namespace {

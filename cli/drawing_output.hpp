@@ -4,15 +4,15 @@
 // 2D stage, the page layout, the writers; or the exact JSON).
 #pragma once
 
-#include "io/atomic_file.hpp"
+#include "io/writers/atomic_file.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <string>
 #include <vector>
 
-#include "algorithms/plot.hpp"
-#include "io/render.hpp"
+#include "algorithms/plot/plot.hpp"
+#include "io/pipeline/render.hpp"
 
 namespace hlr::cli {
 

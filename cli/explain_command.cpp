@@ -5,10 +5,10 @@
 
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
-#include "io/atomic_file.hpp"
-#include "io/explain.hpp"
-#include "io/input_error.hpp"
-#include "io/messages_ru.hpp"
+#include "io/writers/atomic_file.hpp"
+#include "io/explain/explain.hpp"
+#include "io/readers/input_error.hpp"
+#include "io/explain/messages_ru.hpp"
 #include "kernel/number.hpp"
 
 namespace hlr::cli {

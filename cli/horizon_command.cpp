@@ -6,14 +6,14 @@
 #include <iostream>
 #include <optional>
 
-#include "algorithms/progress.hpp"
-#include "algorithms/parallel.hpp"
+#include "algorithms/support/progress.hpp"
+#include "algorithms/support/parallel.hpp"
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
 #include "cli/process.hpp"
 #include "cli/drawing_output.hpp"
-#include "io/atomic_file.hpp"
-#include "io/horizon.hpp"
+#include "io/writers/atomic_file.hpp"
+#include "io/pipeline/horizon.hpp"
 #include "kernel/rotation.hpp"
 
 namespace hlr::cli {

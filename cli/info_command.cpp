@@ -3,11 +3,11 @@
 #include <iostream>
 #include <sstream>
 
-#include "algorithms/progress.hpp"
+#include "algorithms/support/progress.hpp"
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
-#include "io/info_report.hpp"
-#include "io/scene.hpp"
+#include "io/pipeline/info_report.hpp"
+#include "io/readers/scene.hpp"
 
 namespace hlr::cli {
 namespace {

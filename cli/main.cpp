@@ -7,8 +7,8 @@
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
 #include "cli/process.hpp"
-#include "io/atomic_file.hpp"
-#include "io/input_error.hpp"
+#include "io/writers/atomic_file.hpp"
+#include "io/readers/input_error.hpp"
 #include "kernel/gmp_pool.hpp"
 #include "kernel/number.hpp"
 

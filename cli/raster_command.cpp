@@ -1,18 +1,18 @@
 // `hlr raster [options] INPUT... -o out.png`: the course's image-space algorithms (z-buffer,
 // scan-line, Warnock, ray casting; notes 29-35) with the exact face at every pixel centre,
 // shaded flat, Gouraud or Phong (notes 36-39), antialiased by supersampling (seed 002), written
-// as PNG; optionally the face-id buffer and the exact pixel grid (io/raster.hpp). Every file
+// as PNG; optionally the face-id buffer and the exact pixel grid (io/pipeline/raster.hpp). Every file
 // is written atomically.
 #include <iostream>
 #include <memory>
 
-#include "algorithms/parallel.hpp"
+#include "algorithms/support/parallel.hpp"
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
 #include "cli/process.hpp"
-#include "io/atomic_file.hpp"
-#include "io/raster.hpp"
-#include "algorithms/progress.hpp"
+#include "io/writers/atomic_file.hpp"
+#include "io/pipeline/raster.hpp"
+#include "algorithms/support/progress.hpp"
 
 namespace hlr::cli {
 namespace {

@@ -1,6 +1,6 @@
 // `hlr render [options] INPUT...`: parses the options into the library's RenderOptions, calls
-// render() (io/render.hpp), runs the plotting 2D stage (algorithms/plot.hpp: exact clean-up,
-// strokes, pen order), lays the view or views out on a page (io/plot_output.hpp) and writes
+// render() (io/pipeline/render.hpp), runs the plotting 2D stage (algorithms/plot/plot.hpp: exact clean-up,
+// strokes, pen order), lays the view or views out on a page (io/writers/plot_output.hpp) and writes
 // SVG, PDF, PNG, DXF or exact JSON (atomically: no partial output on failure).
 #include <unistd.h>
 
@@ -13,21 +13,21 @@
 #include <filesystem>
 #include <iostream>
 
-#include "algorithms/parallel.hpp"
-#include "algorithms/progress.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "algorithms/support/progress.hpp"
 #include "cli/arguments.hpp"
-#include "cli/clipper_spec.hpp"
+#include "io/readers/clipper_spec.hpp"
 #include "cli/drawing_output.hpp"
 #include "cli/commands.hpp"
 #include "cli/process.hpp"
-#include "io/atomic_file.hpp"
-#include "io/json_writer.hpp"
-#include "io/plot_output.hpp"
-#include "io/render.hpp"
-#include "io/input_error.hpp"
-#include "io/tile_file.hpp"
-#include "io/svg_writer.hpp"
-#include "io/standard_views.hpp"
+#include "io/writers/atomic_file.hpp"
+#include "io/writers/json_writer.hpp"
+#include "io/writers/plot_output.hpp"
+#include "io/pipeline/render.hpp"
+#include "io/readers/input_error.hpp"
+#include "io/readers/tile_file.hpp"
+#include "io/writers/svg_writer.hpp"
+#include "io/pipeline/standard_views.hpp"
 
 namespace hlr::cli {
 namespace {

@@ -62,7 +62,7 @@ class Polyhedron {
   /// normal) for zero-area faces. Scaled to primitive integer coefficients (primitive_plane).
   const std::vector<Plane>& planes() const;
   /// Computes the planes (once) with `loop(n, body)` calling body(i) for every i < n, e.g. on
-  /// all cores (algorithms/parallel.hpp: plane_all_faces); planes() then returns them.
+  /// all cores (algorithms/support/parallel.hpp: plane_all_faces); planes() then returns them.
   void compute_planes(const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop) const;
 
   /// The checks of mesh_checks.hpp, computed once.

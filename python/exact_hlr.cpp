@@ -1,20 +1,20 @@
 // Python bindings (issue 11): `import exact_hlr`. The render pipeline of the library
-// (io/render.hpp) with the exact drawing returned as Python objects whose coordinates and
+// (io/pipeline/render.hpp) with the exact drawing returned as Python objects whose coordinates and
 // parameters are fractions.Fraction; explain (exam mode) and Cyrus-Beck clipping too.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <cstdio>
 
-#include "algorithms/cyrus_beck.hpp"
-#include "cli/clipper_spec.hpp"
-#include "io/explain.hpp"
-#include "io/json_writer.hpp"
-#include "io/problem.hpp"
-#include "io/raster.hpp"
-#include "io/plot_output.hpp"
-#include "io/render.hpp"
-#include "io/svg_writer.hpp"
+#include "algorithms/clip/cyrus_beck.hpp"
+#include "io/readers/clipper_spec.hpp"
+#include "io/explain/explain.hpp"
+#include "io/writers/json_writer.hpp"
+#include "io/explain/problem.hpp"
+#include "io/pipeline/raster.hpp"
+#include "io/writers/plot_output.hpp"
+#include "io/pipeline/render.hpp"
+#include "io/writers/svg_writer.hpp"
 
 namespace py = pybind11;
 
@@ -218,7 +218,7 @@ Drawing render(const py::object& input, std::optional<py::sequence> view, std::o
   return Drawing{std::make_shared<hlr::RenderResult>(hlr::render_files(inputs, o))};
 }
 
-// `raster(...)`: the image-space algorithms (io/raster.hpp).
+// `raster(...)`: the image-space algorithms (io/pipeline/raster.hpp).
 struct Image {
   std::shared_ptr<hlr::RasterResult> r;
   py::bytes png() const { return py::bytes(hlr::png_rgb(r->width, r->height, r->rgb)); }
@@ -289,7 +289,7 @@ py::dict clip(const std::string& clipper, const py::sequence& segment) {
   if (py::len(segment) != 6) throw std::invalid_argument("a segment needs 6 numbers: x1, y1, z1, x2, y2, z2");
   hlr::Point3 p1(number(segment[0]), number(segment[1]), number(segment[2]));
   hlr::Point3 p2(number(segment[3]), number(segment[4]), number(segment[5]));
-  hlr::cli::ClipperSpec spec = hlr::cli::parse_clipper("clipper", clipper);
+  hlr::ClipperSpec spec = hlr::parse_clipper("clipper", clipper);
   hlr::CyrusBeckResult r = hlr::cyrus_beck(spec.clipper, p1, p2);
   py::dict d;
   d["status"] = r.status == hlr::CyrusBeckResult::Status::Visible ? "visible"

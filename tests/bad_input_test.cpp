@@ -2,7 +2,7 @@
 // failed check), with the file name and, where it applies, the line.
 #include <gtest/gtest.h>
 
-#include "io/scene.hpp"
+#include "io/readers/scene.hpp"
 
 using namespace hlr;
 

@@ -1,7 +1,7 @@
 // Roberts' body matrix, course notes section 27 (kernel/body_matrix.hpp).
 #include <gtest/gtest.h>
 
-#include "io/mesh_reader.hpp"
+#include "io/readers/mesh_reader.hpp"
 #include "kernel/body_matrix.hpp"
 
 using namespace hlr;

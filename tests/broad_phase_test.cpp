@@ -1,6 +1,6 @@
-// The intersection lines' broad phase (algorithms/intersection_broad_phase.hpp): every
+// The intersection lines' broad phase (algorithms/hlr/intersection_broad_phase.hpp): every
 // overlapping pair once, against a quadratic oracle, in doubles and in floats rounded outward;
-// the segment's owned and borrowed ends (algorithms/line_drawing.hpp).
+// the segment's owned and borrowed ends (algorithms/model/line_drawing.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,8 +9,8 @@
 #include <random>
 #include <set>
 
-#include "algorithms/intersection_broad_phase.hpp"
-#include "algorithms/line_drawing.hpp"
+#include "algorithms/hlr/intersection_broad_phase.hpp"
+#include "algorithms/model/line_drawing.hpp"
 
 using namespace hlr;
 

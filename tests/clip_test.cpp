@@ -1,12 +1,12 @@
-// 3D clipping: Cyrus-Beck (algorithms/cyrus_beck.hpp) and midpoint subdivision
-// (algorithms/midpoint_clip.hpp), course notes sections 21-22.
+// 3D clipping: Cyrus-Beck (algorithms/clip/cyrus_beck.hpp) and midpoint subdivision
+// (algorithms/clip/midpoint_clip.hpp), course notes sections 21-22.
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "algorithms/cyrus_beck.hpp"
-#include "algorithms/midpoint_clip.hpp"
-#include "io/mesh_reader.hpp"
+#include "algorithms/clip/cyrus_beck.hpp"
+#include "algorithms/clip/midpoint_clip.hpp"
+#include "io/readers/mesh_reader.hpp"
 
 using namespace hlr;
 

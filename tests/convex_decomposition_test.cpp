@@ -1,16 +1,16 @@
-// Convex decomposition (algorithms/convex_decomposition.hpp, course notes section 23) and
-// Roberts' algorithm through the pieces (algorithms/roberts_pieces.hpp): pieces convex and
+// Convex decomposition (algorithms/solids/convex_decomposition.hpp, course notes section 23) and
+// Roberts' algorithm through the pieces (algorithms/hlr/roberts_pieces.hpp): pieces convex and
 // exactly as large as the body, both methods; the pieces route draws exactly what the
 // per-face route draws; the cut-plane trap of issue 4.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
-#include "algorithms/convex_decomposition.hpp"
-#include "algorithms/convexity.hpp"
-#include "algorithms/face_occluders.hpp"
-#include "algorithms/roberts_pieces.hpp"
-#include "io/mesh_reader.hpp"
+#include "algorithms/solids/convex_decomposition.hpp"
+#include "algorithms/solids/convexity.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/hlr/roberts_pieces.hpp"
+#include "io/readers/mesh_reader.hpp"
 
 using namespace hlr;
 

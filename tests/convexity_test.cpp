@@ -1,10 +1,10 @@
-// Convexity test, course notes section 23 (algorithms/convexity.hpp).
+// Convexity test, course notes section 23 (algorithms/solids/convexity.hpp).
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
-#include "algorithms/convexity.hpp"
-#include "io/mesh_reader.hpp"
+#include "algorithms/solids/convexity.hpp"
+#include "io/readers/mesh_reader.hpp"
 #include "kernel/predicates.hpp"
 
 using namespace hlr;

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "io/mesh_reader.hpp"
+#include "io/readers/mesh_reader.hpp"
 #include "kernel/openmesh_mesh.hpp"
 
 using namespace hlr;

@@ -1,4 +1,4 @@
-// The 2D stage's projection of the pieces (algorithms/drawing_2d.hpp) against a serial oracle:
+// The 2D stage's projection of the pieces (algorithms/picture/drawing_2d.hpp) against a serial oracle:
 // which pieces become lines (the options' hidden and through, never behind the eye or
 // clipped, perspective pieces wholly nearer than the near depth dropped), in segment and
 // piece order, across the runs the stage splits the segments into, on 1 and 2 threads.
@@ -6,8 +6,8 @@
 
 #include <random>
 
-#include "algorithms/drawing_2d.hpp"
-#include "algorithms/parallel.hpp"
+#include "algorithms/picture/drawing_2d.hpp"
+#include "algorithms/support/parallel.hpp"
 
 using namespace hlr;
 

@@ -1,4 +1,4 @@
-// SVG and JSON output of Roberts' results (io/drawing.hpp) and atomic output files.
+// SVG and JSON output of Roberts' results (io/writers/drawing.hpp) and atomic output files.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -8,15 +8,15 @@
 #include <regex>
 #include <unistd.h>
 
-#include "io/atomic_file.hpp"
-#include "algorithms/parallel.hpp"
-#include "algorithms/roberts.hpp"
-#include "io/drawing.hpp"
-#include "io/json_writer.hpp"
-#include "io/tile_file.hpp"
-#include "io/input_error.hpp"
-#include "io/scene.hpp"
-#include "io/text_reader.hpp"
+#include "io/writers/atomic_file.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "algorithms/hlr/roberts.hpp"
+#include "io/writers/drawing.hpp"
+#include "io/writers/json_writer.hpp"
+#include "io/readers/tile_file.hpp"
+#include "io/readers/input_error.hpp"
+#include "io/readers/scene.hpp"
+#include "io/readers/text_reader.hpp"
 
 using namespace hlr;
 

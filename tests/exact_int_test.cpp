@@ -3,7 +3,7 @@
 // and the split-parameter filter never decides on values beyond the double range.
 #include <gtest/gtest.h>
 
-#include "algorithms/face_occluders.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
 #include "kernel/exact_int.hpp"
 
 using namespace hlr;

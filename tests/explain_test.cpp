@@ -1,4 +1,4 @@
-// Exam mode (io/problem.hpp, io/explain.hpp, issue 6): golden Markdown and JSON for every
+// Exam mode (io/explain/problem.hpp, io/explain/explain.hpp, issue 6): golden Markdown and JSON for every
 // problem in data/problems/ (deterministic output), exact values worked by hand on several
 // problems, the explain result equal to render's on every Roberts problem, and bad problem
 // files. Regenerate the golden files with HLR_UPDATE_GOLDEN=1 after a deliberate change.
@@ -11,11 +11,11 @@
 #include <set>
 #include <sstream>
 
-#include "algorithms/face_occluders.hpp"
-#include "algorithms/roberts.hpp"
-#include "algorithms/visible_surfaces.hpp"
-#include "io/drawing.hpp"
-#include "io/explain.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/hlr/roberts.hpp"
+#include "algorithms/surfaces/visible_surfaces.hpp"
+#include "io/writers/drawing.hpp"
+#include "io/explain/explain.hpp"
 
 using namespace hlr;
 namespace fs = std::filesystem;

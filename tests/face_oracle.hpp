@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <vector>
 
-#include "algorithms/camera.hpp"
-#include "algorithms/picture_plane.hpp"
+#include "algorithms/model/camera.hpp"
+#include "algorithms/picture/picture_plane.hpp"
 #include "kernel/polyhedron.hpp"
 
 namespace hlr::test {

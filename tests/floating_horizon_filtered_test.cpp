@@ -1,4 +1,4 @@
-// The floating horizon on certified doubles (algorithms/floating_horizon_filtered.*) against the
+// The floating horizon on certified doubles (algorithms/horizon/floating_horizon_filtered.*) against the
 // same sweep on rationals (floating_horizon_exact): identical results, exactly, on random
 // surfaces and on the places where a double filter alone would be wrong or undecided: flat
 // and planar regions (every line the same, every turn zero), heightmaps with equal values,
@@ -10,8 +10,8 @@
 #include <functional>
 #include <random>
 
-#include "algorithms/floating_horizon.hpp"
-#include "algorithms/floating_horizon_filtered.hpp"
+#include "algorithms/horizon/floating_horizon.hpp"
+#include "algorithms/horizon/floating_horizon_filtered.hpp"
 
 #include "horizon_grids.hpp"
 

@@ -8,9 +8,9 @@
 #include <map>
 #include <tuple>
 
-#include "algorithms/floating_horizon.hpp"
-#include "algorithms/floating_horizon_classic.hpp"
-#include "io/render.hpp"
+#include "algorithms/horizon/floating_horizon.hpp"
+#include "algorithms/horizon/floating_horizon_classic.hpp"
+#include "io/pipeline/render.hpp"
 
 namespace hlr {
 namespace {

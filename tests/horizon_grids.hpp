@@ -4,7 +4,7 @@
 
 #include <functional>
 
-#include "algorithms/floating_horizon.hpp"
+#include "algorithms/horizon/floating_horizon.hpp"
 
 namespace hlr::test {
 

@@ -1,4 +1,4 @@
-// The horizon's picture route (io/horizon.hpp, HorizonDrawing::plot: runs straight to the 2D
+// The horizon's picture route (io/pipeline/horizon.hpp, HorizonDrawing::plot: runs straight to the 2D
 // stage) against the general one (the exact line drawing through make_plot): the same layers,
 // strokes and points, bit for bit, and the same clean-up numbers, on surfaces whose pictures
 // have what the clean-up must decide exactly: flat and terraced regions (collinear neighbours,
@@ -10,8 +10,8 @@
 #include <string>
 #include <random>
 
-#include "algorithms/plot.hpp"
-#include "io/horizon.hpp"
+#include "algorithms/plot/plot.hpp"
+#include "io/pipeline/horizon.hpp"
 
 #include "horizon_grids.hpp"
 

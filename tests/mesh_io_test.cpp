@@ -1,4 +1,4 @@
-// Mesh readers with exact coordinates (io/mesh_reader.hpp): OFF, OBJ, STL, PLY.
+// Mesh readers with exact coordinates (io/readers/mesh_reader.hpp): OFF, OBJ, STL, PLY.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "io/mesh_reader.hpp"
+#include "io/readers/mesh_reader.hpp"
 
 using namespace hlr;
 
@@ -165,7 +165,7 @@ TEST(MeshIO, FileExtensionCaseInsensitive) {
   EXPECT_EQ(load_mesh(p).num_faces(), 4u);
 }
 
-// Large OFF files are read in chunks of lines on every core (io/off_reader.cpp); the result
+// Large OFF files are read in chunks of lines on every core (io/readers/off_reader.cpp); the result
 // and each error must be the in-order reader's: comments, blank lines, CRLF, colours, and a
 // vertex spread over two lines (which sends the file to the in-order reader).
 namespace {

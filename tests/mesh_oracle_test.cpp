@@ -17,9 +17,9 @@
 #include <cmath>
 #include <filesystem>
 
-#include "algorithms/face_occluders.hpp"
-#include "algorithms/triangulate.hpp"
-#include "io/mesh_reader.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/solids/triangulate.hpp"
+#include "io/readers/mesh_reader.hpp"
 #include "kernel/epeck_bridge.hpp"
 
 using namespace hlr;

@@ -10,11 +10,11 @@
 #include <set>
 #include <sstream>
 
-#include "algorithms/line_drawing.hpp"
-#include "io/explain.hpp"
-#include "io/input_error.hpp"
-#include "io/messages_ru.hpp"
-#include "io/problem.hpp"
+#include "algorithms/model/line_drawing.hpp"
+#include "io/explain/explain.hpp"
+#include "io/readers/input_error.hpp"
+#include "io/explain/messages_ru.hpp"
+#include "io/explain/problem.hpp"
 #include "kernel/number.hpp"
 
 namespace hlr {
@@ -238,11 +238,11 @@ TEST(MessagesRu, NestedMessagesAreTranslatedPartByPart) {
 // returned reason on the exam path is part of some template.
 TEST(MessagesRu, EveryMessageInTheSourcesHasAnEntry) {
   const std::vector<std::string> files = {
-      "io/problem.cpp", "io/scene.cpp", "io/yaml_context.hpp", "io/mesh_reader.cpp", "kernel/body_matrix.cpp",
+      "io/explain/problem.cpp", "io/readers/scene.cpp", "io/readers/yaml_context.hpp", "io/readers/mesh_reader.cpp", "kernel/body_matrix.cpp",
       "kernel/number.cpp", "kernel/rotation.cpp", "kernel/polyhedron.cpp", "kernel/transform.cpp", "kernel/mesh_checks.cpp",
-      "algorithms/roberts.cpp", "algorithms/roberts_pieces.cpp", "algorithms/cyrus_beck.cpp", "algorithms/midpoint_clip.cpp",
-      "algorithms/convex_decomposition.cpp", "algorithms/convexity.cpp", "io/view_choice.cpp", "io/scene_lighting.cpp", "algorithms/weiler_atherton.cpp",
-      "algorithms/priority_list.cpp"};
+      "algorithms/hlr/roberts.cpp", "algorithms/hlr/roberts_pieces.cpp", "algorithms/clip/cyrus_beck.cpp", "algorithms/clip/midpoint_clip.cpp",
+      "algorithms/solids/convex_decomposition.cpp", "algorithms/solids/convexity.cpp", "io/pipeline/view_choice.cpp", "io/readers/scene_lighting.cpp", "algorithms/clip/weiler_atherton.cpp",
+      "algorithms/surfaces/priority_list.cpp"};
   std::string all;
   for (const std::string& t : message_ru_templates()) all += t + "\n";
   std::regex statement(R"re((throw |fail\(|return "|push_back\(\{face, ")[^;]*;)re");
@@ -265,7 +265,7 @@ TEST(MessagesRu, EveryMessageInTheSourcesHasAnEntry) {
         if (letters.size() < 4 || text.find(' ') == std::string::npos) continue;  // " (", ": ", keys and names
         if (text.find("%") != std::string::npos || text.find("\\n") != std::string::npos) continue;
         ++checked;
-        EXPECT_NE(all.find(text), std::string::npos) << f << ": \"" << text << "\" is in no template of io/messages_ru.cpp";
+        EXPECT_NE(all.find(text), std::string::npos) << f << ": \"" << text << "\" is in no template of io/explain/messages_ru.cpp";
       }
     }
   }

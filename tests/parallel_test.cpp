@@ -1,4 +1,4 @@
-// The parallel loop and the process-wide thread limit (algorithms/parallel.hpp; issue 14):
+// The parallel loop and the process-wide thread limit (algorithms/support/parallel.hpp; issue 14):
 // `--threads 1` must mean one thread for every stage, sorts and readers included.
 #include <gtest/gtest.h>
 
@@ -10,10 +10,10 @@
 #include <thread>
 #include <vector>
 
-#include "algorithms/body_topology.hpp"
-#include "algorithms/parallel.hpp"
-#include "algorithms/parallel_scan.hpp"
-#include "algorithms/union_find.hpp"
+#include "algorithms/solids/body_topology.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "algorithms/support/parallel_scan.hpp"
+#include "algorithms/support/union_find.hpp"
 
 using namespace hlr;
 

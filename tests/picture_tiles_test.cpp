@@ -1,10 +1,10 @@
-// Tiles of the picture (algorithms/picture_tiles.hpp; issue 14): every point of every segment
+// Tiles of the picture (algorithms/picture/picture_tiles.hpp; issue 14): every point of every segment
 // belongs to exactly one tile, decided exactly, and the double filters never contradict it.
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "algorithms/picture_tiles.hpp"
+#include "algorithms/picture/picture_tiles.hpp"
 
 using namespace hlr;
 

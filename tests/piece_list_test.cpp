@@ -1,8 +1,8 @@
-// PieceList (algorithms/line_drawing.hpp): a segment's pieces, one piece over [0, 1] held as its
+// PieceList (algorithms/model/line_drawing.hpp): a segment's pieces, one piece over [0, 1] held as its
 // flags only. Each degenerate case of the representation by name.
 #include <gtest/gtest.h>
 
-#include "algorithms/line_drawing.hpp"
+#include "algorithms/model/line_drawing.hpp"
 
 using namespace hlr;
 

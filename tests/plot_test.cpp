@@ -17,16 +17,16 @@
 #include <set>
 #include <sstream>
 
-#include "algorithms/dashes.hpp"
-#include "algorithms/path_chaining.hpp"
-#include "algorithms/pen_order.hpp"
-#include "algorithms/plot.hpp"
-#include "io/cairo_text.hpp"
-#include "io/plot_output.hpp"
-#include "io/render.hpp"
-#include "io/standard_views.hpp"
-#include "io/svg_writer.hpp"
-#include "algorithms/parallel.hpp"
+#include "algorithms/plot/dashes.hpp"
+#include "algorithms/picture/path_chaining.hpp"
+#include "algorithms/plot/pen_order.hpp"
+#include "algorithms/plot/plot.hpp"
+#include "io/writers/cairo_text.hpp"
+#include "io/writers/plot_output.hpp"
+#include "io/pipeline/render.hpp"
+#include "io/pipeline/standard_views.hpp"
+#include "io/writers/svg_writer.hpp"
+#include "algorithms/support/parallel.hpp"
 
 namespace hlr {
 namespace {

@@ -1,7 +1,7 @@
 // Polyhedron checks (kernel/polyhedron.hpp, kernel/mesh_checks.hpp), each naming indices.
 #include <gtest/gtest.h>
 
-#include "io/mesh_reader.hpp"
+#include "io/readers/mesh_reader.hpp"
 #include "kernel/openmesh_mesh.hpp"
 #include "kernel/polyhedron.hpp"
 

@@ -1,4 +1,4 @@
-// The priority list (algorithms/priority_list.*, issue 19), checked by an independent exact
+// The priority list (algorithms/surfaces/priority_list.*, issue 19), checked by an independent exact
 // oracle: at random picture points, the last polygon of the painted list that contains the
 // point must belong to the face the sight ray through the point meets first, found by casting
 // the ray in rationals against every face polygon of the scene (its own ray, its own Newell
@@ -14,10 +14,10 @@
 #include <optional>
 #include <random>
 
-#include "algorithms/face_occluders.hpp"
-#include "algorithms/priority_list.hpp"
-#include "io/mesh_reader.hpp"
-#include "io/scene.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/surfaces/priority_list.hpp"
+#include "io/readers/mesh_reader.hpp"
+#include "io/readers/scene.hpp"
 #include "face_oracle.hpp"
 
 using namespace hlr;

@@ -1,5 +1,5 @@
 // The torture suite for the filled products (docs/design.md, "Checks"): seeded random scenes
-// through the library's render pipeline (io/render.hpp, as `hlr render` calls it), every
+// through the library's render pipeline (io/pipeline/render.hpp, as `hlr render` calls it), every
 // visible surface, transparency region and shadow region sampled and checked by exact ray
 // casting against the input bodies (face_oracle.hpp: its own planes and point-in-polygon).
 // Scenes: boxes (thin slabs among them), tetrahedra, open sheets, boxes whose top is two
@@ -15,14 +15,14 @@
 #include <random>
 #include <sstream>
 
-#include "algorithms/ray_casting.hpp"
-#include "algorithms/scanline.hpp"
-#include "algorithms/warnock.hpp"
+#include "algorithms/raster/ray_casting.hpp"
+#include "algorithms/raster/scanline.hpp"
+#include "algorithms/raster/warnock.hpp"
 #include "face_oracle.hpp"
-#include "io/horizon.hpp"
-#include "io/raster.hpp"
-#include "io/render.hpp"
-#include "io/scene.hpp"
+#include "io/pipeline/horizon.hpp"
+#include "io/pipeline/raster.hpp"
+#include "io/pipeline/render.hpp"
+#include "io/readers/scene.hpp"
 
 using namespace hlr;
 

@@ -14,15 +14,15 @@
 #include <map>
 #include <random>
 
-#include "algorithms/face_occluders.hpp"
-#include "algorithms/ray_casting.hpp"
-#include "algorithms/raster_scene.hpp"
-#include "algorithms/scanline.hpp"
-#include "algorithms/visible_surfaces.hpp"
-#include "algorithms/warnock.hpp"
-#include "algorithms/zbuffer.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/raster/ray_casting.hpp"
+#include "algorithms/raster/raster_scene.hpp"
+#include "algorithms/raster/scanline.hpp"
+#include "algorithms/surfaces/visible_surfaces.hpp"
+#include "algorithms/raster/warnock.hpp"
+#include "algorithms/raster/zbuffer.hpp"
 #include "face_oracle.hpp"
-#include "io/mesh_reader.hpp"
+#include "io/readers/mesh_reader.hpp"
 
 using namespace hlr;
 

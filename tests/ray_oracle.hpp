@@ -9,8 +9,8 @@
 #include <optional>
 #include <vector>
 
-#include "algorithms/camera.hpp"
-#include "algorithms/line_drawing.hpp"
+#include "algorithms/model/camera.hpp"
+#include "algorithms/model/line_drawing.hpp"
 #include "kernel/polyhedron.hpp"
 
 namespace hlr::test {

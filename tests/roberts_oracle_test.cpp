@@ -13,9 +13,9 @@
 #include <random>
 #include <tuple>
 
-#include "algorithms/face_occluders.hpp"
-#include "algorithms/roberts.hpp"
-#include "io/scene.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/hlr/roberts.hpp"
+#include "io/readers/scene.hpp"
 #include "kernel/epeck_bridge.hpp"
 #include "ray_oracle.hpp"
 

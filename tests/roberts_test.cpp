@@ -1,13 +1,13 @@
-// Roberts' algorithm (algorithms/roberts.hpp): hand-computed exact cases, degenerate cases by
+// Roberts' algorithm (algorithms/hlr/roberts.hpp): hand-computed exact cases, degenerate cases by
 // name, and the invariants of the pieces.
 #include <gtest/gtest.h>
 
 #include <random>
 #include <set>
 
-#include "algorithms/roberts.hpp"
-#include "io/mesh_reader.hpp"
-#include "io/scene.hpp"
+#include "algorithms/hlr/roberts.hpp"
+#include "io/readers/mesh_reader.hpp"
+#include "io/readers/scene.hpp"
 
 using namespace hlr;
 
@@ -313,7 +313,7 @@ TEST(Roberts, PrefilterSkipsFarBodiesAndChangesNothing) {
   }
 }
 
-#include "algorithms/int128_interval.hpp"
+#include "algorithms/hlr/int128_interval.hpp"
 
 TEST(RobertsFastPath, AgreesWithTheRationalPathAndFallsBackWhenTooBig) {
   std::mt19937 rng(5);

@@ -1,12 +1,12 @@
-// Scene files (io/scene.hpp): bodies from meshes, inline lists and boxes; transforms; view.
+// Scene files (io/readers/scene.hpp): bodies from meshes, inline lists and boxes; transforms; view.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
 
-#include "algorithms/convexity.hpp"
-#include "io/scene.hpp"
+#include "algorithms/solids/convexity.hpp"
+#include "io/readers/scene.hpp"
 
 using namespace hlr;
 

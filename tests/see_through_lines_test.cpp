@@ -1,4 +1,4 @@
-// Lines seen through transparent faces (algorithms/see_through_lines.*, issue 16, course notes
+// Lines seen through transparent faces (algorithms/hlr/see_through_lines.*, issue 16, course notes
 // section 41): the refinement of the pieces is exact (named cases by hand), and an independent
 // exact oracle agrees on every piece: at random exact points of it, the sight ray toward the
 // eye crosses no face (visible), only faces of see-through bodies (through), or a face of an
@@ -9,12 +9,12 @@
 
 #include <random>
 
-#include "algorithms/face_occluders.hpp"
-#include "algorithms/see_through_lines.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/hlr/see_through_lines.hpp"
 #include "face_oracle.hpp"
-#include "io/render.hpp"
-#include "io/scene.hpp"
-#include "io/svg_writer.hpp"
+#include "io/pipeline/render.hpp"
+#include "io/readers/scene.hpp"
+#include "io/writers/svg_writer.hpp"
 
 using namespace hlr;
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "algorithms/face_triangles.hpp"
+#include "algorithms/solids/face_triangles.hpp"
 #include "kernel/simple_polygon.hpp"
 
 namespace hlr {

@@ -10,11 +10,11 @@
 #include <random>
 #include <tuple>
 
-#include "algorithms/face_occluders.hpp"
-#include "algorithms/roberts.hpp"
-#include "io/render.hpp"
-#include "io/scene.hpp"
-#include "io/view_choice.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/hlr/roberts.hpp"
+#include "io/pipeline/render.hpp"
+#include "io/readers/scene.hpp"
+#include "io/pipeline/view_choice.hpp"
 #include "ray_oracle.hpp"
 
 using namespace hlr;

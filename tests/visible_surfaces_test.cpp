@@ -1,4 +1,4 @@
-// Visible surfaces as exact polygons (algorithms/visible_surfaces.*, issue 15), checked by an
+// Visible surfaces as exact polygons (algorithms/surfaces/visible_surfaces.*, issue 15), checked by an
 // independent exact oracle that shares no code with the route: random points on the faces,
 // each cast toward the viewer against every face polygon of the scene in rationals (plane,
 // parameter, point in polygon in the face's dominant plane). A point that nothing strictly
@@ -16,12 +16,12 @@
 #include <random>
 #include <set>
 
-#include "algorithms/face_occluders.hpp"
-#include "algorithms/face_triangles.hpp"
-#include "algorithms/visible_surfaces.hpp"
-#include "algorithms/weiler_atherton.hpp"
-#include "io/mesh_reader.hpp"
-#include "io/scene.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/solids/face_triangles.hpp"
+#include "algorithms/surfaces/visible_surfaces.hpp"
+#include "algorithms/clip/weiler_atherton.hpp"
+#include "io/readers/mesh_reader.hpp"
+#include "io/readers/scene.hpp"
 #include "face_oracle.hpp"
 
 using namespace hlr;

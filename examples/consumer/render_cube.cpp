@@ -4,9 +4,9 @@
 // mismatch; prints the drawing's segments with exact coordinates.
 #include <iostream>
 
-#include "algorithms/drawing_2d.hpp"
-#include "io/render.hpp"
-#include "io/svg_writer.hpp"
+#include "algorithms/picture/drawing_2d.hpp"
+#include "io/pipeline/render.hpp"
+#include "io/writers/svg_writer.hpp"
 
 int main() {
   using hlr::Rational;

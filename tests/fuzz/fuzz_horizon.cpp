@@ -8,10 +8,10 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "algorithms/floating_horizon.hpp"
-#include "algorithms/floating_horizon_filtered.hpp"
-#include "algorithms/plot.hpp"
-#include "io/horizon.hpp"
+#include "algorithms/horizon/floating_horizon.hpp"
+#include "algorithms/horizon/floating_horizon_filtered.hpp"
+#include "algorithms/plot/plot.hpp"
+#include "io/pipeline/horizon.hpp"
 
 using namespace hlr;
 

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "algorithms/convexity.hpp"
-#include "io/mesh_reader.hpp"
+#include "algorithms/solids/convexity.hpp"
+#include "io/readers/mesh_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::string_view bytes(reinterpret_cast<const char*>(data), size);

@@ -4,8 +4,8 @@
 #include <string>
 
 #include "cli/arguments.hpp"
-#include "cli/clipper_spec.hpp"
-#include "io/input_error.hpp"
+#include "io/readers/clipper_spec.hpp"
+#include "io/readers/input_error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::string text(reinterpret_cast<const char*>(data), size);
@@ -19,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   if (text.rfind("box:", 0) == 0 || text.rfind("frustum:", 0) == 0) {
     try {
-      (void)hlr::cli::parse_clipper("--clipper", text);
+      (void)hlr::parse_clipper("--clipper", text);
     } catch (const std::invalid_argument&) {
     } catch (const hlr::InputError&) {
     }

@@ -4,10 +4,10 @@
 #include <cstdint>
 #include <string>
 
-#include "algorithms/roberts.hpp"
-#include "io/explain.hpp"
-#include "io/messages_ru.hpp"
-#include "io/problem.hpp"
+#include "algorithms/hlr/roberts.hpp"
+#include "io/explain/explain.hpp"
+#include "io/explain/messages_ru.hpp"
+#include "io/explain/problem.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::string text(reinterpret_cast<const char*>(data), size);

@@ -15,17 +15,17 @@
 #include <map>
 #include <tuple>
 
-#include "algorithms/face_occluders.hpp"
-#include "algorithms/plot.hpp"
-#include "algorithms/priority_list.hpp"
-#include "algorithms/ray_casting.hpp"
-#include "algorithms/raster_scene.hpp"
-#include "algorithms/scanline.hpp"
-#include "algorithms/warnock.hpp"
-#include "algorithms/zbuffer.hpp"
-#include "algorithms/roberts.hpp"
-#include "algorithms/visible_surfaces.hpp"
-#include "algorithms/weiler_atherton.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/plot/plot.hpp"
+#include "algorithms/surfaces/priority_list.hpp"
+#include "algorithms/raster/ray_casting.hpp"
+#include "algorithms/raster/raster_scene.hpp"
+#include "algorithms/raster/scanline.hpp"
+#include "algorithms/raster/warnock.hpp"
+#include "algorithms/raster/zbuffer.hpp"
+#include "algorithms/hlr/roberts.hpp"
+#include "algorithms/surfaces/visible_surfaces.hpp"
+#include "algorithms/clip/weiler_atherton.hpp"
 
 using namespace hlr;
 

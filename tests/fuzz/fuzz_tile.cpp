@@ -1,11 +1,11 @@
-// libFuzzer target: tile files of hlr render --tile (io/tile_file.hpp). Any text gives an
+// libFuzzer target: tile files of hlr render --tile (io/readers/tile_file.hpp). Any text gives an
 // InputError or a tile whose pieces are valid: 0 <= t0 < t1 <= 1 on listed segments.
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 
-#include "io/input_error.hpp"
-#include "io/tile_file.hpp"
+#include "io/readers/input_error.hpp"
+#include "io/readers/tile_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::string text(reinterpret_cast<const char*>(data), size);

@@ -1,0 +1,178 @@
+// The per-face engine behind face_occluders() (course notes "Visibility semantics", sections
+// 26-28 for the inequalities): one class template over the number policy P (exact_int.hpp),
+// its members defined by concern in files of their own and instantiated there for Fast,
+// Fast40 and Big:
+//   face_engine_bodies.cpp         triangles, facing, closed solids, eye inside, orientation
+//   face_engine_occluders.cpp      sight prisms of the front triangles, closed sides, grid
+//   face_engine_edges.cpp          which edges are drawn (boundary, silhouette, crease)
+//   face_engine_intersections.cpp  intersection lines (broad phase, filter, exact segment)
+//   face_engine_visibility.cpp     the hidden intervals of every segment, on all cores
+// Internal to the library: callers use face_occluders.hpp.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "algorithms/solids/body_topology.hpp"
+#include "algorithms/model/camera.hpp"
+#include "algorithms/solids/crease_angle.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/support/screen_grid.hpp"
+#include "kernel/exact_int.hpp"
+#include "kernel/polyhedron.hpp"
+
+namespace hlr::face_route {
+
+/// One triangle of a face, global vertex ids in the face's orientation.
+struct Tri {
+  int body, face;
+  std::array<int, 3> v;
+  std::array<bool, 3> edge;  // side k is a polygon edge (else a diagonal)
+};
+
+/// A front triangle's sight prism: constraint k is m[k]·X - c[k] > 0 (>= 0 when closed[k]);
+/// 0 is "behind the plane", 1..3 the side planes through the view direction or the eye.
+template <class P>
+struct Occluder {
+  Vec<P> m[4];
+  typename P::V c[4];
+  bool closed[4] = {false, false, false, false};
+  int body, face;
+  std::array<int, 3> v;  // global vertex ids, oriented toward the viewer (side k+1: v[k] -> v[k+1])
+};
+
+/// A drawn edge of a body (what its segment needs once the body's topology is freed).
+struct DrawnEdge {
+  int u, v, face0, face1;  // body-local vertices, the faces of its first two uses (-1: none)
+  signed char kind;        // LineKind
+  bool self_hidden;
+};
+
+/// An intersection line: the two bodies, the two faces, the exact ends.
+using CrossLine = std::tuple<int, int, int, int, Point3, Point3>;
+
+/// An occluder's screen box (float for memory, rounded outward) and its nearest depth.
+struct Box {
+  float x0, y0, x1, y1;
+  double dmin;
+};
+
+/// Perspective: the screen box of the part strictly in front of the eye of the convex hull of
+/// `n` points (`pts`, their projections `proj`, `front`: strictly in front, exact): the front
+/// points' projections, unbounded on each side where a crossing point of the eye plane has a
+/// positive (or negative) screen sign (Camera::eye_plane_signs). dmin is -inf. `empty` when no
+/// point is in front.
+struct FrontBox {
+  Box box;
+  bool empty;
+};
+FrontBox front_box(const Camera& cam, const Point3* const* pts, const std::array<double, 3>* const* proj,
+                   const bool* front, int n);
+
+template <class P>
+class Engine {
+ public:
+  using C = typename P::C;
+  using V = typename P::V;
+
+  Engine(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const LineOptions& opt, std::vector<Vec<P>> pts,
+         Vec<P> view, Rational scale);
+  LineDrawing run();
+
+ private:
+  struct Work;
+
+  // face_engine_bodies.cpp
+  void offsets();
+  Vec<P> normal(const Tri& t) const;
+  void prepare_body(int b, LineDrawing& res);
+  int triangulate_body(int b);
+  int volume_sign(const std::vector<int>& ids) const;
+  int parity(const Vec<P>& x, const std::vector<int>& ids) const;
+  bool orient_components(int b, int first, LineDrawing& res);
+  bool eye_inside(int first) const;
+  bool eye_on_surface(int first) const;
+  static void flip(Tri& t);
+  // face_engine_occluders.cpp
+  bool neighbour(const Tri& t, int k, int& face, int& third) const;
+  void vertex_rules();
+  void project_vertices();
+  void select_occluders(const std::vector<std::vector<DrawnEdge>>& drawn);
+  void build_occluders();
+  std::function<bool(const Tri&)> near_segments(const std::vector<std::vector<DrawnEdge>>& drawn, ScreenGrid& grid,
+                                                std::vector<ScreenRect>& rects) const;
+  void make_occluder(const Tri& t0, std::uint8_t closed, Occluder<P>& o, Box& bx) const;
+  bool closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs) const;
+  void side_plane(int p, int q, Vec<P>& m, V& c) const;
+  // face_engine_edges.cpp
+  std::vector<DrawnEdge> collect_edges(int b) const;
+  Segment edge_segment(int b, const DrawnEdge& e) const;
+  bool opposite_in_projection(int u, int v, int x, int y) const;
+  bool crease(int b, const EdgeUse& a, const EdgeUse& c) const;
+  // face_engine_intersections.cpp
+  void find_intersections(LineDrawing& res);
+  std::vector<Segment> crossing_segments(LineDrawing& res);
+  bool pair_may_cross(std::uint32_t ta, std::uint32_t tc) const;
+  bool may_meet(const Tri& x, const Tri& y) const;
+  bool extent_on_plane(const Tri& t, const Tri& o, int axis, double out[2], double& scale) const;
+  bool straddles(const Tri& x, const Tri& y) const;
+  std::optional<std::pair<Point3, Point3>> segment(const Tri& x, const Tri& y) const;
+  const Point3& world(int g) const;
+  // face_engine_visibility.cpp
+  std::vector<PieceList> visibility(const std::vector<std::vector<DrawnEdge>>& drawn, std::vector<Segment>& crossing,
+                                    LineDrawing& res);
+  void release_arrays();
+  std::optional<std::pair<Rational, Rational>> depth_of(const Segment& s) const;
+  void candidates(const Box& seg, Work& wk) const;
+  void solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed char& whole) const;
+  void solve_into(Segment& s, const std::array<int, 2>& gv, Work& wk, PieceList& out) const;
+  void test_integer(const Occluder<P>& o, const Vec<P>& X0, const Vec<P>& X1, Work& wk) const;
+  bool end_on_hides(const Occluder<P>& o, int on_side) const;
+  void merge(Work& wk, std::vector<std::pair<Rational, Rational>>& out) const;
+  /// A segment with rational ends (scaled like the points) and their doubles for the filter.
+  struct RationalEnds {
+    std::array<mpz_class, 3> a, b;  // A = a / da, B = b / db (common denominators, positive)
+    mpz_class da, db;
+    std::array<double, 3> Ad, Bd;
+    bool filter = true;  // the doubles are fit for filtered_sign
+  };
+  static int filtered_sign(const Occluder<P>& o, int k, const std::array<double, 3>& X);
+  void test_rational(const Occluder<P>& o, const RationalEnds& e, std::vector<std::pair<Rational, Rational>>& out,
+                     Work& wk) const;
+
+  const std::vector<const Polyhedron*>& bodies_;
+  const Camera& cam_;
+  const LineOptions& opt_;
+  std::vector<Vec<P>> X_;
+  Vec<P> view_;  // orthographic direction, or the eye (scaled like the points)
+  Rational scale_;
+  Projector proj_;
+  CreaseAngle crease_;
+
+  std::vector<int> voff_;
+  std::vector<bool> solid_;
+  std::vector<char> eye_on_;  // perspective: the eye lies on this solid's surface
+  std::vector<int> flipped_;
+  std::vector<std::vector<int>> facing_;
+  std::vector<BodyTopology> topo_;
+  std::vector<std::vector<char>> degenerate_;
+  std::vector<std::vector<Vec<P>>> face_normal_;
+  std::vector<Tri> tris_;
+  std::vector<int> sel_;               // the triangles that become occluders
+  std::vector<std::uint8_t> closed_;   // their closed sides (bit k + 1: side k)
+  std::vector<Occluder<P>> occ_;
+  std::size_t hiding_ = 0;  // triangles that hide (occ_ without a tile's restriction)
+  std::vector<Box> boxes_;
+  ScreenGrid grid_;
+  double margin_ = 0;
+  std::vector<std::array<double, 3>> vproj_;
+  std::vector<char> vfront_;
+  std::vector<char> vertex_closed_;
+  std::vector<CrossLine> cross_;  // intersection lines, found before the occluders are built
+};
+
+}  // namespace hlr::face_route

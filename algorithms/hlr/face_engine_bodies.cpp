@@ -1,0 +1,448 @@
+// The per-face engine, bodies (see face_engine.hpp): triangles of every face, facing of
+// every face (facing.hpp), which bodies are closed solids (body_topology.hpp), inside-out
+// solids turned, an eye inside a solid refused.
+#include <algorithm>
+#include <atomic>
+#include <numeric>
+#include <chrono>
+
+#include "algorithms/solids/convexity.hpp"
+#include "algorithms/hlr/face_engine.hpp"
+#include "algorithms/solids/face_triangles.hpp"
+#include "algorithms/model/facing.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "algorithms/support/parallel_scan.hpp"
+#include "algorithms/support/union_find.hpp"
+
+namespace hlr::face_route {
+namespace {
+
+// All vertices of all bodies, for the drawing frame of the filters' projections.
+DrawingFrame frame_of(const std::vector<const Polyhedron*>& bodies) {
+  std::vector<const Point3*> pts;
+  for (const Polyhedron* p : bodies)
+    for (const Point3& v : p->vertices()) pts.push_back(&v);
+  return drawing_frame(pts.size(), [&](std::size_t i) -> const Point3& { return *pts[i]; });
+}
+
+}  // namespace
+
+template <class P>
+Engine<P>::Engine(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const LineOptions& opt,
+                  std::vector<Vec<P>> pts, Vec<P> view, Rational scale)
+    : bodies_(bodies), cam_(cam), opt_(opt), X_(std::move(pts)), view_(std::move(view)), scale_(std::move(scale)),
+      proj_(cam, frame_of(bodies)), crease_(opt.crease_degrees) {}
+
+template <class P>
+LineDrawing Engine<P>::run() {
+  LineDrawing res;
+  res.stats.method = Method::Faces;
+  res.stats.faces.emplace();
+  res.stats.faces->integer_path = !std::is_same_v<P, Big>;
+  using Clock = std::chrono::steady_clock;
+  auto t0 = Clock::now();
+  offsets();
+  for (std::size_t b = 0; b < bodies_.size(); ++b) prepare_body(static_cast<int>(b), res);
+  if (opt_.facing_only) {
+    res.stats.setup_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return res;
+  }
+  // The drawn edges as compact records, the occluders chosen and their closed sides read off
+  // the topology, which is then freed: before the intersection lines' broad phase when the
+  // occluders do not depend on those lines (no feature-line filter), else after it.
+  std::vector<std::vector<DrawnEdge>> drawn(bodies_.size());
+  std::size_t total = 0;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    drawn[b] = collect_edges(static_cast<int>(b));
+    total += drawn[b].size();
+  }
+  vertex_rules();
+  project_vertices();
+  const bool early = cam_.perspective || total * 8 >= tris_.size();  // near_segments() would not apply
+  auto free_topology = [&] {
+    std::vector<BodyTopology>().swap(topo_);
+    std::vector<std::vector<Vec<P>>>().swap(face_normal_);
+  };
+  if (early) select_occluders(drawn), free_topology();
+  const auto ti0 = Clock::now();
+  if (opt_.intersections) find_intersections(res);
+  const auto ti1 = Clock::now();
+  if (!early) select_occluders(drawn), free_topology();
+  total += cross_.size();
+  build_occluders();
+  res.stats.faces->occluders = hiding_;  // a tile's too: every hiding triangle of the scene
+  std::vector<Segment> crossing = crossing_segments(res);
+  auto t1 = Clock::now();
+  // Visibility runs on the compact records; the segments are made once the occluders, the grid
+  // and the triangles are freed, so that they do not add to the engine's peak.
+  std::vector<PieceList> pieces = visibility(drawn, crossing, res);
+  release_arrays();
+  const ParallelLoop loop(opt_.threads);
+  reserve_touched(res.segments, total, loop);
+  res.segments.resize(total);
+  std::size_t at = 0;  // the segments on all cores, in the order of the pieces
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    loop.for_each(drawn[b].size(), 4096, [&](std::size_t k) {
+      Segment& s = res.segments[at + k];
+      s = edge_segment(static_cast<int>(b), drawn[b][k]);
+      s.pieces = std::move(pieces[at + k]);
+    });
+    at += drawn[b].size();
+    std::vector<DrawnEdge>().swap(drawn[b]);
+  }
+  for (Segment& s : crossing) {
+    s.pieces = std::move(pieces[at]);
+    res.segments[at++] = std::move(s);
+  }
+  auto t3 = Clock::now();
+  res.stats.setup_seconds = std::chrono::duration<double>((t1 - t0) - (ti1 - ti0)).count();
+  res.stats.intersections_seconds = std::chrono::duration<double>(ti1 - ti0).count();
+  res.stats.visibility_seconds = std::chrono::duration<double>(t3 - t1).count();
+  return res;
+}
+
+template <class P>
+void Engine<P>::offsets() {
+  int o = 0;
+  for (const Polyhedron* p : bodies_) {
+    voff_.push_back(o);
+    o += static_cast<int>(p->num_vertices());
+  }
+  solid_.assign(bodies_.size(), false);
+  eye_on_.assign(bodies_.size(), 0);
+  degenerate_.resize(bodies_.size());
+  face_normal_.resize(bodies_.size());
+  facing_.resize(bodies_.size());
+  topo_.resize(bodies_.size());
+}
+
+template <class P>
+Vec<P> Engine<P>::normal(const Tri& t) const {
+  return cross<P>(sub<P>(X_[t.v[1]], X_[t.v[0]]), sub<P>(X_[t.v[2]], X_[t.v[0]]));
+}
+
+// Triangles of every face of body b into tris_, face normals, facing and the opposite vertex
+// of every polygon side (topo_[b].slot_third); returns the index of the body's first triangle.
+template <class P>
+int Engine<P>::triangulate_body(int b) {
+  const Polyhedron& p = *bodies_[b];
+  const int vo = voff_[b];
+  const auto& faces = p.faces();
+  BodyTopology& topo = topo_[b];
+  const std::vector<int>& fo = topo.face_offset;
+  std::vector<int>& facing = facing_[b];
+  facing.assign(faces.size(), 0);
+  degenerate_[b].assign(faces.size(), 0);
+  face_normal_[b].resize(faces.size());
+  const int first_tri = static_cast<int>(tris_.size());
+  // Triangles' normals and facing on all cores (integer arithmetic on the shared coordinates;
+  // each face writes its own slots), then the triangles listed in face order.
+  ParallelLoop(opt_.threads).for_each(faces.size(), 4096, [&](std::size_t f) {
+    const Face& face = faces[f];
+    if (face.size() != 3) return;  // after the triangulation below
+    Tri probe{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}};
+    Vec<P> n = normal(probe);
+    if (P::sign(n[0]) == 0 && P::sign(n[1]) == 0 && P::sign(n[2]) == 0) {
+      degenerate_[b][f] = 1;  // zero area: neither occludes nor faces
+      return;
+    }
+    facing[f] = facing_sign<P>(n, X_[probe.v[0]], view_, cam_.perspective);
+    face_normal_[b][f] = std::move(n);
+  });
+  const ParallelLoop loop(opt_.threads);
+  PerWorker<char> polygon(loop, 0);  // some face is not a triangle
+  loop.run(faces.size(), 16384, [&](unsigned w, std::size_t b0, std::size_t e) {
+    bool any = false;
+    for (std::size_t f = b0; f < e; ++f) any = any || faces[f].size() != 3;
+    if (any) polygon[w] = 1;
+  });
+  bool triangles = true;
+  for (unsigned w = 0; w < polygon.size(); ++w) triangles = triangles && !polygon[w];
+  if (triangles) {
+    // Only triangles (most large meshes): listed on all cores, each chunk of faces after the
+    // ones before it (the order of the loop below).
+    constexpr std::size_t kChunk = 16384;
+    const std::size_t chunks = (faces.size() + kChunk - 1) / kChunk;
+    std::vector<std::size_t> at(chunks + 1, 0);
+    loop.for_each(chunks, 1, [&](std::size_t c) {
+      std::size_t k = 0;  // (a local: neighbouring chunks' counts share a cache line)
+      for (std::size_t f = c * kChunk, e = std::min(faces.size(), f + kChunk); f < e; ++f) k += !degenerate_[b][f];
+      at[c + 1] = k;
+    });
+    at[0] = tris_.size();
+    for (std::size_t c = 0; c < chunks; ++c) at[c + 1] += at[c];
+    reserve_touched(tris_, at[chunks], loop);
+    tris_.resize(at[chunks]);
+    loop.for_each(chunks, 1, [&](std::size_t c) {
+      std::size_t w = at[c];
+      for (std::size_t f = c * kChunk, e = std::min(faces.size(), f + kChunk); f < e; ++f) {
+        if (degenerate_[b][f]) continue;
+        const Face& face = faces[f];
+        Tri tri{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}};
+        for (int k = 0; k < 3; ++k) topo.slot_third[fo[f] + k] = tri.v[(k + 2) % 3];
+        tris_[w++] = tri;
+      }
+    });
+    return first_tri;
+  }
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const Face& face = faces[f];
+    static const std::vector<FaceTriangle> kTriangle = {{{0, 1, 2}, {true, true, true}}};
+    FaceTriangles ft;  // triangles need no triangulation (nor an allocation each)
+    if (face.size() == 3) {
+      if (degenerate_[b][f]) continue;
+    } else {
+      ft = face_triangles(p, static_cast<int>(f));
+      if (ft.status == FaceTriangles::Status::Degenerate) {
+        degenerate_[b][f] = 1;
+        continue;
+      }
+      if (ft.status != FaceTriangles::Status::Ok) throw BodyError(b, "has " + ft.problem(static_cast<int>(f)));
+    }
+    for (const FaceTriangle& t : face.size() == 3 ? kTriangle : ft.triangles) {
+      Tri tri{b, static_cast<int>(f), {vo + face[t.v[0]], vo + face[t.v[1]], vo + face[t.v[2]]}, t.edge};
+      for (int k = 0; k < 3; ++k)
+        if (t.edge[k]) topo.slot_third[fo[f] + t.v[k]] = tri.v[(k + 2) % 3];  // side k's opposite vertex
+      tris_.push_back(tri);
+    }
+    if (face.size() == 3) continue;  // normal and facing above
+    face_normal_[b][f] = normal(tris_.back());
+    facing[f] = facing_sign<P>(face_normal_[b][f], X_[tris_.back().v[0]], view_, cam_.perspective);
+  }
+  return first_tri;
+}
+
+// Sign of six times the volume of the triangles `ids`, summed on all cores (exact integers:
+// the sum is the same in any order); Fast40's terms reach 2^123, so its sum carries into a
+// third word.
+template <class P>
+int Engine<P>::volume_sign(const std::vector<int>& ids) const {
+  const ParallelLoop loop(opt_.threads);
+  if constexpr (std::is_same_v<P, Fast40>) {
+    // Each term fits in Int128, their sum may not: high·2^128 + low, a carry counted on each
+    // wrap of low (its direction is the term's sign), exact for fewer than 2^63 terms.
+    struct WideSum {
+      Int128 low = 0;
+      std::int64_t high = 0;
+      void add(Int128 t) {
+        Int128 r;
+        if (__builtin_add_overflow(low, t, &r)) high += t > 0 ? 1 : -1;
+        low = r;
+      }
+    };
+    std::vector<WideSum> part(loop.workers());
+    const Vec<P>& o = X_[tris_[ids[0]].v[0]];
+    loop.run(ids.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
+      WideSum sum = part[w];
+      for (std::size_t k = begin; k < end; ++k) {
+        const int i = ids[k];
+        sum.add(dot<P>(sub<P>(X_[tris_[i].v[0]], o), cross<P>(sub<P>(X_[tris_[i].v[1]], o), sub<P>(X_[tris_[i].v[2]], o))));
+      }
+      part[w] = sum;
+    });
+    WideSum v6;
+    for (const WideSum& x : part) {
+      v6.add(x.low);
+      v6.high += x.high;
+    }
+    return v6.high != 0 ? (v6.high > 0 ? 1 : -1) : P::sign(v6.low);
+  } else {
+    std::vector<V> part(loop.workers(), V(0));
+    loop.run(ids.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
+      V sum = 0;
+      for (std::size_t k = begin; k < end; ++k) {
+        const int i = ids[k];
+        sum += dot<P>(X_[tris_[i].v[0]], cross<P>(X_[tris_[i].v[1]], X_[tris_[i].v[2]]));
+      }
+      part[w] += sum;
+    });
+    V volume6 = 0;
+    for (const V& x : part) volume6 += x;
+    return P::sign(volume6);
+  }
+}
+
+template <class P>
+void Engine<P>::prepare_body(int b, LineDrawing& res) {
+  topo_[b] = body_topology(bodies_[b]->faces(), bodies_[b]->num_vertices(), opt_.threads);
+  const int first_tri = triangulate_body(b);
+  // A closed solid: every edge in exactly two faces, traversed in opposite directions.
+  const ParallelLoop loop(opt_.threads);
+  PerWorker<char> open(loop, 0);
+  loop.run(topo_[b].edges.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
+    if (open[w]) return;
+    for (std::size_t i = begin; i < end; ++i)
+      if (!topo_[b].edges[i].closed_pair()) {
+        open[w] = 1;
+        return;
+      }
+  });
+  bool closed = true;
+  for (unsigned w = 0; w < open.size(); ++w) closed = closed && !open[w];
+  std::vector<int> ids(tris_.size() - static_cast<std::size_t>(first_tri));
+  std::iota(ids.begin(), ids.end(), first_tri);
+  // Orientation per component first (an inside-out one is turned, with a note); then the sign
+  // of the whole.
+  const bool components_ok = closed && !ids.empty() && orient_components(b, first_tri, res);
+  int vsign = components_ok ? volume_sign(ids) : 0;
+  solid_[b] = closed && vsign != 0;
+  if (!solid_[b]) {
+    std::string why = "has zero volume";
+    for (const BodyEdge& e : topo_[b].edges)
+      if (!e.closed_pair()) {
+        why = e.uses.size() == 1   ? "is open (edge " + std::to_string(e.u) + "-" + std::to_string(e.v) + " is in one face)"
+              : e.uses.size() != 2 ? "is not manifold (edge " + std::to_string(e.u) + "-" + std::to_string(e.v) + " is in " +
+                                         std::to_string(e.uses.size()) + " faces)"
+                                   : "is not consistently oriented (edge " + std::to_string(e.u) + "-" + std::to_string(e.v) + ")";
+        break;
+      }
+    res.notes.push_back({b, why + ": drawn as a surface (hidden where a sight ray crosses it)"});
+  }
+  if (solid_[b] && cam_.perspective && eye_inside(first_tri))
+    throw BodyError(b, "contains the eye " + to_string(cam_.eye) + ": an eye inside a solid sees nothing");
+  // The eye on the surface: a sight segment may end inside the solid without leaving it through
+  // a front face, so the back faces hide too (their forward cones from the eye, see occluders).
+  if (solid_[b] && cam_.perspective) eye_on_[b] = eye_on_surface(first_tri);
+  if (eye_on_[b] && !convexity(*bodies_[b]).convex())
+    throw BodyError(b, "holds the eye " + to_string(cam_.eye) +
+                           " on its surface and is not convex: move the eye off the surface (by any amount)");
+  if (solid_[b] && vsign < 0) {  // inside out: turn it
+    for (std::size_t i = first_tri; i < tris_.size(); ++i) flip(tris_[i]);
+    for (int& s : facing_[b]) s = -s;
+    for (auto& n : face_normal_[b]) n = neg<P>(n);
+    flipped_.push_back(b);
+  }
+  res.facing.emplace_back(facing_[b].begin(), facing_[b].end());
+  res.back_faces_unseen.resize(b + 1, 0);
+  res.back_faces_unseen[b] = solid_[b] && !eye_on_[b];
+}
+
+// Parity of the crossings of a ray from `x` with the triangles `ids`, exactly: 1 inside, 0
+// outside, -1 when x lies on one of them; a ray through an edge or a vertex is replaced by the
+// next direction (-1 when every direction is degenerate).
+template <class P>
+int Engine<P>::parity(const Vec<P>& x, const std::vector<int>& ids) const {
+  static const int dirs[][3] = {{7, 3, 5}, {2, 11, 3}, {-13, 1, 7}, {5, -9, 2}, {1, 4, -11}, {-3, -5, 8}, {17, 6, -1}, {-2, 3, -19}};
+  for (const auto& dd : dirs) {
+    Vec<P> d{C(dd[0]), C(dd[1]), C(dd[2])};
+    bool degenerate = false;
+    int crossings = 0;
+    for (int i : ids) {
+      const Tri& t = tris_[i];
+      Vec<P> a = sub<P>(X_[t.v[0]], x), b = sub<P>(X_[t.v[1]], x), c = sub<P>(X_[t.v[2]], x);
+      int o1 = P::sign(dot<P>(a, cross<P>(b, d))), o2 = P::sign(dot<P>(b, cross<P>(c, d))), o3 = P::sign(dot<P>(c, cross<P>(a, d)));
+      if (!((o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0))) continue;  // the line misses it
+      if (o1 == 0 || o2 == 0 || o3 == 0) {
+        degenerate = true;  // through an edge or a vertex (or in its plane)
+        break;
+      }
+      Vec<P> n = normal(t);
+      int sa = P::sign(dot<P>(n, a)), sd = P::sign(dot<P>(n, d));
+      if (sa == 0) return -1;     // x lies on the surface
+      if (sa == sd) ++crossings;  // the crossing is ahead of x
+    }
+    if (!degenerate) return crossings % 2;
+  }
+  return -1;
+}
+
+template <class P>
+bool Engine<P>::eye_inside(int first) const {
+  std::vector<int> ids;
+  for (std::size_t i = first; i < tris_.size() && tris_[i].body == tris_[first].body; ++i) ids.push_back(static_cast<int>(i));
+  return parity(view_, ids) == 1;
+}
+
+// Closed components of body b (faces joined across edges) whose volume is negative and that do
+// not lie inside another component (a cavity's shell is negative and inside): inside out.
+// They are turned (triangles, facing, normals) with a note. Returns false when some component
+// has zero volume.
+template <class P>
+bool Engine<P>::orient_components(int b, int first, LineDrawing& res) {
+  const std::size_t nf = bodies_[b]->faces().size();
+  // Faces joined across edges, on all cores: each set's root is its smallest face.
+  const ParallelLoop loop(opt_.threads);
+  ConcurrentUnionFind faces(nf);
+  loop.for_each(topo_[b].edges.size(), 8192, [&](std::size_t i) {
+    const BodyEdge& e = topo_[b].edges[i];
+    for (std::size_t k = 1; k < e.uses.size(); ++k) faces.unite(static_cast<std::uint32_t>(e.uses[k].face), static_cast<std::uint32_t>(e.uses[0].face));
+  });
+  std::vector<int> root(nf);
+  loop.for_each(nf, 8192, [&](std::size_t f) { root[f] = static_cast<int>(faces.root(static_cast<std::uint32_t>(f))); });
+  auto find = [&](int f) { return root[f]; };
+  // The components with triangles (most meshes have one: then nothing more to do).
+  std::vector<char> has(nf, 0);
+  loop.for_each(tris_.size() - static_cast<std::size_t>(first), 8192, [&](std::size_t i) {
+    std::atomic_ref<char>(has[root[tris_[first + i].face]]).store(1, std::memory_order_relaxed);
+  });
+  std::vector<int> slot(nf, -1), roots;  // slot: a root's index in roots
+  for (std::uint32_t f : parallel_select(nf, [&](std::size_t f) { return has[f] != 0; }, loop)) {
+    roots.push_back(static_cast<int>(f));
+    slot[f] = 0;
+  }
+  if (roots.size() < 2) return true;
+  std::sort(roots.begin(), roots.end());
+  for (std::size_t k = 0; k < roots.size(); ++k) slot[roots[k]] = static_cast<int>(k);
+  std::vector<std::vector<int>> comp(roots.size());  // the triangles of each component
+  for (std::size_t i = first; i < tris_.size(); ++i) comp[slot[find(tris_[i].face)]].push_back(static_cast<int>(i));
+  std::vector<int> sign(roots.size(), 0);
+  for (std::size_t k = 0; k < roots.size(); ++k) {
+    sign[k] = volume_sign(comp[k]);
+    if (sign[k] == 0) return false;
+  }
+  for (std::size_t k = 0; k < roots.size(); ++k) {
+    const int r = roots[k];
+    if (sign[k] > 0) continue;
+    const std::vector<int>& mine = comp[k];
+    std::vector<int> others;
+    for (std::size_t q = 0; q < roots.size(); ++q)
+      if (q != k) others.insert(others.end(), comp[q].begin(), comp[q].end());
+    // A cavity lies wholly inside the others: some vertex outside them all means inside out.
+    bool outside = false;
+    for (std::size_t i = 0; i < mine.size() && !outside; ++i)
+      for (int j = 0; j < 3 && !outside; ++j) outside = parity(X_[tris_[mine[i]].v[j]], others) == 0;
+    if (!outside) continue;  // a cavity's shell (or undecided: left as it is)
+    for (int i : mine) flip(tris_[i]);
+    int lowest = static_cast<int>(nf);
+    for (std::size_t f = 0; f < nf; ++f)
+      if (find(static_cast<int>(f)) == r) {
+        facing_[b][f] = -facing_[b][f];
+        face_normal_[b][f] = neg<P>(face_normal_[b][f]);
+        lowest = std::min(lowest, static_cast<int>(f));
+      }
+    res.notes.push_back({b, "has an inside-out component (the one with face " + std::to_string(lowest) +
+                                ": negative volume, not inside another component): drawn turned outward"});
+  }
+  return true;
+}
+
+// Does the eye lie in a (closed) triangle of the body from `first` on? Only faces seen edge-on
+// can hold it.
+template <class P>
+bool Engine<P>::eye_on_surface(int first) const {
+  for (std::size_t i = first; i < tris_.size() && tris_[i].body == tris_[first].body; ++i) {
+    const Tri& t = tris_[i];
+    if (facing_[t.body][t.face] != 0) continue;
+    Vec<P> n = normal(t);
+    bool inside = true;
+    for (int k = 0; k < 3 && inside; ++k) {
+      const Vec<P>& a = X_[t.v[k]];
+      inside = P::sign(dot<P>(n, cross<P>(sub<P>(X_[t.v[(k + 1) % 3]], a), sub<P>(view_, a)))) >= 0;
+    }
+    if (inside) return true;
+  }
+  return false;
+}
+
+template <class P>
+void Engine<P>::flip(Tri& t) {
+  std::swap(t.v[1], t.v[2]);
+  // Sides were (0,1), (1,2), (2,0); now (0,2)=old 2, (2,1)=old 1, (1,0)=old 0.
+  t.edge = {t.edge[2], t.edge[1], t.edge[0]};
+}
+
+template class Engine<Fast>;
+template class Engine<Fast40>;
+template class Engine<Big>;
+
+}  // namespace hlr::face_route

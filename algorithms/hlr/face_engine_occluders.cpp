@@ -1,0 +1,349 @@
+// The per-face engine, occluders (see face_engine.hpp): every front triangle with the sight
+// rays behind it bounds a convex sight prism (its plane and three side planes through the view
+// direction or the eye); a prism side is closed where the ray just behind that polygon edge is
+// inside the solid (or crosses the open surface). Boxes of the projected prisms go into the
+// screen grid (screen_grid.hpp), a filter only.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "algorithms/hlr/face_engine.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "algorithms/support/parallel_scan.hpp"
+
+namespace hlr::face_route {
+
+FrontBox front_box(const Camera& cam, const Point3* const* pts, const std::array<double, 3>* const* proj,
+                   const bool* front, int n) {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  FrontBox out{Box{inf, inf, -inf, -inf, -std::numeric_limits<double>::infinity()}, true};
+  for (int i = 0; i < n; ++i) {
+    if (!front[i]) continue;
+    out.empty = false;
+    const auto& pr = *proj[i];
+    out.box.x0 = std::min(out.box.x0, std::nextafter(static_cast<float>(pr[0]), -inf));
+    out.box.y0 = std::min(out.box.y0, std::nextafter(static_cast<float>(pr[1]), -inf));
+    out.box.x1 = std::max(out.box.x1, std::nextafter(static_cast<float>(pr[0]), inf));
+    out.box.y1 = std::max(out.box.y1, std::nextafter(static_cast<float>(pr[1]), inf));
+  }
+  if (out.empty) return out;
+  // Every edge from a front point to one that is not: where it meets the eye plane.
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      if (!front[i] || front[j]) continue;
+      open_toward(out.box, cam.eye_plane_signs(*pts[i], *pts[j]));
+    }
+  return out;
+}
+
+// ---- occluders
+// The neighbour of triangle side (p -> q) across a polygon edge: its face and the opposite
+// vertex of its triangle on that edge; false for boundary, non-manifold or degenerate.
+template <class P>
+bool Engine<P>::neighbour(const Tri& t, int k, int& face, int& third) const {
+  const int b = t.body;
+  const Face& poly = bodies_[b]->faces()[t.face];
+  // Find the polygon position of side k: the position of t.v[k] in the face.
+  const int vo = voff_[b];
+  int pos = -1;
+  for (std::size_t i = 0; i < poly.size(); ++i)
+    if (vo + poly[i] == t.v[k] && vo + poly[(i + 1) % poly.size()] == t.v[(k + 1) % 3]) pos = static_cast<int>(i);
+  if (pos < 0)  // a flipped (inside-out) solid traverses its sides backwards
+    for (std::size_t i = 0; i < poly.size(); ++i)
+      if (vo + poly[i] == t.v[(k + 1) % 3] && vo + poly[(i + 1) % poly.size()] == t.v[k]) pos = static_cast<int>(i);
+  if (pos < 0) return false;
+  const int slot = topo_[b].face_offset[t.face] + pos;
+  const int e = topo_[b].slot_edge[slot];
+  if (e < 0) return false;
+  const BodyEdge& be = topo_[b].edges[e];
+  if (be.uses.size() != 2) return false;
+  const EdgeUse& other = be.uses[0].slot == slot ? be.uses[1] : be.uses[0];
+  if (degenerate_[b][other.face]) return false;
+  face = other.face;
+  third = topo_[b].slot_third[other.slot];
+  return third >= 0;
+}
+
+// A vertex hides the sight line just behind it when every face around it faces the viewer
+// (solid: all front, so the surface is locally a graph over the image with material behind;
+// open surface: all one way and not on the boundary, so the ray crosses it). Faces that are
+// edge-on or turn away around a vertex: not closed (a ray along the boundary).
+template <class P>
+void Engine<P>::vertex_rules() {
+  // 0 unset, 1 all facing, 2 all non-facing, 3 mixed or edge-on or boundary: a join (0 with s
+  // is s, s with s is s, any other pair 3), so the faces mark on all cores in any order.
+  std::vector<char> state(X_.size(), 0);
+  auto mark = [&](int g, char st) {
+    std::atomic_ref<char> x(state[g]);
+    char cur = x.load(std::memory_order_relaxed);
+    for (;;) {
+      const char next = (cur == 0 || cur == st) ? st : 3;
+      if (next == cur || x.compare_exchange_weak(cur, next, std::memory_order_relaxed)) return;
+    }
+  };
+  const ParallelLoop loop(opt_.threads);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const auto& faces = bodies_[b]->faces();
+    loop.for_each(faces.size(), 8192, [&](std::size_t f) {
+      int fs = facing_[b][f];
+      char st = degenerate_[b][f] || fs == 0 ? 3 : (fs > 0 ? 1 : (solid_[b] && !eye_on_[b] ? 3 : 2));
+      for (int v : faces[f]) mark(voff_[b] + v, st);
+    });
+    const RawVector<BodyEdge>& edges = topo_[b].edges;
+    loop.for_each(edges.size(), 8192, [&](std::size_t i) {
+      if (edges[i].uses.size() != 2) mark(voff_[b] + edges[i].u, 3), mark(voff_[b] + edges[i].v, 3);
+    });
+  }
+  vertex_closed_.resize(X_.size());
+  loop.for_each(X_.size(), 16384, [&](std::size_t g) { vertex_closed_[g] = state[g] == 1 || state[g] == 2; });
+}
+
+// Feature lines of a large mesh are few: then only the triangles whose screen box comes near
+// some segment's box can hide anything drawn, and only those become occluders. Orthographic
+// views only. A filter (it skips work, never decides): every box is widened by
+// 4·kBoxMargin·E + 1e-6·E, E the largest projected coordinate (depth included) of any vertex
+// or segment end, so two
+// widened boxes meet whenever the occluder's box and the segment's box of visibility() can
+// (each widened there by at most kBoxMargin·E, rounded outward to floats within 2^-23·E):
+// docs/design.md, "Filters". Returns an empty function when it does not apply.
+template <class P>
+std::function<bool(const Tri&)> Engine<P>::near_segments(const std::vector<std::vector<DrawnEdge>>& drawn, ScreenGrid& grid,
+                                                         std::vector<ScreenRect>& rects) const {
+  std::size_t n = cross_.size();
+  for (const auto& d : drawn) n += d.size();
+  if (cam_.perspective || n * 8 >= tris_.size()) return {};
+  std::vector<std::array<double, 3>> ends;  // the intersection lines' projected ends
+  for (const CrossLine& l : cross_) ends.push_back(proj_.project(std::get<4>(l))), ends.push_back(proj_.project(std::get<5>(l)));
+  double ext = 0;
+  // E covers the depths too: the margins of visibility() grow with them.
+  for (const auto& p : vproj_) ext = std::max({ext, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])});
+  for (const auto& p : ends) ext = std::max({ext, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])});
+  if (!std::isfinite(ext) || ext > 1e30) return {};
+  const double w = 4 * bounds::kBoxMargin * ext + 1e-6 * ext + 1e-300;
+  auto rect = [w](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return ScreenRect{std::min(a[0], b[0]) - w, std::min(a[1], b[1]) - w, std::max(a[0], b[0]) + w, std::max(a[1], b[1]) + w};
+  };
+  rects.clear();
+  rects.reserve(n);
+  for (std::size_t b = 0; b < drawn.size(); ++b)
+    for (const DrawnEdge& e : drawn[b]) rects.push_back(rect(vproj_[voff_[b] + e.u], vproj_[voff_[b] + e.v]));
+  for (std::size_t k = 0; k < ends.size(); k += 2) rects.push_back(rect(ends[k], ends[k + 1]));
+  grid.build(rects, std::vector<char>(rects.size(), 0), 2.0, 2048, opt_.threads);
+  return [this, w, &grid, &rects](const Tri& t) {
+    ScreenRect r{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (int v : t.v) {
+      const auto& p = vproj_[v];
+      r.x0 = std::min(r.x0, p[0]), r.y0 = std::min(r.y0, p[1]), r.x1 = std::max(r.x1, p[0]), r.y1 = std::max(r.y1, p[1]);
+    }
+    r.x0 -= w, r.y0 -= w, r.x1 += w, r.y1 += w;
+    bool meets = false;
+    grid.visit(r, [&](int i) { meets = meets || rects[i].meets(r); });
+    return meets;
+  };
+}
+
+// Drawing projections of every vertex, once, on all cores.
+template <class P>
+void Engine<P>::project_vertices() {
+  const ParallelLoop loop(opt_.threads);
+  reserve_touched(vproj_, X_.size(), loop);  // fresh pages zeroed on all cores, not by resize alone
+  reserve_touched(vfront_, X_.size(), loop);
+  vproj_.resize(X_.size());
+  vfront_.assign(X_.size(), 1);
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    loop.for_each(bodies_[b]->num_vertices(), 4096, [&](std::size_t i) {
+      const Point3& q = bodies_[b]->vertices()[i];
+      vproj_[voff_[b] + i] = proj_.project(q);
+      if (cam_.perspective) vfront_[voff_[b] + i] = cam_.in_front(q) == Sign::Positive;
+    });
+}
+
+// The triangles that become occluders (counting the ones that hide into hiding_), and which of
+// their sides are closed (bit k+1: side k), while the topology is still there.
+template <class P>
+void Engine<P>::select_occluders(const std::vector<std::vector<DrawnEdge>>& drawn) {
+  ScreenGrid seg_grid;
+  std::vector<ScreenRect> seg_rects;
+  const std::function<bool(const Tri&)> near = near_segments(drawn, seg_grid, seg_rects);
+  // Each triangle's state on all cores (0: hides nothing, 1: hides, 2: hides and is taken),
+  // then the taken ones in order.
+  const ParallelLoop loop(opt_.threads);
+  std::vector<char> state(tris_.size(), 0);
+  PerWorker<std::size_t> hiding(loop, 0);
+  loop.run(tris_.size(), 4096, [&](unsigned w, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const Tri& t0 = tris_[i];
+      int fs = facing_[t0.body][t0.face];
+      if (fs == 0) continue;  // edge-on: sight rays graze it
+      if (static_cast<std::size_t>(t0.body) < opt_.see_through.size() && opt_.see_through[t0.body]) continue;  // hides nothing
+      if (solid_[t0.body] && fs < 0 && !eye_on_[t0.body]) continue;  // a closed solid is hidden by its front faces
+      // No point strictly in front of the eye: its sight cone lies behind the eye, where nothing
+      // is drawn (docs/design.md, "Occluders that reach behind the eye").
+      if (cam_.perspective && !vfront_[t0.v[0]] && !vfront_[t0.v[1]] && !vfront_[t0.v[2]]) continue;
+      ++hiding[w];
+      state[i] = 1;
+      if (near && !near(t0)) continue;  // no drawn segment comes near it
+      if (opt_.may_occlude) {           // a tile: only the triangles that can reach it
+        const int o = voff_[t0.body];
+        if (!opt_.may_occlude(t0.body, {t0.v[0] - o, t0.v[1] - o, t0.v[2] - o})) continue;
+      }
+      state[i] = 2;
+    }
+  });
+  hiding_ = 0;
+  for (unsigned w = 0; w < hiding.size(); ++w) hiding_ += hiding[w];
+  const std::vector<std::uint32_t> taken = parallel_select(tris_.size(), [&](std::size_t i) { return state[i] == 2; }, loop);
+  sel_.assign(taken.begin(), taken.end());
+  closed_.assign(sel_.size(), 0);
+  loop.for_each(sel_.size(), 1024, [&](std::size_t i) {
+    Tri t = tris_[sel_[i]];
+    const int fs = facing_[t.body][t.face];
+    if (fs < 0) flip(t);  // as make_occluder turns it
+    for (int k = 0; k < 3; ++k) {
+      if (!t.edge[k]) continue;  // a diagonal: make_occluder closes it
+      Vec<P> m;
+      V c;
+      if (!solid_[t.body]) {  // the open-surface rule reads the side plane, oriented inward
+        side_plane(t.v[k], t.v[(k + 1) % 3], m, c);
+        if (P::sign(dot<P>(m, X_[t.v[(k + 2) % 3]]) - c) < 0) {
+          m = neg<P>(m);
+          c = -c;
+        }
+      }
+      if (closed_side(t, k, m, c, fs)) closed_[i] |= static_cast<std::uint8_t>(1u << (k + 1));
+    }
+  });
+}
+
+// The selected triangles' occluders and boxes, and the grid over the boxes.
+template <class P>
+void Engine<P>::build_occluders() {
+  const ParallelLoop loop(opt_.threads);
+  std::vector<Box> boxes;
+  reserve_touched(occ_, sel_.size(), loop);  // pages touched on all cores, then built on all cores
+  reserve_touched(boxes, sel_.size(), loop);
+  occ_.resize(sel_.size());
+  boxes.resize(sel_.size());
+  loop.for_each(sel_.size(), 1024, [&](std::size_t i) { make_occluder(tris_[sel_[i]], closed_[i], occ_[i], boxes[i]); });
+  std::vector<int>().swap(sel_);
+  std::vector<std::uint8_t>().swap(closed_);
+  // Widen every box by a margin far above the error of the double projections (a filter
+  // only: it skips work, never decides; bounds::kBoxMargin).
+  // (The largest magnitude per worker, then over the workers: a maximum in any order.)
+  std::vector<double> exts(loop.workers(), 1e-300);
+  loop.run(boxes.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
+    double ext = exts[w];
+    for (std::size_t i = begin; i < end; ++i) {
+      const Box& bx = boxes[i];
+      for (double v : {static_cast<double>(bx.x0), static_cast<double>(bx.x1), static_cast<double>(bx.y0),
+                       static_cast<double>(bx.y1), bx.dmin})
+        if (std::isfinite(v)) ext = std::max(ext, std::fabs(v));
+    }
+    exts[w] = ext;
+  });
+  const double ext = *std::max_element(exts.begin(), exts.end());
+  margin_ = bounds::kBoxMargin * ext;
+  loop.for_each(boxes.size(), 16384, [&](std::size_t i) {
+    Box& bx = boxes[i];
+    bx.x0 -= static_cast<float>(margin_);
+    bx.y0 -= static_cast<float>(margin_);
+    bx.x1 += static_cast<float>(margin_);
+    bx.y1 += static_cast<float>(margin_);
+    bx.dmin -= margin_;
+  });
+  boxes_ = std::move(boxes);
+  std::vector<ScreenRect> rects(boxes_.size());
+  loop.for_each(boxes_.size(), 8192, [&](std::size_t i) { rects[i] = {boxes_[i].x0, boxes_[i].y0, boxes_[i].x1, boxes_[i].y1}; });
+  // Unbounded sides (occluders reaching the eye plane) clamp to the grid's edge cells.
+  grid_.build(rects, std::vector<char>(rects.size(), 0), 2.0, 2048, opt_.threads);
+}
+
+template <class P>
+void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occluder<P>& o, Box& bx) const {
+  const int b = t0.body;
+  const int fs = facing_[b][t0.face];
+  Tri t = t0;
+  if (fs < 0) flip(t);  // open surface seen from its back: orient toward the viewer
+  o.body = b;
+  o.face = t.face;
+  o.v = t.v;
+  Vec<P> n = normal(t);
+  // Constraint 0: strictly behind the plane: -n·(X - a) > 0. A back face of a convex solid
+  // whose surface holds the eye hides its whole forward cone from the eye instead (in front
+  // of the face too: those points are inside the solid), so the plane moves to the eye:
+  // -n·(X - E) > 0. Exact for convex solids (docs/design.md); others are refused.
+  o.m[0] = neg<P>(n);
+  o.c[0] = fs < 0 && solid_[b] ? dot<P>(o.m[0], view_) : dot<P>(o.m[0], X_[t.v[0]]);
+  for (int k = 0; k < 3; ++k) {
+    int r = t.v[(k + 2) % 3];
+    Vec<P> m;
+    V c;
+    side_plane(t.v[k], t.v[(k + 1) % 3], m, c);
+    if (P::sign(dot<P>(m, X_[r]) - c) < 0) {
+      m = neg<P>(m);
+      c = -c;
+    }
+    o.m[k + 1] = m;
+    o.c[k + 1] = c;
+    o.closed[k + 1] = !t.edge[k] || (closed >> (k + 1) & 1) != 0;
+  }
+  const Point3* pts[3];
+  const std::array<double, 3>* proj[3];
+  bool front[3];
+  for (int k = 0; k < 3; ++k) {
+    pts[k] = &world(t.v[k]);
+    proj[k] = &vproj_[t.v[k]];
+    front[k] = vfront_[t.v[k]];
+  }
+  bx = front_box(cam_, pts, proj, front, 3).box;
+  if (front[0] && front[1] && front[2])
+    bx.dmin = std::min({(*proj[0])[2], (*proj[1])[2], (*proj[2])[2]});
+  // A forward cone from the eye (back face of a solid holding the eye) reaches in front of its
+  // face: no depth pruning (its projection is still the face's).
+  if (fs < 0 && solid_[b]) bx.dmin = -INFINITY;
+}
+
+// Is the sight ray just behind the polygon edge under side k inside the body (closed side)?
+template <class P>
+bool Engine<P>::closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs) const {
+  int g = -1, third = -1;
+  if (!neighbour(t, k, g, third)) return false;
+  const int b = t.body;
+  if (solid_[b]) {
+    // Wedge: where the neighbour's far vertex lies against this face's plane. A front face hides
+    // the ray just behind the edge when the wedge holds it; a back face (an occluder only when
+    // the eye is on the surface; `t` is turned, its normal points inward) when the wedge holds
+    // the ray just beyond the edge, toward the eye: the mirror rule.
+    Vec<P> n = normal(t);
+    int w = P::sign(dot<P>(n, sub<P>(X_[third], X_[t.v[0]])));
+    if (fs > 0) {
+      if (w > 0) return true;            // reflex edge: the wedge holds the ray
+      return facing_[b][g] > 0;          // convex or flat: both faces toward the viewer
+    }
+    if (w < 0) return true;              // reflex edge
+    return facing_[b][g] < 0;            // convex or flat: both faces away from the viewer
+  }
+  // Open surface: the neighbour continues on the other side of the edge in the projection.
+  return P::sign(dot<P>(m, X_[third]) - c) < 0;
+}
+
+// The plane through vertices p and q containing the view direction (orthographic) or the eye
+// (perspective), as m·X - c = 0; its orientation is the caller's to fix.
+template <class P>
+void Engine<P>::side_plane(int p, int q, Vec<P>& m, V& c) const {
+  if (cam_.perspective) {
+    m = cross<P>(sub<P>(X_[p], view_), sub<P>(X_[q], view_));
+    c = dot<P>(m, view_);
+  } else {
+    m = cross<P>(view_, sub<P>(X_[q], X_[p]));
+    c = dot<P>(m, X_[p]);
+  }
+}
+
+template class Engine<Fast>;
+template class Engine<Fast40>;
+template class Engine<Big>;
+
+}  // namespace hlr::face_route

@@ -1,0 +1,381 @@
+// The per-face engine, visibility (see face_engine.hpp; course notes sections 26-28): each
+// segment against the occluders the screen grid gives it, each occluder's four inequalities
+// giving an interval with exact ends; the hidden part is their union. Segments run on all
+// cores (parallel.hpp); each writes only its own pieces, so the result does not depend on the
+// thread count.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "algorithms/hlr/face_engine.hpp"
+#include "algorithms/support/parallel.hpp"
+
+namespace hlr::face_route {
+
+namespace {
+
+// Integers a and a positive d with q = a / d (d the least common multiple of the denominators).
+void common_integers(const std::array<Rational, 3>& q, std::array<mpz_class, 3>& a, mpz_class& d) {
+  d = 1;
+  for (const Rational& x : q) mpz_lcm(d.get_mpz_t(), d.get_mpz_t(), x.get_den_mpz_t());
+  for (int k = 0; k < 3; ++k) {
+    mpz_divexact(a[k].get_mpz_t(), d.get_mpz_t(), q[k].get_den_mpz_t());
+    a[k] *= q[k].get_num();
+  }
+}
+
+void set_z(mpz_ptr r, const Int128& v) { set_mpz(r, v); }
+void set_z(mpz_ptr r, const mpz_class& v) { mpz_set(r, v.get_mpz_t()); }
+
+// r += m·x for the policies' coefficient types (`tmp`: scratch).
+void addmul(mpz_ptr r, std::int64_t m, mpz_srcptr x, mpz_ptr) {
+  if (m >= 0) mpz_addmul_ui(r, x, static_cast<unsigned long>(m));
+  else mpz_submul_ui(r, x, static_cast<unsigned long>(-static_cast<Int128>(m)));
+}
+void addmul(mpz_ptr r, const Int128& m, mpz_srcptr x, mpz_ptr tmp) {
+  set_mpz(tmp, m);
+  mpz_addmul(r, tmp, x);
+}
+void addmul(mpz_ptr r, const mpz_class& m, mpz_srcptr x, mpz_ptr) { mpz_addmul(r, m.get_mpz_t(), x); }
+
+}  // namespace
+
+template <class P>
+struct alignas(128) Engine<P>::Work {  // its own cache lines: workers update theirs constantly
+  ComparisonCounters c;
+  std::size_t pairs = 0, skipped = 0;
+  StampSet stamps;
+  std::vector<int> cand;
+  std::vector<std::pair<Frac<P>, Frac<P>>> spans;
+  mpz_class z[4];  // test_rational's scratch
+};
+
+// A segment lying in two side planes of an occluder runs along the sight line through their
+// common vertex (an edge seen end-on): hidden only where the ray just behind that vertex is
+// inside (vertex_rules). `on_side`: bit k set when the segment lies in closed side plane k.
+template <class P>
+bool Engine<P>::end_on_hides(const Occluder<P>& o, int on_side) const {
+  if (on_side == 6) return vertex_closed_[o.v[1]];
+  if (on_side == 12) return vertex_closed_[o.v[2]];
+  if (on_side == 10) return vertex_closed_[o.v[0]];
+  return true;
+}
+
+// The pieces of every segment: the drawn edges in order of body (each made as a segment only
+// while it is solved), then the intersection lines.
+template <class P>
+std::vector<PieceList> Engine<P>::visibility(const std::vector<std::vector<DrawnEdge>>& drawn, std::vector<Segment>& crossing,
+                                             LineDrawing& res) {
+  std::vector<std::size_t> first(drawn.size() + 1, 0);  // each body's first edge
+  for (std::size_t b = 0; b < drawn.size(); ++b) {
+    first[b + 1] = first[b] + drawn[b].size();
+    res.stats.edges += drawn[b].size();
+    for (const DrawnEdge& e : drawn[b]) res.stats.self_hidden += e.self_hidden;
+  }
+  const std::size_t edges = first.back(), n = edges + crossing.size();
+  ParallelLoop loop(opt_.threads);
+  std::vector<PieceList> out(n);
+  std::vector<Work> work(loop.workers());
+  std::vector<char> ready(work.size(), 0);
+  loop.run(n, 512, [&](unsigned w, std::size_t lo, std::size_t hi) {
+    Work& wk = work[w];
+    if (!ready[w]) wk.stamps.reset(occ_.size()), ready[w] = 1;
+    std::size_t b = static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), lo) - first.begin()) - 1;
+    for (std::size_t i = lo; i < hi; ++i) {
+      if (i < edges) {
+        while (i >= first[b + 1]) ++b;
+        const DrawnEdge& e = drawn[b][i - first[b]];
+        Segment s = edge_segment(static_cast<int>(b), e);
+        solve_into(s, {voff_[b] + e.u, voff_[b] + e.v}, wk, out[i]);
+      } else {
+        solve_into(crossing[i - edges], {-1, -1}, wk, out[i]);  // in place: its pieces move to out[i]
+      }
+    }
+  });
+  FaceRouteStats& fs = *res.stats.faces;
+  for (const Work& w : work) {
+    res.stats.pairs_tested += w.pairs;
+    res.stats.pairs_skipped += w.skipped;
+    fs.comparisons += w.c.comparisons;
+    fs.comparisons_exact += w.c.exact;
+    fs.comparisons_identical += w.c.identical;
+  }
+  if (std::is_same_v<P, Big>) res.stats.pairs_rational = res.stats.pairs_tested;
+  return out;
+}
+
+// Everything visibility needed, freed (the engine is done once visibility has run).
+template <class P>
+void Engine<P>::release_arrays() {
+  std::vector<Occluder<P>>().swap(occ_);
+  std::vector<Box>().swap(boxes_);
+  grid_ = ScreenGrid();
+  std::vector<Tri>().swap(tris_);
+  std::vector<std::array<double, 3>>().swap(vproj_);
+  std::vector<char>().swap(vfront_);
+  std::vector<char>().swap(vertex_closed_);
+  std::vector<Vec<P>>().swap(X_);
+}
+
+// One segment's pieces into `out`: a one-piece list when it is wholly visible or hidden (a
+// tile's segments it does not decide: hidden placeholders).
+template <class P>
+void Engine<P>::solve_into(Segment& s, const std::array<int, 2>& gv, Work& wk, PieceList& out) const {
+  signed char whole = -1;
+  if (opt_.decide && !opt_.decide(s)) whole = 1;
+  else solve(s, gv, wk, whole);
+  if (whole < 0) {
+    out = std::move(s.pieces);
+    return;
+  }
+  out.set_whole(whole == 0);
+}
+
+template <class P>
+std::optional<std::pair<Rational, Rational>> Engine<P>::depth_of(const Segment& s) const {
+  if (!cam_.perspective) return std::nullopt;
+  return std::make_pair(cam_.depth(s.from()), cam_.depth(s.to()));
+}
+
+// The occluders whose boxes meet the segment's box `seg` (with the margin; an occluder
+// entirely deeper than the segment's farthest point skipped). The margin covers the error of
+// the occluders' and the segment's projections (bounds::kBoxMargin of the larger extent).
+template <class P>
+void Engine<P>::candidates(const Box& seg, Work& wk) const {
+  wk.cand.clear();
+  wk.stamps.next();
+  double m = margin_;
+  for (double v : {static_cast<double>(seg.x0), static_cast<double>(seg.x1), static_cast<double>(seg.y0),
+                   static_cast<double>(seg.y1), seg.dmin})
+    if (std::isfinite(v)) m = std::max(m, bounds::kBoxMargin * std::fabs(v));
+  const double x0 = seg.x0 - m, x1 = seg.x1 + m, y0 = seg.y0 - m, y1 = seg.y1 + m, dmax = seg.dmin + m;
+  grid_.visit(ScreenRect{x0, y0, x1, y1}, [&](int i) {
+    if (!wk.stamps.first(i)) return;
+    const Box& bx = boxes_[i];
+    if (bx.x0 > x1 || bx.x1 < x0 || bx.y0 > y1 || bx.y1 < y0 || bx.dmin > dmax) return;
+    wk.cand.push_back(i);
+  });
+}
+
+template <class P>
+void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed char& whole) const {
+  const bool hides = static_cast<std::size_t>(s.body) >= opt_.see_through.size() || !opt_.see_through[s.body];
+  if (s.self_hidden && hides) {  // its own front faces hide it
+    const bool front = gv[0] >= 0 && vfront_[gv[0]] && vfront_[gv[1]];
+    if (front || !cam_.perspective) {
+      whole = 1;
+      return;
+    }
+    std::vector<std::pair<Rational, Rational>> all;  // built in place (a braced list copies)
+    all.emplace_back(0, 1);
+    s.pieces = pieces_from_hidden(std::move(all), front ? std::nullopt : depth_of(s));
+    return;
+  }
+  // The segment's screen box; Box::dmin holds its farthest depth here. In perspective only its
+  // part strictly in front of the eye matters (the rest is behind the eye, never drawn).
+  std::array<double, 3> pr[2];
+  bool front[2];
+  Point3 ends[2];
+  const Point3* pts[2] = {nullptr, nullptr};
+  for (int k = 0; k < 2; ++k) {
+    if (gv[0] >= 0) {
+      pr[k] = vproj_[gv[k]];
+      front[k] = vfront_[gv[k]];
+      if (!vfront_[gv[0]] || !vfront_[gv[1]]) pts[k] = &world(gv[k]);
+    } else {
+      ends[k] = k == 0 ? s.from() : s.to();
+      pr[k] = proj_.project(ends[k]);
+      front[k] = !cam_.perspective || cam_.in_front(ends[k]) == Sign::Positive;
+      pts[k] = &ends[k];
+    }
+  }
+  Box sb;
+  if (front[0] && front[1]) {
+    sb = Box{static_cast<float>(std::min(pr[0][0], pr[1][0])), static_cast<float>(std::min(pr[0][1], pr[1][1])),
+             static_cast<float>(std::max(pr[0][0], pr[1][0])), static_cast<float>(std::max(pr[0][1], pr[1][1])),
+             std::max(pr[0][2], pr[1][2])};
+    sb.x0 = std::nextafter(sb.x0, -INFINITY), sb.y0 = std::nextafter(sb.y0, -INFINITY);
+    sb.x1 = std::nextafter(sb.x1, INFINITY), sb.y1 = std::nextafter(sb.y1, INFINITY);
+  } else {
+    if (!front[0] && !front[1]) {  // wholly behind the eye
+      s.pieces = pieces_from_hidden({}, depth_of(s));
+      return;
+    }
+    const std::array<double, 3>* pp[2] = {&pr[0], &pr[1]};
+    sb = front_box(cam_, pts, pp, front, 2).box;
+    sb.dmin = front[0] ? pr[0][2] : pr[1][2];
+  }
+  candidates(sb, wk);
+  wk.skipped += occ_.size() - wk.cand.size();
+  std::vector<std::pair<Rational, Rational>> hidden;
+  if (gv[0] >= 0) {
+    wk.spans.clear();
+    for (int i : wk.cand) test_integer(occ_[i], X_[gv[0]], X_[gv[1]], wk);
+    merge(wk, hidden);
+  } else {
+    RationalEnds ends;
+    std::array<Rational, 3> A, B;
+    for (int k = 0; k < 3; ++k) {
+      A[k] = s.from()[k] * scale_;
+      B[k] = s.to()[k] * scale_;
+      ends.Ad[k] = A[k].get_d();
+      ends.Bd[k] = B[k].get_d();
+      for (double v : {ends.Ad[k], ends.Bd[k]})  // normal or exactly zero (see filtered_sign)
+        if (!std::isfinite(v) || (v != 0 && std::fabs(v) < 0x1p-1000)) ends.filter = false;
+      if ((ends.Ad[k] == 0) != (sgn(A[k]) == 0) || (ends.Bd[k] == 0) != (sgn(B[k]) == 0)) ends.filter = false;
+    }
+    common_integers(A, ends.a, ends.da);
+    common_integers(B, ends.b, ends.db);
+    for (int i : wk.cand) test_rational(occ_[i], ends, hidden, wk);
+  }
+  // Both ends strictly in front of the eye: no part is behind it, the depths are not needed.
+  if (front[0] && front[1]) {
+    if (hidden.empty()) {
+      whole = 0;
+      return;
+    }
+    if (hidden.size() == 1 && hidden[0].first == 0 && hidden[0].second == 1) {
+      whole = 1;
+      return;
+    }
+  }
+  s.pieces = pieces_from_hidden(std::move(hidden), front[0] && front[1] ? std::nullopt : depth_of(s));
+}
+
+// Hidden interval of the segment X0 -> X1 by one occluder, integer values.
+template <class P>
+void Engine<P>::test_integer(const Occluder<P>& o, const Vec<P>& X0, const Vec<P>& X1, Work& wk) const {
+  ++wk.pairs;
+  bool has_lo = false, has_hi = false;
+  Frac<P> lo{V(0), V(1), 0.0}, hi{V(1), V(1), 1.0};
+  int on_side = 0;  // bit k: the segment lies in side plane k (closed)
+  for (int k = 0; k < 4; ++k) {
+    V f0 = dot<P>(o.m[k], X0) - o.c[k];
+    V f1 = dot<P>(o.m[k], X1) - o.c[k];
+    int s0 = P::sign(f0), s1 = P::sign(f1);
+    if (s0 > 0 && s1 > 0) continue;
+    if (s0 <= 0 && s1 <= 0) {
+      if (o.closed[k] && s0 == 0 && s1 == 0) {
+        on_side |= 1 << k;
+        continue;
+      }
+      return;
+    }
+    // Ends at the segment's own end points (t = 0 or 1: an occluder sharing a vertex with
+    // the edge) are written canonically, so they compare as identical without arithmetic.
+    if (s0 > 0) {  // upper bound t < f0 / (f0 - f1)
+      V d = f0 - f1;
+      Frac<P> r = s1 == 0 ? Frac<P>{V(1), V(1), 1.0} : Frac<P>{f0, d, P::ratio(f0, d)};
+      if (!has_hi || compare(r, hi, wk.c) < 0) hi = r, has_hi = true;
+    } else {  // lower bound t > -f0 / (f1 - f0)
+      V d = f1 - f0;
+      V nn = -f0;
+      Frac<P> r = s0 == 0 ? Frac<P>{V(0), V(1), 0.0} : Frac<P>{nn, d, P::ratio(nn, d)};
+      if (!has_lo || compare(r, lo, wk.c) > 0) lo = r, has_lo = true;
+    }
+  }
+  // In two side planes: the segment runs along the sight line through their common vertex
+  // (an edge seen end-on); hidden only where the ray just behind that vertex is inside.
+  if (!end_on_hides(o, on_side)) return;
+  if (has_lo && has_hi && compare(lo, hi, wk.c) >= 0) return;
+  wk.spans.push_back({lo, hi});
+}
+
+template <class P>
+void Engine<P>::merge(Work& wk, std::vector<std::pair<Rational, Rational>>& out) const {
+  auto& sp = wk.spans;
+  if (sp.empty()) return;
+  std::sort(sp.begin(), sp.end(), [&](const auto& a, const auto& b) { return compare(a.first, b.first, wk.c) < 0; });
+  std::vector<std::pair<Frac<P>, Frac<P>>> merged;
+  for (auto& s : sp) {
+    if (!merged.empty() && compare(s.first, merged.back().second, wk.c) <= 0) {
+      if (compare(s.second, merged.back().second, wk.c) > 0) merged.back().second = s.second;
+    } else {
+      merged.push_back(s);
+    }
+  }
+  auto rat = [](const Frac<P>& f) {
+    Rational q{mpz_class(P::z(f.n)), mpz_class(P::z(f.d))};
+    q.canonicalize();
+    return q;
+  };
+  for (auto& m : merged) out.push_back({rat(m.first), rat(m.second)});
+}
+
+// Sign of m·X - c from doubles, or 0 when the filter cannot tell. Each input is within 2u
+// of its exact value (mpq_get_d and mpz_get_d truncate; Int128 and int64 conversions round),
+// each product adds u and the three additions u each, so the computed value is within
+// (2u + 2u + u + 3u)·S + O(u²) < 9u·S of the exact one, S = Σ|m_j X_j| + |c| (u = 2^-53).
+// The bound used, 2e-15·S_d, exceeds 18u·S_d, and S_d >= S·(1 - 8u); the floor covers
+// products that underflowed. The caller uses it only on ends whose doubles are zero exactly
+// when the rational is, and otherwise normal above 2^-1000 (so no product of an integer and a
+// coordinate underflows). S_d not finite (a value beyond the double range): no decision.
+template <class P>
+int Engine<P>::filtered_sign(const Occluder<P>& o, int k, const std::array<double, 3>& X) {
+  double s = -P::dbl(o.c[k]), mag = std::fabs(s);
+  for (int j = 0; j < 3; ++j) {
+    const double t = P::cdbl(o.m[k][j]) * X[j];
+    s += t;
+    mag += std::fabs(t);
+  }
+  if (!std::isfinite(mag)) return 0;
+  const double bound = 2e-15 * mag + 1e-300;
+  return s > bound ? 1 : (s < -bound ? -1 : 0);
+}
+
+// The same on rational end points (intersection lines), values m·X - c. A filter on doubles
+// first: an occluder whose inequality k is certainly not positive at both ends hides nothing
+// of the segment (the exact loop would return at k too: the result does not depend on the
+// order of k). The rest is decided on the exact values.
+template <class P>
+void Engine<P>::test_rational(const Occluder<P>& o, const RationalEnds& e,
+                              std::vector<std::pair<Rational, Rational>>& out, Work& wk) const {
+  ++wk.pairs;
+  for (int k = 0; e.filter && k < 4; ++k)
+    if (filtered_sign(o, k, e.Ad) < 0 && filtered_sign(o, k, e.Bd) < 0) return;
+  // Exact: F = m·a - c·da is f·da (da > 0), so it has f's sign; t = f0 / (f0 - f1) is
+  // F0·db / (F0·db - F1·da).
+  mpz_class& F0 = wk.z[0];
+  mpz_class& F1 = wk.z[1];
+  mpz_class& c = wk.z[2];
+  std::optional<Rational> lo, hi;
+  int on_side = 0;
+  for (int k = 0; k < 4; ++k) {
+    set_z(c.get_mpz_t(), o.c[k]);
+    mpz_mul(F0.get_mpz_t(), c.get_mpz_t(), e.da.get_mpz_t());
+    mpz_mul(F1.get_mpz_t(), c.get_mpz_t(), e.db.get_mpz_t());
+    mpz_neg(F0.get_mpz_t(), F0.get_mpz_t());
+    mpz_neg(F1.get_mpz_t(), F1.get_mpz_t());
+    for (int j = 0; j < 3; ++j) {
+      addmul(F0.get_mpz_t(), o.m[k][j], e.a[j].get_mpz_t(), wk.z[3].get_mpz_t());
+      addmul(F1.get_mpz_t(), o.m[k][j], e.b[j].get_mpz_t(), wk.z[3].get_mpz_t());
+    }
+    int s0 = sgn(F0), s1 = sgn(F1);
+    if (s0 > 0 && s1 > 0) continue;
+    if (s0 <= 0 && s1 <= 0) {
+      if (o.closed[k] && s0 == 0 && s1 == 0) {
+        on_side |= 1 << k;
+        continue;
+      }
+      return;
+    }
+    mpz_class n = F0 * e.db, d = n - F1 * e.da;
+    Rational t(n, d);
+    t.canonicalize();
+    if (s0 > 0) {
+      if (!hi || t < *hi) hi = std::move(t);
+    } else if (!lo || t > *lo) {
+      lo = std::move(t);
+    }
+  }
+  if (!lo) lo.emplace(0);
+  if (!hi) hi.emplace(1);
+  if (!end_on_hides(o, on_side)) return;
+  if (*lo < *hi) out.push_back({std::move(*lo), std::move(*hi)});
+}
+
+template class Engine<Fast>;
+template class Engine<Fast40>;
+template class Engine<Big>;
+
+}  // namespace hlr::face_route

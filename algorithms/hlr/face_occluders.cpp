@@ -1,0 +1,148 @@
+// Per-face occluders (see face_occluders.hpp): the scene scaled to integers under the
+// narrowest number policy whose bound holds (exact_int.hpp), then the engine (face_engine.hpp).
+#include "algorithms/hlr/face_occluders.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+
+#include "algorithms/hlr/face_engine.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "kernel/exact_int.hpp"
+
+namespace hlr {
+namespace {
+
+// Scale every coordinate (and the eye) by a common denominator; the view direction by its own.
+// False when a scaled value reaches `bits` bits (then a wider policy takes the scene).
+template <class P>
+bool scale_fast(const std::vector<const Polyhedron*>& bodies, const Camera& cam, int bits, std::vector<Vec<P>>& pts,
+                Vec<P>& view, Rational& scale, unsigned threads) {
+  const Int128 kLimit = Int128(1) << bits;
+  const std::uint64_t kDenLimit = std::uint64_t(1) << bounds::kDenominatorBits;
+  const ParallelLoop loop(threads);
+  constexpr std::size_t kChunk = 4096;  // vertices
+  // The common denominator per fixed chunk on all cores, then combined in order (the least
+  // common multiple does not depend on the grouping; any part over the limit puts it over).
+  std::uint64_t L = 1;
+  auto combine = [&](std::uint64_t d) {
+    const UInt128 l = static_cast<UInt128>(L / std::gcd(L, d)) * d;
+    if (l >= kDenLimit) return false;
+    L = static_cast<std::uint64_t>(l);
+    return true;
+  };
+  std::size_t total = 0;
+  for (const Polyhedron* p : bodies) {
+    const std::vector<Point3>& vs = p->vertices();
+    total += vs.size();
+    const std::size_t chunks = (vs.size() + kChunk - 1) / kChunk;
+    std::vector<std::uint64_t> part(chunks, 1);
+    std::vector<char> fits(chunks, 1);
+    loop.for_each(chunks, 1, [&](std::size_t c) {
+      std::vector<const Rational*> qs;
+      for (std::size_t i = c * kChunk, e = std::min(vs.size(), i + kChunk); i < e; ++i)
+        for (int k = 0; k < 3; ++k) qs.push_back(&vs[i][k]);
+      fits[c] = common_denominator(qs.data(), static_cast<int>(qs.size()), kDenLimit, part[c]);
+    });
+    for (std::size_t c = 0; c < chunks; ++c)
+      if (!fits[c] || !combine(part[c])) return false;
+  }
+  if (cam.perspective) {
+    const Rational* eye[3] = {&cam.eye[0], &cam.eye[1], &cam.eye[2]};
+    std::uint64_t Le = 1;
+    if (!common_denominator(eye, 3, kDenLimit, Le) || !combine(Le)) return false;
+  }
+  // Every vertex scaled on all cores.
+  pts.clear();
+  reserve_touched(pts, total, loop);
+  pts.resize(total);
+  std::size_t at = 0;
+  for (const Polyhedron* p : bodies) {
+    const std::vector<Point3>& vs = p->vertices();
+    const std::size_t chunks = (vs.size() + kChunk - 1) / kChunk;
+    std::vector<char> fits(chunks, 1);
+    loop.for_each(chunks, 1, [&](std::size_t c) {
+      for (std::size_t i = c * kChunk, e = std::min(vs.size(), i + kChunk); i < e && fits[c]; ++i)
+        for (int k = 0; k < 3; ++k) {
+          Int128 s;
+          if (!scaled_integer(vs[i][k], L, kLimit, s)) {
+            fits[c] = 0;
+            break;
+          }
+          pts[at + i][k] = static_cast<typename P::C>(s);
+        }
+    });
+    if (std::find(fits.begin(), fits.end(), 0) != fits.end()) return false;
+    at += vs.size();
+  }
+  if (cam.perspective) {
+    for (int k = 0; k < 3; ++k) {
+      Int128 s;
+      if (!scaled_integer(cam.eye[k], L, kLimit, s)) return false;
+      view[k] = static_cast<typename P::C>(s);
+    }
+  } else {
+    const Rational* d[3] = {&cam.direction[0], &cam.direction[1], &cam.direction[2]};
+    std::uint64_t Ld = 1;
+    if (!common_denominator(d, 3, std::uint64_t(1) << bounds::kDenominatorBits, Ld)) return false;
+    Int128 s[3];
+    for (int k = 0; k < 3; ++k)
+      if (!scaled_integer(*d[k], Ld, Int128(1) << 62, s[k])) return false;
+    Int128 g = gcd128(gcd128(s[0], s[1]), s[2]);
+    for (int k = 0; k < 3; ++k) {
+      s[k] /= g;
+      if (abs128(s[k]) >= kLimit) return false;
+      view[k] = static_cast<typename P::C>(s[k]);
+    }
+  }
+  scale = Rational(static_cast<unsigned long>(L));
+  return true;
+}
+
+void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, std::vector<Vec<Big>>& pts,
+               Vec<Big>& view, Rational& scale) {
+  mpz_class L = 1;
+  auto acc = [&](const Rational& q) { mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), q.get_den_mpz_t()); };
+  for (const Polyhedron* p : bodies)
+    for (const Point3& v : p->vertices())
+      for (int k = 0; k < 3; ++k) acc(v[k]);
+  if (cam.perspective)
+    for (int k = 0; k < 3; ++k) acc(cam.eye[k]);
+  auto sc = [&](const Rational& q) { return mpz_class(q.get_num() * (L / q.get_den())); };
+  for (const Polyhedron* p : bodies)
+    for (const Point3& v : p->vertices()) pts.push_back({sc(v[0]), sc(v[1]), sc(v[2])});
+  if (cam.perspective) {
+    view = {sc(cam.eye[0]), sc(cam.eye[1]), sc(cam.eye[2])};
+  } else {
+    mpz_class Ld = 1;
+    for (int k = 0; k < 3; ++k) mpz_lcm(Ld.get_mpz_t(), Ld.get_mpz_t(), cam.direction[k].get_den_mpz_t());
+    for (int k = 0; k < 3; ++k) view[k] = cam.direction[k].get_num() * (Ld / cam.direction[k].get_den());
+  }
+  scale = Rational(L);
+}
+
+}  // namespace
+
+LineDrawing face_occluders(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineOptions& opt) {
+  {
+    std::vector<Vec<Fast>> pts;
+    Vec<Fast> view{};
+    Rational scale;
+    if (scale_fast<Fast>(bodies, camera, Fast::kBits, pts, view, scale, opt.threads))
+      return face_route::Engine<Fast>(bodies, camera, opt, std::move(pts), view, scale).run();
+  }
+  {
+    std::vector<Vec<Fast40>> pts;
+    Vec<Fast40> view{};
+    Rational scale;
+    if (scale_fast<Fast40>(bodies, camera, Fast40::kBits, pts, view, scale, opt.threads))
+      return face_route::Engine<Fast40>(bodies, camera, opt, std::move(pts), view, scale).run();
+  }
+  std::vector<Vec<Big>> pts;
+  Vec<Big> view;
+  Rational scale;
+  scale_big(bodies, camera, pts, view, scale);
+  return face_route::Engine<Big>(bodies, camera, opt, std::move(pts), view, scale).run();
+}
+
+}  // namespace hlr

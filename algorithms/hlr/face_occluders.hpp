@@ -1,0 +1,44 @@
+// Hidden lines of arbitrary meshes through per-face occluders (issue 4; course notes
+// "Visibility semantics", seed 003 sections 26-28 for the inequalities). Every face is split
+// into triangles; a triangle T facing the viewer and the sight rays behind it bound a convex
+// region (its "sight prism": behind T's plane and inside the three planes through T's sides
+// that contain the view direction, or the eye). Roberts' inequalities apply to it unchanged:
+// each of the four planes gives alpha + beta·t > 0 along an edge P(t), so the part of the
+// edge hidden by T is an interval with exact rational ends, and the hidden part of the edge
+// is the union over the occluders.
+//
+// Semantics, exactly as the notes state them: a point is hidden when its sight ray enters
+// the interior of a closed solid, or crosses an open surface transversally away from its
+// boundary. The open prisms alone miss rays that leave a solid exactly through an edge (a
+// back edge exactly behind the edge shared by two front faces, seen along a symmetry axis).
+// So a prism side is closed (>= 0) when the sight ray just behind that edge is inside the
+// solid: the edge's wedge contains the direction away from the viewer, decided exactly from
+// the neighbouring face (convex edge: both faces front; reflex edge: always; flat: the
+// neighbour is front). For open surfaces a side is closed when the neighbouring face lies
+// on the other side of the edge in the projection (the ray crosses the surface there).
+// Only front faces of a closed solid are occluders; every face of an open surface is one.
+//
+// Exact and fast: coordinates are scaled to integers (decimal text has a common
+// denominator; bounds in kernel/exact_int.hpp); when they fit in 29 bits every value is an exact 128-bit integer and split
+// parameters are compared by a double filter with an exact 256-bit fallback; otherwise the
+// same code runs on GMP integers. A uniform grid over the projected occluders with depth
+// pruning gives each edge only the occluders that may hide it. Edges run on all cores.
+#pragma once
+
+#include <vector>
+
+#include "algorithms/model/camera.hpp"
+#include "algorithms/model/line_drawing.hpp"
+#include "kernel/polyhedron.hpp"
+
+namespace hlr {
+
+/// Runs the per-face hidden-line computation. Bodies may be closed solids (closed, manifold,
+/// consistently oriented; inside-out solids are turned) or open/other surfaces. Segments:
+/// each body's drawn edges in order of their vertex pair, then intersection lines. `facing`
+/// holds per face 1, 0 or -1. Throws BodyError for a body it cannot take (a non-planar or
+/// self-intersecting face) or an eye inside a solid.
+LineDrawing face_occluders(const std::vector<const Polyhedron*>& bodies, const Camera& camera,
+                             const LineOptions& options = {});
+
+}  // namespace hlr

@@ -1,0 +1,250 @@
+// Broad phase (see intersection_broad_phase.hpp): cell size twice the mean box size, dense cell
+// ids sorted by a stable radix sort, a coarse single cell when a box spans too many cells.
+#include "algorithms/hlr/intersection_broad_phase.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "algorithms/support/parallel_scan.hpp"
+
+namespace hlr {
+namespace {
+
+// 12 bytes, not 16: the entries and the radix sort's copy are the broad phase's largest arrays.
+struct __attribute__((packed)) Entry {
+  std::uint64_t cell;
+  std::uint32_t item;
+};
+static_assert(sizeof(Entry) == 12);
+
+// Stable LSD radix sort by cell (entries arrive in item order, so ties stay sorted by item):
+// 11-bit digits over the bits the keys use. Each pass counts digits per fixed chunk on all
+// cores, places every (digit, chunk) run after the ones before it, and scatters the chunks on
+// all cores: stable, and the same order on any number of threads.
+void radix_sort(std::vector<Entry>& v, const ParallelLoop& loop) {
+  const std::size_t n = v.size();
+  const std::size_t chunks = std::clamp<std::size_t>(n / 65536, 1, 64), per = (n + chunks - 1) / chunks;
+  std::vector<std::uint64_t> any(chunks, 0);
+  loop.for_each(chunks, 1, [&](std::size_t c) {
+    std::uint64_t a = 0;  // (a local: neighbouring chunks' slots share a cache line)
+    for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) a |= v[i].cell;
+    any[c] = a;
+  });
+  std::uint64_t all = 0;
+  for (std::uint64_t a : any) all |= a;
+  std::vector<Entry> tmp;
+  reserve_touched(tmp, n, loop);
+  tmp.resize(n);
+  std::vector<std::array<std::size_t, 2048>> at(chunks);
+  for (int shift = 0; shift < 64 && (all >> shift) != 0; shift += 11) {
+    loop.for_each(chunks, 1, [&](std::size_t c) {
+      at[c].fill(0);
+      for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) ++at[c][(v[i].cell >> shift) & 2047];
+    });
+    std::size_t run = 0;
+    for (std::size_t d = 0; d < 2048; ++d)
+      for (std::size_t c = 0; c < chunks; ++c) {
+        const std::size_t k = at[c][d];
+        at[c][d] = run;
+        run += k;
+      }
+    loop.for_each(chunks, 1, [&](std::size_t c) {
+      for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) tmp[at[c][(v[i].cell >> shift) & 2047]++] = v[i];
+    });
+    v.swap(tmp);
+  }
+}
+
+struct Cells {
+  double lo[3], cell;
+  std::int64_t dims[3];
+  std::int64_t key(int k, double x) const { return static_cast<std::int64_t>(std::floor((x - lo[k]) / cell)); }
+  std::uint64_t id(std::int64_t x, std::int64_t y, std::int64_t z) const {
+    return static_cast<std::uint64_t>((x * dims[1] + y) * dims[2] + z);
+  }
+};
+
+
+template <class Box>
+BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop,
+                   const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
+  BoxPairs out;
+  const std::size_t n = bb.size();
+  if (n < 2) return out;
+  // Sums, extents and finiteness per fixed chunk on all cores, then combined in chunk order
+  // (the same cell size on any number of threads).
+  constexpr std::size_t kChunk = 16384;
+  struct Part {
+    double mean = 0, lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    bool finite = true;
+  };
+  std::vector<Part> parts((n + kChunk - 1) / kChunk);
+  loop.for_each(parts.size(), 1, [&](std::size_t c) {
+    Part& p = parts[c];
+    for (std::size_t i = c * kChunk, e = std::min(n, i + kChunk); i < e; ++i) {
+      const Box& b = bb[i];
+      p.mean += std::max({double(b[3]) - b[0], double(b[4]) - b[1], double(b[5]) - b[2]});
+      for (int k = 0; k < 3; ++k) p.lo[k] = std::min<double>(p.lo[k], b[k]), p.hi[k] = std::max<double>(p.hi[k], b[k + 3]);
+      for (double x : b) p.finite = p.finite && std::isfinite(x);
+    }
+  });
+  double mean = 0;
+  Cells g;
+  double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (int k = 0; k < 3; ++k) g.lo[k] = INFINITY;
+  bool finite = true;
+  for (const Part& p : parts) {
+    mean += p.mean;
+    for (int k = 0; k < 3; ++k) g.lo[k] = std::min(g.lo[k], p.lo[k]), hi[k] = std::max(hi[k], p.hi[k]);
+    finite = finite && p.finite;
+  }
+  g.cell = std::max(2 * mean / static_cast<double>(n), 1e-300);
+  // Doubles that lost the scene (coordinates beyond their range: infinities, NaN) or cells too
+  // many to index: one coarse list. Checked before any cell index is formed.
+  bool coarse = !std::isfinite(g.cell) || !std::isfinite(mean) || !finite;
+  for (int k = 0; k < 3 && !coarse; ++k) {
+    const double d = std::floor((hi[k] - g.lo[k]) / g.cell);
+    if (!(d < (1 << 20))) coarse = true;
+    else g.dims[k] = static_cast<std::int64_t>(d) + 1;
+  }
+  std::vector<Entry> entries;
+  // A box that spans more than 64 cells (a huge triangle among small ones) stays out of the
+  // cells and is tested against every box instead: a few such boxes cost a few linear passes.
+  // Each box's cell count on all cores, then its entries into their place (item order).
+  std::vector<std::uint32_t> big;
+  // Each box's low cell: the low corner of two boxes' overlap lies in the cell of the larger
+  // low keys (floor((x - lo) / cell) does not decrease with x), so no division per pair.
+  std::vector<std::array<std::int32_t, 3>> low;
+  if (!coarse) {
+    reserve_touched(low, n, loop);  // fresh pages zeroed on all cores, not by the resize alone
+    low.resize(n);
+    auto span = [&](std::size_t i, std::int64_t* c0, std::int64_t* c1) {
+      for (int k = 0; k < 3; ++k) c0[k] = g.key(k, bb[i][k]), c1[k] = g.key(k, bb[i][k + 3]);
+      return (c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1);
+    };
+    // Where each box's entries start (a box over 64 cells has none); count is called once per
+    // box, so it also records the box's low cell.
+    const std::vector<std::size_t> at = parallel_offsets(n, [&](std::size_t i) -> std::size_t {
+      std::int64_t c0[3], c1[3];
+      const std::int64_t cells = span(i, c0, c1);
+      for (int k = 0; k < 3; ++k) low[i][k] = static_cast<std::int32_t>(c0[k]);  // 0 <= c0 < 2^20
+      return cells > 64 ? 0 : static_cast<std::size_t>(cells);
+    }, loop);
+    big = parallel_select(n, [&](std::size_t i) {
+      std::int64_t c0[3], c1[3];
+      return at[i + 1] == at[i] && span(i, c0, c1) > 64;
+    }, loop);
+    reserve_touched(entries, at[n], loop);
+    entries.resize(at[n]);
+    loop.for_each(n, 8192, [&](std::size_t i) {
+      if (at[i + 1] == at[i]) return;
+      std::int64_t c0[3], c1[3];
+      span(i, c0, c1);
+      std::size_t w = at[i];
+      for (std::int64_t x = c0[0]; x <= c1[0]; ++x)
+        for (std::int64_t y = c0[1]; y <= c1[1]; ++y)
+          for (std::int64_t z = c0[2]; z <= c1[2]; ++z) entries[w++] = {g.id(x, y, z), static_cast<std::uint32_t>(i)};
+    });
+  }
+  if (coarse || big.size() * 8 > n) {  // unusable cells, or too many huge boxes: one coarse list
+    coarse = true;
+    big.clear();
+    entries.clear();
+    for (std::size_t i = 0; i < n; ++i) entries.push_back({0, static_cast<std::uint32_t>(i)});
+  }
+  radix_sort(entries, loop);
+  std::vector<std::size_t> cell_start = parallel_select<std::size_t>(entries.size(), [&](std::size_t i) {
+    return i == 0 || entries[i].cell != entries[i - 1].cell;
+  }, loop, 1);
+  cell_start.push_back(entries.size());
+  const std::size_t ncells = cell_start.size() - 1;
+  struct Found {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> kept;
+    std::size_t tested = 0;
+  };
+  PerWorker<Found> found(loop);
+  auto overlap = [&](std::uint32_t ta, std::uint32_t tc) {
+    const Box &P = bb[ta], &Q = bb[tc];
+    return !(P[0] > Q[3] || Q[0] > P[3] || P[1] > Q[4] || Q[1] > P[4] || P[2] > Q[5] || Q[2] > P[5]);
+  };
+  auto take = [&](std::uint32_t ta, std::uint32_t tc, unsigned w) {
+    PairVerdict v = judge(ta, tc);
+    if (v == PairVerdict::Skip) return;
+    Found& f = found[w];
+    ++f.tested;
+    if (v == PairVerdict::Keep) f.kept.push_back({std::min(ta, tc), std::max(ta, tc)});
+  };
+  // A cell's boxes and low cells are read once into a local list (the items lie far apart in
+  // the arrays; reading them for every pair cost more than the tests).
+  struct Local {
+    Box box;
+    std::array<std::int32_t, 3> low;
+    std::uint32_t item;
+  };
+  auto cell_pairs = [&](std::size_t i, std::size_t j, unsigned w, std::vector<Local>& cell) {
+    cell.clear();
+    for (std::size_t a = i; a < j; ++a) {
+      const std::uint32_t t = entries[a].item;
+      cell.push_back({bb[t], coarse ? std::array<std::int32_t, 3>{} : low[t], t});
+    }
+    for (std::size_t a = 0; a < cell.size(); ++a)
+      for (std::size_t c = a + 1; c < cell.size(); ++c) {
+        const Box &P = cell[a].box, &Q = cell[c].box;
+        if (P[0] > Q[3] || Q[0] > P[3] || P[1] > Q[4] || Q[1] > P[4] || P[2] > Q[5] || Q[2] > P[5]) continue;
+        if (!coarse) {  // the pair only in the cell of the overlap's low corner
+          const auto &A = cell[a].low, &B = cell[c].low;
+          std::uint64_t own = g.id(std::max(A[0], B[0]), std::max(A[1], B[1]), std::max(A[2], B[2]));
+          if (own != entries[i].cell) continue;
+        }
+        take(cell[a].item, cell[c].item, w);
+      }
+  };
+  loop.run(ncells, 256, [&](unsigned w, std::size_t b, std::size_t e) {
+    std::vector<Local> cell;
+    for (std::size_t c = b; c < e; ++c)
+      if (cell_start[c + 1] - cell_start[c] > 1) cell_pairs(cell_start[c], cell_start[c + 1], w, cell);
+  });
+  // Huge boxes against every other box (a pair of two huge boxes once, from the lower index).
+  std::vector<char> is_big(big.empty() ? 0 : n, 0);
+  for (std::uint32_t i : big) is_big[i] = 1;
+  loop.run(big.size(), 1, [&](unsigned w, std::size_t b, std::size_t e) {
+    for (std::size_t k = b; k < e; ++k) {
+      const std::uint32_t i = big[k];
+      for (std::uint32_t j = 0; j < n; ++j)
+        if (j != i && !(is_big[j] && j < i) && overlap(i, j)) take(std::min(i, j), std::max(i, j), w);
+    }
+  });
+  for (unsigned w = 0; w < found.size(); ++w) {
+    out.kept.insert(out.kept.end(), found[w].kept.begin(), found[w].kept.end());
+    out.tested += found[w].tested;
+  }
+  std::sort(out.kept.begin(), out.kept.end());
+  return out;
+}
+
+}  // namespace
+
+BoxPairs overlapping_box_pairs(std::span<const Box3> boxes, const ParallelLoop& loop,
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
+  return box_pairs(boxes, loop, judge);
+}
+
+BoxPairs overlapping_box_pairs(std::span<const Box3f> boxes, const ParallelLoop& loop,
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
+  return box_pairs(boxes, loop, judge);
+}
+
+bool outward_floats(const Box3& b, Box3f& out) {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  for (int k = 0; k < 6; ++k) {
+    if (!(std::fabs(b[k]) < 1e38)) return false;  // NaN, infinite or near the floats' end
+    float f = static_cast<float>(b[k]);
+    if (k < 3 && f > b[k]) f = std::nextafter(f, -inf);
+    if (k >= 3 && f < b[k]) f = std::nextafter(f, inf);
+    out[k] = f;
+  }
+  return true;
+}
+
+}  // namespace hlr

@@ -1,0 +1,42 @@
+// Broad phase for intersection lines (course notes section 28, "penetration lines"): the pairs
+// of triangles whose 3D bounding boxes overlap, each pair once, found by hashing the boxes
+// into cubic cells (a pair is looked at only in the cell that holds the low corner of the two
+// boxes' overlap). Boxes are conservative (certified bounds of exact coordinates); the caller
+// decides each pair exactly. Runs on all cores through parallel.hpp.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <utility>
+#include <span>
+#include <vector>
+
+#include "algorithms/support/parallel.hpp"
+
+namespace hlr {
+
+/// An axis-aligned box: lo x, y, z then hi x, y, z.
+using Box3 = std::array<double, 6>;
+/// The same in floats (half the memory), for boxes rounded outward from doubles.
+using Box3f = std::array<float, 6>;
+
+/// What the caller says of an overlapping pair.
+enum class PairVerdict { Skip, Reject, Keep };  // Skip: not a pair to test at all (not counted)
+
+struct BoxPairs {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> kept;  // (i < j), sorted
+  std::size_t tested = 0;                                     // pairs judged Reject or Keep
+};
+
+/// Every pair of overlapping boxes is passed to `judge` (from several threads at once) once.
+BoxPairs overlapping_box_pairs(std::span<const Box3> boxes, const ParallelLoop& loop,
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge);
+BoxPairs overlapping_box_pairs(std::span<const Box3f> boxes, const ParallelLoop& loop,
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge);
+
+/// `b` rounded outward to floats; false when a bound lies beyond the floats' range (or is not
+/// finite), where the doubles must be used.
+bool outward_floats(const Box3& b, Box3f& out);
+
+}  // namespace hlr

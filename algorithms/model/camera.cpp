@@ -1,0 +1,194 @@
+// Exact viewpoint and double drawing projection (see camera.hpp).
+#include "algorithms/model/camera.hpp"
+
+#include "algorithms/support/parallel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "kernel/predicates.hpp"
+
+namespace hlr {
+namespace {
+
+using V3 = std::array<double, 3>;
+V3 d3(const Vector3& v) { return {to_double(v.x()), to_double(v.y()), to_double(v.z())}; }
+V3 cross3(const V3& a, const V3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+V3 unit(V3 a) {
+  double l = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  return {a[0] / l, a[1] / l, a[2] / l};
+}
+double dot3(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// floor(log2 |q|) within one, from the sizes of numerator and denominator (q != 0).
+long log2_about(const Rational& q) {
+  return static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) - static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
+}
+
+// A direction as doubles, first scaled exactly by a power of two so that its largest
+// component is near 1: a vector of 1e-400 or 1e300 is a direction like any other. For
+// ordinary magnitudes the doubles are the same up to that power of two, and unit() removes it.
+V3 d3_direction(const Vector3& v) {
+  long e = 0;
+  bool any = false;
+  for (int k = 0; k < 3; ++k)
+    if (v[k] != 0) {
+      long x = log2_about(v[k]);
+      e = any ? std::max(e, x) : x;
+      any = true;
+    }
+  if (!any || (e > -500 && e < 500)) return d3(v);
+  Rational s = 1;
+  if (e > 0) mpq_div_2exp(s.get_mpq_t(), s.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
+  else mpq_mul_2exp(s.get_mpq_t(), s.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
+  return d3(s * v);
+}
+
+// Default up: +y, or +z when the axis is parallel to y (exact test).
+Vector3 choose_up(const Vector3& axis, std::optional<Vector3> up) {
+  if (up) {
+    if (up->is_zero()) throw std::invalid_argument("the up vector has zero length");
+    if (cross(axis, *up).is_zero())
+      throw std::invalid_argument("the up vector " + to_string(*up) + " is parallel to the viewing direction " + to_string(axis) +
+                                  ": give another up vector (--up X,Y,Z, or up: in the scene's view)");
+    return *up;
+  }
+  Vector3 y(0, 1, 0);
+  if (!cross(axis, y).is_zero()) return y;
+  return Vector3(0, 0, 1);
+}
+
+}  // namespace
+
+RowVector4 Camera::viewpoint() const {
+  RowVector4 g;
+  if (perspective)
+    g << eye.x(), eye.y(), eye.z(), 1;
+  else
+    g << direction.x(), direction.y(), direction.z(), 0;
+  return g;
+}
+
+Rational Camera::depth(const Point3& p) const { return dot(p - eye, target - eye); }
+
+std::array<int, 2> Camera::eye_plane_signs(const Point3& a, const Point3& b) const {
+  const Rational da = depth(a), db = depth(b);
+  // (da - db)·(crossing point - E), a positive multiple of the crossing point seen from the eye.
+  const Vector3 w = (da - db) * (a - eye) + da * (b - a);
+  const Vector3 toward_viewer = eye - target;
+  const Vector3 right = cross(up, toward_viewer), screen_up = cross(toward_viewer, right);
+  return {sgn(dot(w, right)), sgn(dot(w, screen_up))};
+}
+
+Sign Camera::in_front(const Point3& p) const {
+  if (!perspective) return Sign::Positive;
+  return sign_of_dot(p - eye, target - eye);
+}
+
+Camera make_orthographic(const Vector3& direction, std::optional<Vector3> up) {
+  if (direction.is_zero()) throw std::invalid_argument("the view direction has zero length");
+  Camera c;
+  c.direction = direction;
+  c.up = choose_up(direction, up);
+  return c;
+}
+
+Camera make_perspective(const Point3& eye, const Point3& target, std::optional<Vector3> up) {
+  if (eye == target) throw std::invalid_argument("the eye and the target are the same point");
+  Camera c;
+  c.perspective = true;
+  c.eye = eye;
+  c.target = target;
+  c.up = choose_up(target - eye, up);
+  return c;
+}
+
+std::array<double, 3> DrawingFrame::to_frame(const Point3& p) const {
+  if (identity) {
+    // The certified bounds carried by the point are at most one double apart: their midpoint
+    // is within one unit in the last place, plenty for drawing and for the widened filters.
+    auto mid = [&](int k) { return p.approx(k).lo + (p.approx(k).hi - p.approx(k).lo) / 2; };
+    return {mid(0), mid(1), mid(2)};
+  }
+  return {to_double((p.x() - centre.x()) * scale), to_double((p.y() - centre.y()) * scale),
+          to_double((p.z() - centre.z()) * scale)};
+}
+
+DrawingFrame drawing_frame(std::size_t n, const std::function<const Point3&(std::size_t)>& point) {
+  DrawingFrame f;
+  if (n == 0) return f;
+  // The certified boxes' hull on all cores (minima and maxima: the same on any number).
+  struct Hull {
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, big = 0;
+  };
+  const ParallelLoop loop;
+  PerWorker<Hull> part(loop);
+  loop.run(n, 16384, [&](unsigned w, std::size_t b, std::size_t e) {
+    Hull h = part[w];  // in registers while the range runs
+    for (std::size_t i = b; i < e; ++i) {
+      const Point3& p = point(i);
+      for (int k = 0; k < 3; ++k) {
+        h.lo[k] = std::min(h.lo[k], p.approx(k).lo);
+        h.hi[k] = std::max(h.hi[k], p.approx(k).hi);
+        h.big = std::max({h.big, std::fabs(p.approx(k).lo), std::fabs(p.approx(k).hi)});
+      }
+    }
+    part[w] = h;
+  });
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, big = 0;
+  for (unsigned w = 0; w < part.size(); ++w) {
+    const Hull& h = part[w];
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], h.lo[k]), hi[k] = std::max(hi[k], h.hi[k]);
+    big = std::max(big, h.big);
+  }
+  double ext = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  if (std::isfinite(big) && big < 0x1p100 && ext > 0x1p-100 && ext >= big * 0x1p-30) return f;
+  // The exact bounding box.
+  Rational L[3], H[3];
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point3& p = point(i);
+    for (int k = 0; k < 3; ++k) {
+      if (i == 0 || p[k] < L[k]) L[k] = p[k];
+      if (i == 0 || p[k] > H[k]) H[k] = p[k];
+    }
+  }
+  Rational side = 0;
+  for (int k = 0; k < 3; ++k) side = std::max(side, Rational(H[k] - L[k]));
+  if (side == 0) return f;  // a single point: nothing to scale
+  f.identity = false;
+  f.centre = Point3((L[0] + H[0]) / 2, (L[1] + H[1]) / 2, (L[2] + H[2]) / 2);
+  f.scale = 1 / side;
+  return f;
+}
+
+Projector::Projector(const Camera& c, DrawingFrame frame) : perspective_(c.perspective), frame_(std::move(frame)) {
+  V3 toward_viewer = c.perspective ? unit(d3_direction(c.eye - c.target)) : unit(d3_direction(c.direction));
+  forward_ = {-toward_viewer[0], -toward_viewer[1], -toward_viewer[2]};
+  V3 up = d3_direction(c.up);
+  right_ = unit(cross3(up, toward_viewer));
+  up_ = cross3(toward_viewer, right_);
+  eye_ = perspective_ ? (frame_.identity ? V3{to_double(c.eye.x()), to_double(c.eye.y()), to_double(c.eye.z())}
+                                         : frame_.to_frame(c.eye))
+                      : V3{0, 0, 0};
+}
+
+std::array<double, 3> Projector::project(double x, double y, double z) const {
+  V3 p = {x - eye_[0], y - eye_[1], z - eye_[2]};
+  double depth = dot3(p, forward_);
+  double sx = dot3(p, right_), sy = dot3(p, up_);
+  if (perspective_) {
+    if (depth > 0) return {sx / depth, sy / depth, depth};
+    return {sx, sy, depth};
+  }
+  return {sx, sy, depth};
+}
+
+std::array<double, 3> Projector::project(const Point3& p) const {
+  auto q = frame_.to_frame(p);
+  return project(q[0], q[1], q[2]);
+}
+
+}  // namespace hlr

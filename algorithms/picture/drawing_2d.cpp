@@ -1,0 +1,176 @@
+// The 2D stage (see drawing_2d.hpp).
+#include "algorithms/picture/drawing_2d.hpp"
+
+#include "algorithms/support/parallel.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <set>
+#include <string>
+
+namespace hlr {
+namespace {
+
+// Drawing coordinates of a piece; false when nothing of it is in front of the eye. For
+// perspective, ends closer than `near` to the eye plane are pulled to it (drawing only: the
+// visibility of the piece is already decided exactly).
+bool piece_line(const Segment& s, const Piece& p, const Projector& proj, bool perspective, double near,
+                std::array<double, 4>& out, bool& pulled) {
+  pulled = false;
+  // Drawing only: the ends in doubles (in the projector's frame) and t rounded.
+  std::array<double, 3> F = proj.frame().to_frame(s.from()), T = proj.frame().to_frame(s.to()), A, B;
+  auto at = [&](const Rational& t, std::array<double, 3>& o) {
+    if (t == 0) o = F;
+    else if (t == 1) o = T;
+    else {
+      double u = to_double(t);
+      for (int k = 0; k < 3; ++k) o[k] = F[k] + u * (T[k] - F[k]);
+    }
+  };
+  at(p.t0, A);
+  at(p.t1, B);
+  auto pa = proj.project(A[0], A[1], A[2]), pb = proj.project(B[0], B[1], B[2]);
+  if (perspective) {
+    if (pa[2] < near && pb[2] < near) return false;
+    if (pa[2] < near || pb[2] < near) {
+      double u = (near - pa[2]) / (pb[2] - pa[2]);
+      std::array<double, 3> C;
+      for (int k = 0; k < 3; ++k) C[k] = A[k] + u * (B[k] - A[k]);
+      auto pc = proj.project(C[0], C[1], C[2]);
+      (pa[2] < near ? pa : pb) = pc;
+      pulled = true;
+    }
+  }
+  out = {pa[0], pa[1], pb[0], pb[1]};
+  return true;
+}
+
+// Each (body, vertex) that ends an edge segment, once, at its projection (in front of the eye).
+void add_vertex_labels(const LineDrawing& r, const Projector& proj, const Camera& camera, int base, Drawing2D& d) {
+  std::set<std::pair<int, int>> seen;
+  for (const Segment& s : r.segments) {
+    if (s.kind != Segment::Kind::Edge) continue;
+    for (auto [v, p] : {std::make_pair(s.v0, &s.from()), std::make_pair(s.v1, &s.to())}) {
+      if (v < 0 || !seen.insert({s.body, v}).second) continue;
+      if (camera.perspective && camera.in_front(*p) != Sign::Positive) continue;
+      auto q = proj.project(*p);
+      d.labels.push_back({{q[0], q[1]}, std::to_string(v + base)});
+    }
+  }
+}
+
+// The runs' lines moved together (run c holds kept[c] lines from at[c]), in order.
+void close_gaps(const std::vector<std::size_t>& at, const std::vector<std::size_t>& kept, Drawing2D& d) {
+  std::size_t w = 0;
+  for (std::size_t c = 0; c + 1 < at.size(); ++c)
+    for (std::size_t k = at[c]; k < at[c] + kept[c]; ++k, ++w) {
+      Polyline2D pl = d.lines[k];
+      pl.first = static_cast<std::uint32_t>(2 * w);
+      pl.first_edge = static_cast<std::uint32_t>(w);
+      d.lines[w] = pl;
+      d.points[2 * w] = d.points[2 * k];
+      d.points[2 * w + 1] = d.points[2 * k + 1];
+      d.sources[w] = d.sources[k];
+    }
+  d.lines.resize(w);
+  d.points.resize(2 * w);
+  d.sources.resize(w);
+}
+
+}  // namespace
+
+Projector drawing_projector(const LineDrawing& r, const Camera& camera) {
+  const auto& segs = r.segments;
+  return Projector(camera, drawing_frame(2 * segs.size(), [&](std::size_t i) -> const Point3& {
+                     return i % 2 ? segs[i / 2].to() : segs[i / 2].from();
+                   }));
+}
+
+Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Project2DOptions& opt) {
+  Projector proj = drawing_projector(r, camera);
+  const ParallelLoop loop;
+  double near = 0;
+  if (camera.perspective) {  // the farthest end's depth (a maximum: the same on any number of threads)
+    PerWorker<double> most(loop, 0.0);
+    loop.run(r.segments.size(), 8192, [&](unsigned w, std::size_t b, std::size_t e) {
+      double far = most[w];
+      for (std::size_t i = b; i < e; ++i)
+        for (const Point3* p : {&r.segments[i].from(), &r.segments[i].to()}) far = std::max(far, proj.project(*p)[2]);
+      most[w] = far;
+    });
+    double far = 0;
+    for (unsigned w = 0; w < most.size(); ++w) far = std::max(far, most[w]);
+    near = 1e-4 * std::max(far, 1e-300);
+  }
+  // Runs of segments on every core. Each run's pieces that may be drawn are counted first, so
+  // that every run writes straight into its place in the drawing's arrays (made on this
+  // thread from memory already in use: a worker's own fresh allocations cost page clearing);
+  // the few pieces wholly behind the near depth (perspective) leave gaps, closed afterwards.
+  const std::vector<Segment>& segs = r.segments;
+  auto drawn = [&](const Piece& p) { return !(p.behind_eye || p.clipped || (!p.visible && !(p.through ? opt.through : opt.hidden))); };
+  constexpr std::size_t kRun = 4096;
+  const std::size_t n_runs = (segs.size() + kRun - 1) / kRun;
+  std::vector<std::size_t> at(n_runs + 1, 0);  // (a run per task: the scans' chunks are too coarse here)
+  loop.for_each(n_runs, 1, [&](std::size_t c) {
+    std::size_t k = 0;
+    for (std::size_t si = c * kRun, end = std::min(segs.size(), si + kRun); si < end; ++si)
+      for (const Piece& p : segs[si].pieces) k += drawn(p);
+    at[c + 1] = k;
+  });
+  std::partial_sum(at.begin(), at.end(), at.begin());
+  Drawing2D d;
+  reserve_touched(d.lines, at.back(), loop);
+  reserve_touched(d.points, 2 * at.back(), loop);
+  reserve_touched(d.sources, at.back(), loop);
+  d.lines.resize(at.back());
+  d.points.resize(2 * at.back());
+  d.sources.resize(at.back());
+  std::vector<std::size_t> kept(n_runs);
+  loop.for_each(n_runs, 1, [&](std::size_t c) {
+    std::size_t w = at[c];
+    for (std::size_t si = c * kRun, end = std::min(segs.size(), si + kRun); si < end; ++si) {
+      const Segment& s = segs[si];
+      for (std::size_t pi = 0; pi < s.pieces.size(); ++pi) {
+        const Piece& p = s.pieces[pi];
+        if (!drawn(p)) continue;
+        std::array<double, 4> l;
+        bool pulled = false;
+        if (!piece_line(s, p, proj, camera.perspective, near, l, pulled)) continue;
+        Polyline2D& pl = d.lines[w];
+        pl.first = static_cast<std::uint32_t>(2 * w);
+        pl.count = 2;
+        pl.first_edge = static_cast<std::uint32_t>(w);
+        pl.kind = s.line;
+        pl.visible = p.visible;
+        pl.through = p.through;
+        pl.intersection = s.kind == Segment::Kind::Intersection;
+        pl.body = s.body;
+        pl.body2 = s.body2;
+        pl.pulled = pulled;
+        d.points[2 * w] = {l[0], l[1]};
+        d.points[2 * w + 1] = {l[2], l[3]};
+        d.sources[w] = PieceRef{static_cast<int>(si), static_cast<int>(pi)};
+        ++w;
+      }
+    }
+    kept[c] = w - at[c];
+  });
+  if (std::accumulate(kept.begin(), kept.end(), std::size_t{0}) != at.back()) close_gaps(at, kept, d);
+  if (opt.vertex_labels) add_vertex_labels(r, proj, camera, opt.label_base, d);
+  return d;
+}
+
+bool drawing_bounds(const Drawing2D& d, double& x0, double& y0, double& x1, double& y1) {
+  x0 = y0 = std::numeric_limits<double>::infinity();
+  x1 = y1 = -x0;
+  for (const auto& p : d.points) {
+    x0 = std::min(x0, p[0]);
+    x1 = std::max(x1, p[0]);
+    y0 = std::min(y0, p[1]);
+    y1 = std::max(y1, p[1]);
+  }
+  return x1 >= x0;
+}
+
+}  // namespace hlr

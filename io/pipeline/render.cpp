@@ -1,0 +1,550 @@
+// The render pipeline (see render.hpp).
+#include "io/pipeline/render.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <climits>
+#include <cmath>
+#include <map>
+
+#include "algorithms/solids/convexity.hpp"
+#include "algorithms/picture/drawing_2d.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/solids/mesh_repair.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "algorithms/hlr/roberts.hpp"
+#include "algorithms/hlr/roberts_pieces.hpp"
+#include "algorithms/surfaces/priority_list.hpp"
+#include "algorithms/hlr/see_through_lines.hpp"
+#include "algorithms/surfaces/shadows.hpp"
+#include "algorithms/surfaces/transparency.hpp"
+#include "algorithms/clip/weiler_atherton.hpp"
+#include "algorithms/picture/picture_tiles.hpp"
+
+namespace hlr {
+
+RenderBodyError::RenderBodyError(int body, std::string name, std::string source, std::string reason)
+    : std::runtime_error(source + ": body '" + name + "' " + reason),
+      body_(body),
+      name_(std::move(name)),
+      source_(std::move(source)),
+      reason_(std::move(reason)) {}
+
+namespace {
+
+LineDrawing solve(const std::vector<const Polyhedron*>& polys, const Camera& camera, const RenderOptions& o) {
+  if (o.method == RenderMethod::Faces) return face_occluders(polys, camera, o.lines);
+  bool all_convex = true;
+  for (const Polyhedron* p : polys) all_convex = all_convex && p->report().valid_solid() && convexity(*p).convex();
+  if (all_convex) return roberts(polys, camera, o.lines);
+  return roberts_pieces(polys, camera, o.lines);
+}
+
+// Degenerate but drawable views get a note, never a wrong picture.
+void eye_plane_notes(const RenderResult& r, std::vector<std::string>& notes) {
+  if (!r.camera.perspective) return;
+  for (std::size_t i = 0; i < r.drawing.facing.size(); ++i) {
+    std::size_t count = 0;
+    for (std::size_t f = 0; f < r.drawing.facing[i].size(); ++f)
+      if (r.drawing.facing[i][f] == 0 && ++count <= 3)
+        notes.push_back("the eye lies in the plane of face " + std::to_string(f) + " of body '" + r.names[i].name +
+                        "': that face is seen edge-on");
+    if (count > 3) notes.push_back("... and " + std::to_string(count - 3) + " more faces of body '" + r.names[i].name + "'");
+  }
+}
+
+// Doubles for shading: the midpoint of the certified bounds each exact number carries.
+double mid(const Bounds& b) { return b.lo + (b.hi - b.lo) / 2; }
+std::array<double, 3> d3(const Point3& p) { return {mid(p.approx(0)), mid(p.approx(1)), mid(p.approx(2))}; }
+std::array<double, 3> d3(const Vector3& p) { return d3(Point3(p.x(), p.y(), p.z())); }
+std::array<double, 3> unit3(std::array<double, 3> a) {
+  double l = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  if (l > 0) a = {a[0] / l, a[1] / l, a[2] / l};
+  return a;
+}
+std::array<double, 3> cross3(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// The scene's lights: `lighting:`, else `light:` as one directional light, else the default.
+Lighting scene_lighting(const std::vector<Scene>& scenes, const Camera& cam) {
+  for (const Scene& s : scenes)
+    if (s.lighting) return *s.lighting;
+  for (const Scene& s : scenes)
+    if (s.light) {
+      Lighting l;
+      Light d;
+      d.direction = unit3(d3(*s.light));
+      d.exact = true;
+      d.exact_direction = {s.light->x(), s.light->y(), s.light->z()};
+      l.lights.push_back(d);
+      return l;
+    }
+  auto v = unit3(cam.perspective ? d3(Vector3(cam.eye - cam.target)) : d3(cam.direction));
+  auto right = unit3(cross3(d3(cam.up), v)), up = cross3(v, right);
+  Lighting l = default_lighting(v, up, right);
+  // Shadows decide with exact light directions: snap the default lights to sixty-fourths (a
+  // change of under a degree), small numbers that keep the exact arithmetic fast.
+  for (Light& x : l.lights) {
+    x.exact = true;
+    for (int k = 0; k < 3; ++k) x.exact_direction[k] = rational(std::lround(x.direction[k] * 64), 64);
+    x.direction = unit3({to_double(x.exact_direction[0]), to_double(x.exact_direction[1]), to_double(x.exact_direction[2])});
+    for (int k = 0; k < 3; ++k) x.exact_position[k] = rational_from_double(x.position[k]);
+  }
+  return l;
+}
+
+// The flat colour of face f of body b under `light`, for the side the viewer sees (facing -1:
+// the back side).
+// `n`: the face's unit normal.
+// The camera's eye and unit view direction in doubles, once per drawing (each costs exact
+// copies).
+struct ViewDoubles {
+  std::array<double, 3> eye, view;
+  explicit ViewDoubles(const Camera& c) : eye(d3(c.eye)), view(unit3(d3(c.direction))) {}
+};
+
+Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Lighting& light, bool back, std::array<double, 3> n,
+                const ViewDoubles& vd) {
+  const Polyhedron& p = r.bodies[b]->body;
+  Material m;
+  m.colour = palette_colour(static_cast<int>(b));
+  if (r.bodies[b]->material) m = *r.bodies[b]->material;
+  const std::array<double, 3>&eye = vd.eye, &view = vd.view;
+  if (back) n = {-n[0], -n[1], -n[2]};
+  std::array<double, 3> c{0, 0, 0};
+  for (int v : p.faces()[f]) {
+    auto q = d3(p.vertices()[v]);
+    for (int k = 0; k < 3; ++k) c[k] += q[k] / static_cast<double>(p.faces()[f].size());
+  }
+  std::array<double, 3> to_viewer = r.camera.perspective ? unit3({eye[0] - c[0], eye[1] - c[1], eye[2] - c[2]}) : view;
+  return shade(m, light, c, n, to_viewer);
+}
+
+Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Lighting& light, bool back, const ViewDoubles& vd) {
+  const Plane& h = r.bodies[b]->body.planes()[f];
+  return face_colour(r, b, f, light, back, unit3({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))}), vd);
+}
+
+// Flat colour of every face, for the side the viewer sees (facing: 1 front, -1 back, 0 edge-on).
+void shade_faces(RenderResult& r, const std::vector<Scene>& scenes, const LineDrawing& all) {
+  const Lighting light = scene_lighting(scenes, r.camera);
+  r.face_colours.resize(r.bodies.size());
+  const ViewDoubles vd(r.camera);
+  for (std::size_t b = 0; b < r.bodies.size(); ++b) {
+    const Polyhedron& p = r.bodies[b]->body;
+    r.face_colours[b].resize(p.num_faces());
+    ParallelLoop().for_each(p.num_faces(), 256, [&](std::size_t f) {
+      bool back = b < all.facing.size() && f < all.facing[b].size() && all.facing[b][f] < 0;
+      r.face_colours[b][f] = face_colour(r, b, f, light, back, vd);
+    });
+  }
+}
+
+// Where each light is, exactly: the scene file's numbers, else the doubles' binary values.
+std::vector<LightPlace> light_places(const Lighting& l) {
+  std::vector<LightPlace> out;
+  for (const Light& x : l.lights) {
+    LightPlace p;
+    p.directional = x.type == Light::Type::Directional;
+    std::array<Rational, 3> d, q;
+    for (int k = 0; k < 3; ++k) {
+      d[k] = x.exact ? x.exact_direction[k] : rational_from_double(x.direction[k]);
+      q[k] = x.exact ? x.exact_position[k] : rational_from_double(x.position[k]);
+    }
+    p.toward = Vector3(d[0], d[1], d[2]);
+    p.position = Point3(q[0], q[1], q[2]);
+    out.push_back(p);
+  }
+  return out;
+}
+
+// The material of body b (its own, else the palette's default).
+Material material_of(const RenderResult& r, std::size_t b) {
+  Material m;
+  m.colour = palette_colour(static_cast<int>(b));
+  if (r.bodies[b]->material) m = *r.bodies[b]->material;
+  return m;
+}
+
+// Per body: its material lets light through (transparency > 0): it hides no line.
+std::vector<char> see_through_bodies(const RenderResult& r) {
+  std::vector<char> see(r.bodies.size(), 0);
+  for (std::size_t b = 0; b < r.bodies.size(); ++b) see[b] = material_of(r, b).transparency > 0;
+  return see;
+}
+
+// Transparency (issue 16): the regions of equal face lists, each composited back to front,
+// I = (1 − τ)·I_face + τ·I_behind, from white paper behind everything.
+void solve_transparency(RenderResult& r, const std::vector<const Polyhedron*>& polys, const LineDrawing& all) {
+  const std::vector<char> see = see_through_bodies(r);
+  if (std::find(see.begin(), see.end(), 1) == see.end()) return;
+  r.transparent = transparent_regions(polys, r.camera, all, see);
+  const std::array<double, 3> eye = d3(r.camera.eye), view = unit3(d3(r.camera.direction));
+  for (const TransparentRegion& reg : r.transparent->regions) {
+    Rgb c{1, 1, 1};
+    for (auto [b, f] : reg.faces) {
+      const Polyhedron& p = *polys[b];
+      const Plane& h = p.planes()[f];
+      std::array<double, 3> n = unit3({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))}), ctr{0, 0, 0};
+      for (int v : p.faces()[f]) {
+        auto q = d3(p.vertices()[v]);
+        for (int k = 0; k < 3; ++k) ctr[k] += q[k] / static_cast<double>(p.faces()[f].size());
+      }
+      std::array<double, 3> to_viewer = r.camera.perspective ? unit3({eye[0] - ctr[0], eye[1] - ctr[1], eye[2] - ctr[2]}) : view;
+      const double tau = see[b] ? transparency_at(material_of(r, b), std::fabs(n[0] * to_viewer[0] + n[1] * to_viewer[1] + n[2] * to_viewer[2])) : 0;
+      const Rgb& own = r.face_colours[b][f];
+      for (int k = 0; k < 3; ++k) c[k] = (1 - tau) * own[k] + tau * c[k];
+    }
+    r.transparent_colours.push_back(c);
+  }
+}
+
+// Shadows (issue 16): each light's lit parts laid over the visible surfaces; every region
+// shaded by the lights that reach it (the ambient term alone where none does).
+void solve_shadows(RenderResult& r, const std::vector<const Polyhedron*>& polys, const std::vector<Scene>& scenes, const RenderOptions& o,
+                   const LineDrawing& all) {
+  const Lighting light = scene_lighting(scenes, r.camera);
+  ShadowOptions so;
+  so.threads = o.lines.threads;
+  r.shadows = shadows(polys, r.camera, *r.surfaces, light_places(light), so);
+  r.shadow_colours.resize(r.shadows->faces.size());
+  const ViewDoubles vd(r.camera);
+  ParallelLoop(o.lines.threads).for_each(r.shadows->faces.size(), 4, [&](std::size_t k) {
+    const ShadowFace& f = r.shadows->faces[k];
+    bool back = static_cast<std::size_t>(f.body) < all.facing.size() && all.facing[f.body][f.face] < 0;
+    for (const ShadowRegion& reg : f.regions) {
+      Lighting some = light;
+      some.lights.clear();
+      for (std::size_t i = 0; i < light.lights.size(); ++i)
+        if ((reg.lights >> i) & 1u) some.lights.push_back(light.lights[i]);
+      r.shadow_colours[k].push_back(face_colour(r, f.body, f.face, some, back, vd));
+    }
+  });
+}
+
+// Surfaces: every edge for the cells, then the selected lines of the same solution drawn.
+void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys, const std::vector<Scene>& scenes,
+                    const RenderOptions& o) {
+  if (o.method == RenderMethod::Roberts) throw std::invalid_argument("--surfaces works with --method faces, weiler-atherton or priority");
+  if (o.clip) throw std::invalid_argument("--surfaces does not take --clip (a clipped face is not a surface of the scene)");
+  if (o.shadows && o.method != RenderMethod::Faces) throw std::invalid_argument("--shadows works with --method faces");
+  for (const Polyhedron* p : polys) plane_all_faces(*p, o.lines.threads);  // computed once, before the parallel stages
+  if (r.camera.perspective)
+    for (std::size_t b = 0; b < polys.size(); ++b)
+      for (const Point3& v : polys[b]->vertices())
+        if (r.camera.in_front(v) != Sign::Positive)
+          throw std::invalid_argument(r.names[b].source + ": body '" + r.names[b].name +
+                                      "' reaches the eye's plane or behind it: filled faces (--surfaces, --method weiler-atherton or priority) need every body in front of the eye");
+  LineOptions all = o.lines;
+  all.edges = EdgeSelection::All;
+  all.classify_all = true;
+  LineDrawing d = face_occluders(polys, r.camera, all);
+  if (r.camera.perspective) {
+    Plane near = near_plane(r.camera, o.near);
+    for (Segment& s : d.segments) clip_near(s, near);
+  }
+  if (o.through_lines) r.through_pieces = mark_see_through(d, polys, r.camera, all, see_through_bodies(r));
+  shade_faces(r, scenes, d);
+  SurfaceOptions so;
+  so.threads = o.lines.threads;
+  so.lift = o.surface_corners;
+  so.faces = o.surface_faces || o.shadows;  // the shadows are cut from the regions of each face
+  so.exact_groups = false;  // the groups only feed the fills (add_surface_fills)
+  std::map<std::array<int, 3>, int> group_of;
+  so.face_group.resize(r.bodies.size());
+  for (std::size_t b = 0; b < r.bodies.size(); ++b)
+    for (const Rgb& c : r.face_colours[b]) {
+      auto [it, fresh] = group_of.emplace(rgb8(c), static_cast<int>(r.group_colours.size()));
+      if (fresh) r.group_colours.push_back(c);
+      so.face_group[b].push_back(it->second);
+    }
+  if (o.method == RenderMethod::WeilerAtherton) {
+    WeilerAthertonResult wa = weiler_atherton(polys, r.camera, d);
+    std::vector<SurfacePiece> pieces;
+    for (WaPolygon& p : wa.visible) pieces.push_back({p.body, p.face, std::move(p.pts)});
+    r.surfaces = surfaces_from_pieces(pieces, polys, r.camera, so);
+    r.surfaces->stats.weiler_atherton = true;
+    r.surfaces->stats.wa_clips = wa.clips;
+    r.surfaces->stats.wa_splits = wa.splits;
+    r.surfaces->stats.wa_recursions = wa.recursions;
+    r.surfaces->stats.wa_cycles = wa.cycles;
+  } else if (o.method == RenderMethod::Priority) {
+    auto t0 = std::chrono::steady_clock::now();
+    r.priority = priority_list(polys, r.camera, d);
+    r.priority_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  } else {
+    r.surfaces = visible_surfaces(polys, r.camera, d, so);
+    if (o.shadows) solve_shadows(r, polys, scenes, o, d);
+    if (!o.shadows) solve_transparency(r, polys, d);
+  }
+  if (o.lines.edges == EdgeSelection::Feature) {
+    std::vector<Segment> kept;
+    for (Segment& s : d.segments)
+      if (s.kind == Segment::Kind::Intersection || s.line != LineKind::Edge) kept.push_back(std::move(s));
+    d.segments = std::move(kept);
+  } else {
+    for (Segment& s : d.segments)
+      if (s.kind == Segment::Kind::Edge) s.line = LineKind::Edge;
+  }
+  r.drawing = std::move(d);
+}
+
+// A tile of the picture (picture_tiles.hpp): its split, from every body's vertices, and the
+// cut of each segment to it.
+class TileCut {
+ public:
+  TileCut(const std::vector<const Polyhedron*>& polys, const Camera& cam, const RenderOptions::Tile& t, unsigned threads)
+      : cam_(cam), pp_(cam), index_(t.index) {
+    if (t.count < 1 || t.index < 0 || t.index >= t.count) throw std::invalid_argument("--tile: no tile " + std::to_string(t.index + 1) + " of " + std::to_string(t.count));
+    std::vector<const Point3*> pts;
+    for (const Polyhedron* p : polys)
+      for (const Point3& q : p->vertices()) pts.push_back(&q);
+    const DrawingFrame frame = drawing_frame(pts.size(), [&](std::size_t i) -> const Point3& { return *pts[i]; });
+    proj_.emplace(cam, frame);
+    split_ = split_picture(cam, *proj_, pts.size(), [&](std::size_t i) -> const Point3& { return *pts[i]; }, t.count);
+    // Each vertex's sides of the tile it surely lies outside (a triangle whose three vertices
+    // share one cannot reach the tile: its picture is in their convex hull).
+    std::size_t at = 0;
+    for (const Polyhedron* p : polys) {
+      first_.push_back(at);
+      at += p->num_vertices();
+    }
+    outside_.assign(pts.size(), 0);
+    ParallelLoop(threads).for_each(pts.size(), 4096, [&](std::size_t i) {
+      if (split_.count > 1) outside_[i] = static_cast<unsigned char>(tile_outside(split_, index_, locate(cam, *proj_, *pts[i])));
+    });
+  }
+  /// False only when the triangle (body, its vertex indices) cannot reach the tile.
+  bool may_occlude(int body, const std::array<int, 3>& v) const {
+    const std::size_t o = first_[static_cast<std::size_t>(body)];
+    return (outside_[o + v[0]] & outside_[o + v[1]] & outside_[o + v[2]]) == 0;
+  }
+  /// False only when no point of the segment is in the tile (a filter in doubles).
+  bool may_hold(const Segment& s) const { return where(s) != 0; }
+  /// The segment's pieces cut to the tile, exactly.
+  void apply(Segment& s) const {
+    const int w = where(s);
+    if (w == 0) s.pieces.clear();
+    if (w == 1) cut_to_intervals(s, tile_intervals(s, pp_, cam_, split_, index_));
+  }
+
+ private:
+  // 0: no point of the segment in the tile, 2: all of it, 1: not known without exact numbers.
+  int where(const Segment& s) const {
+    if (split_.count == 1) return 2;
+    const LocatedPoint a = locate(cam_, *proj_, s.from()), b = locate(cam_, *proj_, s.to());
+    return !tile_may_hold(split_, index_, a, b) ? 0 : tile_holds_wholly(split_, index_, a, b) ? 2 : 1;
+  }
+
+  const Camera& cam_;
+  PicturePlane pp_;
+  int index_;
+  std::optional<Projector> proj_;
+  TileSplit split_;
+  std::vector<std::size_t> first_;       // per body: its first vertex in outside_
+  std::vector<unsigned char> outside_;   // per vertex: tile_outside()
+};
+
+}  // namespace
+
+RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
+  if (!(o.near > 0)) throw std::invalid_argument("--near must be positive (a fraction of the distance from the eye to the target)");
+  RenderResult r;
+  auto owned = std::make_shared<std::vector<Scene>>(std::move(scenes));
+  r.scenes = owned;
+  std::vector<const Polyhedron*> polys;
+  const View* scene_view = nullptr;
+  std::vector<std::string> repairs;
+  for (Scene& s : *owned) {
+    if (!scene_view && is_scene_file(s.file)) scene_view = &s.view;
+    for (SceneBody& b : s.bodies) {
+      DrawingBody name{b.name, b.source};
+      if (auto fixed = remove_zero_area_triangles(b.body)) {
+        b.body = std::move(fixed->body);
+        name.input_face = std::move(fixed->input_face);
+        name.removed_faces = std::move(fixed->removed);
+        name.repaired_faces = std::move(fixed->joined);
+        for (const std::string& n : fixed->notes) repairs.push_back(b.source + ": body '" + b.name + "' " + n);
+        if (!b.face_texcoords.empty()) {  // the faces changed: their texture corners no longer match
+          b.face_texcoords.clear();
+          repairs.push_back(b.source + ": body '" + b.name + "' texture coordinates dropped with the repair");
+        }
+      }
+      r.bodies.push_back(&b);
+      polys.push_back(&b.body);
+      r.names.push_back(std::move(name));
+    }
+  }
+  if (o.method == RenderMethod::Roberts)
+    for (const Polyhedron* p : polys) p->report();  // Roberts' checks belong to loading
+  r.camera = choose_camera(o.view, scene_view, polys);
+  if ((o.tile || o.segments_only) &&
+      (o.method != RenderMethod::Faces || o.surfaces || o.shadows || o.clip))
+    throw std::invalid_argument("tiles take line drawings of the per-face route (not --method roberts, --surfaces, --shadows or --clip)");
+  RenderOptions tiled = o;
+  std::optional<TileCut> cut;
+  if (o.tile) {
+    cut.emplace(polys, r.camera, *o.tile, o.lines.threads);
+    tiled.lines.decide = [&](const Segment& s) { return cut->may_hold(s); };
+    tiled.lines.may_occlude = [&](int body, const std::array<int, 3>& v) { return cut->may_occlude(body, v); };
+  }
+  if (o.segments_only) {  // no visibility: no segment is solved, no face hides
+    tiled.lines.decide = [](const Segment&) { return false; };
+    tiled.lines.may_occlude = [](int, const std::array<int, 3>&) { return false; };
+  }
+  try {
+    if (o.surfaces || o.shadows || o.method == RenderMethod::WeilerAtherton || o.method == RenderMethod::Priority)
+      solve_surfaces(r, polys, *owned, o);
+    else {
+      r.drawing = solve(polys, r.camera, tiled);
+      const std::vector<char> see = see_through_bodies(r);
+      if (o.method == RenderMethod::Faces && o.through_lines && !o.segments_only)
+        r.through_pieces = mark_see_through(r.drawing, polys, r.camera, tiled.lines, see);
+      else if (o.method == RenderMethod::Roberts && std::find(see.begin(), see.end(), 1) != see.end())
+        repairs.push_back("transparent bodies hide the lines behind them with --method roberts (the per-face route draws those lines as seen through)");
+    }
+  } catch (const BodyError& e) {
+    const SceneBody& b = *r.bodies[e.body()];
+    throw RenderBodyError(e.body(), b.name, b.source, e.reason());
+  }
+  r.notes = std::move(repairs);
+  for (const BodyNote& n : r.drawing.notes)
+    r.notes.push_back(r.names[n.body].source + ": body '" + r.names[n.body].name + "' " + n.text);
+  eye_plane_notes(r, r.notes);
+  // Clipping: the near plane (perspective) and the clipping volume, exactly, in world space.
+  std::optional<Plane> near;
+  if (r.camera.perspective) near = near_plane(r.camera, o.near);
+  if ((near || o.clip) && !r.surfaces && !r.priority)
+    ParallelLoop(o.lines.threads).for_each(r.drawing.segments.size(), 1024, [&](std::size_t i) {
+      Segment& s = r.drawing.segments[i];
+      if (near) clip_near(s, *near);
+      if (o.clip) clip_pieces(s, *o.clip);
+    });
+  if (cut)
+    ParallelLoop(o.lines.threads).for_each(r.drawing.segments.size(), 256, [&](std::size_t i) { cut->apply(r.drawing.segments[i]); });
+  return r;
+}
+
+Lighting render_lighting(const RenderResult& r) { return scene_lighting(*r.scenes, r.camera); }
+
+std::vector<LightPlace> render_light_places(const RenderResult& r) { return light_places(render_lighting(r)); }
+
+Material body_material(const RenderResult& r, std::size_t b) { return material_of(r, b); }
+
+std::array<double, 3> face_normal(const Polyhedron& p, std::size_t f) {
+  const Face& face = p.faces()[f];
+  std::array<double, 3> n{0, 0, 0};
+  const std::array<double, 3> o = d3(p.vertices()[face[0]]);
+  for (std::size_t i = 1; i + 1 < face.size(); ++i) {  // Newell's sum as a fan from the first vertex
+    const std::array<double, 3> a = d3(p.vertices()[face[i]]), b = d3(p.vertices()[face[i + 1]]);
+    const double u[3] = {a[0] - o[0], a[1] - o[1], a[2] - o[2]}, v[3] = {b[0] - o[0], b[1] - o[1], b[2] - o[2]};
+    n[0] += u[1] * v[2] - u[2] * v[1], n[1] += u[2] * v[0] - u[0] * v[2], n[2] += u[0] * v[1] - u[1] * v[0];
+  }
+  const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (std::isfinite(l) && l > 0x1p-500) return {n[0] / l, n[1] / l, n[2] / l};
+  std::vector<const Point3*> pts;
+  for (int v : face) pts.push_back(&p.vertices()[v]);
+  const Plane h = primitive_plane_of_polygon(pts.data(), pts.size());  // exact: beyond the doubles' range
+  // Scaled by a power of two so that the largest component is near 1 (integers of any size).
+  int e = INT_MIN;
+  for (int k = 0; k < 3; ++k)
+    if (sgn(h[k]) != 0) e = std::max(e, static_cast<int>(mpz_sizeinbase(h[k].get_num().get_mpz_t(), 2)));
+  if (e == INT_MIN) return {0, 0, 1};
+  std::array<double, 3> m;
+  for (int k = 0; k < 3; ++k) {
+    mpz_class q = h[k].get_num();
+    m[k] = e > 900 ? mpz_class(q >> (e - 900)).get_d() : q.get_d();
+  }
+  return unit3(m);
+}
+
+std::vector<std::vector<Rgb>> flat_face_colours(const RenderResult& r, const std::vector<std::vector<char>>* only) {
+  const Lighting light = render_lighting(r);
+  const ViewDoubles vd(r.camera);
+  std::vector<std::vector<Rgb>> out(r.bodies.size());
+  for (std::size_t b = 0; b < r.bodies.size(); ++b) {
+    out[b].resize(r.bodies[b]->body.num_faces());
+    ParallelLoop().for_each(out[b].size(), 256, [&](std::size_t f) {
+      const bool back = b < r.drawing.facing.size() && f < r.drawing.facing[b].size() && r.drawing.facing[b][f] < 0;
+      if (only && !(*only)[b][f]) return;
+      out[b][f] = face_colour(r, b, f, light, back, face_normal(r.bodies[b]->body, f), vd);
+    });
+  }
+  return out;
+}
+
+void add_surface_fills(Plot& plot, const RenderResult& r) {
+  if (!r.surfaces && !r.priority && !r.transparent) return;
+  Projector proj = drawing_projector(r.drawing, r.camera);
+  PictureToDrawing to_drawing(PicturePlane(r.camera), proj.frame());
+  bool had = !plot.empty();
+  auto ring = [&](PlotFill& f, const auto& pts) {
+    std::vector<Point2> out;
+    out.reserve(pts.size());
+    for (const auto& q : pts) {
+      auto xy = to_drawing(q);
+      out.push_back({xy[0], xy[1]});
+      if (!had) plot.bounds = {xy[0], xy[1], xy[0], xy[1]}, had = true;
+      plot.bounds = {std::min(plot.bounds[0], xy[0]), std::min(plot.bounds[1], xy[1]), std::max(plot.bounds[2], xy[0]),
+                     std::max(plot.bounds[3], xy[1])};
+    }
+    f.rings.push_back(std::move(out));
+  };
+  if (r.transparent) {  // regions of equal face lists, composited
+    for (std::size_t k = 0; k < r.transparent->regions.size(); ++k) {
+      const VisiblePolygon& p = r.transparent->regions[k].polygon;
+      PlotFill f;
+      f.colour = r.transparent_colours[k];
+      ring(f, p.outer_2d);
+      for (const auto& h : p.holes_2d) ring(f, h);
+      plot.fills.push_back(std::move(f));
+    }
+    return;
+  }
+  if (r.shadows) {  // every region of every face in its own colour: lit, in shadow, lit by some lights
+    for (std::size_t k = 0; k < r.shadows->faces.size(); ++k)
+      for (std::size_t j = 0; j < r.shadows->faces[k].regions.size(); ++j) {
+        const VisiblePolygon& p = r.shadows->faces[k].regions[j].polygon;
+        PlotFill f;
+        f.colour = r.shadow_colours[k][j];
+        f.edge_mm = 0.2;  // regions are per face, not merged per colour: a wider edge hides the seams
+        ring(f, p.outer_2d);
+        for (const auto& h : p.holes_2d) ring(f, h);
+        plot.fills.push_back(std::move(f));
+      }
+    return;
+  }
+  if (r.priority) {  // the painter's order: later fills cover earlier ones
+    for (int i : r.priority->order) {
+      const PriorityPolygon& p = r.priority->polygons[i];
+      PlotFill f;
+      f.colour = r.face_colours[p.body][p.face];
+      f.edge_mm = 0.25;
+      ring(f, p.pts);
+      plot.fills.push_back(std::move(f));
+    }
+    return;
+  }
+  for (const VisibleGroup& g : r.surfaces->groups)
+    for (const VisiblePolygon& p : g.polygons) {
+      PlotFill f;
+      f.colour = r.group_colours[g.group];
+      if (p.outer_2d.empty() && !p.outer_approx.empty()) {  // SurfaceOptions::exact_groups off
+        ring(f, p.outer_approx);
+        for (const auto& h : p.holes_approx) ring(f, h);
+      } else {
+        ring(f, p.outer_2d);
+        for (const auto& h : p.holes_2d) ring(f, h);
+      }
+      plot.fills.push_back(std::move(f));
+    }
+}
+
+RenderResult render_files(const std::vector<std::string>& inputs, const RenderOptions& o) {
+  std::vector<Scene> scenes;
+  for (const auto& in : inputs) scenes.push_back(is_scene_file(in) ? load_scene(in) : scene_from_mesh(in));
+  return render(std::move(scenes), o);
+}
+
+}  // namespace hlr

@@ -1,0 +1,146 @@
+// The render pipeline of the library (course notes sections 20-28): load -> camera -> hidden
+// lines -> clipping -> the exact line drawing, ready for the 2D stage (drawing_2d.hpp) and the
+// writers (svg_writer.hpp, json_writer.hpp). `hlr render` parses its arguments into
+// RenderOptions and calls this; so can any program (examples/consumer) and the Python module.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "algorithms/clip/cyrus_beck.hpp"
+#include "algorithms/shading/lighting.hpp"
+#include "algorithms/model/line_drawing.hpp"
+#include "algorithms/plot/plot.hpp"
+#include "algorithms/surfaces/priority_list.hpp"
+#include "algorithms/surfaces/shadows.hpp"
+#include "algorithms/surfaces/transparency.hpp"
+#include "algorithms/surfaces/visible_surfaces.hpp"
+#include "io/readers/scene.hpp"
+#include "io/writers/svg_writer.hpp"
+#include "io/pipeline/view_choice.hpp"
+
+namespace hlr {
+
+/// Which hidden-line route renders. Roberts: the course's algorithm on convex bodies, and
+/// through convex pieces for non-convex solids (Method::RobertsPieces in the stats).
+/// WeilerAtherton: the course's visible-surface algorithm (weiler_atherton.hpp) for the
+/// surfaces, the per-face route for the lines; implies `surfaces`. Priority: the course's
+/// priority-list (painter's) algorithm (priority_list.hpp): the faces and their cut parts
+/// painted back to front under the per-face route's lines.
+enum class RenderMethod { Faces, Roberts, WeilerAtherton, Priority };
+
+struct RenderOptions {
+  RenderMethod method = RenderMethod::Faces;
+  LineOptions lines;
+  ViewRequest view;
+  /// Perspective near plane, as a fraction of the eye-target distance (positive).
+  Rational near = Rational(1, 1000);
+  /// Clip the drawing to a convex volume (Cyrus-Beck, exact).
+  std::optional<ConvexClipper> clip;
+  /// Also the visible part of every face as exact polygons, shaded (visible_surfaces.hpp,
+  /// lighting.hpp); the line drawing is then the selected lines of the same exact solution.
+  bool surfaces = false;
+  /// With surfaces: lift every visible polygon to exact 3D corners (the JSON needs them; the
+  /// fills of SVG, PDF and PNG do not).
+  bool surface_corners = true;
+  /// The visible polygons per face (JSON, Python); off: per colour group only (SVG, PDF, PNG).
+  bool surface_faces = true;
+  /// Shadows of the scene's lights on the visible surfaces, as exact polygons (shadows.hpp);
+  /// implies `surfaces` (the per-face route).
+  bool shadows = false;
+  /// Lines behind transparent bodies (a material with transparency > 0) as their own class,
+  /// seen through (see_through_lines.hpp; the per-face route). Off: they are hidden lines.
+  bool through_lines = true;
+  /// Only the part of the drawing in tile `index` (0-based) of a `count`-tile split of the
+  /// picture (picture_tiles.hpp; issue 14): segments outside it are not solved, every piece is
+  /// cut to the tile. The per-face route's line drawings only.
+  struct Tile {
+    int index = 0, count = 1;
+  };
+  std::optional<Tile> tile;
+  /// The segments without their visibility (each one placeholder piece): a merge of tiles
+  /// puts the tiles' pieces in (io/readers/tile_file.hpp). The per-face route's line drawings only.
+  bool segments_only = false;
+};
+
+struct RenderResult {
+  std::shared_ptr<const std::vector<Scene>> scenes;  // owns the bodies the segments point into
+  std::vector<const SceneBody*> bodies;               // all bodies, in drawing order
+  std::vector<DrawingBody> names;                     // their names and sources
+  Camera camera;
+  LineDrawing drawing;
+  /// With RenderOptions::surfaces: the visible polygons (merged per colour in `groups`), each
+  /// face's flat colour (per body, per face) and the colour of each group.
+  std::optional<VisibleSurfaces> surfaces;
+  std::vector<std::vector<Rgb>> face_colours;
+  std::vector<Rgb> group_colours;
+  /// With RenderMethod::Priority: the painter's list (polygons painted back to front) and the
+  /// seconds it took.
+  std::optional<PriorityResult> priority;
+  /// With RenderOptions::shadows: every visible face cut by the lights' shadows, and the colour
+  /// of each region (per shadow face, per region).
+  std::optional<Shadows> shadows;
+  std::vector<std::vector<Rgb>> shadow_colours;
+  /// With surfaces and a body whose material has a transparency: the regions of equal ordered
+  /// face lists and the final colour of each (transparency.hpp).
+  std::optional<TransparentPicture> transparent;
+  std::vector<Rgb> transparent_colours;
+  double priority_seconds = 0;
+  /// Pieces of lines seen through transparent faces (RenderOptions::through_lines).
+  std::size_t through_pieces = 0;
+  /// Remarks for the user ("file: body 'name' is open ...: drawn as a surface", eye in a face plane).
+  std::vector<std::string> notes;
+};
+
+/// A body a route cannot take, named: what() is "SOURCE: body 'NAME' REASON".
+class RenderBodyError : public std::runtime_error {
+ public:
+  RenderBodyError(int body, std::string name, std::string source, std::string reason);
+  int body() const { return body_; }
+  const std::string& name() const { return name_; }
+  const std::string& source() const { return source_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  int body_;
+  std::string name_, source_, reason_;
+};
+
+/// Renders loaded scenes (the first scene file's view unless options.view overrides it).
+/// Throws RenderBodyError, std::invalid_argument (bad view or options).
+RenderResult render(std::vector<Scene> scenes, const RenderOptions& options = {});
+
+/// The shaded regions of a surfaces render in the 2D stage's drawing coordinates (the same
+/// projector as the lines), one fill per region of one colour (a priority render: one fill per
+/// polygon of the list, in the order painted); also widens the plot's bounds.
+void add_surface_fills(Plot& plot, const RenderResult& result);
+
+/// The lights a render shades with: the scene's `lighting:`, else its `light:` as one
+/// directional light, else the default lights for the camera.
+Lighting render_lighting(const RenderResult& result);
+
+/// Where those lights are, exactly, in their order (the shadow pass's lights: bit i of a
+/// ShadowRegion's `lights` is light i here).
+std::vector<LightPlace> render_light_places(const RenderResult& result);
+
+/// The material of body b (its own, else the palette's default colour).
+Material body_material(const RenderResult& result, std::size_t body);
+
+/// The unit normal of face f in doubles, for shading: Newell's sum over the vertices' doubles
+/// (no exact plane needed), the exact plane's direction where the doubles cannot hold the
+/// numbers (coordinates beyond 2^500 or below 2^-500).
+std::array<double, 3> face_normal(const Polyhedron& p, std::size_t f);
+
+/// Every face's flat colour (per body, per face) for the side the viewer sees (facing from
+/// result.drawing; -1: the back side), with face_normal's normals; with `only`, just the faces
+/// it marks (the others black).
+std::vector<std::vector<Rgb>> flat_face_colours(const RenderResult& result, const std::vector<std::vector<char>>* only = nullptr);
+
+/// Loads mesh files (.off .obj .stl .ply) and scene files (.yaml .yml .json), then renders.
+/// Also throws InputError (file and line) for bad input.
+RenderResult render_files(const std::vector<std::string>& inputs, const RenderOptions& options = {});
+
+}  // namespace hlr

@@ -1,0 +1,78 @@
+// Scene files (YAML, or JSON, which yaml-cpp reads as YAML): bodies from mesh files, inline
+// vertices and faces, or boxes, each with its own list of transforms; a view (orthographic
+// direction or perspective eye/target/up) and an optional light vector. Every number keeps
+// its exact value. Unknown keys and wrong types are errors with line numbers.
+// Schema and examples: docs/scene-format.md.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "algorithms/shading/lighting.hpp"
+#include "io/readers/input_error.hpp"
+#include "kernel/polyhedron.hpp"
+#include "kernel/transform.hpp"
+
+namespace hlr {
+
+struct View {
+  enum class Type { Orthographic, Perspective };
+  Type type = Type::Orthographic;
+  /// Orthographic: from the scene toward the viewer (course notes default: +z).
+  Vector3 direction{Rational(0), Rational(0), Rational(1)};
+  /// Perspective: centre of projection, point looked at (unset: the scene's centre), up.
+  Point3 eye;
+  std::optional<Point3> target;
+  Vector3 up{Rational(0), Rational(1), Rational(0)};
+  bool up_given = false;
+};
+
+struct SceneBody {
+  std::string name;
+  std::string source;  // mesh path, or the scene file for inline bodies and boxes
+  Polyhedron body;     // world coordinates: the body's transforms applied
+  Matrix4 transform;   // composition of the body's transforms (row-vector convention)
+  std::vector<std::pair<std::string, Matrix4>> steps;  // each transform step: its key and matrix
+  std::vector<std::string> notes;  // e.g. how an inexact rotation angle was realised
+  /// Inline bodies: the faces in the order typed (before they were oriented outward); the
+  /// exam page shows them and says which were turned. Empty for meshes and boxes.
+  std::vector<Face> typed_faces;
+  /// The body's material for shaded surfaces (unset: the default, in the palette's colour).
+  std::optional<Material> material = std::nullopt;
+  /// OBJ texture coordinates and each face's corners' indices into them (aligned with the
+  /// face's vertices; empty: none), for `material.texture` (hlr raster).
+  std::vector<std::array<double, 2>> texcoords = {};
+  std::vector<std::vector<int>> face_texcoords = {};
+};
+
+struct Scene {
+  std::string file;
+  std::vector<SceneBody> bodies;
+  View view;
+  std::optional<Vector3> light;
+  /// Lights for shaded surfaces (`lighting:`); unset: `light` as a directional light, else the default.
+  std::optional<Lighting> lighting;
+  /// `ground: z = 0`: the axis (0 x, 1 y, 2 z) and the value; a scene gets a ground body too,
+  /// a problem keeps the plane only (the cast shadow on it).
+  std::optional<std::pair<int, Rational>> ground;
+};
+
+/// True for .yaml, .yml and .json files.
+bool is_scene_file(const std::string& path);
+
+/// Loads and checks a scene file. Throws InputError with file and line.
+Scene load_scene(const std::string& path);
+
+/// The same from the file's text; `path` names it in messages and anchors relative mesh paths.
+Scene load_scene_text(const std::string& text, const std::string& path);
+
+/// The same, for files that carry more than a scene (problem files): `extra_keys` are accepted
+/// at the top level (the caller reads them), and `bodies` may be missing unless required.
+Scene load_scene_text(const std::string& text, const std::string& path, const std::vector<std::string>& extra_keys,
+                      bool bodies_required);
+
+/// A scene of one body from a mesh file (name: the file's stem), default view.
+Scene scene_from_mesh(const std::string& path);
+
+}  // namespace hlr
