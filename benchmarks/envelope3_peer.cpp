@@ -1,4 +1,4 @@
-// The exact peer of `hlr render --surfaces` (issue 15's benchmark): CGAL's Envelope_3 on the
+// The exact peer of `hlr render --surfaces` (the visible-surfaces benchmark): CGAL's Envelope_3 on the
 // same triangles, with Epeck's exact numbers. Orthographic visibility along a view direction d
 // is invariant under the shear x' = x - (dx/dz)·z, y' = y - (dy/dz)·z, z' = z, which turns d
 // into the z axis, so the upper envelope of the sheared triangles along z is what a viewer at

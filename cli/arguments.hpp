@@ -32,7 +32,7 @@ ViewRequest parse_view_request(const std::string& view, const std::string& eye, 
 /// The output format: `format` when given, else from the output file's extension (case does
 /// not matter) looked up in `by_extension` ({".json", "json"}, ...), else `fallback` when there
 /// is no output file or no extension. An unknown extension is an error naming the file and the
-/// known extensions (issue 12: `-o x.pdf` must not write another format under that name).
+/// known extensions (`-o x.pdf` must not write another format under that name).
 std::string output_format(const std::string& format, const std::string& output,
                           const std::vector<std::pair<std::string, std::string>>& by_extension, const std::string& fallback);
 

@@ -1,4 +1,4 @@
-// The output options every drawing command shares (issue 13: `hlr render`, `hlr horizon`):
+// The output options every drawing command shares (`hlr render`, `hlr horizon`):
 // format by extension, hidden lines, dashes, page, scale, line weights, layers, specks, PNG
 // resolution; and the step from exact line drawings to the text or bytes written (the plotting
 // 2D stage, the page layout, the writers; or the exact JSON).

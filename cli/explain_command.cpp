@@ -1,4 +1,4 @@
-// `hlr explain PROBLEM`: a step-by-step exact solution of a problem file (issue 6), as
+// `hlr explain PROBLEM`: a step-by-step exact solution of a problem file, as
 // Markdown, one self-contained HTML page, or JSON with every value; English or Russian.
 #include <filesystem>
 #include <iostream>

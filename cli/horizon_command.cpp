@@ -1,5 +1,5 @@
 // `hlr horizon`: a surface y = f(x, z), from an expression or a CSV height grid, drawn by the
-// exact floating horizon (course notes section 24; issue 18), through the same 2D stage and
+// exact floating horizon (course notes section 24), through the same 2D stage and
 // writers as `hlr render`.
 #include <chrono>
 #include <cmath>

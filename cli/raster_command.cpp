@@ -1,6 +1,6 @@
 // `hlr raster [options] INPUT... -o out.png`: the course's image-space algorithms (z-buffer,
 // scan-line, Warnock, ray casting; notes 29-35) with the exact face at every pixel centre,
-// shaded flat, Gouraud or Phong (notes 36-39), antialiased by supersampling (seed 002), written
+// shaded flat, Gouraud or Phong (notes 36-39), antialiased by supersampling, written
 // as PNG; optionally the face-id buffer and the exact pixel grid (io/pipeline/raster.hpp). Every file
 // is written atomically.
 #include <iostream>

@@ -1,4 +1,4 @@
-// Roberts' body matrix (course notes, seed 003 section 27): [V] is 4 x n, column j holds the
+// Roberts' body matrix (course notes, section 27): [V] is 4 x n, column j holds the
 // plane (a_j, b_j, c_j, d_j) of face j, so that [x y z 1]·[V] gives one test value per face.
 // Signs are corrected so that an interior point (the average of the vertices) gives a
 // positive value for every column. A body transformed by [T] has [VT] = [T]^-1·[V].

@@ -8,14 +8,14 @@
 #include <iosfwd>
 #include <string>
 
+#include "kernel/error_bounds.hpp"
 #include "kernel/number.hpp"
 
 namespace hlr {
 
-/// Closed interval [lo, hi] of doubles that certainly contains an exact value.
-struct Bounds {
-  double lo = 0, hi = 0;
-};
+/// Closed interval [lo, hi] of doubles that certainly contains an exact value (the one
+/// interval type, kernel/error_bounds.hpp).
+using Bounds = Interval;
 
 /// Certified interval around a rational (tight: the two neighbouring doubles at worst).
 Bounds bounds_of(const Rational& q);

@@ -1,4 +1,4 @@
-// Small exact matrices for the course's homogeneous coordinates (seed 003, section 20: a point
+// Small exact matrices for the course's homogeneous coordinates (section 20: a point
 // is the row [x y z 1], a transform a 4x4 matrix, Roberts' body matrix 4 x n): rational
 // entries, row-major, indexed m(i, j), filled with `m << a, b, c, d` row by row. Kept free of
 // any linear-algebra library so that every header of the kernel stays light.

@@ -1,4 +1,4 @@
-// Exact 4x4 homogeneous transforms, row-vector convention (see transform.hpp; seed 003 §20).
+// Exact 4x4 homogeneous transforms, row-vector convention (see transform.hpp; course notes section 20).
 #include "kernel/transform.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // 4x4 homogeneous transforms over exact rationals, in the course notes' row-vector convention
-// (seed 003, section 20): a point transforms as [x y z 1]·M. Translation, scaling about a
+// (course notes section 20): a point transforms as [x y z 1]·M. Translation, scaling about a
 // centre, rotation about OX/OY/OZ about a centre, reflection, one/two/three-point perspective
 // (-1/C in the last column), composition and exact inverse.
 #pragma once

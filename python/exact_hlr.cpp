@@ -1,4 +1,4 @@
-// Python bindings (issue 11): `import exact_hlr`. The render pipeline of the library
+// Python bindings: `import exact_hlr`. The render pipeline of the library
 // (io/pipeline/render.hpp) with the exact drawing returned as Python objects whose coordinates and
 // parameters are fractions.Fraction; explain (exam mode) and Cyrus-Beck clipping too.
 #include <pybind11/pybind11.h>

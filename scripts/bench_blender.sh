@@ -22,7 +22,7 @@ runs=${RUNS:-3}
 } > "$OUT/blender.md"
 for mesh in "$@"; do
   ours=(); theirs=()
-  # Ours first, then Blender's: Blender's import churns gigabytes, and this VM hands out fresh
+  # Ours first, then Blender's: Blender's import churns gigabytes, and the machine hands out fresh
   # memory slowly for a while after (a run of ours right after one of Blender's took twice as long).
   for i in $(seq "$runs"); do
     s=$( { /usr/bin/time -f "%e" "$BUILD/hlr" render "$mesh" --view 1,1.3,1.7 --edges feature --crease 40 --hidden dashed \

@@ -1,5 +1,5 @@
 #!/bin/bash
-# The writers (issue 14: every stage on all cores): the 1M icosphere, every edge, view
+# The writers (every stage on all cores): the 1M icosphere, every edge, view
 # 1,1.3,1.7, whole process to each format (SVG, PDF, PNG at 150 dpi, DXF, exact JSON) with
 # --threads 1 and 2 in alternating pairs (see bench_threads.sh for why alternating). Reports
 # per format the median wall time, the output stage's median (--timings: the 2D stage and the

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The slow cases of issue 20, whole `hlr render` runs to SVG (wall time, GNU time): a prism on
+# The hard cases (extreme shapes), whole `hlr render` runs to SVG (wall time, GNU time): a prism on
 # a 10,000-gon (target under 1 s) and on a 32,768-gon (65,536 vertices), a non-convex 4,004-gon
 # star prism, 10,000 cubes with the eye inside the cloud against the orthographic view (target
 # within 3x; faces on one mesh, Roberts on 10,000 box bodies), a 200k-triangle torus with the
@@ -25,7 +25,7 @@ run() {  # label, args...
 }
 report="$OUT/hard_cases.md"
 {
-  echo "# hlr render: the hard cases of issue 20 ($(date -u +%Y-%m-%d), $(nproc) cores)"
+  echo "# hlr render: the hard cases ($(date -u +%Y-%m-%d), $(nproc) cores)"
   echo
   echo "| case | wall s | peak MB |"
   echo "|---|---|---|"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Speed of `hlr horizon` (issue 18): whole process to SVG for expression grids from 61 x 241 to
+# Speed of `hlr horizon`: whole process to SVG for expression grids from 61 x 241 to
 # 1,000 x 1,000 and the bundled heightmap, with peak memory. Usage: scripts/bench_horizon.sh
 # [BUILD_DIR] (default build). Writes BUILD/bench/horizon.md.
 set -euo pipefail

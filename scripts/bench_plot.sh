@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark of the plotting 2D stage (issue 13): its cost (exact clean-up, chaining, pen
+# Benchmark of the plotting 2D stage: its cost (exact clean-up, chaining, pen
 # order) against the whole render, on the 1M-triangle sphere with --edges all and on CGAL's
 # bunny00, fandisk and couplingdown (3/4 view with hidden lines); and what it achieves: strokes
 # against the Euler minimum, pen-up travel as chained, after greedy nearest neighbour and after

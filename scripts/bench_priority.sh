@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Priority-list benchmark (issue 19): whole `hlr render` runs to SVG with `--method priority`
+# Priority-list benchmark: whole `hlr render` runs to SVG with `--method priority`
 # against `--surfaces` (the exact visible-surface route), on the three-stick cycle, 3,200
 # random triangles (`gen_mesh triangles`), CGAL's fandisk, couplingdown and bunny00, and the
 # 100k icosphere; view 1,1.3,1.7 (the scene's own view for the sticks). Per run: wall time and

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Speed of `hlr raster` (issue 17): the four image-space algorithms on generated spheres and
+# Speed of `hlr raster`: the four image-space algorithms on generated spheres and
 # CGAL's meshes at 1024x1024, whole process and stages (--timings), and Whitted ray tracing of
 # the glass demo. Usage: scripts/bench_raster.sh [BUILD_DIR] (default build). Writes
 # BUILD/bench/raster.md.

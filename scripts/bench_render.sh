@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Render benchmark (issue 4): whole `hlr render` runs to SVG on CGAL's meshes (fandisk,
+# Render benchmark: whole `hlr render` runs to SVG on CGAL's meshes (fandisk,
 # couplingdown, bunny00, armadillo, refined_elephant) and generated spheres and tori of 10k,
 # 100k and 1M triangles, views 1,1.3,1.7 and 0,0,1, `--edges all` and `--edges feature
 # --crease 40`. Per run: wall time and peak memory of the process (GNU time), the stage times

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Shadows benchmark (issue 16): `hlr render --shadows` against `--surfaces` on CGAL's fandisk,
+# Shadows benchmark: `hlr render --shadows` against `--surfaces` on CGAL's fandisk,
 # couplingdown and bunny00 under the default light, view 1,1.3,1.7, and the shadows demo scene
 # (a directional and a point light). Per run: wall time and peak memory (GNU time), the
 # surfaces step and the shadows step with its views from the lights (--timings), and the faces

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Visible-surfaces benchmark (issue 15): whole `hlr render` runs to SVG, the line drawing alone
+# Visible-surfaces benchmark: whole `hlr render` runs to SVG, the line drawing alone
 # against `--surfaces` (and `--method weiler-atherton` on the small scene), on 3,200 random
 # triangles (edges about 0.1 in the unit cube, coordinates k/1024: `gen_mesh triangles`),
 # CGAL's fandisk, couplingdown and bunny00, and icospheres of 100k and 1M triangles; view

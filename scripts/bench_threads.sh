@@ -1,5 +1,5 @@
 #!/bin/bash
-# Thread scaling (issue 14): the 1M icosphere rendered with --threads 1 and --threads 2 in
+# Thread scaling: the 1M icosphere rendered with --threads 1 and --threads 2 in
 # alternating pairs (one pair 1 then 2, the next 2 then 1, so that neither count always runs
 # after the other), every edge and feature lines, whole process to SVG. Reports per job the
 # medians, the ratio of the medians, the median of the pairs' ratios, and each stage's ratio

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the build into a temporary prefix, then builds and runs examples/consumer against
-# the installed ExactHLR package, outside the source tree (issue 11).
+# the installed ExactHLR package, outside the source tree.
 #   scripts/test_consumer.sh [BUILD_DIR]
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

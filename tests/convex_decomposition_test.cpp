@@ -1,7 +1,7 @@
 // Convex decomposition (algorithms/solids/convex_decomposition.hpp, course notes section 23) and
 // Roberts' algorithm through the pieces (algorithms/hlr/roberts_pieces.hpp): pieces convex and
 // exactly as large as the body, both methods; the pieces route draws exactly what the
-// per-face route draws; the cut-plane trap of issue 4.
+// per-face route draws; the cut-plane trap.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -81,7 +81,7 @@ TEST(ConvexDecomposition, PiecesAreConvexAndFillTheBodyExactly) {
   EXPECT_THROW(convex_decomposition(load_mesh(kData + "/bad/open_box.off")), std::invalid_argument);
 }
 
-// Issue 4: both routes give the same drawing for closed solids, edge by edge, exactly.
+// Both routes give the same drawing for closed solids, edge by edge, exactly.
 TEST(ConvexDecomposition, PiecesRouteDrawsWhatThePerFaceRouteDraws) {
   std::vector<Camera> cams = {make_orthographic(Vector3(1, Q("1.3"), Q("1.7"))), make_orthographic(Vector3(0, 0, 1)),
                               make_orthographic(Vector3(1, 0, 0)), make_orthographic(Vector3(0, 1, 0)),

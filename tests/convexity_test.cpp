@@ -124,7 +124,7 @@ TEST(ConvexityHull, SameAsAllPairsWhereHullsAreHard) {
 namespace hlr {
 namespace {
 
-// The tree-pruned test gives the plain test's verdict and witnesses (issue 13: `hlr info` on
+// The tree-pruned test gives the plain test's verdict and witnesses (`hlr info` on
 // 100k faces in seconds): every data mesh, CGAL's meshes when extracted, and random convex
 // polytopes with one vertex pushed in or out.
 TEST(ConvexityTree, SameVerdictAndWitnessesAsAllPairs) {

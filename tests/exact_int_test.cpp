@@ -1,4 +1,4 @@
-// The fixed-width exact paths at their bounds (kernel/exact_int.hpp, issue 12): the same scene
+// The fixed-width exact paths at their bounds (kernel/exact_int.hpp): the same scene
 // just inside and just outside each bound gives exactly the same drawing (every path exact),
 // and the split-parameter filter never decides on values beyond the double range.
 #include <gtest/gtest.h>

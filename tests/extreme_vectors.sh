@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Vectors are directions (issue 20): view, eye and up vectors of any size draw what the same
+# Vectors are directions: view, eye and up vectors of any size draw what the same
 # direction of ordinary size draws, with both methods, and nothing is ever NaN or inf. Each
 # case of the issue: --view 1e-400,1e-400,1e-400 / 1e-170,... / 1e155,... / 1e300,0,0,
 # --up 1e-400,1e-400,0, --eye 1e160,1e160,1e160 (no NaN), a vertex 1e-40 in front of the eye

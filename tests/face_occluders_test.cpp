@@ -1,4 +1,4 @@
-// The per-face route (algorithms/hlr/face_occluders.hpp, issue 4): exact pieces on hand-made
+// The per-face route (algorithms/hlr/face_occluders.hpp): exact pieces on hand-made
 // scenes for each degenerate case by name (axis views, a ray leaving a solid exactly through
 // an edge, holes, open surfaces, intersection lines, crease thresholds) and the line kinds.
 #include <gtest/gtest.h>

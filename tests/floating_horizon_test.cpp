@@ -1,4 +1,4 @@
-// The exact floating horizon (issue 18, course notes section 24) against the general renderer
+// The exact floating horizon (course notes section 24) against the general renderer
 // on the same triangulated surface: the visible pieces of every cut must be identical, exactly,
 // for surfaces with peaks, saddles and flat regions, in several views.
 #include <gtest/gtest.h>

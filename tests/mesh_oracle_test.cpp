@@ -1,4 +1,4 @@
-// An independent brute-force oracle for the per-face route (issue 4) on real meshes: for sample
+// An independent brute-force oracle for the per-face route on real meshes: for sample
 // points of every drawn piece (quarter points and midpoint), cast the exact sight ray with
 // CGAL's exact kernel (Epeck) through an AABB tree, cut it at every point where it meets the
 // surface, and ask CGAL's Side_of_triangle_mesh whether a point strictly between two such

@@ -1,4 +1,4 @@
-// Error messages of exam mode in Russian (issue 12): every error a problem file can cause is
+// Error messages of exam mode in Russian: every error a problem file can cause is
 // translated, nested parts too, with no English word outside the file format's own keys; and
 // every English message the sources throw on that path has a catalogue entry (so a reworded
 // message cannot silently fall back to English).

@@ -1,4 +1,4 @@
-// The parallel loop and the process-wide thread limit (algorithms/support/parallel.hpp; issue 14):
+// The parallel loop and the process-wide thread limit (algorithms/support/parallel.hpp):
 // `--threads 1` must mean one thread for every stage, sorts and readers included.
 #include <gtest/gtest.h>
 

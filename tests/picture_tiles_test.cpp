@@ -1,4 +1,4 @@
-// Tiles of the picture (algorithms/picture/picture_tiles.hpp; issue 14): every point of every segment
+// Tiles of the picture (algorithms/picture/picture_tiles.hpp): every point of every segment
 // belongs to exactly one tile, decided exactly, and the double filters never contradict it.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Output formats of `hlr render` read back by real readers (issue 13): the PDF by pdfinfo and
+# Output formats of `hlr render` read back by real readers: the PDF by pdfinfo and
 # pdftoppm, the DXF's layers and linetypes, the PNG preview against rsvg-convert's rendering of
 # the SVG (pixel agreement within antialiasing), extensions case-insensitive, a sheet of views.
 #   tests/plot_formats.sh HLR DATA_DIR

@@ -81,7 +81,7 @@ TEST(Polyhedron, DegenerateFaces) {
 }
 
 // A symmetric bow-tie quad: its Newell normal is zero (the two lobes' areas cancel), but it is
-// not degenerate: it crosses itself (issue 20: it was reported "zero area" and hid nothing).
+// not degenerate: it crosses itself (it was reported "zero area" and hid nothing).
 TEST(Polyhedron, SymmetricBowTieIsSelfIntersecting) {
   std::vector<Point3> vs = {Point3(0, 0, 0), Point3(1, 1, 0), Point3(1, 0, 0), Point3(0, 1, 0)};
   Polyhedron p(vs, {{0, 1, 2, 3}});

@@ -1,4 +1,4 @@
-// The priority list (algorithms/surfaces/priority_list.*, issue 19), checked by an independent exact
+// The priority list (algorithms/surfaces/priority_list.*), checked by an independent exact
 // oracle: at random picture points, the last polygon of the painted list that contains the
 // point must belong to the face the sight ray through the point meets first, found by casting
 // the ray in rationals against every face polygon of the scene (its own ray, its own Newell

@@ -1,4 +1,4 @@
-// The image-space algorithms (issue 17; course notes 29-35): z-buffer, scan-line, Warnock and
+// The image-space algorithms (course notes 29-35): z-buffer, scan-line, Warnock and
 // ray casting give the same face at every pixel centre, that face is the one an independent
 // exact ray cast finds (every face of the scene, its own planes and point-in-polygon:
 // face_oracle.hpp; nearest, then toward the viewer, then the lower face number), and the vector

@@ -1,4 +1,4 @@
-// Whitted ray tracing (algorithms/raster/ray_tracing.*, issue 17; course notes 43-45): total internal
+// Whitted ray tracing (algorithms/raster/ray_tracing.*; course notes 43-45): total internal
 // reflection decided exactly at the critical angle, refracted directions that satisfy Snell's
 // law in squared form, a mirror that shows exactly the colour of what it reflects, a glass slab
 // that shifts a ray by the amount worked by hand, and the raster pipeline end to end (the four

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Golden-file test of `hlr render` output (issue 11): the demo scene and three CGAL meshes
+# Golden-file test of `hlr render` output: the demo scene and three CGAL meshes
 # (fandisk, couplingdown, cross), each as SVG and JSON, orthographic and perspective, both
 # methods where they apply. The outputs must stay byte-identical across refactorings: the
 # demo's files are compared whole (tests/golden/render/*.svg|json), the meshes' by SHA-256

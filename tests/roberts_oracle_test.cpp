@@ -2,7 +2,7 @@
 // of every piece against every body's face planes, sharing no code with the algorithm (it
 // builds its own planes from the triangles and solves its own one-variable inequalities).
 // Random scenes of random convex bodies (convex hulls of random rational points, built with
-// CGAL), orthographic and perspective: zero disagreements. The per-face route (issue 4) runs on
+// CGAL), orthographic and perspective: zero disagreements. The per-face route runs on
 // the same scenes: the same oracle, and exactly the same pieces for every edge.
 #include <gtest/gtest.h>
 
@@ -50,7 +50,7 @@ Polyhedron random_hull(std::mt19937& rng, int cx, int cy, int cz) {
   return Polyhedron(vs, faces);
 }
 
-// Roberts' route and the per-face route (issue 4) on the same convex scene: the oracle checks
+// Roberts' route and the per-face route on the same convex scene: the oracle checks
 // both, and every edge must come out in exactly the same pieces.
 void check_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, EdgeSelection edges, Tally& tally) {
   OracleScene scene(bodies);

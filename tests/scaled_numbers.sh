@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Scaling a scene exactly changes nothing in its drawing (issue 12): a tetrahedron (and the eye)
+# Scaling a scene exactly changes nothing in its drawing: a tetrahedron (and the eye)
 # scaled by 1e300, 1e-400 and a 30-digit integer draws exactly the unit tetrahedron's picture,
 # with every method, orthographic and perspective: the same SVG, and in the JSON the same
 # pieces (parameters and visibility). No output may hold NaN or inf.

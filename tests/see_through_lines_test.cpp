@@ -1,4 +1,4 @@
-// Lines seen through transparent faces (algorithms/hlr/see_through_lines.*, issue 16, course notes
+// Lines seen through transparent faces (algorithms/hlr/see_through_lines.*, course notes
 // section 41): the refinement of the pieces is exact (named cases by hand), and an independent
 // exact oracle agrees on every piece: at random exact points of it, the sight ray toward the
 // eye crosses no face (visible), only faces of see-through bodies (through), or a face of an

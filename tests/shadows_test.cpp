@@ -1,4 +1,4 @@
-// Shadows as exact polygons (algorithms/surfaces/shadows.*, issue 16), checked by an independent exact
+// Shadows as exact polygons (algorithms/surfaces/shadows.*), checked by an independent exact
 // oracle (face_oracle.hpp): random points of every lit and every shadow polygon, taken on the
 // face in exact 3D, are cast toward the light (along the direction of a directional light, on
 // the open segment to a point light) against every face polygon of the scene in rationals. A

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Output does not depend on the thread count (issue 14): the same bytes with --threads 1, 2
+# Output does not depend on the thread count: the same bytes with --threads 1, 2
 # and 8 for line drawings (SVG with hidden lines, exact JSON, DXF with cut dashes, PDF) of a sphere, a cloud of
 # interpenetrating cubes and 400 random triangles (intersection lines, many cuts), the
 # visible surfaces (--surfaces), a raster (PNG and face ids) and a horizon (SVG and JSON).

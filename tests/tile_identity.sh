@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Tiles (issue 14): `hlr render --tile I/N` on every tile, then `hlr merge`, gives the untiled
+# Tiles: `hlr render --tile I/N` on every tile, then `hlr merge`, gives the untiled
 # drawing byte for byte (SVG with hidden lines; JSON with only the visibility's work counters
 # blanked: those are the tiles' sums) on 1, 4 and 9 tiles, for the demo scene (orthographic
 # and perspective with the eye among the bodies), a sphere with every edge, a grid of cubes

@@ -1,4 +1,4 @@
-// The torture suite (issues 12 and 20): seeded random scenes in the hard places, every piece of
+// The torture suite: seeded random scenes in the hard places, every piece of
 // every route checked by exact ray casting (ray_oracle.hpp), and the routes compared with each
 // other. The test command runs a few hundred scenes; scripts/torture.sh runs thousands
 // (HLR_TORTURE_SCENES, HLR_TORTURE_SEED).
@@ -241,7 +241,7 @@ TEST(Torture, DegenerateFiles) {
 
 namespace {
 
-// One mesh made of disjoint boxes (issue 20's families): some components inside out, some
+// One mesh made of disjoint boxes (the hard families): some components inside out, some
 // faces split into two triangles with a zero-area triangle on the seam, sometimes a bow-tie
 // face. The drawing through the render pipeline must agree with exact ray casting against the
 // clean boxes; a bow-tie must be refused.

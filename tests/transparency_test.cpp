@@ -1,4 +1,4 @@
-// Transparency (algorithms/surfaces/transparency.*, issue 16): the regions of equal face lists are exact
+// Transparency (algorithms/surfaces/transparency.*): the regions of equal face lists are exact
 // (two layers: three regions with their lists and exact areas), and the colours follow the
 // notes' models exactly: with ambient light only (ka = 1, kd = ks = 0, white light) a face's
 // colour is its material colour, so the expected colours are written down by hand: linear

@@ -1,4 +1,4 @@
-// Visible surfaces as exact polygons (algorithms/surfaces/visible_surfaces.*, issue 15), checked by an
+// Visible surfaces as exact polygons (algorithms/surfaces/visible_surfaces.*), checked by an
 // independent exact oracle that shares no code with the route: random points on the faces,
 // each cast toward the viewer against every face polygon of the scene in rationals (plane,
 // parameter, point in polygon in the face's dominant plane). A point that nothing strictly

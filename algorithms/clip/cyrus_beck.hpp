@@ -1,4 +1,4 @@
-// 3D Cyrus-Beck clipping of a segment against any convex polyhedron (course notes, seed 003
+// 3D Cyrus-Beck clipping of a segment against any convex polyhedron (course notes
 // section 22), exact. Inner normals come from the clipper's sign-corrected body matrix; for
 // each face i, with W = P1 - f_i (f_i on the face) and D = P2 - P1, the segment's points
 // P(t) = P1 + t·D satisfy W·n + t·D·n >= 0 inside. D·n > 0 gives a lower limit

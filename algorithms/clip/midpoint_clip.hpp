@@ -1,4 +1,4 @@
-// 3D clipping by midpoint subdivision (course notes, seed 003 section 21) against the notes'
+// 3D clipping by midpoint subdivision (course notes, section 21) against the notes'
 // two clippers: a box (6-bit outcodes: left, right, below, above, near, far) and the truncated
 // viewing pyramid (the notes' test functions with coefficients alpha1..delta2). Approximate by
 // design: every midpoint is computed exactly, every reported end is exactly inside the clipper,

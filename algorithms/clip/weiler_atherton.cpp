@@ -247,7 +247,7 @@ class Wa {
       double x = q[0].get_d(), y = q[1].get_d();
       b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x), std::max(b[3], y)};
     }
-    double pad = 1e-9 * std::max({std::fabs(b[0]), std::fabs(b[1]), std::fabs(b[2]), std::fabs(b[3]), 1e-300});
+    double pad = box_pad({b[0], b[1], b[2], b[3]});
     return {b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad};
   }
 

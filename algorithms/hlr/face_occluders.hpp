@@ -1,5 +1,5 @@
-// Hidden lines of arbitrary meshes through per-face occluders (issue 4; course notes
-// "Visibility semantics", seed 003 sections 26-28 for the inequalities). Every face is split
+// Hidden lines of arbitrary meshes through per-face occluders (course notes
+// "Visibility semantics", sections 26-28 for the inequalities). Every face is split
 // into triangles; a triangle T facing the viewer and the sight rays behind it bound a convex
 // region (its "sight prism": behind T's plane and inside the three planes through T's sides
 // that contain the view direction, or the eye). Roberts' inequalities apply to it unchanged:

@@ -1,4 +1,4 @@
-// Intersection lines (issue 4; course notes section 28, "penetration lines"): where two faces
+// Intersection lines (course notes section 28, "penetration lines"): where two faces
 // of different bodies, or two non-adjacent faces of one body, cross, the drawing gets the
 // segment they share. Exact: the segment of two triangles is built from the signs and values
 // of their vertices against each other's plane in rationals. Coplanar (touching) triangles and

@@ -1,4 +1,4 @@
-// Roberts' hidden-line algorithm for convex polyhedra (course notes, seed 003 sections 26-28),
+// Roberts' hidden-line algorithm for convex polyhedra (course notes, sections 26-28),
 // exact. Stage 0: sign-corrected body matrices. Stage 1: non-facing faces from the viewpoint
 // (E·[V] < 0, zero: edge-on) and self-hidden edges (both faces non-facing). Stage 2: every
 // other edge against every other body: the hidden parameter interval from the inequalities

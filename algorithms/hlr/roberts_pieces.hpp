@@ -1,9 +1,9 @@
-// Roberts' algorithm for non-convex solids through their convex pieces (course notes, seed 003
+// Roberts' algorithm for non-convex solids through their convex pieces (course notes
 // sections 23 and 26-28): each non-convex body is split into convex pieces
 // (convex_decomposition.hpp) and every original edge is tested against every piece with the
 // notes' inequalities (hidden_interval). Only the original edges are drawn, never cut edges.
 //
-// The trap (issue 4): points on a cut face lie inside the union, yet on the boundary of both
+// The trap: points on a cut face lie inside the union, yet on the boundary of both
 // pieces, so a sight ray running exactly along a cut plane meets no piece's interior and the
 // strict inequalities would call it visible. Such rays are inside the solid. So for every pair
 // of pieces with opposite faces in one cut plane seen edge-on, the common part of the two faces

@@ -1,4 +1,4 @@
-// Lines seen through transparent faces (course notes section 41, seed 000: what lies behind a
+// Lines seen through transparent faces (course notes section 41, what lies behind a
 // transparent face stays in the picture). A piece of a line hidden in the full drawing but not
 // hidden once the see-through bodies hide nothing is seen only through transparent faces: it
 // becomes its own class (Piece::through), drawn thin and grey by the writers, apart from the

@@ -1,4 +1,4 @@
-// The floating horizon, exactly (course notes section 24; issue 18): a surface y = f(x, z)
+// The floating horizon, exactly (course notes section 24): a surface y = f(x, z)
 // given on a grid is cut by the planes z = z_j; the cuts are drawn nearest to the viewer first,
 // and a point of the next cut is visible where it lies on or above the upper horizon, or on or
 // below the lower horizon, of everything in front of it. The horizons are exact piecewise-

@@ -1,5 +1,5 @@
 // The classic floating horizon of the course notes (section 24), for comparison with the
-// exact one (issue 18): the upper and lower horizons are arrays over picture columns dx apart;
+// exact one: the upper and lower horizons are arrays over picture columns dx apart;
 // each cut is sampled at the columns (linear interpolation between its samples), a column is
 // visible when the cut is above the upper or below the lower horizon there, and between two
 // columns whose visibility differs the notes' crossing formula (intersection of the cut's and

@@ -1,4 +1,4 @@
-// The exact floating horizon on certified doubles (course notes section 24; issue 18): the same
+// The exact floating horizon on certified doubles (course notes section 24): the same
 // sweep as floating_horizon_exact() (floating_horizon.hpp), decision for decision, so the same
 // result, but every decision (the order of two abscissas, which of two lines is higher at an
 // abscissa, the turn of three points, whether two lines are one) is the sign of an exact

@@ -1,4 +1,4 @@
-// Facing and non-facing faces (course notes, seed 003 section 27, Stage 1: a face is
+// Facing and non-facing faces (course notes, section 27, Stage 1: a face is
 // non-facing, "нелицевая", when the viewer is on the inner side of its plane). The one
 // definition used by every route: the sign of the face's outward plane at the homogeneous
 // viewpoint g = [v 0] (orthographic, v toward the viewer) or [E 1] (perspective), i.e. of

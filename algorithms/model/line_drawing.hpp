@@ -1,4 +1,4 @@
-// The exact line drawing every hidden-line route returns (course notes, seed 003 sections
+// The exact line drawing every hidden-line route returns (course notes, sections
 // 26-28 for the words: facing and non-facing faces, self-hidden edges, intersection lines).
 // A drawing is a list of segments (a body's edges and the intersection lines where bodies
 // cross), each cut into pieces [t0, t1] of its parameter, every piece visible or hidden,

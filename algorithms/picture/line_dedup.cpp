@@ -177,7 +177,7 @@ class Dedup {
     });
     blind_ = std::find(finite.begin(), finite.end(), 0) != finite.end();
     const double m = *std::max_element(most.begin(), most.end());
-    delta_ = blind_ ? 0 : 1e-9 * std::max(m, 1e-300);
+    delta_ = blind_ ? 0 : box_pad({m});
   }
 
   // Ends that are the same mesh vertex, or the same boundary between two pieces of a segment,

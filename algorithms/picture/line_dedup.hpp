@@ -1,4 +1,4 @@
-// The exact clean-up of the 2D stage (course notes section 20, the projection; issue 13):
+// The exact clean-up of the 2D stage (course notes section 20, the projection):
 // which drawn piece ends are the same point of the picture, which pieces are seen end-on (a
 // point), and which pieces lie on one line of the picture and overlap (an axis view draws the
 // front and the back edge of a box on one line; touching bodies share edges). Every such

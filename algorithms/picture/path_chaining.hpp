@@ -1,4 +1,4 @@
-// Chaining the picture's edges into strokes (issue 13; vpype's linemerge, decided on exact
+// Chaining the picture's edges into strokes (vpype's linemerge, decided on exact
 // points): edges that meet end to end at the same point of the picture (line_dedup.hpp
 // identifies the points exactly) become one polyline. The fewest strokes that draw a graph's
 // edges once each are max(1, odd-degree vertices / 2) per connected component (Euler); this

@@ -28,7 +28,7 @@ inline PictureBox picture_box(const std::vector<Exact2>& pts) {
       b.lo[k] = std::min(b.lo[k], x), b.hi[k] = std::max(b.hi[k], x);
       big = std::max(big, std::fabs(x));
     }
-  double pad = 1e-9 * std::max(big, 1e-300);
+  double pad = box_pad({big});
   for (int k = 0; k < 2; ++k) b.lo[k] -= pad, b.hi[k] += pad;
   return b;
 }

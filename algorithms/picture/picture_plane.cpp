@@ -7,88 +7,11 @@
 namespace hlr {
 namespace {
 
-// Drawing coordinates may be computed in doubles from values in this range (or zero): no
-// product of two of them under- or overflows. Decides only the route, never visibility.
-bool comfortable(double v) { return v == 0 || (std::fabs(v) > 0x1p-400 && std::fabs(v) < 0x1p400); }
-
 Rational dot3(const Rational& x, const Rational& y, const Rational& z, const Vector3& a) {
   return x * a.x() + y * a.y() + z * a.z();
 }
 
 }  // namespace
-
-int orient2d(const Exact2& a, const Exact2& b, const Exact2& c) {
-  // The double filter of docs/design.md ("Orientation of three points"): with every non-zero
-  // coordinate's double (mpq_get_d, relative error below u = 2^-52) in [2^-400, 2^400], the
-  // doubles' determinant is within 64·u·Mx·My of the exact one.
-  double v[6];
-  const Rational* q[6] = {&a[0], &a[1], &b[0], &b[1], &c[0], &c[1]};
-  bool ok = true;
-  for (int k = 0; k < 6; ++k) {
-    v[k] = q[k]->get_d();
-    const double m = std::fabs(v[k]);
-    ok = ok && (m == 0 ? sgn(*q[k]) == 0 : (m >= 0x1p-400 && m <= 0x1p400));
-  }
-  if (ok) {
-    const double det = (v[2] - v[0]) * (v[5] - v[1]) - (v[3] - v[1]) * (v[4] - v[0]);
-    const double mx = std::max({std::fabs(v[0]), std::fabs(v[2]), std::fabs(v[4])});
-    const double my = std::max({std::fabs(v[1]), std::fabs(v[3]), std::fabs(v[5])});
-    const double bound = 64 * 0x1p-52 * mx * my;
-    if (det > bound) return 1;
-    if (det < -bound) return -1;
-  }
-  return orient2d_exact(a, b, c);
-}
-
-namespace {
-
-// u = q - p and v = d - c as numerators over positive denominators (products of the two
-// denominators, no gcd), into the caller's thread-local scratch.
-struct Differences {
-  mpz_class un[2], ud[2], vn[2], vd[2], l, r, t;
-  void set(const Exact2& p, const Exact2& q, const Exact2& c, const Exact2& d) {
-    auto diff = [](const Rational& x, const Rational& y, mpz_class& n, mpz_class& den) {  // x - y
-      mpz_mul(n.get_mpz_t(), x.get_num_mpz_t(), y.get_den_mpz_t());
-      mpz_submul(n.get_mpz_t(), y.get_num_mpz_t(), x.get_den_mpz_t());
-      mpz_mul(den.get_mpz_t(), x.get_den_mpz_t(), y.get_den_mpz_t());
-    };
-    for (int k = 0; k < 2; ++k) {
-      diff(q[k], p[k], un[k], ud[k]);
-      diff(d[k], c[k], vn[k], vd[k]);
-    }
-  }
-  // l = un[i]·vn[j]·ud[1-i]·vd[1-j] (the term of u_i·v_j over the common denominator).
-  void term(mpz_class& out, int i, int j) {
-    mpz_mul(out.get_mpz_t(), un[i].get_mpz_t(), vn[j].get_mpz_t());
-    mpz_mul(t.get_mpz_t(), ud[1 - i].get_mpz_t(), vd[1 - j].get_mpz_t());
-    mpz_mul(out.get_mpz_t(), out.get_mpz_t(), t.get_mpz_t());
-  }
-};
-
-}  // namespace
-
-// The exact sign without canonical rationals (no gcd): with u = b - a and v = c - a written
-// as n/d (d > 0), sign(ux·vy - uy·vx) = sign(ux_n·vy_n·uy_d·vx_d - uy_n·vx_n·ux_d·vy_d).
-int orient2d_exact(const Exact2& a, const Exact2& b, const Exact2& c) {
-  thread_local Differences w;
-  w.set(a, b, a, c);
-  const int sl = sgn(w.un[0]) * sgn(w.vn[1]), sr = sgn(w.un[1]) * sgn(w.vn[0]);
-  if (sl != sr) return sl > sr ? 1 : -1;  // the products' signs decide (denominators > 0)
-  if (sl == 0) return 0;
-  w.term(w.l, 0, 1);
-  w.term(w.r, 1, 0);
-  const int s = cmp(w.l, w.r);
-  return s > 0 ? 1 : (s < 0 ? -1 : 0);
-}
-
-int dot_sign_exact(const Exact2& p, const Exact2& q, const Exact2& a, const Exact2& b) {
-  thread_local Differences w;
-  w.set(p, q, a, b);
-  w.term(w.l, 0, 0);
-  w.term(w.r, 1, 1);
-  w.l += w.r;
-  return sgn(w.l);
-}
 
 PicturePlane::PicturePlane(const Camera& c) : persp_(c.perspective), e_(c.eye) {
   Vector3 v = c.perspective ? Vector3(c.eye - c.target) : c.direction;
@@ -185,11 +108,11 @@ PictureToDrawing::PictureToDrawing(const PicturePlane& pp, const DrawingFrame& f
   fx_ = persp_ ? std::sqrt(dd / rr) : sc / std::sqrt(rr);
   fy_ = persp_ ? std::sqrt(dd / uu) : sc / std::sqrt(uu);
   crd_ = to_double(cr_), cud_ = to_double(cu_);
-  fast_ = comfortable(fx_) && comfortable(fy_) && fx_ != 0 && fy_ != 0 && comfortable(crd_) && comfortable(cud_);
+  fast_ = in_filter_range(fx_) && in_filter_range(fy_) && fx_ != 0 && fy_ != 0 && in_filter_range(crd_) && in_filter_range(cud_);
 }
 
 std::array<double, 2> PictureToDrawing::operator()(const std::array<double, 2>& q) const {
-  if (fast_ && comfortable(q[0]) && comfortable(q[1])) return {(q[0] - crd_) * fx_, (q[1] - cud_) * fy_};
+  if (fast_ && in_filter_range(q[0]) && in_filter_range(q[1])) return {(q[0] - crd_) * fx_, (q[1] - cud_) * fy_};
   return (*this)(Exact2{Rational(q[0]), Rational(q[1])});  // the doubles' exact values, the exact route
 }
 
@@ -198,7 +121,7 @@ std::array<double, 2> PictureToDrawing::operator()(const Exact2& q) const {
   // when every value is far from overflow and underflow; otherwise the exact route below.
   if (fast_) {
     const double x = q[0].get_d(), y = q[1].get_d();
-    if (comfortable(x) && comfortable(y)) return {(x - crd_) * fx_, (y - cud_) * fy_};
+    if (in_filter_range(x) && in_filter_range(y)) return {(x - crd_) * fx_, (y - cud_) * fy_};
   }
   // sign(v)·sqrt(v² / w) keeps any exact magnitude away from double overflow until the end.
   auto scaled = [](const Rational& v, const Rational& w) {

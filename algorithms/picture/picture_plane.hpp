@@ -11,18 +11,9 @@
 
 #include "algorithms/model/camera.hpp"
 #include "kernel/geometry.hpp"
+#include "kernel/predicates_2d.hpp"
 
 namespace hlr {
-
-/// An exact point of the picture (x along r, y along u).
-using Exact2 = std::array<Rational, 2>;
-
-/// Orientation of c against the line a -> b: +1 left, -1 right, 0 on it.
-int orient2d(const Exact2& a, const Exact2& b, const Exact2& c);
-/// The same without the double filter (exact integers, no gcd).
-int orient2d_exact(const Exact2& a, const Exact2& b, const Exact2& c);
-/// Sign of (q - p)·(b - a), exact (integers, no gcd).
-int dot_sign_exact(const Exact2& p, const Exact2& q, const Exact2& a, const Exact2& b);
 
 /// A value linear in the picture point: c0 + cx·x + cy·y (exact).
 struct PictureLinear {

@@ -1,4 +1,4 @@
-// Tiles of the picture (issue 14: one drawing on many machines; course notes section 20 for the
+// Tiles of the picture (one drawing on many machines; course notes section 20 for the
 // projection, 21-22 for clipping by half-planes): the picture is split into a grid of tiles by
 // exact vertical and horizontal lines; each point of a segment belongs to exactly one tile, so
 // a segment's parameter range [0, 1] splits into the tiles' exact intervals. A tile's drawing is

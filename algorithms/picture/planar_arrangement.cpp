@@ -15,8 +15,6 @@
 namespace hlr {
 namespace {
 
-constexpr double kU = 0x1p-52;  // relative error of a rational's double (mpq_get_d truncates)
-
 // Exact signs over points with doubles beside them. The doubles are trusted only when every
 // non-zero one lies in [2^-400, 2^400] (then products of two do not underflow or overflow).
 class Signs {
@@ -24,31 +22,18 @@ class Signs {
   Signs(const std::vector<Exact2>& p, const std::vector<std::array<double, 2>>& a, bool filter)
       : p_(p), a_(a), filter_(filter) {}
 
-  // Orientation of k against i -> j. Filter: each double is within kU·|x| of its value; the
-  // determinant of the doubles is then within 64·kU·Mx·My of the exact one (Mx, My: largest
-  // |x|, |y| of the three points), rounding included (design.md).
+  // Orientation of k against i -> j: the one filter of kernel/predicates_2d.hpp, then exact.
   int orient(std::uint32_t i, std::uint32_t j, std::uint32_t k, std::size_t* exact = nullptr) const {
-    if (filter_) {
-      const auto &a = a_[i], &b = a_[j], &c = a_[k];
-      double det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-      double mx = std::max({std::fabs(a[0]), std::fabs(b[0]), std::fabs(c[0])});
-      double my = std::max({std::fabs(a[1]), std::fabs(b[1]), std::fabs(c[1])});
-      double bound = 64 * kU * mx * my;
-      if (det > bound) return 1;
-      if (det < -bound) return -1;
-    }
+    if (filter_)
+      if (const int s = orient2d_filter(a_[i], a_[j], a_[k])) return s;
     if (exact) ++*exact;
     return orient2d(p_[i], p_[j], p_[k]);
   }
 
-  // Sign of coordinate `ax` of j minus that of i (filter: the difference of doubles is within
-  // 4·kU·(|xi| + |xj|) of the exact one).
+  // Sign of coordinate `ax` of j minus that of i (the comparison filter, then exact).
   int cmp(std::uint32_t i, std::uint32_t j, int ax) const {
-    if (filter_) {
-      double x = a_[i][ax], y = a_[j][ax], d = y - x, bound = 4 * kU * (std::fabs(x) + std::fabs(y));
-      if (d > bound) return 1;
-      if (d < -bound) return -1;
-    }
+    if (filter_)
+      if (const int s = compare_filter(a_[i][ax], a_[j][ax])) return s;
     return sgn(p_[j][ax] - p_[i][ax]);
   }
 
@@ -62,11 +47,7 @@ class Signs {
 // [2^-400, 2^400] (an underflowed 0 or an overflowed infinity turns every filter off).
 bool filter_usable(const std::vector<Exact2>& pts, const std::vector<std::array<double, 2>>& a) {
   for (std::size_t i = 0; i < a.size(); ++i)
-    for (int k = 0; k < 2; ++k) {
-      double x = a[i][k];
-      if ((x == 0) != (sgn(pts[i][k]) == 0)) return false;
-      if (x != 0 && !(std::fabs(x) >= 0x1p-400 && std::fabs(x) <= 0x1p400)) return false;
-    }
+    if (!hlr::filter_usable(pts[i], a[i])) return false;
   return true;
 }
 
@@ -113,7 +94,7 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> candidate_pairs(const std::
       x0 = std::min(x0, ap[p][0]), x1 = std::max(x1, ap[p][0]);
       y0 = std::min(y0, ap[p][1]), y1 = std::max(y1, ap[p][1]);
     }
-  const double pad = 1e-9 * std::max({std::fabs(x0), std::fabs(x1), std::fabs(y0), std::fabs(y1), 1e-300});
+  const double pad = box_pad({x0, x1, y0, y1});
   x0 -= pad, y0 -= pad, x1 += pad, y1 += pad;
   const int g = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(segs.size()))), 1, 2048);
   const double cw = (x1 - x0) / g, ch = (y1 - y0) / g;
@@ -351,7 +332,7 @@ int area_sign(const PlanarArrangement& arr, const std::vector<std::uint32_t>& ri
     sum += p - q;
     mag += std::fabs(p) + std::fabs(q);
   }
-  double bound = (16 + 2 * static_cast<double>(ring.size())) * kU * mag;
+  double bound = (16 + 2 * static_cast<double>(ring.size())) * kToDoubleError * mag;
   if (ok && sum > bound) return 1;
   if (ok && sum < -bound) return -1;
   return sgn(area2_of(arr, ring));
@@ -423,7 +404,7 @@ std::vector<LabelledRegion> merge_regions(const PlanarArrangement& a, const std:
       const auto& p = a.approx[a.origin[h]];
       b = {std::min(b[0], p[0]), std::min(b[1], p[1]), std::max(b[2], p[0]), std::max(b[3], p[1])};
     }
-    double pad = 1e-9 * std::max({std::fabs(b[0]), std::fabs(b[1]), std::fabs(b[2]), std::fabs(b[3]), 1e-300});
+    double pad = box_pad({b[0], b[1], b[2], b[3]});
     box[i] = {b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad};
   }
   for (Ring& hole : holes) {

@@ -1,4 +1,4 @@
-// Dashed lines as geometry (issue 13): a plotter draws what is in the file, not
+// Dashed lines as geometry: a plotter draws what is in the file, not
 // `stroke-dasharray`, so hidden lines can be cut into real dash strokes. The pattern runs on
 // along the whole stroke, across its corners (it does not restart at every piece).
 #pragma once

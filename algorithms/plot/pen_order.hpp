@@ -1,4 +1,4 @@
-// Pen order for plotters (issue 13; vpype's linesort): the order and direction in which the
+// Pen order for plotters (vpype's linesort): the order and direction in which the
 // strokes are drawn, to cut the pen-up travel between them. Greedy nearest neighbour from the
 // pen's home (each stroke may be drawn either way; a closed stroke starts at its nearest
 // point), then 2-opt moves (reverse a run of strokes) over near neighbours until none helps

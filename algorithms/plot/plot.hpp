@@ -1,4 +1,4 @@
-// The 2D stage for drawings people plot and print (issue 13): the projected pieces
+// The 2D stage for drawings people plot and print: the projected pieces
 // (drawing_2d.hpp) cleaned up exactly (line_dedup.hpp: same points, end-on edges, overlaps),
 // chained into the fewest strokes per layer (path_chaining.hpp), specks dropped, and put in
 // pen order (pen_order.hpp). A layer is one visibility and one line kind, so a plotter can
@@ -40,7 +40,7 @@ struct PlotStats {
   double seconds_dedup = 0, seconds_chain = 0, seconds_order = 0;
 };
 
-/// A filled region (visible surfaces, issue 15): rings in drawing coordinates (outer
+/// A filled region (visible surfaces): rings in drawing coordinates (outer
 /// counter-clockwise, holes clockwise; fill by the even-odd rule) and its colour.
 struct PlotFill {
   std::vector<std::vector<Point2>> rings;

@@ -15,36 +15,11 @@
 namespace hlr {
 namespace {
 
-// Interval arithmetic: each operation rounds to nearest, then widens one step each way
-// (next_up/next_down: one ulp, or to ±2^-1022 from 0), so the result contains the exact value
-// (the rounding error is at most half an ulp of the result, or 2^-1075 when it underflows to 0);
-// a product with an exact zero interval is exact zero.
-double down(double v) { return next_down(v); }
+// Interval arithmetic: kernel/error_bounds.hpp.
+using namespace interval;
 double up(double v) { return next_up(v); }
-Interval of(const Rational& q) {
-  Bounds b = bounds_of(q);
-  return {b.lo, b.hi};
-}
-Interval add(Interval a, Interval b) { return {down(a.lo + b.lo), up(a.hi + b.hi)}; }
-Interval sub(Interval a, Interval b) { return {down(a.lo - b.hi), up(a.hi - b.lo)}; }
-Interval mul(Interval a, Interval b) {
-  if ((a.lo == 0 && a.hi == 0) || (b.lo == 0 && b.hi == 0)) return {0, 0};  // exact
-  const double p = a.lo * b.lo, q = a.lo * b.hi, r = a.hi * b.lo, s = a.hi * b.hi;
-  return {down(std::min(std::min(p, q), std::min(r, s))), up(std::max(std::max(p, q), std::max(r, s)))};
-}
-Interval scale(Interval a, double x) {  // x exact
-  double p = a.lo * x, q = a.hi * x;
-  return {down(std::min(p, q)), up(std::max(p, q))};
-}
+Interval of(const Rational& q) { return bounds_of(q); }
 Interval linear(Interval c0, Interval cx, Interval cy, double x, double y) { return add(add(c0, scale(cx, x)), scale(cy, y)); }
-bool finite(Interval a) { return std::isfinite(a.lo) && std::isfinite(a.hi); }
-// The quotient a / b when b does not contain 0 (else an empty answer: undecided).
-bool divide(Interval a, Interval b, Interval& out) {
-  if (!(b.lo > 0 || b.hi < 0)) return false;
-  double p[4] = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
-  out = {down(*std::min_element(p, p + 4)), up(*std::max_element(p, p + 4))};
-  return finite(out);
-}
 
 FilteredLinear filtered(Interval c0, Interval cx, Interval cy) {
   FilteredLinear f;
@@ -62,8 +37,8 @@ int FilteredLinear::sign(double x, double y) const {
   // underflow by 2^-1000. Not finite: undecided.
   const double ax = std::fabs(x), ay = std::fabs(y);
   const double v = m[0] + m[1] * x + m[2] * y;
-  const double e = ((r[0] + r[1] * ax + r[2] * ay) + 0x1p-50 * (std::fabs(m[0]) + std::fabs(m[1]) * ax + std::fabs(m[2]) * ay)) *
-                       (1 + 0x1p-40) + 0x1p-1000;
+  const double e = ((r[0] + r[1] * ax + r[2] * ay) + 8 * kUnitRoundoff * (std::fabs(m[0]) + std::fabs(m[1]) * ax + std::fabs(m[2]) * ay)) *
+                       kBoundSafety + 0x1p-1000;
   if (!(e < INFINITY)) return 2;
   if (v > e) return 1;
   if (v < -e) return -1;
@@ -176,10 +151,10 @@ int RasterScene::depth_order(const RasterPolygon& a, const RasterPolygon& b, dou
     const double va = a.zlin.m[0] + a.zlin.m[1] * x + a.zlin.m[2] * y, vb = b.zlin.m[0] + b.zlin.m[1] * x + b.zlin.m[2] * y;
     const double ax = std::fabs(x), ay = std::fabs(y);
     auto err = [&](const FilteredLinear& f) {
-      return (f.r[0] + f.r[1] * ax + f.r[2] * ay) + 0x1p-50 * (std::fabs(f.m[0]) + std::fabs(f.m[1]) * ax + std::fabs(f.m[2]) * ay);
+      return (f.r[0] + f.r[1] * ax + f.r[2] * ay) + 8 * kUnitRoundoff * (std::fabs(f.m[0]) + std::fabs(f.m[1]) * ax + std::fabs(f.m[2]) * ay);
     };
     // The difference's own rounding: at most u·|va - vb| <= u·(|va| + |vb|).
-    const double e = (err(a.zlin) + err(b.zlin) + 0x1p-52 * (std::fabs(va) + std::fabs(vb))) * (1 + 0x1p-40) + 0x1p-1000;
+    const double e = (err(a.zlin) + err(b.zlin) + kToDoubleError * (std::fabs(va) + std::fabs(vb))) * kBoundSafety + 0x1p-1000;
     const double d = va - vb;
     if (e < INFINITY && d < -e) return -1;
     if (e < INFINITY && d > e) return 1;
@@ -215,14 +190,13 @@ int seen_among(const RasterScene& s, const std::vector<int>& candidates, int i, 
 
 namespace {
 
-Interval iv(const Bounds& b) { return {b.lo, b.hi}; }
+Interval iv(const Bounds& b) { return b; }
 Interval dot3(const Interval a[3], const Interval b[3]) { return add(add(mul(a[0], b[0]), mul(a[1], b[1])), mul(a[2], b[2])); }
 // Intervals this small keep every product and sum below in the finite range (2^400·2^400
 // times a few), so no infinity and no NaN arise on the way.
 bool small(Interval a) { return std::fabs(a.lo) <= 0x1p400 && std::fabs(a.hi) <= 0x1p400; }
-bool small(const Bounds& b) { return small(iv(b)); }
 
-using Pic = std::array<Interval, 2>;  // certified intervals of a picture point
+using Pic = Interval2;  // certified intervals of a picture point
 
 // The picture plane's vectors as certified intervals (PicturePlane's exact ones).
 struct FrameIntervals {
@@ -252,14 +226,6 @@ Pic picture_of(const FrameIntervals& f, const PicturePlane& pp, const Point3& v)
   }
   const Exact2 x = pp.project(v);
   return {of(x[0]), of(x[1])};
-}
-
-// The sign of orient2d of three picture points from their intervals, 2 when they cannot tell.
-int orient_filtered(const Pic& a, const Pic& b, const Pic& c) {
-  const Interval det = sub(mul(sub(b[0], a[0]), sub(c[1], a[1])), mul(sub(b[1], a[1]), sub(c[0], a[0])));
-  if (det.lo > 0) return 1;
-  if (det.hi < 0) return -1;
-  return 2;
 }
 
 // Certified intervals of a face's depth coefficients (RasterScene::depth) from the plane's
@@ -342,7 +308,7 @@ void add_face(const Polyhedron& p, int b, int f, bool convex, const std::vector<
     out.polygons.push_back(rp);
   };
   if (face.size() == 3 || convex) {
-    int o = orient_filtered(pic[face[0]], pic[face[1]], pic[face[2]]);
+    int o = orient2d_interval(pic[face[0]], pic[face[1]], pic[face[2]]);
     if (o == 2) o = orient2d(pp.project(p.vertices()[face[0]]), pp.project(p.vertices()[face[1]]), pp.project(p.vertices()[face[2]]));
     if (o == 0) return;
     std::vector<int> at(face.size());

@@ -21,29 +21,10 @@
 
 #include "algorithms/model/line_drawing.hpp"
 #include "algorithms/picture/picture_plane.hpp"
+#include "kernel/error_bounds.hpp"
 #include "kernel/polyhedron.hpp"
 
 namespace hlr {
-
-/// A double above v (below, for next_down) with nothing between: std::nextafter's value,
-/// with the bits stepped inline (the library call dominated the interval arithmetic), except
-/// that 0 steps to ±2^-1022, the smallest normal double (still a bound: a rounded result of 0
-/// is within 2^-1075 of the exact value), so that no subnormal, slow on x86, enters.
-inline double next_up(double v) {
-  if (!(v < INFINITY)) return v;  // +inf, NaN
-  if (v == 0) return 0x1p-1022;
-  std::uint64_t b;
-  std::memcpy(&b, &v, sizeof b);
-  b += v > 0 ? 1 : -1;
-  std::memcpy(&v, &b, sizeof b);
-  return v;
-}
-inline double next_down(double v) { return -next_up(-v); }
-
-/// A closed interval of doubles that contains an exact value.
-struct Interval {
-  double lo = 0, hi = 0;
-};
 
 /// A linear function c0 + cx·x + cy·y of the picture point with certified double coefficients:
 /// each exact coefficient lies within r of its double m (m = the interval's low end, r its

@@ -13,7 +13,6 @@ namespace hlr {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-double down(double v) { return next_down(v); }
 double up(double v) { return next_up(v); }
 
 // The span of polygon p on the row at y (an exact double): [L, R] as intervals containing the
@@ -24,14 +23,10 @@ bool span(const RasterScene& scene, const RasterPolygon& p, double y, Interval& 
   for (int k = 0; k < p.count; ++k) {
     const FilteredLinear& s = scene.side(p, k);  // A + B·x + C·y >= 0, each within [m, m + r]
     const Interval A{s.m[0], up(s.m[0] + s.r[0])}, B{s.m[1], up(s.m[1] + s.r[1])}, C{s.m[2], up(s.m[2] + s.r[2])};
-    const double c0 = C.lo * y, c1 = C.hi * y;
-    const Interval cy{down(std::min(c0, c1)), up(std::max(c0, c1))};
-    const Interval sum{down(A.lo + cy.lo), up(A.hi + cy.hi)};
+    const Interval sum = interval::add(A, interval::scale(C, y));
     const Interval rhs{-sum.hi, -sum.lo};  // -(A + C·y)
-    if (!(B.lo > 0 || B.hi < 0)) return false;
-    double q[4] = {rhs.lo / B.lo, rhs.lo / B.hi, rhs.hi / B.lo, rhs.hi / B.hi};
-    Interval x{down(*std::min_element(q, q + 4)), up(*std::max_element(q, q + 4))};
-    if (!std::isfinite(x.lo) || !std::isfinite(x.hi)) return false;
+    Interval x;
+    if (!interval::divide(rhs, B, x)) return false;  // B's sign uncertain, or x not finite
     if (B.lo > 0) L = {std::max(L.lo, x.lo), std::max(L.hi, x.hi)};  // x >= bound
     else R = {std::min(R.lo, x.lo), std::min(R.hi, x.hi)};           // x <= bound
   }

@@ -1,4 +1,4 @@
-// Flat shading (course notes sections 36 and 39, seeds 002 and 004). See lighting.hpp.
+// Flat shading (course notes sections 36 and 39). See lighting.hpp.
 #include "algorithms/shading/lighting.hpp"
 
 #include <algorithm>

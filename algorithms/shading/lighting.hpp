@@ -1,4 +1,4 @@
-// Flat shading of faces (course notes sections 36 and 39, seeds 002 and 004): the illumination
+// Flat shading of faces (course notes sections 36 and 39): the illumination
 // model I = ka·Ia·C + sum over lights of f_rad·f_ang·Il·(kd·C·cos(theta) + ks·spec), with
 // directional lights (at infinity), point lights with the radial attenuation
 // 1 / (a0 + a1·d + a2·d²) and spot lights that also attenuate by the angle from their axis
@@ -32,7 +32,7 @@ struct TextureImage {
 struct Material {
   Rgb colour{0.78, 0.80, 0.84};
   double ka = 0.3, kd = 0.7, ks = 0.15, shininess = 20;
-  /// Transparency (course notes section 41, seeds 000 and 001): the fraction of the light from
+  /// Transparency (course notes section 41): the fraction of the light from
   /// behind that passes, 0 opaque (the default) to 1 clear. Linear: I = (1 − τ)·I1 + τ·I2
   /// (the notes' t is 1 − τ); Kay: τ = τmin + (τ − τmin)·(1 − (1 − |n_z|)^p) with n_z the
   /// normal's component toward the viewer; path length: opacity 1 − (1 − a)^(1/|cos φ|) with

@@ -1,4 +1,4 @@
-// Convex decomposition of a closed polyhedron (course notes, seed 003 section 23): split the
+// Convex decomposition of a closed polyhedron (course notes, section 23): split the
 // body by the plane of a face at which it is not convex (a face whose plane has vertices on
 // both sides, found by the exact convexity test), recursively, until every piece is convex.
 // The splits are exact boolean operations (CGAL Nef polyhedra on an exact kernel), so pieces

@@ -1,4 +1,4 @@
-// Convexity test of a polyhedron (course notes, seed 003 section 23): the body is convex
+// Convexity test of a polyhedron (course notes, section 23): the body is convex
 // with respect to a face when every other vertex lies on one side of (or on) the face's
 // plane; convex when that holds for every face; flat (degenerate) when every vertex lies on
 // every face plane. Exact: each side is an exact side-of-plane predicate.

@@ -1,4 +1,4 @@
-// Exact crease test for `--edges feature --crease DEG` (issue 4): is the angle between two face
+// Exact crease test for `--edges feature --crease DEG`: is the angle between two face
 // normals greater than DEG degrees? cos(DEG) is irrational for most DEG (Niven's theorem), so
 // the comparison n1·n2 < cos(DEG)·|n1|·|n2| is decided exactly: squared into rationals when
 // cos²(DEG) is rational (DEG a multiple of 30 or 45 degrees), otherwise against an MPFR

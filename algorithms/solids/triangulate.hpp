@@ -1,6 +1,6 @@
 // Exact triangulation of a planar polygon face (simple, possibly non-convex) in the coordinate
 // plane where the face's projection is largest (kernel/simple_polygon.hpp, O(n log n)). Used to turn any face into the
-// triangular occluders of issue 4 (course notes section 23 treats faces as planar polygons).
+// triangular occluders of the per-face route (course notes section 23 treats faces as planar polygons).
 // Orientations are exact; the triangles keep the face's vertex order (same normal direction).
 #pragma once
 

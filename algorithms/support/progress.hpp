@@ -1,4 +1,4 @@
-// Progress of long stages (issue 13: long runs must not be silent): the library says what it
+// Progress of long stages (long runs must not be silent): the library says what it
 // is doing through progress(); the command line installs a sink that prints it on a terminal.
 // Without a sink nothing is printed, and the calls cost a test of one flag.
 #pragma once

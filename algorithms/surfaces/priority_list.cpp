@@ -174,20 +174,6 @@ class Painter {
 
   // Test 5: the projections' interiors do not meet (convex polygons: some side of one has all
   // of the other on or outside it).
-  // orient2d of picture points, filtered: the doubles (get_d truncates: relative error below
-  // 2^-52 each) give det with |error| <= 32·2^-52·S², S the sum of the six coordinates'
-  // magnitudes (docs/design.md); exact when the doubles cannot hold them or are too close.
-  static int orient_filtered(const Exact2& a, const Exact2& b, const Exact2& c, const std::array<double, 2>& da,
-                             const std::array<double, 2>& db, const std::array<double, 2>& dc) {
-    double s = std::fabs(da[0]) + std::fabs(da[1]) + std::fabs(db[0]) + std::fabs(db[1]) + std::fabs(dc[0]) + std::fabs(dc[1]);
-    if (std::isfinite(s * s) && s > 1e-100) {
-      double det = (db[0] - da[0]) * (dc[1] - da[1]) - (db[1] - da[1]) * (dc[0] - da[0]);
-      double bound = 32 * 0x1p-52 * s * s;
-      if (det > bound) return 1;
-      if (det < -bound) return -1;
-    }
-    return orient2d(a, b, c);
-  }
   bool separated_by_side(int i, int j) const {
     const auto &p = res_.polygons[i].pts, &q = res_.polygons[j].pts;
     const auto &dp = dpts_[i], &dq = dpts_[j];
@@ -195,7 +181,7 @@ class Painter {
       const std::size_t k1 = (k + 1) % p.size();
       bool all_out = true;
       for (std::size_t m = 0; m < q.size(); ++m)
-        if (orient_filtered(p[k], p[k1], q[m], dp[k], dp[k1], dq[m]) > 0) {
+        if (orient2d(p[k], p[k1], q[m], dp[k], dp[k1], dq[m]) > 0) {
           all_out = false;
           break;
         }

@@ -1,4 +1,4 @@
-// Transparency, exactly per region (course notes section 41, seeds 000 and 001): the picture is
+// Transparency, exactly per region (course notes section 41): the picture is
 // cut into regions where the ordered list of faces seen one behind the other is the same, and
 // each region gets one final colour, I = (1 − τ)·I1 + τ·I2 applied from the back to the front
 // (notes: "if the polygons are written to the frame buffer in priority order (Newell–Sancha),

@@ -31,11 +31,10 @@ struct PictureTriangle {
   std::array<double, 3> depth_d;
 };
 
-constexpr double kU = 0x1p-52;  // relative error of mpq_get_d
 
 // Doubles are trusted only in [2^-400, 2^400] (no underflow or overflow in products of two),
 // and a zero only when the value is zero.
-bool trusted(double x, const Rational& q) { return x == 0 ? sgn(q) == 0 : std::fabs(x) >= 0x1p-400 && std::fabs(x) <= 0x1p400; }
+bool trusted(double x, const Rational& q) { return filter_usable(q, x); }
 
 // out = a + t·(b - a) with one canonicalisation: (an·bd·td + tn·(bn·ad - an·bd)) / (ad·bd·td).
 void lerp(const Rational& a, const Rational& b, const Rational& t, Rational& out) {
@@ -174,7 +173,7 @@ class Prober {
         double x = q[0], y = q[1];
         r.x0 = std::min(r.x0, x), r.x1 = std::max(r.x1, x), r.y0 = std::min(r.y0, y), r.y1 = std::max(r.y1, y);
       }
-      double pad = 1e-9 * std::max({std::fabs(r.x0), std::fabs(r.x1), std::fabs(r.y0), std::fabs(r.y1), 1e-300});
+      double pad = box_pad({r.x0, r.x1, r.y0, r.y1});
       rects.push_back({r.x0 - pad, r.y0 - pad, r.x1 + pad, r.y1 + pad});
     }
     std::vector<char> always(rects.size(), 0);
@@ -191,14 +190,14 @@ class Prober {
   /// doubles (mpq_get_d), `filters`: they may be used (PlanarArrangement::filters).
   int probe(const Exact2& a, const Exact2& b, const std::array<double, 2>& ad, const std::array<double, 2>& bd, bool filters,
             std::vector<int>& scratch) const {
-    // The probe point's double from the ends' doubles, within 1.5·kU·mag per axis (mag = the
+    // The probe point's double from the ends' doubles, within 1.5·kToDoubleError·mag per axis (mag = the
     // larger |end|; design.md); its exact value, direction and normal only when a filter
     // cannot decide.
     Offset off{a, b, false, {}, {}, {}};
-    Near nr{0.5 * (ad[0] + bd[0]), 0.5 * (ad[1] + bd[1]), std::max(std::fabs(ad[0]), std::fabs(bd[0])) * (1 + 4 * kU),
-            std::max(std::fabs(ad[1]), std::fabs(bd[1])) * (1 + 4 * kU), filters};
+    Near nr{0.5 * (ad[0] + bd[0]), 0.5 * (ad[1] + bd[1]), std::max(std::fabs(ad[0]), std::fabs(bd[0])) * (1 + 4 * kToDoubleError),
+            std::max(std::fabs(ad[1]), std::fabs(bd[1])) * (1 + 4 * kToDoubleError), filters};
     const double mx = nr.x, my = nr.y;
-    double pad = 1e-9 * std::max({std::fabs(mx), std::fabs(my), 1e-300});
+    double pad = box_pad({mx, my});
     scratch.clear();
     if (!nr.ok) {  // doubles not trusted here: every triangle is a candidate
       for (std::size_t i = 0; i < tris_.size(); ++i) scratch.push_back(static_cast<int>(i));
@@ -230,11 +229,10 @@ class Prober {
     for (int k = 0; k < 3; ++k) {
       if (nr.ok && tr.pd_ok) {
         const auto &p = tr.pd[k], &q = tr.pd[(k + 1) % 3];
-        double det = (q[0] - p[0]) * (nr.y - p[1]) - (q[1] - p[1]) * (nr.x - p[0]);
-        double mx = std::max({std::fabs(p[0]), std::fabs(q[0]), nr.mag_x}), my = std::max({std::fabs(p[1]), std::fabs(q[1]), nr.mag_y});
-        double bound = 128 * kU * mx * my;
-        if (det > bound) continue;
-        if (det < -bound) return false;
+        const double mx = std::max({std::fabs(p[0]), std::fabs(q[0]), nr.mag_x}), my = std::max({std::fabs(p[1]), std::fabs(q[1]), nr.mag_y});
+        const int o = orient2d_filter(p, q, {nr.x, nr.y}, mx, my, 2);
+        if (o > 0) continue;
+        if (o < 0) return false;
       }
       const Exact2 &p = *tr.p[k], &q = *tr.p[(k + 1) % 3];
       if (side_sign(p, q, off) <= 0) return false;
@@ -249,11 +247,11 @@ class Prober {
     int s;
     if (!pp_.perspective()) {
       // s = num / den with den constant; larger is nearer: sign(s_x - s_y). Filter: each
-      // depth's double at m is within 16·kU·(|c0| + |cx|·|mx| + |cy|·|my|) of its value.
+      // depth's double at m is within 16·kToDoubleError·(|c0| + |cx|·|mx| + |cy|·|my|) of its value.
       if (nr.ok && std::isfinite(x.depth_d[0]) && std::isfinite(y.depth_d[0])) {
         auto val = [&](const std::array<double, 3>& c) { return c[0] + c[1] * nr.x + c[2] * nr.y; };
         auto mag = [&](const std::array<double, 3>& c) { return std::fabs(c[0]) + std::fabs(c[1]) * nr.mag_x + std::fabs(c[2]) * nr.mag_y; };
-        double d = val(x.depth_d) - val(y.depth_d), bound = 16 * kU * (mag(x.depth_d) + mag(y.depth_d));
+        double d = val(x.depth_d) - val(y.depth_d), bound = 16 * kToDoubleError * (mag(x.depth_d) + mag(y.depth_d));
         if (d > bound) return true;
         if (d < -bound) return false;
       }

@@ -1,5 +1,5 @@
-// Exam mode (issue 6): step-by-step solutions of problem files the way the course notes solve
-// them (seed 003: section 23 convexity and decomposition, 21-22 clipping, 26-28 Roberts, 40
+// Exam mode: step-by-step solutions of problem files the way the course notes solve
+// them (section 23 convexity and decomposition, 21-22 clipping, 26-28 Roberts, 40
 // self-shadowed faces), every intermediate value exact. The solution is built once as a JSON
 // document (sections of tables, and the final result); Markdown and HTML are renderings of it,
 // in English or in the course's Russian terms. The values come from the same algorithms

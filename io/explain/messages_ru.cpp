@@ -1,4 +1,4 @@
-// Error messages in Russian for exam mode (issue 12), in the words of the course notes
+// Error messages in Russian for exam mode, in the words of the course notes
 // (section 19: body, face, edge, vertex; 21-23: clipper, convexity; 26-28: Roberts).
 //
 // A template is the English text with placeholders: @x is copied as it is (numbers, names in

@@ -1,4 +1,4 @@
-// Error messages in Russian for exam mode (`hlr explain --lang ru`, issue 12): the readers, the
+// Error messages in Russian for exam mode (`hlr explain --lang ru`): the readers, the
 // kernel and the algorithms throw English messages built from fixed templates; this catalogue
 // holds the Russian of every template a problem file can reach, with the course's words.
 #pragma once

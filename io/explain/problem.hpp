@@ -1,4 +1,4 @@
-// Problem files for `hlr explain` (issue 6): a scene file (docs/scene-format.md) with a
+// Problem files for `hlr explain`: a scene file (docs/scene-format.md) with a
 // `problem` type and the data of that type. Types: roberts (bodies, view, optional light and
 // edges to analyse), cyrus-beck (a convex clipper and segments), midpoint (a box or frustum,
 // segments, eps), convexity, decompose, transform (one body), horizon (heights on a grid),

@@ -1,4 +1,4 @@
-// `hlr horizon` as a library (issue 18): a height grid from an expression of x and z (muparser)
+// `hlr horizon` as a library: a height grid from an expression of x and z (muparser)
 // or from a CSV file, exactly; the exact floating horizon (algorithms/horizon/floating_horizon.hpp); its
 // visible runs as a line drawing of the triangulated surface, so the 2D stage and every writer
 // (SVG, PDF, PNG, DXF, JSON) apply unchanged.

@@ -1,4 +1,4 @@
-// The raster pipeline (course notes 29-38, seed 002). See raster.hpp.
+// The raster pipeline (course notes 29-38). See raster.hpp.
 #include "io/pipeline/raster.hpp"
 
 #include <png.h>

@@ -1,8 +1,8 @@
-// The raster pipeline (issue 17; course notes sections 29-38, seed 002): load -> camera ->
+// The raster pipeline (course notes sections 29-38): load -> camera ->
 // the exact face seen at every pixel centre by the course's image-space algorithm of choice
 // (z-buffer, scan-line, Warnock, ray casting: the same faces, raster_scene.hpp) -> shading in
 // doubles after every decision (flat, Gouraud, Phong; sections 36-39) -> antialiasing by
-// supersampling (box or tent filter, seed 002) -> PNG. The face-id buffer and the exact pixel
+// supersampling (box or tent filter) -> PNG. The face-id buffer and the exact pixel
 // grid can be written too, so anyone can check a pixel by exact ray casting.
 #pragma once
 

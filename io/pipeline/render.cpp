@@ -174,7 +174,7 @@ std::vector<char> see_through_bodies(const RenderResult& r) {
   return see;
 }
 
-// Transparency (issue 16): the regions of equal face lists, each composited back to front,
+// Transparency: the regions of equal face lists, each composited back to front,
 // I = (1 − τ)·I_face + τ·I_behind, from white paper behind everything.
 void solve_transparency(RenderResult& r, const std::vector<const Polyhedron*>& polys, const LineDrawing& all) {
   const std::vector<char> see = see_through_bodies(r);
@@ -200,7 +200,7 @@ void solve_transparency(RenderResult& r, const std::vector<const Polyhedron*>& p
   }
 }
 
-// Shadows (issue 16): each light's lit parts laid over the visible surfaces; every region
+// Shadows: each light's lit parts laid over the visible surfaces; every region
 // shaded by the lights that reach it (the ambient term alone where none does).
 void solve_shadows(RenderResult& r, const std::vector<const Polyhedron*>& polys, const std::vector<Scene>& scenes, const RenderOptions& o,
                    const LineDrawing& all) {

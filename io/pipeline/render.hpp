@@ -55,7 +55,7 @@ struct RenderOptions {
   /// seen through (see_through_lines.hpp; the per-face route). Off: they are hidden lines.
   bool through_lines = true;
   /// Only the part of the drawing in tile `index` (0-based) of a `count`-tile split of the
-  /// picture (picture_tiles.hpp; issue 14): segments outside it are not solved, every piece is
+  /// picture (picture_tiles.hpp): segments outside it are not solved, every piece is
   /// cut to the tile. The per-face route's line drawings only.
   struct Tile {
     int index = 0, count = 1;

@@ -1,4 +1,4 @@
-// Named views of technical drawing (issue 13): front, back, top, bottom, left, right, and the
+// Named views of technical drawing: front, back, top, bottom, left, right, and the
 // pictorial iso and dimetric, as exact view directions (from the scene toward the viewer)
 // with their up vectors, for y up (the default, as the course's default view 0,0,1 with up y)
 // or z up (CAD and architecture).

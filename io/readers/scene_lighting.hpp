@@ -1,4 +1,4 @@
-// Lights and materials in scene files (course notes sections 36 and 39, seeds 002 and 004):
+// Lights and materials in scene files (course notes sections 36 and 39):
 // the `lighting` key (ambient, phong or blinn, directional, point and spot lights) and a body's
 // `material` (colour, ka, kd, ks, shininess). Schema: docs/scene-format.md. Include only in
 // .cpp files that use yaml-cpp.

@@ -1,4 +1,4 @@
-// Tile files (see tile_file.hpp; issue 14).
+// Tile files (see tile_file.hpp).
 #include "io/readers/tile_file.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Tile files (issue 14: one drawing on many machines): `hlr render --tile I/N` writes the exact
+// Tile files (one drawing on many machines): `hlr render --tile I/N` writes the exact
 // pieces of its tile (picture_tiles.hpp) with the render command's arguments; `hlr merge`
 // reads every tile of the split, checks they belong together, runs the same render for the
 // segments alone and puts the tiles' pieces in: the whole drawing, exactly. A text format, one

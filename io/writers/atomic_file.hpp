@@ -17,7 +17,7 @@ class OutputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Text in parts, some made only as they are written (issue 14: a 1M-triangle drawing's JSON is
+/// Text in parts, some made only as they are written (a 1M-triangle drawing's JSON is
 /// 335 MB; made as it is written, it is never all in memory). A part is either text or a run
 /// of `count` pieces, make(k, out) appending piece k to `out` (empty on entry) for k from 0.
 class PartText {

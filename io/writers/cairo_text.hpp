@@ -1,4 +1,4 @@
-// cairo's parts inside the writers (issue 14): text as glyph outlines (the PDF writer draws its
+// cairo's parts inside the writers: text as glyph outlines (the PDF writer draws its
 // labels as filled paths, so a PDF needs no embedded font and looks as cairo's text would), and
 // the PNG in bands of a chosen height.
 #pragma once

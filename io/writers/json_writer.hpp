@@ -25,7 +25,7 @@ namespace hlr {
 std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
                     const PlotStats* plot = nullptr);
 
-/// The visible surfaces of a render (issue 15): a "surfaces" object after "stats" with the
+/// The visible surfaces of a render: a "surfaces" object after "stats" with the
 /// picture's exact axes, one face per line with its side, shade, exact area and visible
 /// polygons (exact 3D corners in the face's plane), and the route's counters.
 /// The painter's list of a priority render: a "priority" object with one polygon per line in

@@ -1,4 +1,4 @@
-// Text made on all cores (the SVG, DXF and JSON writers, issue 14): parts made by the cores
+// Text made on all cores (the SVG, DXF and JSON writers): parts made by the cores
 // and joined in order, so that the text does not depend on their number. Strokes are cut into
 // pieces of kPiecePoints points: one long stroke (a sphere's edges chain into a few strokes of
 // hundreds of thousands of points) is shared by all cores.

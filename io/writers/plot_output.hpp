@@ -1,4 +1,4 @@
-// Drawings to plot and print (issue 13): the plotting 2D stage's layers (algorithms/plot/plot.hpp)
+// Drawings to plot and print: the plotting 2D stage's layers (algorithms/plot/plot.hpp)
 // placed on a page (size, margins, true scale 1:N or fit, several views at one scale in first-
 // or third-angle arrangement) and written as SVG with Inkscape layers, PDF and PNG (cairo) or
 // DXF (dxflib) with layers and linetypes. Line weights follow ISO 128 (wide 0.5 mm for

@@ -1,4 +1,4 @@
-// The sheet as PDF (see plot_output.hpp), written here on all cores (issue 14: cairo's PDF
+// The sheet as PDF (see plot_output.hpp), written here on all cores (cairo's PDF
 // surface formatted and compressed a 1M-triangle drawing on one core, 2.2 s). One page in
 // millimetres (y down, through the content's `cm`), the same strokes, weights and dashes as
 // the SVG, one optional-content group (a PDF layer) per SVG layer, labels as glyph outlines

@@ -1,4 +1,4 @@
-"""Tests of the Python module exact_hlr (issue 11): exact values, not just "it runs"."""
+"""Tests of the Python module exact_hlr: exact values, not just "it runs"."""
 import json
 import os
 from fractions import Fraction

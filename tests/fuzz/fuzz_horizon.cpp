@@ -1,4 +1,4 @@
-// libFuzzer target for the floating horizon (issue 18): bytes become a small height grid (even
+// libFuzzer target for the floating horizon: bytes become a small height grid (even
 // or uneven, heights from a palette with repeats, zeros, binary doubles of many digits, and
 // numbers far beyond the range of doubles) and a view (with and without an x component, from
 // below, from behind, up turned over); the sweep on certified doubles must equal the sweep on

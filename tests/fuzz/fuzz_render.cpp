@@ -1,11 +1,11 @@
-// libFuzzer target for the render pipeline (issue 12): bytes become a small scene of boxes
+// libFuzzer target for the render pipeline: bytes become a small scene of boxes
 // (coordinates in eighths, some thin, touching or interpenetrating) and a view (orthographic
 // along small integer directions, or perspective from an eye anywhere outside the bodies,
 // possibly on a face plane or on a surface); both hidden-line routes run and must agree on
-// every piece of every edge; the visible surfaces (issue 15) must be consistent in every cell
+// every piece of every edge; the visible surfaces must be consistent in every cell
 // and cover exactly the area the course's Weiler–Atherton algorithm finds; painting the
-// priority list (issue 19) must show at the centre of every Weiler–Atherton visible piece the
-// face that piece belongs to; the four raster algorithms (issue 17) must give the same face at
+// priority list must show at the centre of every Weiler–Atherton visible piece the
+// face that piece belongs to; the four raster algorithms must give the same face at
 // every pixel centre, inside that face's visible polygons. A disagreement
 // aborts (a finding). Exact throughout.
 #include <cmath>
@@ -115,7 +115,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (!(g.pieces[i].t0 == s.pieces[i].t0) || !(g.pieces[i].t1 == s.pieces[i].t1) || g.pieces[i].visible != s.pieces[i].visible)
         finding(s, &g);
   }
-  // The plotting 2D stage (issue 13) on the same drawing: the fewest strokes, nothing lost,
+  // The plotting 2D stage on the same drawing: the fewest strokes, nothing lost,
   // pen order a permutation that never lengthens the greedy travel.
   PlotOptions po;
   po.hidden = true;
@@ -192,7 +192,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       std::abort();
     }
   }
-  // The raster algorithms (issue 17): the same face at every pixel centre, and that face's
+  // The raster algorithms: the same face at every pixel centre, and that face's
   // visible polygons contain the centre.
   RasterScene rs = raster_scene(ptrs, cam, d, 24, 18, 1);
   const FaceIdBuffer rz = zbuffer(rs, {1}), rl = scanline(rs, {1}), rw = warnock(rs, {1}), rr = ray_cast(rs, {1});
