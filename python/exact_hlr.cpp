@@ -13,6 +13,7 @@
 #include "io/explain/problem.hpp"
 #include "io/pipeline/raster.hpp"
 #include "io/writers/plot_output.hpp"
+#include "io/pipeline/output.hpp"
 #include "io/pipeline/render.hpp"
 #include "io/writers/svg_writer.hpp"
 
@@ -69,20 +70,17 @@ struct Drawing {
       }
     return out;
   }
+  // The CLI's output stage (io/pipeline/output.hpp): the same bytes as `hlr render -o x.svg`.
   std::string svg(bool hidden_dashed, double width_mm, double stroke_mm) const {
-    hlr::SvgOptions o;
-    o.hidden_dashed = hidden_dashed;
-    o.width_mm = width_mm;
-    o.stroke_mm = stroke_mm;
-    return hlr::to_svg(r->names, r->drawing, r->camera, o);
+    hlr::OutputOptions o;
+    o.hidden = hidden_dashed ? "dashed" : "none";
+    o.width = width_mm;
+    o.stroke = stroke_mm;
+    hlr::check_output_options(o);
+    return hlr::drawing_text(*r, o, "svg", "python").str();
   }
   std::string json() const {
-    hlr::SurfacesJson sj;
-    if (r->surfaces) sj = hlr::SurfacesJson{&*r->surfaces, &r->face_colours, nullptr};
-    if (r->priority) sj = hlr::SurfacesJson{nullptr, &r->face_colours, &*r->priority};
-    if (r->shadows) sj.shadows = &*r->shadows, sj.shadow_colours = &r->shadow_colours;
-    if (r->transparent) sj.transparent = &*r->transparent, sj.transparent_colours = &r->transparent_colours;
-    return hlr::to_json(r->names, r->drawing, r->camera, nullptr, sj);
+    return hlr::to_json(r->names, r->drawing, r->camera, nullptr, hlr::surfaces_json(*r));
   }
   // The painter's list (render(..., method='priority')): one dict per polygon, back to front.
   py::object priority() const {
@@ -169,19 +167,16 @@ struct Drawing {
   }
   py::bytes plot(const std::string& format, bool hidden, py::object page, bool landscape, py::object scale,
                  const std::string& dashes) const {
-    hlr::Plot p = make(hidden);
-    hlr::PageOptions o;
-    if (!page.is_none()) o.page = hlr::parse_page_size(page.cast<std::string>());
+    if (format != "svg" && format != "pdf" && format != "png" && format != "dxf")
+      throw std::invalid_argument("format must be svg, pdf, png or dxf");
+    hlr::OutputOptions o;
+    o.hidden = hidden ? "dashed" : "none";
+    if (!page.is_none()) o.page = page.cast<std::string>();
     o.landscape = landscape;
-    if (!scale.is_none()) o.scale = hlr::parse_scale(py::str(scale).cast<std::string>());
-    hlr::Sheet sheet = hlr::layout_single(p, o);
-    hlr::PlotStyle style;
-    style.dashes = dashes == "geometry" ? hlr::DashMode::Geometry : hlr::DashMode::Pattern;
-    if (format == "svg") return py::bytes(hlr::sheet_to_svg(sheet, style));
-    if (format == "pdf") return py::bytes(hlr::sheet_to_pdf(sheet, style));
-    if (format == "png") return py::bytes(hlr::sheet_to_png(sheet, style));
-    if (format == "dxf") return py::bytes(hlr::sheet_to_dxf(sheet, style));
-    throw std::invalid_argument("format must be svg, pdf, png or dxf");
+    if (!scale.is_none()) o.scale = py::str(scale).cast<std::string>();
+    o.dashes = dashes;
+    hlr::check_output_options(o);
+    return py::bytes(hlr::drawing_text(*r, o, format, "python").str());
   }
   std::vector<std::string> bodies() const {
     std::vector<std::string> n;

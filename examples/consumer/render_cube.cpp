@@ -1,10 +1,12 @@
-// Renders the unit cube through the library API (render pipeline, 2D stage, SVG writer) and
+// Renders the unit cube through the library API (render pipeline, 2D stage, SVG writer, the
+// output stage of `hlr render`) and
 // checks the exact drawing: seen along (1, 2, 3), three faces face the viewer, so 9 edges are
 // visible whole and the 3 edges between the back faces are self-hidden. Exits 1 on any
 // mismatch; prints the drawing's segments with exact coordinates.
 #include <iostream>
 
 #include "algorithms/picture/drawing_2d.hpp"
+#include "io/pipeline/output.hpp"
 #include "io/pipeline/render.hpp"
 #include "io/writers/svg_writer.hpp"
 
@@ -30,8 +32,10 @@ int main() {
   }
   hlr::Drawing2D d = hlr::project_drawing(r.drawing, r.camera);
   std::string svg = hlr::to_svg(r.names, d, hlr::SvgOptions{});
+  // The output stage of `hlr render` (io/pipeline/output.hpp): the page hlr writes, with layers.
+  const std::string page = hlr::drawing_text(r, hlr::OutputOptions{}, "svg", "consumer").str();
   bool ok = r.drawing.segments.size() == 12 && visible == 9 && hidden == 3 && d.lines.size() == 12 &&
-            svg.find("<line") != std::string::npos;
+            svg.find("<line") != std::string::npos && page.find("inkscape:label=\"1 visible-") != std::string::npos;
   std::cout << (ok ? "consumer: OK" : "consumer: WRONG DRAWING") << " (" << visible << " visible, " << hidden << " hidden)\n";
   return ok ? 0 : 1;
 }

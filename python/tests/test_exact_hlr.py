@@ -178,3 +178,33 @@ def test_repaired_mesh_keeps_the_input_face_numbers():
     assert 13 in painted and 12 not in painted
     seen = {f for row in exact_hlr.raster(seam, width=16, height=16).faces() for f in row if f is not None}
     assert seen == {(0, 11), (0, 13)}
+
+
+def hlr_cli(*args):
+    import subprocess
+    exe = os.environ.get("HLR_BIN", "hlr")
+    return subprocess.run([exe, *args], check=True, capture_output=True).stdout
+
+
+@pytest.mark.parametrize("name,kwargs,flags", [
+    ("demo.yaml", {"surfaces": True}, ["--surfaces"]),
+    ("demo.yaml", {}, []),
+    ("two_boxes.yaml", {"shadows": True}, ["--shadows"]),
+])
+def test_svg_is_the_cli_svg_byte_for_byte(name, kwargs, flags, tmp_path):
+    # One output stage: Drawing.svg() and `hlr render x -o a.svg` write the same bytes.
+    out = tmp_path / "a.svg"
+    hlr_cli("render", path(name), *flags, "-o", str(out), "--quiet")
+    assert exact_hlr.render(path(name), **kwargs).svg().encode() == out.read_bytes()
+    dashed = tmp_path / "b.svg"
+    hlr_cli("render", path(name), *flags, "--hidden", "dashed", "--width", "90", "--stroke", "0.5", "-o", str(dashed), "--quiet")
+    got = exact_hlr.render(path(name), **kwargs).svg(hidden_dashed=True, width_mm=90, stroke_mm=0.5)
+    assert got.encode() == dashed.read_bytes()
+
+
+def test_plot_is_the_cli_picture_byte_for_byte(tmp_path):
+    for fmt in ("svg", "dxf", "png"):
+        out = tmp_path / ("p." + fmt)
+        hlr_cli("render", path("demo.yaml"), "--hidden", "dashed", "--page", "A4", "--scale", "10:1", "-o", str(out), "--quiet")
+        got = exact_hlr.render(path("demo.yaml")).plot(fmt, hidden=True, page="A4", scale="10:1")
+        assert got == out.read_bytes(), fmt

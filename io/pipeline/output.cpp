@@ -1,0 +1,263 @@
+// The output stage: from exact line drawings to the text or bytes written (the plotting 2D
+// stage, the page layout, the writers; or the exact JSON). See output.hpp and docs/design.md,
+// "The render pipeline, one screen".
+#include "io/pipeline/output.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <optional>
+#include <set>
+
+#include "algorithms/support/progress.hpp"
+#include "io/writers/json_writer.hpp"
+#include "io/writers/plot_output.hpp"
+
+namespace hlr {
+namespace {
+
+
+PageOptions page_options(const OutputOptions& a) {
+  PageOptions p;
+  if (!a.page.empty()) p.page = parse_page_size(a.page);
+  p.landscape = a.landscape;
+  if (!a.margin.empty()) {
+    double m = -1;
+    std::size_t used = 0;
+    try {
+      m = std::stod(a.margin, &used);
+    } catch (const std::exception&) {
+      m = -1;
+    }
+    if (used != a.margin.size() || !(m >= 0) || m > 1e4)
+      throw std::invalid_argument("--margin must be a size in millimetres from 0 to 10000 (got '" + a.margin + "')");
+    p.margin_mm = m;
+  }
+  if (!a.scale.empty()) p.scale = parse_scale(a.scale);
+  p.width_mm = a.width;
+  return p;
+}
+
+PlotStyle plot_style(const OutputOptions& a) {
+  PlotStyle st;
+  for (auto& [k, w] : st.weights) w *= a.stroke / 0.35;  // --stroke: the visible edges' width, the rest in proportion
+  if (!a.weights.empty()) parse_weights(a.weights, st);
+  st.dashes = a.dashes == "geometry" ? DashMode::Geometry : DashMode::Pattern;
+  st.hidden_dashed = a.hidden != "solid";
+  return st;
+}
+
+// Keeps the layers named (or numbered, from 1 in the order the writers use) in --layers.
+// A selection that keeps nothing to draw is an error naming the drawing's layers (an empty
+// drawing with exit 0 looks like a drawing of nothing).
+void select_layers(const std::string& list, std::vector<Plot>& plots, bool hidden_drawn) {
+  if (list.empty()) return;
+  std::vector<std::string> names;
+  {
+    Sheet all;
+    for (const Plot& p : plots) all.views.push_back(SheetView{&p, 1, 0, 0, ""});
+    names = sheet_layer_names(all);
+  }
+  auto layer_list = [&] {
+    std::string have;
+    for (std::size_t k = 0; k < names.size(); ++k) have += (k ? ", " : "") + std::to_string(k + 1) + " " + names[k];
+    return have;
+  };
+  std::set<std::string> keep;
+  bool asked_hidden = false;
+  std::size_t at = 0;
+  while (at <= list.size()) {
+    std::size_t comma = list.find(',', at);
+    std::string item = list.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
+    at = comma == std::string::npos ? list.size() + 1 : comma + 1;
+    if (item.empty()) continue;
+    bool number = std::all_of(item.begin(), item.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (number) {
+      const std::size_t digits = item.find_first_not_of('0');
+      const std::size_t n = digits == std::string::npos || item.size() - digits > 9 ? 0 : std::stoul(item);
+      if (n < 1 || n > names.size())
+        throw std::invalid_argument("--layers: there is no layer " + item + "; this drawing has " + std::to_string(names.size()) + " layers" +
+                                    (names.empty() ? "" : ": " + layer_list()));
+      keep.insert(names[n - 1]);
+      continue;
+    }
+    asked_hidden = asked_hidden || item.rfind("hidden", 0) == 0;
+    if (item == "visible" || item == "through" || item == "hidden") {
+      for (const std::string& n : names)
+        if (n.rfind(item + "-", 0) == 0) keep.insert(n);
+      continue;
+    }
+    static const std::set<std::string> known = {"visible-silhouette", "visible-boundary", "visible-crease", "visible-intersection",
+                                                "visible-edge", "hidden-silhouette", "hidden-boundary", "hidden-crease",
+                                                "hidden-intersection", "hidden-edge", "through-silhouette", "through-boundary",
+                                                "through-crease", "through-intersection", "through-edge"};
+    if (!known.count(item))
+      throw std::invalid_argument("--layers: unknown layer '" + item +
+                                  "' (visible, through, hidden, visible-silhouette, hidden-crease, ... or numbers)");
+    keep.insert(item);
+  }
+  bool drawn = false;
+  for (const Plot& p : plots) {
+    drawn = drawn || !p.fills.empty();
+    for (const PlotLayer& l : p.layers) drawn = drawn || keep.count(l.name());
+  }
+  if (!drawn)
+    throw std::invalid_argument("--layers " + list + ": none of this drawing's layers" + (names.empty() ? std::string() : " (" + layer_list() + ")") +
+                                (asked_hidden && !hidden_drawn ? "; hidden lines are drawn with --hidden dashed or --hidden solid" : ""));
+  for (Plot& p : plots) {
+    std::vector<PlotLayer> kept;
+    for (PlotLayer& l : p.layers)
+      if (keep.count(l.name())) kept.push_back(std::move(l));
+    p.layers = std::move(kept);
+  }
+}
+
+void print_stats(const std::vector<Plot>& plots, double scale) {
+  PlotStats t;
+  for (const Plot& p : plots) {
+    const PlotStats& s = p.stats;
+    t.pieces += s.pieces, t.zero_length += s.zero_length, t.overlap_groups += s.overlap_groups;
+    t.duplicate_length += s.duplicate_length * scale, t.edges += s.edges, t.path_count += s.path_count;
+    t.min_path_count += s.min_path_count, t.dropped_short += s.dropped_short;
+    t.pen_down_length += s.pen_down_length * scale, t.pen_up_length += s.pen_up_length * scale;
+    t.pen_up_greedy += s.pen_up_greedy * scale, t.pen_up_unordered += s.pen_up_unordered * scale;
+    t.exact_point_tests += s.exact_point_tests, t.exact_line_tests += s.exact_line_tests;
+    t.seconds_dedup += s.seconds_dedup, t.seconds_chain += s.seconds_chain, t.seconds_order += s.seconds_order;
+  }
+  std::cerr << std::fixed;
+  std::cerr.precision(1);
+  std::cerr << "stats: pieces " << t.pieces << ", end-on " << t.zero_length << ", overlap groups " << t.overlap_groups
+            << " (duplicate length " << t.duplicate_length << " mm removed), edges " << t.edges << ", paths " << t.path_count
+            << " (minimum " << t.min_path_count << "), specks dropped " << t.dropped_short << ", pen-down " << t.pen_down_length
+            << " mm, pen-up " << t.pen_up_length << " mm (greedy " << t.pen_up_greedy << ", unordered " << t.pen_up_unordered
+            << ")";
+  std::cerr.precision(3);
+  std::cerr << ", exact tests: points " << t.exact_point_tests << ", lines " << t.exact_line_tests;
+  std::cerr << ", clean-up " << t.seconds_dedup << " s, chaining " << t.seconds_chain << " s, ordering " << t.seconds_order << " s\n";
+}
+
+// Standard views on one sheet: their names and their cells (third-angle: top above front).
+std::vector<std::array<int, 2>> sheet_cells(const std::vector<std::string>& names, bool first_angle) {
+  std::vector<std::array<int, 2>> cells;
+  for (const std::string& n : names) {
+    std::array<int, 2> c{0, 0};
+    if (n == "top") c = {0, 1};
+    else if (n == "bottom") c = {0, -1};
+    else if (n == "right") c = {1, 0};
+    else if (n == "left") c = {-1, 0};
+    else if (n == "back") c = {2, 0};
+    else if (n != "front") c = {1, 1};  // a pictorial view: the free corner
+    if (first_angle && n != "back" && n != "front" && (c[0] != 1 || c[1] != 1)) c = {-c[0], -c[1]};
+    cells.push_back(c);
+  }
+  return cells;
+}
+
+}  // namespace
+
+SurfacesJson surfaces_json(const RenderResult& r) {
+  SurfacesJson sj;
+  if (r.surfaces) sj = SurfacesJson{&*r.surfaces, &r.face_colours, nullptr};
+  if (r.priority) sj = SurfacesJson{nullptr, &r.face_colours, &*r.priority};
+  if (r.shadows) sj.shadows = &*r.shadows, sj.shadow_colours = &r.shadow_colours;
+  if (r.transparent) sj.transparent = &*r.transparent, sj.transparent_colours = &r.transparent_colours;
+  return sj;
+}
+
+void check_output_options(const OutputOptions& a) {
+  if (!(a.width > 0) || !std::isfinite(a.width) || a.width > 1e6) throw std::invalid_argument("--width must be a positive size in millimetres");
+  if (!(a.stroke > 0) || !std::isfinite(a.stroke) || a.stroke > 1e3) throw std::invalid_argument("--stroke must be a positive width in millimetres");
+  if (!(a.min_length >= 0) || !std::isfinite(a.min_length)) throw std::invalid_argument("--min-length must be a length in millimetres");
+  if (!(a.dpi > 0) || a.dpi > 4800) throw std::invalid_argument("--dpi must be between 0 and 4800");
+  page_options(a);
+  plot_style(a);
+}
+
+PartText drawing_text(const std::vector<const RenderResult*>& results, const std::vector<std::string>& view_names, const OutputOptions& a,
+                      const std::string& format, const std::string& command) {
+  PartText text;
+  std::vector<Plot> plots;
+  if (format == "json") {
+    // The exact pieces, and the numbers of the 2D stage a plotter would get (drawing units).
+    std::optional<Plot> plot;
+    if (!a.raw) {
+      PlotOptions po;
+      po.hidden = a.hidden != "none";
+      po.threads = a.threads;
+      plot = make_plot(results[0]->drawing, results[0]->camera, po);
+      PenOrderOptions order;
+      order.threads = a.threads;
+      order_plot(*plot, {plot->bounds[0], plot->bounds[3]}, order);
+    }
+    const RenderResult& r0 = *results[0];
+    text = to_json_text(r0.names, r0.drawing, r0.camera, plot ? &plot->stats : nullptr, surfaces_json(r0));
+  } else {
+    progress("strokes");
+    const PlotOptions po = plot_options(a);
+    for (const RenderResult* r : results) {
+      plots.push_back(make_plot(r->drawing, r->camera, po));
+      add_surface_fills(plots.back(), *r);
+    }
+    text.add(plots_text(plots, view_names, a, format, command, results[0]->camera.perspective));
+  }
+  return text;
+}
+
+PartText drawing_text(const std::vector<RenderResult>& results, const std::vector<std::string>& view_names, const OutputOptions& a,
+                      const std::string& format, const std::string& command) {
+  std::vector<const RenderResult*> ptrs;
+  for (const RenderResult& r : results) ptrs.push_back(&r);
+  return drawing_text(ptrs, view_names, a, format, command);
+}
+
+PartText drawing_text(const RenderResult& result, const OutputOptions& a, const std::string& format, const std::string& command) {
+  return drawing_text(std::vector<const RenderResult*>{&result}, {}, a, format, command);
+}
+
+PlotOptions plot_options(const OutputOptions& a) {
+  PlotOptions po;
+  po.hidden = a.hidden != "none";
+  po.dedup = po.chain = !a.raw;
+  po.threads = a.threads;
+  return po;
+}
+
+std::string plots_text(std::vector<Plot>& plots, const std::vector<std::string>& view_names, const OutputOptions& a,
+                       const std::string& format, const std::string& command, bool perspective) {
+  const PageOptions page = page_options(a);
+  const PlotStyle style = plot_style(a);
+  std::string text;
+  {
+    select_layers(a.layers, plots, a.hidden != "none");
+    if (perspective && page.scale) throw std::invalid_argument("--scale (true scale) needs an orthographic view");
+    std::vector<const Plot*> ptrs;
+    for (const Plot& p : plots) ptrs.push_back(&p);
+    std::vector<std::string> labels;
+    for (const std::string& v : view_names) {
+      std::string up = v;
+      for (char& c : up) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      labels.push_back(up);
+    }
+    Sheet sheet = view_names.empty() ? layout_single(plots[0], page)
+                                     : layout_views(ptrs, sheet_cells(view_names, a.projection == "first"), labels, page);
+    // Specks and pen order need the page's scale; the layout does not change by them.
+    progress("pen order");
+    for (Plot& p : plots) {
+      drop_short_strokes(p, a.min_length / sheet.views[0].scale);
+      // A shaded picture is not plotted: its lines keep their chained order.
+      PenOrderOptions order;
+      order.threads = a.threads;
+      if (!a.raw && p.fills.empty()) order_plot(p, {p.bounds[0], p.bounds[3]}, order);
+    }
+    for (const std::string& note : sheet.notes) std::cerr << "hlr " << command << ": note: " << note << "\n";
+    progress("writing");
+    text = format == "pdf" ? sheet_to_pdf(sheet, style)
+         : format == "png" ? sheet_to_png(sheet, style, a.dpi)
+         : format == "dxf" ? sheet_to_dxf(sheet, style)
+                           : sheet_to_svg(sheet, style);
+    if (a.stats) print_stats(plots, sheet.views[0].scale);
+  }
+  return text;
+}
+
+}  // namespace hlr
