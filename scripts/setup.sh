@@ -16,6 +16,7 @@ PACKAGES=(build-essential cmake pkg-config
   zlib1g-dev                              # the PDF writer's compression
   poppler-utils librsvg2-bin              # tests: pdfinfo/pdftoppm read our PDFs, rsvg-convert our SVGs
   netpbm                                  # tests: pngtopnm turns pictures into pixels to compare
+  clang-format                            # tests: the house style on changed lines (.clang-format)
   parallel                                # tests: the tile example of docs/usage.md runs GNU parallel
   python3-dev python3-pybind11 python3-pytest   # the Python module and its tests
   libgtest-dev libbenchmark-dev time   # time: peak memory in scripts/bench_render.sh

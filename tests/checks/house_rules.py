@@ -3,7 +3,8 @@
 - no folder of algorithms/ or io/ holds more than 20 files, and no source file is over 700 lines;
 - the unit roundoff and the 2D orientation filter are defined once (kernel/error_bounds.hpp,
   kernel/predicates_2d.hpp);
-- the repository speaks to its users: no words about how the work was organised.
+- the repository speaks to its users: no words about how the work was organised;
+- no build output (CMakeFiles/, CMakeCache.txt) is committed.
 Usage: house_rules.py ROOT (exit 1 and one line per broken rule)."""
 import os
 import re
@@ -14,6 +15,10 @@ root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file
 files = subprocess.run(["git", "ls-files"], cwd=root, capture_output=True, text=True, check=True).stdout.split()
 files = [f for f in files if os.path.exists(os.path.join(root, f))]
 bad = []
+
+for f in files:
+    if f.split("/")[0] == "CMakeFiles" or "/CMakeFiles/" in f or f.endswith("CMakeCache.txt"):
+        bad.append(f"{f}: a build output is committed")
 
 folders = {}
 for f in files:
