@@ -6,28 +6,29 @@
 
 #include <algorithm>
 #include <chrono>
-#include <exception>
 #include <cmath>
-#include <optional>
-#include <set>
+#include <exception>
 #include <filesystem>
 #include <iostream>
+#include <optional>
+#include <set>
 
 #include "algorithms/support/parallel.hpp"
 #include "algorithms/support/progress.hpp"
 #include "cli/arguments.hpp"
-#include "io/readers/clipper_spec.hpp"
-#include "cli/drawing_output.hpp"
 #include "cli/commands.hpp"
+#include "cli/drawing_output.hpp"
 #include "cli/process.hpp"
+#include "io/pipeline/render.hpp"
+#include "io/pipeline/render_methods.hpp"
+#include "io/pipeline/standard_views.hpp"
+#include "io/readers/clipper_spec.hpp"
+#include "io/readers/input_error.hpp"
+#include "io/readers/tile_file.hpp"
 #include "io/writers/atomic_file.hpp"
 #include "io/writers/json_writer.hpp"
 #include "io/writers/plot_output.hpp"
-#include "io/pipeline/render.hpp"
-#include "io/readers/input_error.hpp"
-#include "io/readers/tile_file.hpp"
 #include "io/writers/svg_writer.hpp"
-#include "io/pipeline/standard_views.hpp"
 
 namespace hlr::cli {
 namespace {
@@ -83,10 +84,7 @@ std::vector<std::string> tile_args() {
 
 RenderOptions render_options(const RenderArgs& a) {
   RenderOptions o;
-  o.method = a.method == "roberts"           ? RenderMethod::Roberts
-             : a.method == "weiler-atherton" ? RenderMethod::WeilerAtherton
-             : a.method == "priority"        ? RenderMethod::Priority
-                                             : RenderMethod::Faces;
+  o.method = parse_render_method(a.method);
   o.lines.edges = a.edges == "all" ? EdgeSelection::All : EdgeSelection::Feature;
   o.lines.threads = a.threads;
   try {
@@ -223,11 +221,9 @@ void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
                   "feature (default: boundaries, silhouettes, creases over --crease, intersection lines) or all (every mesh edge)")
       ->check(CLI::IsMember({"all", "feature"}));
   cmd->add_option("--crease", a->crease, "Crease threshold in degrees between face normals (default 30; 0 keeps every edge between non-coplanar faces)");
-  cmd->add_option("--method", a->method,
-                  "faces (the default: per-face occluders, any mesh), roberts (the course's algorithm; non-convex solids are split into "
-                  "convex pieces), weiler-atherton (the course's visible-surface algorithm, exam-sized scenes; implies --surfaces) or "
-                  "priority (the course's priority-list painter's algorithm: shaded faces and their cut parts painted back to front)")
-      ->check(CLI::IsMember({"faces", "roberts", "weiler-atherton", "priority"}));
+  std::string methods;
+  for (const RenderMethodEntry& m : render_methods()) methods += std::string(methods.empty() ? "" : "; ") + m.name + " (" + m.help + ")";
+  cmd->add_option("--method", a->method, methods)->check(CLI::IsMember(render_method_names()));
   cmd->add_flag("--surfaces", a->surfaces,
                 "Also the visible part of every face as exact polygons, flat-shaded by the scene's lights and materials "
                 "(SVG/PDF/PNG fills under the lines; JSON 'surfaces')");

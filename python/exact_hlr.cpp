@@ -7,14 +7,15 @@
 #include <cstdio>
 
 #include "algorithms/clip/cyrus_beck.hpp"
-#include "io/readers/clipper_spec.hpp"
 #include "io/explain/explain.hpp"
-#include "io/writers/json_writer.hpp"
 #include "io/explain/problem.hpp"
-#include "io/pipeline/raster.hpp"
-#include "io/writers/plot_output.hpp"
 #include "io/pipeline/output.hpp"
+#include "io/pipeline/raster.hpp"
 #include "io/pipeline/render.hpp"
+#include "io/pipeline/render_methods.hpp"
+#include "io/readers/clipper_spec.hpp"
+#include "io/writers/json_writer.hpp"
+#include "io/writers/plot_output.hpp"
 #include "io/writers/svg_writer.hpp"
 
 namespace py = pybind11;
@@ -192,13 +193,8 @@ Drawing render(const py::object& input, std::optional<py::sequence> view, std::o
   if (py::isinstance<py::str>(input)) inputs.push_back(input.cast<std::string>());
   else inputs = input.cast<std::vector<std::string>>();
   hlr::RenderOptions o;
-  if (method != "faces" && method != "roberts" && method != "weiler-atherton" && method != "priority")
-    throw std::invalid_argument("method must be 'faces', 'roberts', 'weiler-atherton' or 'priority'");
   if (edges != "feature" && edges != "all") throw std::invalid_argument("edges must be 'feature' or 'all'");
-  o.method = method == "roberts" ? hlr::RenderMethod::Roberts
-             : method == "weiler-atherton" ? hlr::RenderMethod::WeilerAtherton
-             : method == "priority"        ? hlr::RenderMethod::Priority
-                                           : hlr::RenderMethod::Faces;
+  o.method = hlr::parse_render_method(method);
   o.surfaces = surfaces;
   o.shadows = shadows;
   o.through_lines = through;

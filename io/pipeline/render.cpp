@@ -7,19 +7,21 @@
 #include <cmath>
 #include <map>
 
-#include "algorithms/solids/convexity.hpp"
-#include "algorithms/picture/drawing_2d.hpp"
+#include "algorithms/clip/weiler_atherton.hpp"
 #include "algorithms/hlr/face_occluders.hpp"
-#include "algorithms/solids/mesh_repair.hpp"
-#include "algorithms/support/parallel.hpp"
 #include "algorithms/hlr/roberts.hpp"
 #include "algorithms/hlr/roberts_pieces.hpp"
-#include "algorithms/surfaces/priority_list.hpp"
 #include "algorithms/hlr/see_through_lines.hpp"
+#include "algorithms/picture/drawing_2d.hpp"
+#include "algorithms/picture/picture_tiles.hpp"
+#include "algorithms/solids/convexity.hpp"
+#include "algorithms/solids/mesh_repair.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "algorithms/surfaces/priority_list.hpp"
 #include "algorithms/surfaces/shadows.hpp"
 #include "algorithms/surfaces/transparency.hpp"
-#include "algorithms/clip/weiler_atherton.hpp"
-#include "algorithms/picture/picture_tiles.hpp"
+#include "io/pipeline/render_methods.hpp"
+#include "io/pipeline/render_steps.hpp"
 
 namespace hlr {
 
@@ -31,14 +33,6 @@ RenderBodyError::RenderBodyError(int body, std::string name, std::string source,
       reason_(std::move(reason)) {}
 
 namespace {
-
-LineDrawing solve(const std::vector<const Polyhedron*>& polys, const Camera& camera, const RenderOptions& o) {
-  if (o.method == RenderMethod::Faces) return face_occluders(polys, camera, o.lines);
-  bool all_convex = true;
-  for (const Polyhedron* p : polys) all_convex = all_convex && p->report().valid_solid() && convexity(*p).convex();
-  if (all_convex) return roberts(polys, camera, o.lines);
-  return roberts_pieces(polys, camera, o.lines);
-}
 
 // Degenerate but drawable views get a note, never a wrong picture.
 void eye_plane_notes(const RenderResult& r, std::vector<std::string>& notes) {
@@ -168,6 +162,8 @@ Material material_of(const RenderResult& r, std::size_t b) {
 }
 
 // Per body: its material lets light through (transparency > 0): it hides no line.
+}  // namespace
+
 std::vector<char> see_through_bodies(const RenderResult& r) {
   std::vector<char> see(r.bodies.size(), 0);
   for (std::size_t b = 0; b < r.bodies.size(); ++b) see[b] = material_of(r, b).transparency > 0;
@@ -223,12 +219,18 @@ void solve_shadows(RenderResult& r, const std::vector<const Polyhedron*>& polys,
   });
 }
 
+namespace {
+
 // Surfaces: every edge for the cells, then the selected lines of the same solution drawn.
 void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys, const std::vector<Scene>& scenes,
                     const RenderOptions& o) {
-  if (o.method == RenderMethod::Roberts) throw std::invalid_argument("--surfaces works with --method faces, weiler-atherton or priority");
+  const RenderMethodEntry& m = method_entry(o.method);
+  if (!m.makes_polygons())
+    throw std::invalid_argument("--surfaces works with --method " + method_list([](const RenderMethodEntry& e) { return e.makes_polygons(); }));
   if (o.clip) throw std::invalid_argument("--surfaces does not take --clip (a clipped face is not a surface of the scene)");
-  if (o.shadows && o.method != RenderMethod::Faces) throw std::invalid_argument("--shadows works with --method faces");
+  if (o.shadows && !(m.flags & kTakesShadows))
+    throw std::invalid_argument("--shadows works with --method " +
+                                method_list([](const RenderMethodEntry& e) { return (e.flags & kTakesShadows) != 0; }));
   for (const Polyhedron* p : polys) plane_all_faces(*p, o.lines.threads);  // computed once, before the parallel stages
   if (r.camera.perspective)
     for (std::size_t b = 0; b < polys.size(); ++b)
@@ -259,25 +261,8 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
       if (fresh) r.group_colours.push_back(c);
       so.face_group[b].push_back(it->second);
     }
-  if (o.method == RenderMethod::WeilerAtherton) {
-    WeilerAthertonResult wa = weiler_atherton(polys, r.camera, d);
-    std::vector<SurfacePiece> pieces;
-    for (WaPolygon& p : wa.visible) pieces.push_back({p.body, p.face, std::move(p.pts)});
-    r.surfaces = surfaces_from_pieces(pieces, polys, r.camera, so);
-    r.surfaces->stats.weiler_atherton = true;
-    r.surfaces->stats.wa_clips = wa.clips;
-    r.surfaces->stats.wa_splits = wa.splits;
-    r.surfaces->stats.wa_recursions = wa.recursions;
-    r.surfaces->stats.wa_cycles = wa.cycles;
-  } else if (o.method == RenderMethod::Priority) {
-    auto t0 = std::chrono::steady_clock::now();
-    r.priority = priority_list(polys, r.camera, d);
-    r.priority_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  } else {
-    r.surfaces = visible_surfaces(polys, r.camera, d, so);
-    if (o.shadows) solve_shadows(r, polys, scenes, o, d);
-    if (!o.shadows) solve_transparency(r, polys, d);
-  }
+  PolygonStep step{r, polys, scenes, o, d, so};
+  m.polygons(step);
   if (o.lines.edges == EdgeSelection::Feature) {
     std::vector<Segment> kept;
     for (Segment& s : d.segments)
@@ -376,11 +361,11 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
       r.names.push_back(std::move(name));
     }
   }
-  if (o.method == RenderMethod::Roberts)
-    for (const Polyhedron* p : polys) p->report();  // Roberts' checks belong to loading
+  const RenderMethodEntry& m = method_entry(o.method);
+  if (m.flags & kChecksSolids)
+    for (const Polyhedron* p : polys) p->report();  // the method's checks belong to loading
   r.camera = choose_camera(o.view, scene_view, polys);
-  if ((o.tile || o.segments_only) &&
-      (o.method != RenderMethod::Faces || o.surfaces || o.shadows || o.clip))
+  if ((o.tile || o.segments_only) && (!(m.flags & kTakesTiles) || o.surfaces || o.shadows || o.clip))
     throw std::invalid_argument("tiles take line drawings of the per-face route (not --method roberts, --surfaces, --shadows or --clip)");
   RenderOptions tiled = o;
   std::optional<TileCut> cut;
@@ -394,15 +379,11 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     tiled.lines.may_occlude = [](int, const std::array<int, 3>&) { return false; };
   }
   try {
-    if (o.surfaces || o.shadows || o.method == RenderMethod::WeilerAtherton || o.method == RenderMethod::Priority)
+    if (o.surfaces || o.shadows || !m.draws_lines()) {
       solve_surfaces(r, polys, *owned, o);
-    else {
-      r.drawing = solve(polys, r.camera, tiled);
-      const std::vector<char> see = see_through_bodies(r);
-      if (o.method == RenderMethod::Faces && o.through_lines && !o.segments_only)
-        r.through_pieces = mark_see_through(r.drawing, polys, r.camera, tiled.lines, see);
-      else if (o.method == RenderMethod::Roberts && std::find(see.begin(), see.end(), 1) != see.end())
-        repairs.push_back("transparent bodies hide the lines behind them with --method roberts (the per-face route draws those lines as seen through)");
+    } else {
+      LineStep step{r, polys, tiled, repairs};
+      m.lines(step);
     }
   } catch (const BodyError& e) {
     const SceneBody& b = *r.bodies[e.body()];

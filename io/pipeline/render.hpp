@@ -11,16 +11,17 @@
 #include <vector>
 
 #include "algorithms/clip/cyrus_beck.hpp"
-#include "algorithms/shading/lighting.hpp"
 #include "algorithms/model/line_drawing.hpp"
 #include "algorithms/plot/plot.hpp"
+#include "algorithms/shading/lighting.hpp"
 #include "algorithms/surfaces/priority_list.hpp"
 #include "algorithms/surfaces/shadows.hpp"
 #include "algorithms/surfaces/transparency.hpp"
 #include "algorithms/surfaces/visible_surfaces.hpp"
+#include "io/pipeline/method_table.hpp"
+#include "io/pipeline/view_choice.hpp"
 #include "io/readers/scene.hpp"
 #include "io/writers/svg_writer.hpp"
-#include "io/pipeline/view_choice.hpp"
 
 namespace hlr {
 
@@ -30,7 +31,10 @@ namespace hlr {
 /// surfaces, the per-face route for the lines; implies `surfaces`. Priority: the course's
 /// priority-list (painter's) algorithm (priority_list.hpp): the faces and their cut parts
 /// painted back to front under the per-face route's lines.
-enum class RenderMethod { Faces, Roberts, WeilerAtherton, Priority };
+/// The methods are the rows of method_table.hpp (io/pipeline/render_methods.hpp: names, steps).
+#define HLR_METHOD_ENUM(e, name, lines, polygons, flags, help) e,
+enum class RenderMethod { HLR_RENDER_METHODS(HLR_METHOD_ENUM) };
+#undef HLR_METHOD_ENUM
 
 struct RenderOptions {
   RenderMethod method = RenderMethod::Faces;
