@@ -1,10 +1,10 @@
 // The method table (io/pipeline/method_table.hpp): every row has its own name, parses back to
 // itself, and the pipeline's refusals list exactly the methods the table says can do the job.
+#include "io/pipeline/render_methods.hpp"
+
 #include <gtest/gtest.h>
 
 #include <set>
-
-#include "io/pipeline/render_methods.hpp"
 
 using namespace hlr;
 

@@ -4,21 +4,22 @@
 #include <png.h>
 
 #include <algorithm>
-#include <csetjmp>
 #include <chrono>
+#include <cmath>
+#include <csetjmp>
 #include <map>
 #include <memory>
-#include <cmath>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "algorithms/support/parallel.hpp"
-#include "algorithms/support/progress.hpp"
 #include "algorithms/raster/ray_casting.hpp"
 #include "algorithms/raster/ray_tracing.hpp"
 #include "algorithms/raster/scanline.hpp"
 #include "algorithms/raster/warnock.hpp"
 #include "algorithms/raster/zbuffer.hpp"
+#include "algorithms/shading/face_shading.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "algorithms/support/progress.hpp"
 
 namespace hlr {
 
@@ -36,92 +37,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// Doubles for shading: the middle of the certified bounds each exact number carries (within an
-// ulp of the nearest double, without a rational on the way).
-double mid(const Bounds& b) { return b.lo + (b.hi - b.lo) / 2; }
-Vec3d d3(const Point3& p) { return {mid(p.approx(0)), mid(p.approx(1)), mid(p.approx(2))}; }
-Vec3d d3(const Vector3& p) { return {mid(p.approx(0)), mid(p.approx(1)), mid(p.approx(2))}; }
-double dot3(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3d unit(Vec3d a) {
-  double l = std::sqrt(dot3(a, a));
-  return l > 0 ? Vec3d{a[0] / l, a[1] / l, a[2] / l} : a;
-}
-Vec3d minus(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-
-// Doubles of the picture plane, for shading only: the world point of a picture point on a plane.
-struct Lift {
-  bool persp;
-  Vec3d e, r, u, d, v;
-  double rr, uu, dd;
-  explicit Lift(const Camera& cam) : persp(cam.perspective) {
-    PicturePlane pp(cam);
-    r = d3(pp.r()), u = d3(pp.u()), d = d3(pp.d());
-    rr = dot3(r, r), uu = dot3(u, u), dd = dot3(d, d);
-    e = d3(cam.eye);
-    v = d3(cam.direction);
-  }
-  // The point of the plane n·X + c = 0 on the sight ray through (x, y).
-  Vec3d at(double x, double y, const Vec3d& n, double c) const {
-    if (!persp) {
-      Vec3d b{x / rr * r[0] + y / uu * u[0], x / rr * r[1] + y / uu * u[1], x / rr * r[2] + y / uu * u[2]};
-      double s = -(dot3(n, b) + c) / dot3(n, v);
-      return {b[0] + s * v[0], b[1] + s * v[1], b[2] + s * v[2]};
-    }
-    Vec3d dir{x * dd / rr * r[0] + y * dd / uu * u[0] + d[0], x * dd / rr * r[1] + y * dd / uu * u[1] + d[1],
-              x * dd / rr * r[2] + y * dd / uu * u[2] + d[2]};
-    double l = -(dot3(n, e) + c) / dot3(n, dir);
-    return {e[0] + l * dir[0], e[1] + l * dir[1], e[2] + l * dir[2]};
-  }
-  Vec3d to_viewer(const Vec3d& p) const { return persp ? unit(minus(e, p)) : unit(v); }
-};
-
-// Shading data of one body: unit face normals and, per face and corner, the vertex normal that
-// averages the faces around the vertex within the smoothing angle (notes section 39).
-struct BodyNormals {
-  std::vector<Vec3d> face;
-  std::vector<std::vector<int>> around;  // vertex -> faces
-};
-
-BodyNormals body_normals(const Polyhedron& p) {
-  BodyNormals n;
-  n.face.resize(p.num_faces());
-  n.around.resize(p.num_vertices());
-  ParallelLoop().for_each(p.num_faces(), 1024, [&](std::size_t f) { n.face[f] = face_normal(p, f); });
-  for (std::size_t f = 0; f < p.num_faces(); ++f)
-    for (int v : p.faces()[f]) n.around[v].push_back(static_cast<int>(f));
-  return n;
-}
-
-Vec3d vertex_normal(const BodyNormals& n, int f, int v, double cos_smooth) {
-  Vec3d s{0, 0, 0};
-  for (int g : n.around[v])
-    if (dot3(n.face[g], n.face[f]) >= cos_smooth)
-      for (int k = 0; k < 3; ++k) s[k] += n.face[g][k];
-  return unit(s);
-}
-
-// Barycentric weights of p over the fan triangle (0, k, k + 1) of the polygon's corners that
-// holds it (in the plane of normal n: the dominant axis dropped). Returns the triangle's k.
-int fan_weights(const std::vector<Vec3d>& c, const Vec3d& n, const Vec3d& p, double w[3]) {
-  const int drop = std::fabs(n[0]) >= std::fabs(n[1]) && std::fabs(n[0]) >= std::fabs(n[2]) ? 0 : std::fabs(n[1]) >= std::fabs(n[2]) ? 1 : 2;
-  const int a = drop == 0 ? 1 : 0, b = drop == 2 ? 1 : 2;
-  auto area = [&](const Vec3d& x, const Vec3d& y, const Vec3d& z) {
-    return (y[a] - x[a]) * (z[b] - x[b]) - (y[b] - x[b]) * (z[a] - x[a]);
-  };
-  int best = 1;
-  double best_min = -INFINITY, bw[3] = {1, 0, 0};
-  for (std::size_t k = 1; k + 1 < c.size(); ++k) {
-    double t = area(c[0], c[k], c[k + 1]);
-    if (t == 0) continue;
-    double w0 = area(p, c[k], c[k + 1]) / t, w1 = area(c[0], p, c[k + 1]) / t, w2 = 1 - w0 - w1;
-    double m = std::min({w0, w1, w2});
-    if (m > best_min) best_min = m, best = static_cast<int>(k), bw[0] = w0, bw[1] = w1, bw[2] = w2;
-    if (m >= 0) break;
-  }
-  w[0] = bw[0], w[1] = bw[1], w[2] = bw[2];
-  return best;
-}
 
 class Shader {
  public:

@@ -47,19 +47,6 @@ void eye_plane_notes(const RenderResult& r, std::vector<std::string>& notes) {
   }
 }
 
-// Doubles for shading: the midpoint of the certified bounds each exact number carries.
-double mid(const Bounds& b) { return b.lo + (b.hi - b.lo) / 2; }
-std::array<double, 3> d3(const Point3& p) { return {mid(p.approx(0)), mid(p.approx(1)), mid(p.approx(2))}; }
-std::array<double, 3> d3(const Vector3& p) { return d3(Point3(p.x(), p.y(), p.z())); }
-std::array<double, 3> unit3(std::array<double, 3> a) {
-  double l = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-  if (l > 0) a = {a[0] / l, a[1] / l, a[2] / l};
-  return a;
-}
-std::array<double, 3> cross3(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
 // The scene's lights: `lighting:`, else `light:` as one directional light, else the default.
 Lighting scene_lighting(const std::vector<Scene>& scenes, const Camera& cam) {
   for (const Scene& s : scenes)
@@ -68,56 +55,28 @@ Lighting scene_lighting(const std::vector<Scene>& scenes, const Camera& cam) {
     if (s.light) {
       Lighting l;
       Light d;
-      d.direction = unit3(d3(*s.light));
+      d.direction = unit(d3(*s.light));
       d.exact = true;
       d.exact_direction = {s.light->x(), s.light->y(), s.light->z()};
       l.lights.push_back(d);
       return l;
     }
-  auto v = unit3(cam.perspective ? d3(Vector3(cam.eye - cam.target)) : d3(cam.direction));
-  auto right = unit3(cross3(d3(cam.up), v)), up = cross3(v, right);
-  Lighting l = default_lighting(v, up, right);
-  // Shadows decide with exact light directions: snap the default lights to sixty-fourths (a
-  // change of under a degree), small numbers that keep the exact arithmetic fast.
-  for (Light& x : l.lights) {
-    x.exact = true;
-    for (int k = 0; k < 3; ++k) x.exact_direction[k] = rational(std::lround(x.direction[k] * 64), 64);
-    x.direction = unit3({to_double(x.exact_direction[0]), to_double(x.exact_direction[1]), to_double(x.exact_direction[2])});
-    for (int k = 0; k < 3; ++k) x.exact_position[k] = rational_from_double(x.position[k]);
-  }
-  return l;
+  return camera_lighting(cam);
 }
 
-// The flat colour of face f of body b under `light`, for the side the viewer sees (facing -1:
-// the back side).
-// `n`: the face's unit normal.
-// The camera's eye and unit view direction in doubles, once per drawing (each costs exact
-// copies).
-struct ViewDoubles {
-  std::array<double, 3> eye, view;
-  explicit ViewDoubles(const Camera& c) : eye(d3(c.eye)), view(unit3(d3(c.direction))) {}
-};
-
+// The flat colour of face f of body b under `light`, for the side the viewer sees (back: the
+// back side); `n`: the face's unit normal.
 Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Lighting& light, bool back, std::array<double, 3> n,
                 const ViewDoubles& vd) {
-  const Polyhedron& p = r.bodies[b]->body;
   Material m;
   m.colour = palette_colour(static_cast<int>(b));
   if (r.bodies[b]->material) m = *r.bodies[b]->material;
-  const std::array<double, 3>&eye = vd.eye, &view = vd.view;
-  if (back) n = {-n[0], -n[1], -n[2]};
-  std::array<double, 3> c{0, 0, 0};
-  for (int v : p.faces()[f]) {
-    auto q = d3(p.vertices()[v]);
-    for (int k = 0; k < 3; ++k) c[k] += q[k] / static_cast<double>(p.faces()[f].size());
-  }
-  std::array<double, 3> to_viewer = r.camera.perspective ? unit3({eye[0] - c[0], eye[1] - c[1], eye[2] - c[2]}) : view;
-  return shade(m, light, c, n, to_viewer);
+  return flat_face_colour(r.bodies[b]->body, f, m, light, back, n, r.camera.perspective, vd);
 }
 
 Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Lighting& light, bool back, const ViewDoubles& vd) {
   const Plane& h = r.bodies[b]->body.planes()[f];
-  return face_colour(r, b, f, light, back, unit3({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))}), vd);
+  return face_colour(r, b, f, light, back, unit({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))}), vd);
 }
 
 // Flat colour of every face, for the side the viewer sees (facing: 1 front, -1 back, 0 edge-on).
@@ -176,18 +135,18 @@ void solve_transparency(RenderResult& r, const std::vector<const Polyhedron*>& p
   const std::vector<char> see = see_through_bodies(r);
   if (std::find(see.begin(), see.end(), 1) == see.end()) return;
   r.transparent = transparent_regions(polys, r.camera, all, see);
-  const std::array<double, 3> eye = d3(r.camera.eye), view = unit3(d3(r.camera.direction));
+  const std::array<double, 3> eye = d3(r.camera.eye), view = unit(d3(r.camera.direction));
   for (const TransparentRegion& reg : r.transparent->regions) {
     Rgb c{1, 1, 1};
     for (auto [b, f] : reg.faces) {
       const Polyhedron& p = *polys[b];
       const Plane& h = p.planes()[f];
-      std::array<double, 3> n = unit3({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))}), ctr{0, 0, 0};
+      std::array<double, 3> n = unit({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))}), ctr{0, 0, 0};
       for (int v : p.faces()[f]) {
         auto q = d3(p.vertices()[v]);
         for (int k = 0; k < 3; ++k) ctr[k] += q[k] / static_cast<double>(p.faces()[f].size());
       }
-      std::array<double, 3> to_viewer = r.camera.perspective ? unit3({eye[0] - ctr[0], eye[1] - ctr[1], eye[2] - ctr[2]}) : view;
+      std::array<double, 3> to_viewer = r.camera.perspective ? unit({eye[0] - ctr[0], eye[1] - ctr[1], eye[2] - ctr[2]}) : view;
       const double tau = see[b] ? transparency_at(material_of(r, b), std::fabs(n[0] * to_viewer[0] + n[1] * to_viewer[1] + n[2] * to_viewer[2])) : 0;
       const Rgb& own = r.face_colours[b][f];
       for (int k = 0; k < 3; ++k) c[k] = (1 - tau) * own[k] + tau * c[k];
@@ -412,33 +371,6 @@ Lighting render_lighting(const RenderResult& r) { return scene_lighting(*r.scene
 std::vector<LightPlace> render_light_places(const RenderResult& r) { return light_places(render_lighting(r)); }
 
 Material body_material(const RenderResult& r, std::size_t b) { return material_of(r, b); }
-
-std::array<double, 3> face_normal(const Polyhedron& p, std::size_t f) {
-  const Face& face = p.faces()[f];
-  std::array<double, 3> n{0, 0, 0};
-  const std::array<double, 3> o = d3(p.vertices()[face[0]]);
-  for (std::size_t i = 1; i + 1 < face.size(); ++i) {  // Newell's sum as a fan from the first vertex
-    const std::array<double, 3> a = d3(p.vertices()[face[i]]), b = d3(p.vertices()[face[i + 1]]);
-    const double u[3] = {a[0] - o[0], a[1] - o[1], a[2] - o[2]}, v[3] = {b[0] - o[0], b[1] - o[1], b[2] - o[2]};
-    n[0] += u[1] * v[2] - u[2] * v[1], n[1] += u[2] * v[0] - u[0] * v[2], n[2] += u[0] * v[1] - u[1] * v[0];
-  }
-  const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  if (std::isfinite(l) && l > 0x1p-500) return {n[0] / l, n[1] / l, n[2] / l};
-  std::vector<const Point3*> pts;
-  for (int v : face) pts.push_back(&p.vertices()[v]);
-  const Plane h = primitive_plane_of_polygon(pts.data(), pts.size());  // exact: beyond the doubles' range
-  // Scaled by a power of two so that the largest component is near 1 (integers of any size).
-  int e = INT_MIN;
-  for (int k = 0; k < 3; ++k)
-    if (sgn(h[k]) != 0) e = std::max(e, static_cast<int>(mpz_sizeinbase(h[k].get_num().get_mpz_t(), 2)));
-  if (e == INT_MIN) return {0, 0, 1};
-  std::array<double, 3> m;
-  for (int k = 0; k < 3; ++k) {
-    mpz_class q = h[k].get_num();
-    m[k] = e > 900 ? mpz_class(q >> (e - 900)).get_d() : q.get_d();
-  }
-  return unit3(m);
-}
 
 std::vector<std::vector<Rgb>> flat_face_colours(const RenderResult& r, const std::vector<std::vector<char>>* only) {
   const Lighting light = render_lighting(r);

@@ -13,6 +13,7 @@
 #include "algorithms/clip/cyrus_beck.hpp"
 #include "algorithms/model/line_drawing.hpp"
 #include "algorithms/plot/plot.hpp"
+#include "algorithms/shading/face_shading.hpp"
 #include "algorithms/shading/lighting.hpp"
 #include "algorithms/surfaces/priority_list.hpp"
 #include "algorithms/surfaces/shadows.hpp"
@@ -132,11 +133,6 @@ std::vector<LightPlace> render_light_places(const RenderResult& result);
 
 /// The material of body b (its own, else the palette's default colour).
 Material body_material(const RenderResult& result, std::size_t body);
-
-/// The unit normal of face f in doubles, for shading: Newell's sum over the vertices' doubles
-/// (no exact plane needed), the exact plane's direction where the doubles cannot hold the
-/// numbers (coordinates beyond 2^500 or below 2^-500).
-std::array<double, 3> face_normal(const Polyhedron& p, std::size_t f);
 
 /// Every face's flat colour (per body, per face) for the side the viewer sees (facing from
 /// result.drawing; -1: the back side), with face_normal's normals; with `only`, just the faces
