@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The torture suite's long mode: thousands of random scenes. Lines: the eye among the bodies, on
 # face planes and on surfaces, axis views; every piece of both routes checked by exact ray
-# casting and the routes compared. Every other product (tests/product_torture_test.cpp): visible
+# casting and the routes compared. Every other product (tests/io/product_torture_test.cpp): visible
 # surfaces, transparency, shadows, the priority list, the four raster algorithms and the floating
 # horizon, each sampled and checked by exact ray casting, with repaired meshes' face numbers.
 # Runs until SECONDS (default 1800) have passed, 1000 scenes per seed; prints each seed's tally

@@ -1,20 +1,21 @@
 // Mesh readers with exact coordinates (io/readers/mesh_reader.hpp): OFF, OBJ, STL, PLY.
 #include <gtest/gtest.h>
-
-#include <cstring>
-#include <map>
-#include <random>
-#include <filesystem>
-#include <fstream>
 #include <unistd.h>
 
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+
 #include "io/readers/mesh_reader.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
 const std::string kData = HLR_DATA_DIR;
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 
 std::string temp_file(const std::string& name, const std::string& bytes) {
   auto dir = std::filesystem::temp_directory_path() / ("hlr_test_" + std::to_string(::getpid()));

@@ -8,6 +8,8 @@
 // computed by an exact slab sweep. Scenes by name: touching, flush, shared faces,
 // interpenetrating, cyclic sticks, open and coplanar surfaces, axis views, perspective, random
 // triangles, CGAL's fandisk, couplingdown and bunny00.
+#include "algorithms/surfaces/visible_surfaces.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,13 +18,13 @@
 #include <random>
 #include <set>
 
+#include "algorithms/clip/weiler_atherton.hpp"
 #include "algorithms/hlr/face_occluders.hpp"
 #include "algorithms/solids/face_triangles.hpp"
-#include "algorithms/surfaces/visible_surfaces.hpp"
-#include "algorithms/clip/weiler_atherton.hpp"
 #include "io/readers/mesh_reader.hpp"
 #include "io/readers/scene.hpp"
-#include "face_oracle.hpp"
+#include "support/face_oracle.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
@@ -30,7 +32,7 @@ namespace {
 
 const std::string kData = HLR_DATA_DIR;
 const std::string kCorpus = HLR_CORPUS_DIR;
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
 Polyhedron box(const char* x0, const char* y0, const char* z0, const char* x1, const char* y1, const char* z1) {
   return make_box(P(x0, y0, z0), P(x1, y1, z1));

@@ -1,18 +1,20 @@
 // Scene files (io/readers/scene.hpp): bodies from meshes, inline lists and boxes; transforms; view.
+#include "io/readers/scene.hpp"
+
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "algorithms/solids/convexity.hpp"
-#include "io/readers/scene.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
 const std::string kData = HLR_DATA_DIR;
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 
 std::string scene_file(const std::string& name, const std::string& text) {
   auto dir = std::filesystem::temp_directory_path() / ("hlr_scene_" + std::to_string(::getpid()));

@@ -5,15 +5,15 @@
 // views whose picture puts samples of different cuts at one abscissa (no x component, the
 // diagonal view of a square grid), the view from below and from behind, uneven grids, and
 // numbers far outside the range of doubles.
+#include "algorithms/horizon/floating_horizon_filtered.hpp"
+
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <random>
 
 #include "algorithms/horizon/floating_horizon.hpp"
-#include "algorithms/horizon/floating_horizon_filtered.hpp"
-
-#include "horizon_grids.hpp"
+#include "support/horizon_grids.hpp"
 
 namespace hlr {
 namespace {

@@ -1,14 +1,16 @@
 // Homogeneous transforms, course notes section 20 (kernel/transform.hpp, kernel/rotation.hpp).
+#include "kernel/transform.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "kernel/transform.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
 Vector3 V(const char* x, const char* y, const char* z) { return Vector3(Q(x), Q(y), Q(z)); }
 bool same(const Matrix4& a, const Matrix4& b) {

@@ -13,9 +13,9 @@
 #include "algorithms/hlr/face_occluders.hpp"
 #include "algorithms/hlr/roberts.hpp"
 #include "io/pipeline/render.hpp"
-#include "io/readers/scene.hpp"
 #include "io/pipeline/view_choice.hpp"
-#include "ray_oracle.hpp"
+#include "io/readers/scene.hpp"
+#include "support/ray_oracle.hpp"
 
 using namespace hlr;
 using namespace hlr::test;

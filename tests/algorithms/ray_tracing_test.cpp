@@ -3,20 +3,22 @@
 // law in squared form, a mirror that shows exactly the colour of what it reflects, a glass slab
 // that shifts a ray by the amount worked by hand, and the raster pipeline end to end (the four
 // algorithms write the same face-id buffer; the camera JSON's exact grid).
+#include "algorithms/raster/ray_tracing.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <random>
 
-#include "algorithms/raster/ray_tracing.hpp"
 #include "io/pipeline/raster.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
 
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Point3 P(double x, double y, double z) { return Point3(rational_from_double(x), rational_from_double(y), rational_from_double(z)); }
 Polyhedron quad(const Point3& a, const Point3& b, const Point3& c, const Point3& d) { return Polyhedron({a, b, c, d}, {{0, 1, 2, 3}}); }
 

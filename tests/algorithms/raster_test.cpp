@@ -15,20 +15,21 @@
 #include <random>
 
 #include "algorithms/hlr/face_occluders.hpp"
-#include "algorithms/raster/ray_casting.hpp"
 #include "algorithms/raster/raster_scene.hpp"
+#include "algorithms/raster/ray_casting.hpp"
 #include "algorithms/raster/scanline.hpp"
-#include "algorithms/surfaces/visible_surfaces.hpp"
 #include "algorithms/raster/warnock.hpp"
 #include "algorithms/raster/zbuffer.hpp"
-#include "face_oracle.hpp"
+#include "algorithms/surfaces/visible_surfaces.hpp"
 #include "io/readers/mesh_reader.hpp"
+#include "support/face_oracle.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
 
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Point3 P(const Rational& x, const Rational& y, const Rational& z) { return Point3(x, y, z); }
 Polyhedron box(int x0, int y0, int z0, int x1, int y1, int z1) { return make_box(P(x0, y0, z0), P(x1, y1, z1)); }
 Polyhedron quad(const Point3& a, const Point3& b, const Point3& c, const Point3& d) { return Polyhedron({a, b, c, d}, {{0, 1, 2, 3}}); }

@@ -7,6 +7,8 @@
 // Scenes by name: the three-stick cycle, a cycle of three open polygons, piercing polygons,
 // interpenetrating boxes, touching and coplanar faces, views along faces, perspective with the
 // eye near a face, random triangles, CGAL's fandisk.
+#include "algorithms/surfaces/priority_list.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,10 +17,10 @@
 #include <random>
 
 #include "algorithms/hlr/face_occluders.hpp"
-#include "algorithms/surfaces/priority_list.hpp"
 #include "io/readers/mesh_reader.hpp"
 #include "io/readers/scene.hpp"
-#include "face_oracle.hpp"
+#include "support/face_oracle.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
@@ -26,7 +28,7 @@ namespace {
 
 const std::string kData = HLR_DATA_DIR;
 const std::string kCorpus = HLR_CORPUS_DIR;
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
 Polyhedron box(const char* x0, const char* y0, const char* z0, const char* x1, const char* y1, const char* z1) {
   return make_box(P(x0, y0, z0), P(x1, y1, z1));

@@ -1,23 +1,25 @@
 // The per-face route (algorithms/hlr/face_occluders.hpp): exact pieces on hand-made
 // scenes for each degenerate case by name (axis views, a ray leaving a solid exactly through
 // an edge, holes, open surfaces, intersection lines, crease thresholds) and the line kinds.
+#include "algorithms/hlr/face_occluders.hpp"
+
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <random>
 #include <set>
 
 #include "algorithms/solids/crease_angle.hpp"
-#include "algorithms/hlr/face_occluders.hpp"
 #include "io/readers/mesh_reader.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
 const std::string kData = HLR_DATA_DIR;
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
 
 Polyhedron box(const char* x0, const char* y0, const char* z0, const char* x1, const char* y1, const char* z1) {

@@ -1,19 +1,21 @@
 // Roberts' algorithm (algorithms/hlr/roberts.hpp): hand-computed exact cases, degenerate cases by
 // name, and the invariants of the pieces.
+#include "algorithms/hlr/roberts.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
 #include <set>
 
-#include "algorithms/hlr/roberts.hpp"
 #include "io/readers/mesh_reader.hpp"
 #include "io/readers/scene.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
 const std::string kData = HLR_DATA_DIR;
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
 Vector3 V(const char* x, const char* y, const char* z) { return Vector3(Q(x), Q(y), Q(z)); }
 

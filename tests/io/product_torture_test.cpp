@@ -18,11 +18,11 @@
 #include "algorithms/raster/ray_casting.hpp"
 #include "algorithms/raster/scanline.hpp"
 #include "algorithms/raster/warnock.hpp"
-#include "face_oracle.hpp"
 #include "io/pipeline/horizon.hpp"
 #include "io/pipeline/raster.hpp"
 #include "io/pipeline/render.hpp"
 #include "io/readers/scene.hpp"
+#include "support/face_oracle.hpp"
 
 using namespace hlr;
 

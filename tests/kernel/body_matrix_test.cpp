@@ -1,14 +1,16 @@
 // Roberts' body matrix, course notes section 27 (kernel/body_matrix.hpp).
+#include "kernel/body_matrix.hpp"
+
 #include <gtest/gtest.h>
 
 #include "io/readers/mesh_reader.hpp"
-#include "kernel/body_matrix.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
 const std::string kData = HLR_DATA_DIR;
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 }  // namespace
 
 // The notes' example: the box [-1, 1]^3, columns left, right, bottom, top, back, front.

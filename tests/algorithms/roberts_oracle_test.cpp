@@ -4,10 +4,9 @@
 // Random scenes of random convex bodies (convex hulls of random rational points, built with
 // CGAL), orthographic and perspective: zero disagreements. The per-face route runs on
 // the same scenes: the same oracle, and exactly the same pieces for every edge.
-#include <gtest/gtest.h>
-
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
+#include <gtest/gtest.h>
 
 #include <map>
 #include <random>
@@ -17,7 +16,7 @@
 #include "algorithms/hlr/roberts.hpp"
 #include "io/readers/scene.hpp"
 #include "kernel/epeck_bridge.hpp"
-#include "ray_oracle.hpp"
+#include "support/ray_oracle.hpp"
 
 using namespace hlr;
 using namespace hlr::test;

@@ -7,13 +7,12 @@
 
 #include <cmath>
 #include <functional>
-#include <string>
 #include <random>
+#include <string>
 
 #include "algorithms/plot/plot.hpp"
 #include "io/pipeline/horizon.hpp"
-
-#include "horizon_grids.hpp"
+#include "support/horizon_grids.hpp"
 
 namespace hlr {
 namespace {

@@ -1,14 +1,16 @@
 // Filtered exact predicates (kernel/predicates.hpp): answers are exact even when the interval
 // filter cannot decide.
+#include "kernel/predicates.hpp"
+
 #include <gtest/gtest.h>
 
 #include "kernel/epeck_bridge.hpp"
-#include "kernel/predicates.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
 }  // namespace
 

@@ -5,22 +5,24 @@
 // opaque body (hidden); every face of the scene with its own planes and point-in-polygon
 // (face_oracle.hpp). Scenes: glass in front of opaque, touching and flush, interpenetrating,
 // nested, an open glass sheet, the eye close to a face, numbers beyond doubles.
+#include "algorithms/hlr/see_through_lines.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "algorithms/hlr/face_occluders.hpp"
-#include "algorithms/hlr/see_through_lines.hpp"
-#include "face_oracle.hpp"
 #include "io/pipeline/render.hpp"
 #include "io/readers/scene.hpp"
 #include "io/writers/svg_writer.hpp"
+#include "support/face_oracle.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
 
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Point3 P(const Rational& x, const Rational& y, const Rational& z) { return Point3(x, y, z); }
 Piece piece(const char* t0, const char* t1, bool visible) { return Piece{Q(t0), Q(t1), visible}; }
 

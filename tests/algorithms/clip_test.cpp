@@ -7,12 +7,13 @@
 #include "algorithms/clip/cyrus_beck.hpp"
 #include "algorithms/clip/midpoint_clip.hpp"
 #include "io/readers/mesh_reader.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
 const std::string kData = HLR_DATA_DIR;
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
 
 ConvexClipper octahedron() {  // |x| + |y| + |z| <= 1

@@ -4,20 +4,22 @@
 // colour is its material colour, so the expected colours are written down by hand: linear
 // I = (1 − τ)·I1 + τ·I2; Kay's τ = τmin + (τmax − τmin)(1 − (1 − |n_z|)^p) on a face facing the
 // viewer (τ = τmax) and on one tilted to |n_z| = 3/5; the path-length model τ^(1/|cos φ|).
+#include "algorithms/surfaces/transparency.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "algorithms/hlr/face_occluders.hpp"
-#include "algorithms/surfaces/transparency.hpp"
 #include "io/pipeline/render.hpp"
 #include "io/readers/scene.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
 
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
 Polyhedron quad(const Point3& a, const Point3& b, const Point3& c, const Point3& d) { return Polyhedron({a, b, c, d}, {{0, 1, 2, 3}}); }
 
@@ -129,7 +131,7 @@ TEST(Transparency, GlassBoxShowsItsBackFacesAndWhatIsBehind) {
 
 #include <random>
 
-#include "face_oracle.hpp"
+#include "support/face_oracle.hpp"
 
 namespace {
 

@@ -6,6 +6,8 @@
 // must not. Points whose ray grazes a face's border are skipped (a set of no area). Scenes by
 // name: boxes on a ground plane, a pyramid on a box, touching and flush bodies, two lights, a
 // perspective view, a point light.
+#include "algorithms/surfaces/shadows.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -14,8 +16,8 @@
 #include <string>
 
 #include "algorithms/hlr/face_occluders.hpp"
-#include "algorithms/surfaces/shadows.hpp"
-#include "face_oracle.hpp"
+#include "support/face_oracle.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 using test::in_face;
@@ -24,7 +26,7 @@ using test::OracleFace;
 
 namespace {
 
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
 Vector3 V(const char* x, const char* y, const char* z) { return Vector3(Q(x), Q(y), Q(z)); }
 Polyhedron box(const char* x0, const char* y0, const char* z0, const char* x1, const char* y1, const char* z1) {

@@ -2,21 +2,23 @@
 // Roberts' algorithm through the pieces (algorithms/hlr/roberts_pieces.hpp): pieces convex and
 // exactly as large as the body, both methods; the pieces route draws exactly what the
 // per-face route draws; the cut-plane trap.
+#include "algorithms/solids/convex_decomposition.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
-#include "algorithms/solids/convex_decomposition.hpp"
-#include "algorithms/solids/convexity.hpp"
 #include "algorithms/hlr/face_occluders.hpp"
 #include "algorithms/hlr/roberts_pieces.hpp"
+#include "algorithms/solids/convexity.hpp"
 #include "io/readers/mesh_reader.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
 const std::string kData = HLR_DATA_DIR;
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
 
 std::string pieces(const Segment& s) {

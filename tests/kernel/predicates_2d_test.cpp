@@ -2,16 +2,18 @@
 // the orientation filter never disagrees with the exact sign, on near-collinear points, at the
 // ends of the filter's range and beyond the doubles; the interval form and the comparison
 // filter decide only what is true.
+#include "kernel/predicates_2d.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "kernel/predicates_2d.hpp"
+#include "support/numbers.hpp"
 
 using namespace hlr;
 
 namespace {
-Rational Q(const char* s) { return parse_rational(s); }
+using hlr::test::Q;
 Rational R(long n, long d) {
   Rational q(n);
   q /= d;
