@@ -11,6 +11,32 @@ import re
 import subprocess
 import sys
 
+def self_test():
+    """Each rule must catch its breach: a tiny repository that breaks all of them."""
+    import tempfile
+    with tempfile.TemporaryDirectory() as t:
+        def put(path, text):
+            os.makedirs(os.path.dirname(os.path.join(t, path)), exist_ok=True)
+            open(os.path.join(t, path), "w").write(text)
+        for k in range(21):
+            put(f"algorithms/big/f{k}.hpp", "#pragma once\n")
+        put("io/long.cpp", "int x;\n" * 701)
+        put("algorithms/big/dup.cpp", "constexpr double u = 0x1p-53;\n")
+        put("docs/notes.md", "Measured in the third " + "ses" + "sion.\n")
+        put("CMakeFiles/CMakeOutput.log", "log\n")
+        subprocess.run(["git", "init", "-q", t], check=True)
+        subprocess.run(["git", "-C", t, "add", "-A"], check=True)
+        r = subprocess.run([sys.executable, __file__, t], capture_output=True, text=True)
+        want = ["holds 22 files", "701 lines", "defines again", "how the work was organised", "a build output is committed"]
+        missing = [w for w in want if w not in r.stdout]
+        if r.returncode != 1 or missing:
+            sys.exit("house_rules --self-test: not caught: " + ", ".join(missing) + "\n" + r.stdout)
+    print("house_rules --self-test: every rule catches its breach")
+    sys.exit(0)
+
+
+if sys.argv[1:] == ["--self-test"]:
+    self_test()
 root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..")
 files = subprocess.run(["git", "ls-files"], cwd=root, capture_output=True, text=True, check=True).stdout.split()
 files = [f for f in files if os.path.exists(os.path.join(root, f))]
@@ -47,9 +73,10 @@ for pattern, home in once.items():
         if f != home and re.search(pattern, open(os.path.join(root, f), encoding="utf-8").read()):
             bad.append(f"{f}: defines again what lives in {home} ({pattern})")
 
-words = re.compile(r"\bsessions?\b|\bissues? [0-9]|\bseeds? 00[0-9]|this VM", re.I)
+# The words, spelled in pieces so that this file does not hold them itself.
+words = re.compile("|".join([r"\bses" + r"sions?\b", r"\biss" + r"ues? [0-9]", r"\bsee" + r"ds? 00[0-9]", "this " + "VM"]), re.I)
 for f in files:
-    if f.startswith(("tests/golden/", "data/")) or f.endswith((".png", ".pdf", ".svg", ".off", ".stl")) or f == "tests/checks/house_rules.py":
+    if f.startswith(("tests/golden/", "data/")) or f.endswith((".png", ".pdf", ".svg", ".off", ".stl")):
         continue
     try:
         text = open(os.path.join(root, f), encoding="utf-8").read()
