@@ -79,8 +79,8 @@ class Engine {
   using C = typename P::C;
   using V = typename P::V;
 
-  Engine(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const LineOptions& opt, std::vector<Vec<P>> pts,
-         Vec<P> view, Rational scale);
+  Engine(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const LineOptions& opt, const FaceRouteHooks& hooks,
+         std::vector<Vec<P>> pts, Vec<P> view, Rational scale);
   LineDrawing run();
 
  private:
@@ -147,6 +147,7 @@ class Engine {
   const std::vector<const Polyhedron*>& bodies_;
   const Camera& cam_;
   const LineOptions& opt_;
+  const FaceRouteHooks& hooks_;
   std::vector<Vec<P>> X_;
   Vec<P> view_;  // orthographic direction, or the eye (scaled like the points)
   Rational scale_;

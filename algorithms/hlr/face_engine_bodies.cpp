@@ -28,10 +28,17 @@ DrawingFrame frame_of(const std::vector<const Polyhedron*>& bodies) {
 }  // namespace
 
 template <class P>
-Engine<P>::Engine(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const LineOptions& opt,
+Engine<P>::Engine(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const LineOptions& opt, const FaceRouteHooks& hooks,
                   std::vector<Vec<P>> pts, Vec<P> view, Rational scale)
-    : bodies_(bodies), cam_(cam), opt_(opt), X_(std::move(pts)), view_(std::move(view)), scale_(std::move(scale)),
-      proj_(cam, frame_of(bodies)), crease_(opt.crease_degrees) {}
+    : bodies_(bodies),
+      cam_(cam),
+      opt_(opt),
+      hooks_(hooks),
+      X_(std::move(pts)),
+      view_(std::move(view)),
+      scale_(std::move(scale)),
+      proj_(cam, frame_of(bodies)),
+      crease_(opt.crease_degrees) {}
 
 template <class P>
 LineDrawing Engine<P>::run() {
@@ -43,7 +50,7 @@ LineDrawing Engine<P>::run() {
   auto t0 = Clock::now();
   offsets();
   for (std::size_t b = 0; b < bodies_.size(); ++b) prepare_body(static_cast<int>(b), res);
-  if (opt_.facing_only) {
+  if (hooks_.facing_only) {
     res.stats.setup_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     return res;
   }

@@ -177,7 +177,7 @@ void Engine<P>::select_occluders(const std::vector<std::vector<DrawnEdge>>& draw
       const Tri& t0 = tris_[i];
       int fs = facing_[t0.body][t0.face];
       if (fs == 0) continue;  // edge-on: sight rays graze it
-      if (static_cast<std::size_t>(t0.body) < opt_.see_through.size() && opt_.see_through[t0.body]) continue;  // hides nothing
+      if (static_cast<std::size_t>(t0.body) < hooks_.see_through.size() && hooks_.see_through[t0.body]) continue;  // hides nothing
       if (solid_[t0.body] && fs < 0 && !eye_on_[t0.body]) continue;  // a closed solid is hidden by its front faces
       // No point strictly in front of the eye: its sight cone lies behind the eye, where nothing
       // is drawn (docs/design.md, "Occluders that reach behind the eye").
@@ -185,9 +185,9 @@ void Engine<P>::select_occluders(const std::vector<std::vector<DrawnEdge>>& draw
       ++hiding[w];
       state[i] = 1;
       if (near && !near(t0)) continue;  // no drawn segment comes near it
-      if (opt_.may_occlude) {           // a tile: only the triangles that can reach it
+      if (hooks_.may_occlude) {         // a tile: only the triangles that can reach it
         const int o = voff_[t0.body];
-        if (!opt_.may_occlude(t0.body, {t0.v[0] - o, t0.v[1] - o, t0.v[2] - o})) continue;
+        if (!hooks_.may_occlude(t0.body, {t0.v[0] - o, t0.v[1] - o, t0.v[2] - o})) continue;
       }
       state[i] = 2;
     }

@@ -122,7 +122,7 @@ void Engine<P>::release_arrays() {
 template <class P>
 void Engine<P>::solve_into(Segment& s, const std::array<int, 2>& gv, Work& wk, PieceList& out) const {
   signed char whole = -1;
-  if (opt_.decide && !opt_.decide(s)) whole = 1;
+  if (hooks_.decide && !hooks_.decide(s)) whole = 1;
   else solve(s, gv, wk, whole);
   if (whole < 0) {
     out = std::move(s.pieces);
@@ -159,7 +159,7 @@ void Engine<P>::candidates(const Box& seg, Work& wk) const {
 
 template <class P>
 void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed char& whole) const {
-  const bool hides = static_cast<std::size_t>(s.body) >= opt_.see_through.size() || !opt_.see_through[s.body];
+  const bool hides = static_cast<std::size_t>(s.body) >= hooks_.see_through.size() || !hooks_.see_through[s.body];
   if (s.self_hidden && hides) {  // its own front faces hide it
     const bool front = gv[0] >= 0 && vfront_[gv[0]] && vfront_[gv[1]];
     if (front || !cam_.perspective) {

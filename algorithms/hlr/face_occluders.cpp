@@ -123,26 +123,26 @@ void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, 
 
 }  // namespace
 
-LineDrawing face_occluders(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineOptions& opt) {
+LineDrawing face_occluders(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineOptions& opt, const FaceRouteHooks& hooks) {
   {
     std::vector<Vec<Fast>> pts;
     Vec<Fast> view{};
     Rational scale;
     if (scale_fast<Fast>(bodies, camera, Fast::kBits, pts, view, scale, opt.threads))
-      return face_route::Engine<Fast>(bodies, camera, opt, std::move(pts), view, scale).run();
+      return face_route::Engine<Fast>(bodies, camera, opt, hooks, std::move(pts), view, scale).run();
   }
   {
     std::vector<Vec<Fast40>> pts;
     Vec<Fast40> view{};
     Rational scale;
     if (scale_fast<Fast40>(bodies, camera, Fast40::kBits, pts, view, scale, opt.threads))
-      return face_route::Engine<Fast40>(bodies, camera, opt, std::move(pts), view, scale).run();
+      return face_route::Engine<Fast40>(bodies, camera, opt, hooks, std::move(pts), view, scale).run();
   }
   std::vector<Vec<Big>> pts;
   Vec<Big> view;
   Rational scale;
   scale_big(bodies, camera, pts, view, scale);
-  return face_route::Engine<Big>(bodies, camera, opt, std::move(pts), view, scale).run();
+  return face_route::Engine<Big>(bodies, camera, opt, hooks, std::move(pts), view, scale).run();
 }
 
 }  // namespace hlr

@@ -25,6 +25,8 @@
 // pruning gives each edge only the occluders that may hide it. Edges run on all cores.
 #pragma once
 
+#include <array>
+#include <functional>
 #include <vector>
 
 #include "algorithms/model/camera.hpp"
@@ -33,12 +35,31 @@
 
 namespace hlr {
 
+/// What callers other than a plain drawing ask of the per-face route (see-through lines,
+/// tiles, the raster's facing); a plain drawing leaves them empty.
+struct FaceRouteHooks {
+  /// Per body, 1 when its faces hide nothing (see-through; its own lines are still drawn).
+  /// Empty: every body hides. see_through_lines.hpp uses it.
+  std::vector<char> see_through;
+  /// Only each face's facing and which closed solids hide their back faces
+  /// (LineDrawing::facing, back_faces_unseen, notes), no lines: what the raster algorithms need.
+  bool facing_only = false;
+  /// When set, only the segments it returns true for get their visibility decided; each of the
+  /// others gets one placeholder piece over [0, 1], hidden (tiles cut those away, a merge puts
+  /// the tiles' pieces in: picture_tiles.hpp).
+  std::function<bool(const Segment&)> decide;
+  /// When set, a face triangle (its body and the body's vertex indices) hides only when this
+  /// returns true: a tile leaves out the triangles that cannot reach it. Called from several
+  /// threads at once: it must only read.
+  std::function<bool(int body, const std::array<int, 3>& vertices)> may_occlude;
+};
+
 /// Runs the per-face hidden-line computation. Bodies may be closed solids (closed, manifold,
 /// consistently oriented; inside-out solids are turned) or open/other surfaces. Segments:
 /// each body's drawn edges in order of their vertex pair, then intersection lines. `facing`
 /// holds per face 1, 0 or -1. Throws BodyError for a body it cannot take (a non-planar or
 /// self-intersecting face) or an eye inside a solid.
-LineDrawing face_occluders(const std::vector<const Polyhedron*>& bodies, const Camera& camera,
-                             const LineOptions& options = {});
+LineDrawing face_occluders(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineOptions& options = {},
+                           const FaceRouteHooks& hooks = {});
 
 }  // namespace hlr

@@ -34,12 +34,12 @@ std::vector<Piece> refine_through(const PieceList& full, const PieceList& opaque
   return out;
 }
 
-std::size_t mark_see_through(LineDrawing& drawing, const std::vector<const Polyhedron*>& bodies, const Camera& camera,
-                             const LineOptions& options, const std::vector<char>& see_through) {
+std::size_t mark_see_through(LineDrawing& drawing, const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineOptions& options,
+                             const std::vector<char>& see_through, const FaceRouteHooks& hooks) {
   if (std::none_of(see_through.begin(), see_through.end(), [](char c) { return c != 0; })) return 0;
-  LineOptions o = options;
-  o.see_through = see_through;
-  LineDrawing opaque = face_occluders(bodies, camera, o);
+  FaceRouteHooks h = hooks;
+  h.see_through = see_through;
+  LineDrawing opaque = face_occluders(bodies, camera, options, h);
   if (opaque.segments.size() != drawing.segments.size())
     throw std::logic_error("mark_see_through: the two drawings have different segments");
   std::size_t marked = 0;

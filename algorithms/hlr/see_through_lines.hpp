@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "algorithms/hlr/face_occluders.hpp"
 #include "algorithms/model/camera.hpp"
 #include "algorithms/model/line_drawing.hpp"
 #include "kernel/polyhedron.hpp"
@@ -18,8 +19,8 @@ namespace hlr {
 /// parts that are seen through the bodies with see_through[b] != 0: runs the per-face route
 /// once more with those bodies hiding nothing and refines every segment's pieces. Returns the
 /// number of pieces marked. Does nothing when no body is see-through.
-std::size_t mark_see_through(LineDrawing& drawing, const std::vector<const Polyhedron*>& bodies, const Camera& camera,
-                             const LineOptions& options, const std::vector<char>& see_through);
+std::size_t mark_see_through(LineDrawing& drawing, const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineOptions& options,
+                             const std::vector<char>& see_through, const FaceRouteHooks& hooks = {});
 
 /// The pieces of `full` refined by `opaque` (the same segment's pieces when only opaque bodies
 /// hide): where `full` is hidden and `opaque` visible, the piece is through. Exposed for tests.

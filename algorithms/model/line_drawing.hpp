@@ -109,20 +109,6 @@ struct LineOptions {
   bool intersections = true;                      // per-face route: intersection lines (and self)
   bool classify_all = false;                      // All: still name silhouettes, boundaries, creases
   bool prefilter = true;                          // Roberts: spatial pre-filter of (edge, body) pairs
-  /// Per-face route: per body, 1 when its faces hide nothing (see-through; its own lines are
-  /// still drawn). Empty: every body hides. see_through_lines.hpp uses it.
-  std::vector<char> see_through;
-  /// Per-face route: only each face's facing and which closed solids hide their back faces
-  /// (LineDrawing::facing, back_faces_unseen, notes), no lines: what the raster algorithms need.
-  bool facing_only = false;
-  /// Per-face route: when set, only the segments it returns true for get their visibility
-  /// decided; each of the others gets one placeholder piece over [0, 1], hidden (tiles cut
-  /// those away, a merge puts the tiles' pieces in: picture_tiles.hpp).
-  std::function<bool(const Segment&)> decide;
-  /// Per-face route: when set, a face triangle (its body and the body's vertex indices) hides
-  /// only when this returns true: a tile leaves out the triangles that cannot reach it. Called
-  /// from several threads at once: it must only read.
-  std::function<bool(int body, const std::array<int, 3>& vertices)> may_occlude;
   unsigned threads = 0;                           // 0: all cores
 };
 

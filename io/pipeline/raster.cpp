@@ -268,7 +268,7 @@ RasterResult raster(std::vector<Scene> scenes, const RasterOptions& o) {
   ro.view = o.view;
   ro.lines.edges = EdgeSelection::Feature;
   ro.lines.intersections = false;
-  ro.lines.facing_only = true;  // no lines: the facing of every face is all the raster needs
+  ro.facing_only = true;  // no lines: the facing of every face is all the raster needs
   ro.lines.threads = o.threads;
   ro.through_lines = false;
   r.render = render(std::move(scenes), ro);

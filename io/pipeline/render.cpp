@@ -326,22 +326,23 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   r.camera = choose_camera(o.view, scene_view, polys);
   if ((o.tile || o.segments_only) && (!(m.flags & kTakesTiles) || o.surfaces || o.shadows || o.clip))
     throw std::invalid_argument("tiles take line drawings of the per-face route (not --method roberts, --surfaces, --shadows or --clip)");
-  RenderOptions tiled = o;
+  FaceRouteHooks hooks;
+  hooks.facing_only = o.facing_only;
   std::optional<TileCut> cut;
   if (o.tile) {
     cut.emplace(polys, r.camera, *o.tile, o.lines.threads);
-    tiled.lines.decide = [&](const Segment& s) { return cut->may_hold(s); };
-    tiled.lines.may_occlude = [&](int body, const std::array<int, 3>& v) { return cut->may_occlude(body, v); };
+    hooks.decide = [&](const Segment& s) { return cut->may_hold(s); };
+    hooks.may_occlude = [&](int body, const std::array<int, 3>& v) { return cut->may_occlude(body, v); };
   }
   if (o.segments_only) {  // no visibility: no segment is solved, no face hides
-    tiled.lines.decide = [](const Segment&) { return false; };
-    tiled.lines.may_occlude = [](int, const std::array<int, 3>&) { return false; };
+    hooks.decide = [](const Segment&) { return false; };
+    hooks.may_occlude = [](int, const std::array<int, 3>&) { return false; };
   }
   try {
     if (o.surfaces || o.shadows || !m.draws_lines()) {
       solve_surfaces(r, polys, *owned, o);
     } else {
-      LineStep step{r, polys, tiled, repairs};
+      LineStep step{r, polys, o, hooks, repairs};
       m.lines(step);
     }
   } catch (const BodyError& e) {

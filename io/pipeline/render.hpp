@@ -69,6 +69,9 @@ struct RenderOptions {
   /// The segments without their visibility (each one placeholder piece): a merge of tiles
   /// puts the tiles' pieces in (io/readers/tile_file.hpp). The per-face route's line drawings only.
   bool segments_only = false;
+  /// The prepare stage alone for the raster pipeline: bodies, camera and each face's facing
+  /// (LineDrawing::facing, back_faces_unseen), no lines.
+  bool facing_only = false;
 };
 
 struct RenderResult {

@@ -8,16 +8,19 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/hlr/face_occluders.hpp"
 #include "io/pipeline/render.hpp"
 
 namespace hlr {
 
 /// What a lines step gets: the render so far (bodies, names, camera), the bodies' polyhedra,
-/// the options (with a tile's filters in `o.lines`), and the notes to add to.
+/// the options, the per-face route's hooks (a tile's filters, the raster's facing only), and
+/// the notes to add to.
 struct LineStep {
   RenderResult& r;
   const std::vector<const Polyhedron*>& polys;
   const RenderOptions& o;
+  const FaceRouteHooks& hooks;
   std::vector<std::string>& notes;
 };
 

@@ -10,9 +10,9 @@
 namespace hlr {
 
 void faces_lines(LineStep& s) {
-  s.r.drawing = face_occluders(s.polys, s.r.camera, s.o.lines);
+  s.r.drawing = face_occluders(s.polys, s.r.camera, s.o.lines, s.hooks);
   if (s.o.through_lines && !s.o.segments_only)
-    s.r.through_pieces = mark_see_through(s.r.drawing, s.polys, s.r.camera, s.o.lines, see_through_bodies(s.r));
+    s.r.through_pieces = mark_see_through(s.r.drawing, s.polys, s.r.camera, s.o.lines, see_through_bodies(s.r), s.hooks);
 }
 
 void faces_polygons(PolygonStep& s) {
