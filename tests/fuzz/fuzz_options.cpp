@@ -14,7 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const std::invalid_argument&) {
   }
   try {
-    (void)hlr::cli::parse_numbers("--segment", text, 6);
+    (void)hlr::parse_numbers("--segment", text, 6);
   } catch (const std::invalid_argument&) {
   }
   if (text.rfind("box:", 0) == 0 || text.rfind("frustum:", 0) == 0) {
