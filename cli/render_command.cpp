@@ -40,6 +40,8 @@ struct RenderArgs : OutputArgs {
   bool timings = false, surfaces = false, shadows = false, no_through = false;
   std::string views, up_axis;
   std::string tile;  // "I/N"
+  std::vector<std::string> section;
+  std::string plan;  // a height: a floor plan
 };
 
 // A merge of tile files (hlr merge): the tiles and their paths.
@@ -101,6 +103,12 @@ RenderOptions render_options(const RenderArgs& a) {
     throw std::invalid_argument(std::string("--near: ") + e.what());
   }
   if (!a.clip.empty()) o.clip = parse_clipper("--clip", a.clip).clipper;
+  for (const std::string& s : a.section)
+    for (Plane& h : parse_section("--section", s)) o.section.push_back(std::move(h));
+  if (!a.plan.empty()) {  // a horizontal section at the height along the up axis, kept below
+    const std::string axis = a.up_axis == "z" ? "z" : "y";
+    for (Plane& h : parse_section("--plan", axis + "<" + a.plan)) o.section.push_back(std::move(h));
+  }
   o.surfaces = a.surfaces;
   o.shadows = a.shadows;
   o.through_lines = !a.no_through;
@@ -147,6 +155,7 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
     RenderArgs one = a;
     if (!view_names.empty()) one.view = view_names[i];
     if (one.up_axis.empty()) one.up_axis = z_up ? "z" : "y";
+    if (!a.plan.empty() && one.view.empty() && one.eye.empty()) one.view = "top";  // a plan is seen from above
     RenderOptions options = render_options(one);
     options.surface_corners = format == "json";
     options.surface_faces = format == "json";
@@ -236,6 +245,13 @@ void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   cmd->add_flag("--timings", a->timings, "Print the time of each stage to standard error");
   cmd->add_option("--clip", a->clip,
                   "Clip the drawing to box:XMIN,XMAX,YMIN,YMAX,ZMIN,ZMAX, frustum:XL,XR,YB,YT,ZNEAR,ZFAR,ZCP or a convex mesh file");
+  cmd->add_option("--section", a->section,
+                  "Cut the bodies and keep z<1.2 (or x>0, A,B,C,D for A*x+B*y+C*z+D <= 0, box:XMIN,XMAX,YMIN,YMAX,ZMIN,ZMAX); "
+                  "repeat to keep the intersection. What is removed hides nothing; each cut body gets exact caps, cut lines "
+                  "(layer 'visible-cut') and hatching ('visible-hatch')");
+  cmd->add_option("--plan", a->plan,
+                  "A floor plan: a section at this height along the up axis, the part below kept, seen from above (--view top "
+                  "unless a view is given)");
   cmd->add_option("--near", a->near,
                   "Perspective near plane at this fraction of the eye-target distance from the eye (default 1/1000)");
   cmd->add_option("--tile", a->tile,

@@ -141,4 +141,28 @@ std::vector<PolygonTriangle> triangulate_simple_polygon(const std::vector<Point3
   return out;
 }
 
+std::vector<std::array<int, 3>> triangulate_loops(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& edges,
+                                                  const PolygonView& view) {
+  CDT cdt;
+  std::vector<CDT::Vertex_handle> vh(pts.size());
+  auto vertex = [&](int k) {
+    if (vh[k] == CDT::Vertex_handle()) {
+      vh[k] = cdt.insert(K::Point_2(to_epeck_ft(pts[k][view.i]), to_epeck_ft(pts[k][view.j])));
+      vh[k]->info() = k;
+    }
+    return vh[k];
+  };
+  for (const auto& e : edges)
+    if (e[0] != e[1]) cdt.insert_constraint(vertex(e[0]), vertex(e[1]));
+  mark_nesting(cdt);
+  std::vector<std::array<int, 3>> out;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (f->info() % 2 == 0) continue;
+    std::array<int, 3> t = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};  // ccw in the view
+    if (!view.ccw) std::swap(t[1], t[2]);
+    out.push_back(t);
+  }
+  return out;
+}
+
 }  // namespace hlr

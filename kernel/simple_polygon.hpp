@@ -43,4 +43,13 @@ struct PolygonTriangle {
 std::vector<PolygonTriangle> triangulate_simple_polygon(const std::vector<Point3>& pts, const std::vector<int>& poly,
                                                         const PolygonView& view);
 
+/// Triangles of the region that closed loops of edges bound in one plane (outer boundaries,
+/// holes, islands in holes, nested to any depth: the region is where a ray crosses an odd
+/// number of edges), as indices into `pts`, each triangle in the orientation `view` calls
+/// counter-clockwise when view.ccw (else clockwise): the orientation of a face whose normal
+/// gave `view`. Edges may touch at their ends but not cross. No new points: every corner is
+/// an end of an edge.
+std::vector<std::array<int, 3>> triangulate_loops(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& edges,
+                                                  const PolygonView& view);
+
 }  // namespace hlr

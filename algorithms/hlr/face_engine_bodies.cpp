@@ -73,12 +73,18 @@ LineDrawing Engine<P>::run() {
   if (early) select_occluders(drawn), free_topology();
   const auto ti0 = Clock::now();
   if (opt_.intersections) find_intersections(res);
+  const std::size_t n_crossing = cross_.size();
+  for (const auto& x : hooks_.extra_lines) cross_.emplace_back(x.body, x.body, x.face, x.face, x.a, x.b);
   const auto ti1 = Clock::now();
   if (!early) select_occluders(drawn), free_topology();
   total += cross_.size();
   build_occluders();
   res.stats.faces->occluders = hiding_;  // a tile's too: every hiding triangle of the scene
   std::vector<Segment> crossing = crossing_segments(res);
+  for (std::size_t k = n_crossing; k < crossing.size(); ++k) {
+    crossing[k].line = hooks_.extra_lines[k - n_crossing].kind;
+    --res.stats.intersection_segments;
+  }
   auto t1 = Clock::now();
   // Visibility runs on the compact records; the segments are made once the occluders, the grid
   // and the triangles are freed, so that they do not add to the engine's peak.

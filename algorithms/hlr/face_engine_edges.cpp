@@ -28,6 +28,19 @@ std::vector<DrawnEdge> Engine<P>::collect_edges(int b) const {
       const EdgeUse& a = e.uses[live[0]];
       const EdgeUse& c = e.uses[live[1]];
       int fa = facing[a.face], fc = facing[c.face];
+      if (static_cast<std::size_t>(b) < hooks_.face_part.size() && !hooks_.face_part[b].empty()) {
+        const std::vector<int>& part = hooks_.face_part[b];
+        if (part[a.face] == part[c.face]) {  // inside one face of the model
+          kinds[i] = -1;
+          return;
+        }
+        const std::vector<char>& cap = hooks_.cap_face[b];
+        if (cap[a.face] || cap[c.face]) {
+          kinds[i] = static_cast<signed char>(LineKind::Cut);
+          hidden[i] = solid_[b] && fa < 0 && fc < 0;
+          return;
+        }
+      }
       if (solid_[b]) {
         self_hidden = fa < 0 && fc < 0;
         bool silhouette = (fa > 0) != (fc > 0);

@@ -52,6 +52,22 @@ struct FaceRouteHooks {
   /// returns true: a tile leaves out the triangles that cannot reach it. Called from several
   /// threads at once: it must only read.
   std::function<bool(int body, const std::array<int, 3>& vertices)> may_occlude;
+  /// Per body (empty: none), per face: which face of the user's model it is part of, after a
+  /// section split faces (algorithms/sections/section_cut.hpp). An edge between two faces of one
+  /// part lies inside that face: it is never drawn.
+  std::vector<std::vector<int>> face_part;
+  /// Per body (empty: none), per face: 1 for a face of a section's cap. An edge between a cap
+  /// face and a face of another part is a cut line (LineKind::Cut), always drawn.
+  std::vector<std::vector<char>> cap_face;
+  /// Lines of the caller's own lying on a face of a body (hatch lines on a cap): their visibility
+  /// is decided like an intersection line's (their face does not hide them), and they come
+  /// after the intersection lines as segments of kind `kind`.
+  struct ExtraLine {
+    int body, face;
+    Point3 a, b;
+    LineKind kind;
+  };
+  std::vector<ExtraLine> extra_lines;
 };
 
 /// Runs the per-face hidden-line computation. Bodies may be closed solids (closed, manifold,

@@ -65,6 +65,9 @@ struct Projector {
   /// The same for a point given in frame coordinates (DrawingFrame::to_frame).
   std::array<double, 3> project(double x, double y, double z) const;
   const DrawingFrame& frame() const { return frame_; }
+  /// The screen's right and up axes and the viewing axis (unit vectors in doubles): what a
+  /// caller needs to place its own lines on the page (hatching).
+  std::array<std::array<double, 3>, 3> axes() const { return {right_, up_, forward_}; }
 
  private:
   bool perspective_;

@@ -11,6 +11,10 @@ const char* to_string(LineKind k) {
     case LineKind::Crease: return "crease";
     case LineKind::Silhouette: return "silhouette";
     case LineKind::Intersection: return "intersection";
+    case LineKind::Cut:
+      return "cut";
+    case LineKind::Hatch:
+      return "hatch";
     case LineKind::Edge: break;
   }
   return "edge";

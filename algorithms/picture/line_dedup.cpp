@@ -559,6 +559,10 @@ class Dedup {
 
 int kind_priority(LineKind k) {
   switch (k) {
+    case LineKind::Cut:
+      return 5;
+    case LineKind::Hatch:
+      return -1;
     case LineKind::Silhouette: return 4;
     case LineKind::Boundary: return 3;
     case LineKind::Crease: return 2;

@@ -14,8 +14,6 @@
 namespace hlr {
 namespace {
 
-constexpr LineKind kKinds[] = {LineKind::Silhouette, LineKind::Boundary, LineKind::Crease, LineKind::Intersection, LineKind::Edge};
-
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
@@ -108,7 +106,7 @@ Plot plot_from_clean(const CleanDrawing& c, const PlotOptions& opt, double secon
   plot.stats.exact_line_tests = c.exact_line_tests;
   auto t1 = std::chrono::steady_clock::now();
   // The edges of each layer (seen as visible, through or hidden, then kind), in one pass.
-  constexpr std::size_t nk = std::size(kKinds);
+  constexpr std::size_t nk = std::size(kLayerKinds);
   // Each edge's layer on all cores, then each used layer's edges in order (selected).
   const ParallelLoop loop(opt.threads);
   std::vector<std::uint8_t> layer_of(c.edges.size());
@@ -121,7 +119,7 @@ Plot plot_from_clean(const CleanDrawing& c, const PlotOptions& opt, double secon
       std::size_t layer = 3 * nk;  // none
       if (seen >= 0)
         for (std::size_t k = 0; k < nk; ++k)
-          if (ce.kind == kKinds[k]) layer = seen * nk + k;
+          if (ce.kind == kLayerKinds[k]) layer = seen * nk + k;
       layer_of[i] = static_cast<std::uint8_t>(layer);
       if (layer < 3 * nk) u[layer] = true;
     }
@@ -135,7 +133,7 @@ Plot plot_from_clean(const CleanDrawing& c, const PlotOptions& opt, double secon
   }
   for (int seen : {0, 1, 2})  // visible, through, hidden
     for (std::size_t ki = 0; ki < nk; ++ki) {
-      const LineKind k = kKinds[ki];
+      const LineKind k = kLayerKinds[ki];
       const bool visible = seen == 0, through = seen == 1;
       const std::vector<std::uint32_t>& ids = layer_ids[seen * nk + ki];
       if (ids.empty()) continue;

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "algorithms/support/progress.hpp"
+#include "io/pipeline/section.hpp"
 #include "io/writers/json_writer.hpp"
 #include "io/writers/plot_output.hpp"
 
@@ -153,6 +154,30 @@ std::vector<std::array<int, 2>> sheet_cells(const std::vector<std::string>& name
   return cells;
 }
 
+// The caps' hatch lines, on the page's scale (the layout is made once without them: they lie
+// inside the caps, so the drawing's bounds and scale do not change by them).
+void add_hatching(std::vector<Plot>& plots, const std::vector<const RenderResult*>& results, const std::vector<std::string>& view_names,
+                  const OutputOptions& a) {
+  bool any = false;
+  for (const RenderResult* r : results) any = any || has_caps(*r);
+  if (!any) return;
+  progress("hatching");
+  const PageOptions page = page_options(a);
+  std::vector<const Plot*> ptrs;
+  for (const Plot& p : plots) ptrs.push_back(&p);
+  const Sheet sheet =
+      view_names.empty() ? layout_single(plots[0], page) : layout_views(ptrs, sheet_cells(view_names, a.projection == "first"), view_names, page);
+  const double pen = plot_style(a).weights.at("hatch");
+  PlotOptions po = plot_options(a);
+  po.hidden = false;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const LineDrawing h = cap_hatching(*results[i], sheet.views[i].scale, pen, a.threads);
+    if (h.segments.empty()) continue;
+    Plot hp = make_plot(h, results[i]->camera, po);
+    for (PlotLayer& l : hp.layers) plots[i].layers.push_back(std::move(l));
+  }
+}
+
 }  // namespace
 
 SurfacesJson surfaces_json(const RenderResult& r) {
@@ -198,6 +223,7 @@ PartText drawing_text(const std::vector<const RenderResult*>& results, const std
       plots.push_back(make_plot(r->drawing, r->camera, po));
       add_surface_fills(plots.back(), *r);
     }
+    add_hatching(plots, results, view_names, a);
     text.add(plots_text(plots, view_names, a, format, command, results[0]->camera.perspective));
   }
   return text;

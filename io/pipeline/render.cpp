@@ -22,6 +22,7 @@
 #include "algorithms/surfaces/transparency.hpp"
 #include "io/pipeline/render_methods.hpp"
 #include "io/pipeline/render_steps.hpp"
+#include "io/pipeline/section.hpp"
 
 namespace hlr {
 
@@ -222,6 +223,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
     }
   PolygonStep step{r, polys, scenes, o, d, so};
   m.polygons(step);
+  mark_cut_lines(d, r.bodies);
   if (o.lines.edges == EdgeSelection::Feature) {
     std::vector<Segment> kept;
     for (Segment& s : d.segments)
@@ -229,7 +231,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
     d.segments = std::move(kept);
   } else {
     for (Segment& s : d.segments)
-      if (s.kind == Segment::Kind::Edge) s.line = LineKind::Edge;
+      if (s.kind == Segment::Kind::Edge && s.line != LineKind::Cut) s.line = LineKind::Edge;
   }
   r.drawing = std::move(d);
 }
@@ -300,8 +302,11 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   std::vector<const Polyhedron*> polys;
   const View* scene_view = nullptr;
   std::vector<std::string> repairs;
+  std::vector<SceneBody*> editable;
+  const std::vector<Plane>* planes = o.section.empty() ? nullptr : &o.section;
   for (Scene& s : *owned) {
     if (!scene_view && is_scene_file(s.file)) scene_view = &s.view;
+    if (!planes && is_scene_file(s.file) && !s.section.empty()) planes = &s.section;
     for (SceneBody& b : s.bodies) {
       DrawingBody name{b.name, b.source};
       if (auto fixed = remove_zero_area_triangles(b.body)) {
@@ -315,19 +320,28 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
           repairs.push_back(b.source + ": body '" + b.name + "' texture coordinates dropped with the repair");
         }
       }
-      r.bodies.push_back(&b);
+      editable.push_back(&b);
       polys.push_back(&b.body);
       r.names.push_back(std::move(name));
     }
   }
+  // The camera of the whole scene: a section and the plain view line up.
+  r.camera = choose_camera(o.view, scene_view, polys);
+  if (planes) {
+    cut_bodies(*planes, editable, r.names, repairs);
+    if (editable.empty()) throw std::invalid_argument("the section removes every body: nothing is left to draw");
+    polys.clear();
+    for (SceneBody* b : editable) polys.push_back(&b->body);
+  }
+  r.bodies.assign(editable.begin(), editable.end());
   const RenderMethodEntry& m = method_entry(o.method);
   if (m.flags & kChecksSolids)
     for (const Polyhedron* p : polys) p->report();  // the method's checks belong to loading
-  r.camera = choose_camera(o.view, scene_view, polys);
   if ((o.tile || o.segments_only) && (!(m.flags & kTakesTiles) || o.surfaces || o.shadows || o.clip))
     throw std::invalid_argument("tiles take line drawings of the per-face route (not --method roberts, --surfaces, --shadows or --clip)");
   FaceRouteHooks hooks;
   hooks.facing_only = o.facing_only;
+  if (planes) section_hooks(r.bodies, hooks);
   std::optional<TileCut> cut;
   if (o.tile) {
     cut.emplace(polys, r.camera, *o.tile, o.lines.threads);
@@ -349,6 +363,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     const SceneBody& b = *r.bodies[e.body()];
     throw RenderBodyError(e.body(), b.name, b.source, e.reason());
   }
+  if (planes) mark_cut_lines(r.drawing, r.bodies);
   r.notes = std::move(repairs);
   for (const BodyNote& n : r.drawing.notes)
     r.notes.push_back(r.names[n.body].source + ": body '" + r.names[n.body].name + "' " + n.text);

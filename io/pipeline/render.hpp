@@ -45,6 +45,10 @@ struct RenderOptions {
   Rational near = Rational(1, 1000);
   /// Clip the drawing to a convex volume (Cyrus-Beck, exact).
   std::optional<ConvexClipper> clip;
+  /// A section: the half-spaces plane.value(p) <= 0 are kept, the rest of every body that takes
+  /// cuts is removed before any route runs, and each cut body gets its caps (io/pipeline/
+  /// section.hpp). Empty: the first scene file's `section:`, if any.
+  std::vector<Plane> section;
   /// Also the visible part of every face as exact polygons, shaded (visible_surfaces.hpp,
   /// lighting.hpp); the line drawing is then the selected lines of the same exact solution.
   bool surfaces = false;

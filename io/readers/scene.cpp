@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <set>
 
+#include "io/readers/clipper_spec.hpp"
 #include "io/readers/mesh_reader.hpp"
 #include "io/readers/scene_lighting.hpp"
 #include "io/readers/text_reader.hpp"
@@ -272,6 +273,55 @@ Scene load_scene(const std::string& path) { return load_scene_text(read_file_byt
 
 Scene load_scene_text(const std::string& bytes, const std::string& path) { return load_scene_text(bytes, path, {}, true); }
 
+namespace {
+
+// `hatch: none`, or a mapping of pattern (single, cross, solid, none), angle (degrees) and
+// spacing (mm on the page).
+HatchStyle parse_hatch(const Ctx& c, const YAML::Node& n) {
+  HatchStyle h;
+  auto pattern = [&](const YAML::Node& p) {
+    const std::string t = c.text(p, "hatch pattern");
+    if (t == "single") return HatchStyle::Pattern::Single;
+    if (t == "cross") return HatchStyle::Pattern::Cross;
+    if (t == "solid") return HatchStyle::Pattern::Solid;
+    if (t == "none") return HatchStyle::Pattern::None;
+    c.fail(p, "hatch pattern must be single, cross, solid or none, not '" + t + "'");
+  };
+  if (n.IsScalar()) {
+    h.pattern = pattern(n);
+    return h;
+  }
+  c.check_keys(n, "hatch", {"pattern", "angle", "spacing"});
+  if (n["pattern"]) h.pattern = pattern(n["pattern"]);
+  if (n["angle"]) h.angle = to_double(c.number(n["angle"], "hatch angle"));
+  if (n["spacing"]) {
+    h.spacing = to_double(c.number(n["spacing"], "hatch spacing"));
+    if (!(*h.spacing >= 0.05 && *h.spacing <= 1000)) c.fail(n["spacing"], "hatch spacing must be between 0.05 and 1000 mm");
+  }
+  return h;
+}
+
+// `section:` one plane or a list (clipper_spec.hpp's forms, as text).
+std::vector<Plane> parse_scene_section(const Ctx& c, const YAML::Node& n) {
+  std::vector<Plane> out;
+  auto one = [&](const YAML::Node& p) {
+    try {
+      for (Plane& h : parse_section("section", c.text(p, "a section plane"))) out.push_back(std::move(h));
+    } catch (const std::invalid_argument& e) {
+      c.fail(p, e.what());
+    }
+  };
+  if (n.IsSequence()) {
+    if (n.size() == 0) c.fail(n, "section must name at least one plane");
+    for (const auto& p : n) one(p);
+  } else {
+    one(n);
+  }
+  return out;
+}
+
+}  // namespace
+
 Scene load_scene_text(const std::string& bytes, const std::string& path, const std::vector<std::string>& extra_keys,
                       bool bodies_required) {
   Ctx c{path};
@@ -283,7 +333,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
   }
   if (!root || root.IsNull()) throw InputError(path, 0, "empty scene file");
   if (depth(root) > kMaxNesting) throw InputError(path, 0, "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
-  std::vector<std::string> known = {"bodies", "view", "light", "lighting", "ground"};
+  std::vector<std::string> known = {"bodies", "view", "light", "lighting", "ground", "section"};
   known.insert(known.end(), extra_keys.begin(), extra_keys.end());
   // A problem file (docs/problem-format.md) is a scene too: `hlr render` draws its bodies.
   if (extra_keys.empty() && root.IsMap() && root["problem"])
@@ -301,7 +351,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const YAML::Node b = bodies[i];
-    c.check_keys(b, "a body", {"name", "mesh", "vertices", "faces", "box", "transform", "material"});
+    c.check_keys(b, "a body", {"name", "mesh", "vertices", "faces", "box", "transform", "material", "cut", "hatch"});
     int kinds = (b["mesh"] ? 1 : 0) + (b["vertices"] || b["faces"] ? 1 : 0) + (b["box"] ? 1 : 0);
     if (kinds != 1) c.fail(b, "a body needs exactly one of: mesh, vertices + faces, box");
     std::string name = b["name"] ? c.text(b["name"], "name") : "body " + std::to_string(i);
@@ -352,6 +402,12 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
     s.bodies.push_back(SceneBody{name, source, std::move(*poly), m, std::move(steps), std::move(notes), std::move(typed), std::nullopt,
                                  std::move(texcoords), std::move(face_texcoords)});
     if (b["material"]) s.bodies.back().material = parse_material(c, b["material"], static_cast<int>(i));
+    if (b["cut"]) {
+      const std::string t = c.text(b["cut"], "cut");
+      if (t != "true" && t != "false") c.fail(b["cut"], "cut must be true or false");
+      s.bodies.back().cut = t == "true";
+    }
+    if (b["hatch"]) s.bodies.back().hatch = parse_hatch(c, b["hatch"]);
   }
   if (root["view"]) s.view = parse_view(c, root["view"]);
   if (root["light"]) {
@@ -360,6 +416,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
   }
   if (root["lighting"]) s.lighting = parse_lighting(c, root["lighting"]);
   if (root["ground"]) add_ground(c, root["ground"], s, extra_keys.empty());
+  if (root["section"]) s.section = parse_scene_section(c, root["section"]);
   return s;
 }
 

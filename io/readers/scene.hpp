@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/sections/hatch.hpp"
 #include "algorithms/shading/lighting.hpp"
 #include "io/readers/input_error.hpp"
 #include "kernel/polyhedron.hpp"
@@ -44,6 +45,14 @@ struct SceneBody {
   /// face's vertices; empty: none), for `material.texture` (hlr raster).
   std::vector<std::array<double, 2>> texcoords = {};
   std::vector<std::vector<int>> face_texcoords = {};
+  /// Sections: false for a body no section cuts (a shaft, a fastener: drawn whole).
+  bool cut = true;
+  /// How its caps are hatched (unset: the defaults, hatch.hpp).
+  std::optional<HatchStyle> hatch = std::nullopt;
+  /// Once a section has cut it: per face, the input face it is part of (or the number of
+  /// input faces + k for the cap on plane k), and the plane whose cap it is on (-1: none).
+  /// Empty: not cut.
+  std::vector<int> section_part = {}, section_cap = {};
 };
 
 struct Scene {
@@ -56,6 +65,9 @@ struct Scene {
   /// `ground: z = 0`: the axis (0 x, 1 y, 2 z) and the value; a scene gets a ground body too,
   /// a problem keeps the plane only (the cast shadow on it).
   std::optional<std::pair<int, Rational>> ground;
+  /// `section:` cutting half-spaces (value <= 0 kept; io/readers/clipper_spec.hpp): what they
+  /// remove is gone, each cut body gets its caps.
+  std::vector<Plane> section;
 };
 
 /// True for .yaml, .yml and .json files.

@@ -160,7 +160,8 @@ void parse_weights(const std::string& text, PlotStyle& style) {
     auto eq = item.find('=');
     std::string key = lower(item.substr(0, eq));
     if (eq == std::string::npos || !style.weights.count(key))
-      throw std::invalid_argument("--weights: '" + item + "' is not KIND=MM (kinds: silhouette, boundary, crease, intersection, edge, hidden, through)");
+      throw std::invalid_argument("--weights: '" + item +
+                                  "' is not KIND=MM (kinds: cut, silhouette, boundary, crease, intersection, edge, hatch, hidden, through)");
     style.weights[key] = positive_number(item.substr(eq + 1), "--weights");
   }
 }
@@ -191,7 +192,7 @@ std::vector<std::vector<Point2>> page_strokes(const SheetView& view, const PlotL
 std::vector<std::string> sheet_layer_names(const Sheet& sheet) {
   std::vector<std::string> names;
   for (int seen : {0, 1, 2})  // visible, through, hidden
-    for (LineKind k : {LineKind::Silhouette, LineKind::Boundary, LineKind::Crease, LineKind::Intersection, LineKind::Edge})
+    for (LineKind k : kLayerKinds)
       for (const SheetView& v : sheet.views) {
         bool found = false;
         for (const PlotLayer& l : v.plot->layers)

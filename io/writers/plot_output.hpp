@@ -1,8 +1,9 @@
 // Drawings to plot and print: the plotting 2D stage's layers (algorithms/plot/plot.hpp)
 // placed on a page (size, margins, true scale 1:N or fit, several views at one scale in first-
 // or third-angle arrangement) and written as SVG with Inkscape layers, PDF and PNG (cairo) or
-// DXF (dxflib) with layers and linetypes. Line weights follow ISO 128 (wide 0.5 mm for
-// outlines, 0.35 for other visible edges, narrow 0.25 dashed for hidden lines; all settable).
+// DXF (dxflib) with layers and linetypes. Line weights follow ISO 128 (extra wide 0.7 mm for
+// cut lines, wide 0.5 for outlines, 0.35 for other visible edges, narrow 0.25 for hatching and,
+// dashed, for hidden lines; all settable).
 #pragma once
 
 #include <array>
@@ -61,11 +62,10 @@ enum class DashMode { Pattern, Geometry };
 inline constexpr const char* kThroughGrey = "#808080";
 
 struct PlotStyle {
-  /// Width in mm per layer key: "silhouette", "boundary", "crease", "intersection", "edge",
+  /// Width in mm per layer key: "cut", "silhouette", "boundary", "crease", "intersection", "edge", "hatch",
   /// "hidden" (all hidden layers), "through" (all layers seen through transparent faces).
-  std::map<std::string, double> weights = {{"silhouette", 0.5}, {"boundary", 0.5}, {"crease", 0.35},
-                                           {"intersection", 0.35}, {"edge", 0.35}, {"hidden", 0.25},
-                                           {"through", 0.25}};
+  std::map<std::string, double> weights = {{"cut", 0.7},           {"silhouette", 0.5}, {"boundary", 0.5}, {"crease", 0.35}, {"hatch", 0.25},
+                                           {"intersection", 0.35}, {"edge", 0.35},      {"hidden", 0.25},  {"through", 0.25}};
   DashMode dashes = DashMode::Pattern;
   bool hidden_dashed = true;     // false: hidden lines solid (thin)
   bool numbered_layers = true;   // AxiDraw-style "1 visible-silhouette"

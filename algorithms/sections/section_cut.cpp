@@ -1,0 +1,209 @@
+// Cutting a body by half-spaces, with exact caps (see section_cut.hpp; docs/design.md,
+// "Sections"). One plane at a time: every vertex gets the exact sign of the plane's test
+// function; a face wholly on the kept side stays, one wholly on the removed side goes, one that
+// crosses is cut (a convex face as it is, any other through its exact triangles) at split
+// points made once per edge, so that the two faces of an edge share them. The kept faces'
+// edges left without their twin all lie in the plane (for a closed, oriented input): they bound
+// the cap, which the constrained triangulation of those loops fills.
+#include "algorithms/sections/section_cut.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <unordered_map>
+
+#include "algorithms/solids/face_triangles.hpp"
+#include "kernel/simple_polygon.hpp"
+
+namespace hlr {
+namespace {
+
+std::uint64_t edge_key(int u, int v) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) | static_cast<std::uint32_t>(v); }
+
+// Closed and oriented: every directed edge once, and its reverse there too.
+bool closed_oriented(const std::vector<Face>& faces) {
+  std::vector<std::uint64_t> keys;
+  for (const Face& f : faces)
+    for (std::size_t k = 0; k < f.size(); ++k) keys.push_back(edge_key(f[k], f[(k + 1) % f.size()]));
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    if (k + 1 < keys.size() && keys[k] == keys[k + 1]) return false;
+    const std::uint64_t rev = (keys[k] << 32) | (keys[k] >> 32);
+    if (!std::binary_search(keys.begin(), keys.end(), rev)) return false;
+  }
+  return !keys.empty();
+}
+
+struct Work {
+  std::vector<Point3> v;
+  std::vector<Face> f;
+  std::vector<int> part, cap;
+};
+
+class PlaneCut {
+ public:
+  PlaneCut(Work& w, const Plane& h) : w_(w), h_(h), sign_(w.v.size()) {
+    for (std::size_t i = 0; i < w.v.size(); ++i) sign_[i] = static_cast<signed char>(sgn(h.value(w.v[i])));
+  }
+
+  // Which side the body is on: -1 all kept (nothing above), 1 all removed (nothing below), 0 cut.
+  int side() const {
+    bool below = false, above = false;
+    for (const Face& f : w_.f)
+      for (int x : f) (sign_[x] < 0 ? below : above) |= sign_[x] != 0;
+    return !above ? -1 : !below ? 1 : 0;
+  }
+
+  // The kept faces; the cap's edges (in the kept solid's orientation) into `rim`.
+  void run(Work& out, std::vector<std::array<int, 2>>& rim, bool& off_plane_rim) {
+    for (std::size_t fi = 0; fi < w_.f.size(); ++fi) keep_face(static_cast<int>(fi), out);
+    // Directed edges whose twin is not kept: the cap's rim, reversed.
+    std::vector<std::uint64_t> keys;
+    for (const Face& f : out.f)
+      for (std::size_t k = 0; k < f.size(); ++k) keys.push_back(edge_key(f[k], f[(k + 1) % f.size()]));
+    std::sort(keys.begin(), keys.end());
+    off_plane_rim = false;
+    for (std::uint64_t key : keys) {
+      const std::uint64_t rev = (key << 32) | (key >> 32);
+      if (std::binary_search(keys.begin(), keys.end(), rev)) continue;
+      const int u = static_cast<int>(key >> 32), v = static_cast<int>(key & 0xffffffffu);
+      if (on_plane(u) && on_plane(v)) rim.push_back({v, u});
+      else off_plane_rim = true;
+    }
+  }
+
+ private:
+  bool on_plane(int x) const { return x >= static_cast<int>(sign_.size()) || sign_[x] == 0; }
+
+  void keep_face(int fi, Work& out) {
+    const Face& f = w_.f[fi];
+    int lo = 1, hi = -1;
+    for (int x : f) lo = std::min<int>(lo, sign_[x]), hi = std::max<int>(hi, sign_[x]);
+    if (lo == 0 && hi == 0) {  // in the plane: kept when it faces the removed side
+      std::vector<const Point3*> p;
+      for (int x : f) p.push_back(&w_.v[x]);
+      if (dot(newell_normal(p.data(), p.size()), h_.normal()) > 0) add(out, f, fi);
+      return;
+    }
+    if (lo >= 0) return;  // nothing strictly on the kept side
+    if (hi <= 0) {
+      add(out, f, fi);
+      return;
+    }
+    std::vector<const Point3*> p;
+    for (int x : f) p.push_back(&w_.v[x]);
+    const Vector3 n = newell_normal(p.data(), p.size());
+    std::vector<int> poly(f.begin(), f.end());
+    if (f.size() == 3 || polygon_is_convex(w_.v, poly, polygon_view(n))) {
+      clip(out, poly, fi);
+      return;
+    }
+    std::vector<Point3> corners;
+    Face local;
+    for (int x : f) local.push_back(static_cast<int>(corners.size())), corners.push_back(w_.v[x]);
+    const Polyhedron one(std::move(corners), {local});  // the face's exact triangles (positions in the face)
+    const FaceTriangles tris = face_triangles(one, 0);
+    if (tris.status != FaceTriangles::Status::Ok) throw std::invalid_argument("a section cuts a face it cannot split: " + tris.problem(fi));
+    for (const FaceTriangle& t : tris.triangles) {
+      std::vector<int> tri = {f[t.v[0]], f[t.v[1]], f[t.v[2]]};
+      int tlo = 1;
+      for (int x : tri) tlo = std::min<int>(tlo, sign_[x]);
+      if (tlo < 0) clip(out, tri, fi);
+    }
+  }
+
+  // The convex polygon's part on the kept side (it has a vertex strictly there).
+  void clip(Work& out, const std::vector<int>& poly, int fi) {
+    Face piece;
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+      const int a = poly[k], b = poly[(k + 1) % poly.size()];
+      if (sign_[a] <= 0) piece.push_back(a);
+      if (sign_[a] * sign_[b] < 0) piece.push_back(split(a, b));
+    }
+    add(out, piece, fi);
+  }
+
+  // The exact point where edge ab meets the plane, made once per edge.
+  int split(int a, int b) {
+    const std::uint64_t key = edge_key(std::min(a, b), std::max(a, b));
+    auto it = splits_.find(key);
+    if (it != splits_.end()) return it->second;
+    const int lo = std::min(a, b), hi = std::max(a, b);
+    const Rational va = h_.value(w_.v[lo]), vb = h_.value(w_.v[hi]);
+    const Rational t = va / (va - vb);
+    const Vector3 d = w_.v[hi] - w_.v[lo];
+    const int id = static_cast<int>(w_.v.size());
+    w_.v.push_back(w_.v[lo] + t * d);
+    splits_.emplace(key, id);
+    return id;
+  }
+
+  void add(Work& out, const Face& f, int fi) {
+    out.f.push_back(f);
+    out.part.push_back(w_.part[fi]);
+    out.cap.push_back(w_.cap[fi]);
+  }
+
+  Work& w_;
+  const Plane& h_;
+  std::vector<signed char> sign_;
+  std::unordered_map<std::uint64_t, int> splits_;
+};
+
+// Drops the vertices no face uses, renumbering the faces.
+void compact(CutSolid& c) {
+  std::vector<int> id(c.vertices.size(), -1);
+  std::vector<Point3> kept;
+  for (Face& f : c.faces)
+    for (int& x : f) {
+      if (id[x] < 0) id[x] = static_cast<int>(kept.size()), kept.push_back(c.vertices[x]);
+      x = id[x];
+    }
+  c.vertices = std::move(kept);
+}
+
+}  // namespace
+
+CutSolid cut_solid(const Polyhedron& body, const std::vector<Plane>& planes) {
+  CutSolid out;
+  const int nf = static_cast<int>(body.num_faces());
+  Work w{body.vertices(), body.faces(), {}, std::vector<int>(nf, -1)};
+  for (int f = 0; f < nf; ++f) w.part.push_back(f);
+  out.open = !closed_oriented(w.f);
+  bool cut = false;
+  for (std::size_t k = 0; k < planes.size(); ++k) {
+    PlaneCut pc(w, planes[k]);
+    const int side = pc.side();
+    if (side < 0) continue;
+    if (side > 0) {
+      out.state = CutSolid::State::Removed;
+      return out;
+    }
+    cut = true;
+    Work kept;
+    std::vector<std::array<int, 2>> rim;
+    bool off_plane = false;
+    pc.run(kept, rim, off_plane);
+    kept.v = std::move(w.v);
+    if (!out.open && !off_plane && !rim.empty()) {
+      const PolygonView view = polygon_view(planes[k].normal());
+      for (const auto& t : triangulate_loops(kept.v, rim, view)) {
+        kept.f.push_back(Face{t[0], t[1], t[2]});
+        kept.part.push_back(nf + static_cast<int>(k));
+        kept.cap.push_back(static_cast<int>(k));
+      }
+    } else if (off_plane) {
+      out.open = true;
+    }
+    w = std::move(kept);
+  }
+  if (!cut) return out;
+  out.state = CutSolid::State::Cut;
+  out.vertices = std::move(w.v);
+  out.faces = std::move(w.f);
+  out.part = std::move(w.part);
+  out.cap = std::move(w.cap);
+  compact(out);
+  return out;
+}
+
+}  // namespace hlr

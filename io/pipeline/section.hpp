@@ -1,0 +1,35 @@
+// Sections in the render pipeline (docs/design.md, "Sections"): the scene's bodies cut by the
+// section's half-spaces before any hidden-line or surface route runs (algorithms/sections/
+// section_cut.hpp), so that what is removed hides nothing; the cut lines named; the caps
+// hatched on the page once the page's scale is known (algorithms/sections/hatch.hpp), with the
+// hatch lines' visibility decided exactly by the per-face route.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "algorithms/hlr/face_occluders.hpp"
+#include "io/pipeline/render.hpp"
+
+namespace hlr {
+
+/// Cuts every body that takes cuts (SceneBody::cut) by `planes`: a body wholly removed leaves
+/// `bodies` and `names`; a cut one gets its caps and SceneBody::section_part/section_cap; an
+/// open one a note (into `notes`, "SOURCE: body 'NAME' is open: ...").
+void cut_bodies(const std::vector<Plane>& planes, std::vector<SceneBody*>& bodies, std::vector<DrawingBody>& names, std::vector<std::string>& notes);
+
+/// The per-face route's hooks that name the cut lines and keep the faces' inner seams undrawn.
+void section_hooks(const std::vector<const SceneBody*>& bodies, FaceRouteHooks& hooks);
+
+/// Names the cut lines of a drawing (an edge between a cap face and a face of another part)
+/// and drops the edges inside one face of the model (between two pieces of a cut face).
+void mark_cut_lines(LineDrawing& drawing, const std::vector<const SceneBody*>& bodies);
+
+/// True when some body of the render has a cap to hatch.
+bool has_caps(const RenderResult& r);
+
+/// The visible hatch lines of every cap, for a page at `mm_per_unit` (mm per drawing unit):
+/// spacing and angle on the page, `pen_mm` the hatch pen (a solid fill's spacing).
+LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_mm, unsigned threads);
+
+}  // namespace hlr
