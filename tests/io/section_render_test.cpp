@@ -1,0 +1,163 @@
+// Sections through the render pipeline (io/pipeline/section.hpp): the drawing of a scene cut by
+// a plane equals, exactly, the drawing of the same scene with the removed parts deleted by hand
+// and the caps added as faces (random boxes that touch and interpenetrate, axis planes at
+// their faces' heights and between, orthographic and perspective views, lines and surfaces);
+// cut lines are their own class; bodies that take no cut stay whole.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+
+#include "algorithms/picture/picture_plane.hpp"
+#include "io/pipeline/render.hpp"
+#include "support/numbers.hpp"
+
+using namespace hlr;
+
+namespace {
+
+Point3 P(long x, long y, long z) { return Point3(Rational(x), Rational(y), Rational(z)); }
+
+struct Box {
+  std::array<long, 3> lo, hi;
+  bool cut = true;
+};
+
+Scene scene_of(const std::vector<Box>& boxes) {
+  Scene s;
+  s.file = "boxes.yaml";
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const Box& b = boxes[i];
+    const Point3 lo = P(b.lo[0], b.lo[1], b.lo[2]), hi = P(b.hi[0], b.hi[1], b.hi[2]);
+    s.bodies.push_back(SceneBody{"box" + std::to_string(i), "boxes.yaml", make_box(lo, hi), identity_transform(), {}, {}, {}, std::nullopt});
+    s.bodies.back().cut = b.cut;
+  }
+  return s;
+}
+
+// The visible drawing as maximal visible intervals on each exact picture line.
+using Lines = std::map<std::array<Rational, 3>, std::vector<std::pair<Rational, Rational>>>;
+Lines visible_lines(const RenderResult& r) {
+  const PicturePlane pp(r.camera);
+  Lines raw;
+  for (const Segment& s : r.drawing.segments)
+    for (const Piece& p : s.pieces) {
+      if (!p.visible || p.behind_eye || p.clipped) continue;
+      const Exact2 a = pp.project(s.at(p.t0)), b = pp.project(s.at(p.t1));
+      Rational A = b[1] - a[1], B = a[0] - b[0];
+      if (A == 0 && B == 0) continue;
+      const Rational k = A != 0 ? A : B;
+      A /= k, B /= k;
+      const Rational C = A * a[0] + B * a[1];
+      const int axis = B != 0 ? 0 : 1;
+      Rational u = a[axis], v = b[axis];
+      if (v < u) std::swap(u, v);
+      raw[{A, B, C}].push_back({u, v});
+    }
+  for (auto& [line, iv] : raw) {
+    std::sort(iv.begin(), iv.end());
+    std::vector<std::pair<Rational, Rational>> merged;
+    for (auto& x : iv)
+      if (!merged.empty() && x.first <= merged.back().second) merged.back().second = std::max(merged.back().second, x.second);
+      else merged.push_back(x);
+    iv = std::move(merged);
+  }
+  return raw;
+}
+
+}  // namespace
+
+TEST(SectionRender, EqualsTheSceneCutByHand) {
+  std::mt19937 rng(4021);
+  std::uniform_int_distribution<long> c(0, 6), len(1, 4), h2(0, 14);
+  int compared = 0, with_caps = 0;
+  for (int trial = 0; trial < 24; ++trial) {
+    std::vector<Box> boxes;
+    for (int k = 0; k < 4; ++k) {
+      Box b;
+      for (int a = 0; a < 3; ++a) b.lo[a] = c(rng), b.hi[a] = b.lo[a] + len(rng);
+      boxes.push_back(b);
+    }
+    const int axis = trial % 3;
+    const Rational h(h2(rng), 2);  // at the boxes' faces' heights and between them
+    const bool below = trial % 2 == 0;
+    // By hand: each box clipped to the kept side (a box wholly on the other side left out).
+    std::vector<std::array<Rational, 3>> his;
+    std::vector<std::array<Rational, 3>> los;
+    for (const Box& b : boxes) {
+      std::array<Rational, 3> lo = {Rational(b.lo[0]), Rational(b.lo[1]), Rational(b.lo[2])};
+      std::array<Rational, 3> hi = {Rational(b.hi[0]), Rational(b.hi[1]), Rational(b.hi[2])};
+      if (below) hi[axis] = std::min(hi[axis], h);
+      else lo[axis] = std::max(lo[axis], h);
+      if (!(lo[axis] < hi[axis])) continue;
+      los.push_back(lo), his.push_back(hi);
+    }
+    if (los.empty()) continue;
+    Scene by_hand;
+    by_hand.file = "boxes.yaml";
+    for (std::size_t i = 0; i < los.size(); ++i)
+      by_hand.bodies.push_back(SceneBody{"box",
+                                         "boxes.yaml",
+                                         make_box(Point3(los[i][0], los[i][1], los[i][2]), Point3(his[i][0], his[i][1], his[i][2])),
+                                         identity_transform(),
+                                         {},
+                                         {},
+                                         {},
+                                         std::nullopt});
+    RenderOptions o;
+    Rational n[3] = {0, 0, 0};
+    n[axis] = below ? 1 : -1;
+    o.section = {Plane(n[0], n[1], n[2], below ? Rational(-h) : h)};
+    const bool perspective = trial % 4 == 3;
+    if (perspective) {
+      o.view.eye = P(23, 17, 29);
+      o.view.target = P(3, 3, 3);
+    } else {
+      std::uniform_int_distribution<long> d(-3, 3);
+      Vector3 v;
+      do v = Vector3(d(rng), d(rng), d(rng));
+      while (v.is_zero() || v.x() == 0);
+      o.view.direction = v;
+    }
+    RenderOptions plain = o;
+    plain.section.clear();
+    for (bool surfaces : {false, true}) {
+      SCOPED_TRACE("trial " + std::to_string(trial) + (surfaces ? ", surfaces" : ", lines"));
+      o.surfaces = plain.surfaces = surfaces && !perspective;
+      const RenderResult cut = render({scene_of(boxes)}, o);
+      const RenderResult hand = render({by_hand}, plain);
+      EXPECT_EQ(cut.bodies.size(), by_hand.bodies.size());
+      EXPECT_EQ(visible_lines(cut), visible_lines(hand));
+      bool caps = false;
+      for (const Segment& s : cut.drawing.segments) caps = caps || s.line == LineKind::Cut;
+      with_caps += caps;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 30);
+  EXPECT_GT(with_caps, 10);
+}
+
+TEST(SectionRender, ABodyThatTakesNoCutStaysWhole) {
+  std::vector<Box> boxes = {{{0, 0, 0}, {4, 4, 4}, true}, {{1, 1, -1}, {2, 2, 6}, false}};  // a shaft through a block
+  RenderOptions o;
+  o.section = {Plane(0, 0, 1, -2)};  // keep z <= 2
+  o.view.direction = Vector3(1, 2, 3);
+  const RenderResult r = render({scene_of(boxes)}, o);
+  ASSERT_EQ(r.bodies.size(), 2u);
+  EXPECT_FALSE(r.bodies[0]->section_part.empty());
+  EXPECT_TRUE(r.bodies[1]->section_part.empty());
+  EXPECT_EQ(r.bodies[1]->body.num_vertices(), 8u);
+  int cut_lines = 0;
+  for (const Segment& s : r.drawing.segments) cut_lines += s.line == LineKind::Cut;
+  EXPECT_EQ(cut_lines, 4);  // the block's cap: its square (the shaft meets it in intersection lines)
+  int crossing = 0;
+  for (const Segment& s : r.drawing.segments) crossing += s.kind == Segment::Kind::Intersection;
+  EXPECT_GE(crossing, 4);
+}
+
+TEST(SectionRender, RemovingEveryBodyIsAnError) {
+  RenderOptions o;
+  o.section = {Plane(0, 0, 1, 10)};  // keep z <= -10
+  EXPECT_THROW(render({scene_of({{{0, 0, 0}, {1, 1, 1}, true}})}, o), std::invalid_argument);
+}
