@@ -40,7 +40,7 @@ struct RenderArgs : OutputArgs {
   bool timings = false, surfaces = false, shadows = false, no_through = false;
   std::string views, up_axis;
   std::string tile;  // "I/N"
-  std::vector<std::string> section;
+  std::vector<std::string> section, cutaway;
   std::string plan;  // a height: a floor plan
 };
 
@@ -105,6 +105,8 @@ RenderOptions render_options(const RenderArgs& a) {
   if (!a.clip.empty()) o.clip = parse_clipper("--clip", a.clip).clipper;
   for (const std::string& s : a.section)
     for (Plane& h : parse_section("--section", s)) o.section.push_back(std::move(h));
+  for (const std::string& s : a.cutaway)
+    for (Plane& h : parse_section("--cutaway", s)) o.cutaway.push_back(std::move(h));
   if (!a.plan.empty()) {  // a horizontal section at the height along the up axis, kept below
     const std::string axis = a.up_axis == "z" ? "z" : "y";
     for (Plane& h : parse_section("--plan", axis + "<" + a.plan)) o.section.push_back(std::move(h));
@@ -249,6 +251,9 @@ void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
                   "Cut the bodies and keep z<1.2 (or x>0, A,B,C,D for A*x+B*y+C*z+D <= 0, box:XMIN,XMAX,YMIN,YMAX,ZMIN,ZMAX); "
                   "repeat to keep the intersection. What is removed hides nothing; each cut body gets exact caps, cut lines "
                   "(layer 'visible-cut') and hatching ('visible-hatch')");
+  cmd->add_option("--cutaway", a->cutaway,
+                  "Remove the region where every --cutaway half-space holds (same forms as --section; 'x>0' and 'y>0': a half "
+                  "section's quarter) and close the cut bodies with caps");
   cmd->add_option("--plan", a->plan,
                   "A floor plan: a section at this height along the up axis, the part below kept, seen from above (--view top "
                   "unless a view is given)");

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <map>
 #include <unordered_map>
 
 #include "algorithms/solids/face_triangles.hpp"
@@ -204,6 +205,121 @@ CutSolid cut_solid(const Polyhedron& body, const std::vector<Plane>& planes) {
   out.cap = std::move(w.cap);
   compact(out);
   return out;
+}
+
+namespace {
+
+// The convex polygon's closed part where h < 0 (empty when no corner is strictly there).
+std::vector<Point3> keep_below(const std::vector<Point3>& poly, const Plane& h) {
+  std::vector<Rational> v;
+  bool any = false;
+  for (const Point3& p : poly) v.push_back(h.value(p)), any = any || v.back() < 0;
+  std::vector<Point3> out;
+  if (!any) return out;
+  for (std::size_t k = 0; k < poly.size(); ++k) {
+    const std::size_t n = (k + 1) % poly.size();
+    if (v[k] <= 0) out.push_back(poly[k]);
+    if (sgn(v[k]) * sgn(v[n]) < 0) out.push_back(poly[k] + Rational(v[k] / (v[k] - v[n])) * (poly[n] - poly[k]));
+  }
+  return out;
+}
+
+// Faces as corner lists joined into one mesh: equal points are one vertex, and a vertex lying
+// inside an edge that runs in one of the planes is put into that edge (the pieces' seams).
+struct Joiner {
+  std::map<Point3, int> id;
+  CutSolid out;
+  void add(const std::vector<Point3>& corners, int part, int cap) {
+    Face f;
+    for (const Point3& p : corners) {
+      auto [it, fresh] = id.emplace(p, static_cast<int>(out.vertices.size()));
+      if (fresh) out.vertices.push_back(p);
+      f.push_back(it->second);
+    }
+    out.faces.push_back(std::move(f));
+    out.part.push_back(part);
+    out.cap.push_back(cap);
+  }
+  void join_seams(const Plane& h) {
+    std::vector<int> on;  // the vertices in the plane, in lexicographic order (id's order)
+    for (const auto& [p, i] : id)
+      if (h.value(p) == 0) on.push_back(i);
+    if (on.empty()) return;
+    std::vector<char> in_plane(out.vertices.size(), 0);
+    for (int i : on) in_plane[i] = 1;
+    auto lex = [&](int a, int b) { return out.vertices[a] < out.vertices[b]; };
+    for (Face& f : out.faces) {
+      Face g;
+      for (std::size_t k = 0; k < f.size(); ++k) {
+        const int u = f[k], v = f[(k + 1) % f.size()];
+        g.push_back(u);
+        if (!in_plane[u] || !in_plane[v]) continue;
+        const bool up = lex(u, v);
+        auto lo = std::upper_bound(on.begin(), on.end(), up ? u : v, lex), hi = std::lower_bound(on.begin(), on.end(), up ? v : u, lex);
+        std::vector<int> inner;
+        const Vector3 d = out.vertices[v] - out.vertices[u];
+        for (auto it = lo; it < hi; ++it)
+          if (cross(d, out.vertices[*it] - out.vertices[u]).is_zero()) inner.push_back(*it);
+        if (!up) std::reverse(inner.begin(), inner.end());
+        for (int w : inner) g.push_back(w);
+      }
+      f = std::move(g);
+    }
+  }
+};
+
+std::vector<Point3> corners_of(const CutSolid& c, std::size_t f) {
+  std::vector<Point3> out;
+  for (int v : c.faces[f]) out.push_back(c.vertices[v]);
+  return out;
+}
+
+}  // namespace
+
+CutSolid cut_away(const Polyhedron& body, const std::vector<Plane>& given) {
+  // A plane given twice is one plane; a plane and its opposite bound a region without inside:
+  // nothing is removed. The cap numbers stay those of the planes as given.
+  std::vector<Plane> planes;
+  std::vector<int> index;
+  for (std::size_t k = 0; k < given.size(); ++k) {
+    const Plane h = primitive_plane(given[k]);
+    bool twice = false;
+    for (const Plane& o : planes) {
+      if (o == h.opposite()) return CutSolid{};
+      twice = twice || o == h;
+    }
+    if (!twice) planes.push_back(h), index.push_back(static_cast<int>(k));
+  }
+  const int nf = static_cast<int>(body.num_faces());
+  Joiner j;
+  bool cut = false;
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    std::vector<Plane> piece(planes.begin(), planes.begin() + static_cast<long>(i));
+    piece.push_back(planes[i].opposite());
+    const CutSolid c = cut_solid(body, piece);
+    j.out.open = j.out.open || c.open;
+    if (c.state == CutSolid::State::Removed) continue;
+    if (c.state == CutSolid::State::Whole) return CutSolid{};  // wholly in one piece: the region does not reach it
+    cut = true;
+    for (std::size_t f = 0; f < c.faces.size(); ++f) {
+      if (c.cap[f] >= 0 && c.cap[f] < static_cast<int>(i)) continue;  // shared with an earlier piece: inside
+      if (c.cap[f] < 0) {
+        j.add(corners_of(c, f), c.part[f], -1);
+        continue;
+      }
+      std::vector<Point3> pts = corners_of(c, f);  // the cap on plane i: only where the later planes remove too
+      for (std::size_t k = i + 1; k < planes.size() && !pts.empty(); ++k) pts = keep_below(pts, planes[k]);
+      if (!pts.empty()) j.add(pts, nf + index[i], index[i]);
+    }
+  }
+  if (!cut) {  // in no piece: wholly inside the removed region
+    CutSolid out;
+    out.state = CutSolid::State::Removed;
+    return out;
+  }
+  for (const Plane& h : planes) j.join_seams(h);
+  j.out.state = CutSolid::State::Cut;
+  return std::move(j.out);
 }
 
 }  // namespace hlr

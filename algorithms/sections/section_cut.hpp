@@ -36,4 +36,11 @@ struct CutSolid {
 /// bounds what is kept) and goes otherwise. Exact.
 CutSolid cut_solid(const Polyhedron& body, const std::vector<Plane>& planes);
 
+/// The opposite: removes the convex region where every plane's test function is <= 0 (a
+/// cut-away; two planes make the half section of a part) and keeps the rest, closed by caps
+/// that face into the removed region (cap k on plane k, part number of input faces + k). Built
+/// from the pieces {h_0 <= 0 .. h_{i-1} <= 0, h_i >= 0} of cut_solid, whose shared faces are
+/// left out and whose seams are joined exactly. Exact.
+CutSolid cut_away(const Polyhedron& body, const std::vector<Plane>& planes);
+
 }  // namespace hlr

@@ -3,6 +3,7 @@
 
 #include <mpfr.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -71,8 +72,22 @@ bool CreaseAngle::exceeds(const long n1[3], const long n2[3]) const {
 }
 
 bool CreaseAngle::exceeds(const mpz_class n1[3], const mpz_class n2[3]) const {
+  // Each normal is brought to doubles by its own power of two (the angle does not change by
+  // it), so that normals of any size (exact cut points make them huge) stay in the filter's
+  // range instead of overflowing to infinity.
   double a[3], b[3];
-  for (int k = 0; k < 3; ++k) a[k] = n1[k].get_d(), b[k] = n2[k].get_d();
+  auto scaled = [](const mpz_class n[3], double out[3]) {
+    std::size_t bits = 0;
+    for (int k = 0; k < 3; ++k) bits = std::max(bits, mpz_sizeinbase(n[k].get_mpz_t(), 2));
+    const long shift = static_cast<long>(bits) - 60;
+    for (int k = 0; k < 3; ++k) {
+      long e = 0;
+      const double m = mpz_get_d_2exp(&e, n[k].get_mpz_t());
+      out[k] = std::ldexp(m, static_cast<int>(e - shift));
+    }
+  };
+  scaled(n1, a);
+  scaled(n2, b);
   double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
   double l = std::sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
   double c = d / l;

@@ -24,10 +24,14 @@ struct Entry {
 const std::vector<Entry>& catalogue() {
   static const std::vector<Entry> c = {
       // ---- the problem reader (io/explain/problem.cpp)
-      {"a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster, ray-tree)",
-       "в файле задачи нужна строка 'problem: ТИП' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster, ray-tree)"},
-      {"unknown problem type '@x' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster, ray-tree)",
-       "неизвестный тип задачи '@1' (известны: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster, ray-tree)"},
+      {"a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, "
+       "raster, ray-tree)",
+       "в файле задачи нужна строка 'problem: ТИП' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, "
+       "priority, raster, ray-tree)"},
+      {"unknown problem type '@x' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, "
+       "raster, ray-tree)",
+       "неизвестный тип задачи '@1' (известны: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, "
+       "raster, ray-tree)"},
       {"a horizon problem takes heights, not bodies", "задача horizon принимает высоты (heights), а не тела (bodies)"},
       {"a raster problem takes an orthographic view (the notes' depth is linear across the picture)",
        "задача raster принимает только параллельную проекцию (глубина в конспекте линейна по картине)"},
@@ -91,8 +95,7 @@ const std::vector<Entry>& catalogue() {
       {"ground size must be positive", "размер ground должен быть положительным"},
       // ---- the priority list (algorithms/surfaces/priority_list.cpp)
       {"priority list: more than @x polygons after the cuts", "список приоритетов: после разбиений больше @1 многоугольников"},
-      {"priority list: body @x reaches the eye's plane or behind it",
-       "список приоритетов: тело @1 доходит до плоскости глаза или заходит за неё"},
+      {"priority list: body @x reaches the eye's plane or behind it", "список приоритетов: тело @1 доходит до плоскости глаза или заходит за неё"},
       {"priority list: a cyclic overlap that no cut breaks", "список приоритетов: циклическое экранирование, которое не разрешает ни одно разбиение"},
       {"priority list: a cut that made no parts", "список приоритетов: разбиение не дало частей"},
       // ---- lights and materials (io/readers/scene_lighting.cpp)
@@ -146,8 +149,7 @@ const std::vector<Entry>& catalogue() {
       {"scale needs 'factors'", "масштабирование scale: нужны коэффициенты 'factors'"},
       {"a scale factor of 0 flattens the body", "коэффициент масштабирования 0 сплющивает тело"},
       {"reflect needs an 'axis'", "отражение reflect: нужна ось 'axis'"},
-      {"reflect axis must be x, y or z (the coordinate that changes sign)",
-       "ось отражения: ожидается x, y или z (координата, которая меняет знак)"},
+      {"reflect axis must be x, y or z (the coordinate that changes sign)", "ось отражения: ожидается x, y или z (координата, которая меняет знак)"},
       {"matrix must be 4 rows of 4 numbers", "матрица matrix: ожидается 4 строки по 4 числа"},
       {"matrix row must have 4 numbers", "в строке матрицы matrix должно быть 4 числа"},
       {"matrix is singular (it flattens the body)", "матрица вырождена (она сплющивает тело)"},
@@ -177,6 +179,11 @@ const std::vector<Entry>& catalogue() {
       {"a body needs exactly one of: mesh, vertices + faces, box", "телу нужно ровно одно из: mesh, vertices + faces, box"},
       {"mesh '@x': @m", "файл сетки '@1': @2"},
       {"box needs 'min' and 'max' corners", "параллелепипеду box нужны углы 'min' и 'max'"},
+      {"hatch pattern must be single, cross, solid or none, not '@x'",
+       "узор штриховки hatch pattern должен быть single, cross, solid или none, а не '@1'"},
+      {"hatch spacing must be between 0.05 and 1000 mm", "шаг штриховки hatch spacing должен быть от 0.05 до 1000 мм"},
+      {"section must name at least one plane", "в разрезе section нужна хотя бы одна плоскость"},
+      {"cut must be true or false", "cut должно быть true или false"},
       {"box min must be below max in x, y and z", "у параллелепипеда box угол min должен быть меньше max по x, y и z"},
       {"transform must be a list of steps", "transform: ожидается список шагов"},
       {"light vector has zero length", "вектор 'light' имеет нулевую длину"},
@@ -251,8 +258,7 @@ const std::vector<Entry>& catalogue() {
       // ---- clippers (algorithms/clip/cyrus_beck.cpp, midpoint_clip.cpp)
       {"the clipper '@x' is not a closed, manifold, oriented solid with planar non-degenerate faces",
        "отсекатель '@1' не является замкнутым ориентированным многогранником-многообразием с плоскими невырожденными гранями"},
-      {"the clipper '@x' is @m; Cyrus-Beck needs a convex clipper",
-       "отсекатель '@1' — тело @2; алгоритму Кируса–Бека нужен выпуклый отсекатель"},
+      {"the clipper '@x' is @m; Cyrus-Beck needs a convex clipper", "отсекатель '@1' — тело @2; алгоритму Кируса–Бека нужен выпуклый отсекатель"},
       {"box clipper: need XMIN < XMAX, YMIN < YMAX, ZMIN < ZMAX", "отсекатель box: нужно XMIN < XMAX, YMIN < YMAX, ZMIN < ZMAX"},
       {"frustum clipper: need XL < XR and YB < YT", "отсекатель frustum: нужно XL < XR и YB < YT"},
       {"frustum clipper: need ZCP > ZNEAR > ZFAR (viewer on +z)", "отсекатель frustum: нужно ZCP > ZNEAR > ZFAR (наблюдатель на +z)"},

@@ -304,9 +304,11 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   std::vector<std::string> repairs;
   std::vector<SceneBody*> editable;
   const std::vector<Plane>* planes = o.section.empty() ? nullptr : &o.section;
+  const std::vector<Plane>* away = o.cutaway.empty() ? nullptr : &o.cutaway;
   for (Scene& s : *owned) {
     if (!scene_view && is_scene_file(s.file)) scene_view = &s.view;
     if (!planes && is_scene_file(s.file) && !s.section.empty()) planes = &s.section;
+    if (!away && is_scene_file(s.file) && !s.cutaway.empty()) away = &s.cutaway;
     for (SceneBody& b : s.bodies) {
       DrawingBody name{b.name, b.source};
       if (auto fixed = remove_zero_area_triangles(b.body)) {
@@ -327,8 +329,10 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   }
   // The camera of the whole scene: a section and the plain view line up.
   r.camera = choose_camera(o.view, scene_view, polys);
-  if (planes) {
-    cut_bodies(*planes, editable, r.names, repairs);
+  const bool sectioned = planes || away;
+  if (sectioned) {
+    static const std::vector<Plane> none;
+    cut_bodies(planes ? *planes : none, away ? *away : none, editable, r.names, repairs);
     if (editable.empty()) throw std::invalid_argument("the section removes every body: nothing is left to draw");
     polys.clear();
     for (SceneBody* b : editable) polys.push_back(&b->body);
@@ -341,7 +345,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     throw std::invalid_argument("tiles take line drawings of the per-face route (not --method roberts, --surfaces, --shadows or --clip)");
   FaceRouteHooks hooks;
   hooks.facing_only = o.facing_only;
-  if (planes) section_hooks(r.bodies, hooks);
+  if (sectioned) section_hooks(r.bodies, hooks);
   std::optional<TileCut> cut;
   if (o.tile) {
     cut.emplace(polys, r.camera, *o.tile, o.lines.threads);
@@ -363,7 +367,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     const SceneBody& b = *r.bodies[e.body()];
     throw RenderBodyError(e.body(), b.name, b.source, e.reason());
   }
-  if (planes) mark_cut_lines(r.drawing, r.bodies);
+  if (sectioned) mark_cut_lines(r.drawing, r.bodies);
   r.notes = std::move(repairs);
   for (const BodyNote& n : r.drawing.notes)
     r.notes.push_back(r.names[n.body].source + ": body '" + r.names[n.body].name + "' " + n.text);

@@ -49,6 +49,9 @@ struct RenderOptions {
   /// cuts is removed before any route runs, and each cut body gets its caps (io/pipeline/
   /// section.hpp). Empty: the first scene file's `section:`, if any.
   std::vector<Plane> section;
+  /// A cut-away: the convex region where every plane's value is <= 0 is removed (two planes: a
+  /// half section), each cut body closed by caps facing into it. Empty: the scene's `cutaway:`.
+  std::vector<Plane> cutaway;
   /// Also the visible part of every face as exact polygons, shaded (visible_surfaces.hpp,
   /// lighting.hpp); the line drawing is then the selected lines of the same exact solution.
   bool surfaces = false;

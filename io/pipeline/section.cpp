@@ -68,9 +68,36 @@ HatchFamily family(const Projector& proj, const Camera& cam, double degrees, dou
   return fam;
 }
 
+// The keep cut, then the cut-away, as one cut (cap k of the cut-away is cap keep.size() + k).
+CutSolid cut_both(const Polyhedron& body, const std::vector<Plane>& keep, const std::vector<Plane>& away) {
+  CutSolid c = keep.empty() ? CutSolid{} : cut_solid(body, keep);
+  if (away.empty() || c.state == CutSolid::State::Removed) return c;
+  const bool was_cut = c.state == CutSolid::State::Cut;
+  const Polyhedron cur = was_cut ? Polyhedron(c.vertices, c.faces) : body;
+  CutSolid d = cut_away(cur, away);
+  d.open = d.open || c.open;
+  if (d.state != CutSolid::State::Cut) {
+    if (d.state == CutSolid::State::Removed) return d;
+    return c;
+  }
+  const int n1 = static_cast<int>(cur.num_faces()), nf = static_cast<int>(body.num_faces()), m1 = static_cast<int>(keep.size());
+  for (std::size_t f = 0; f < d.part.size(); ++f) {
+    const int q = d.part[f];
+    if (q < n1) {
+      d.part[f] = was_cut ? c.part[q] : q;
+      d.cap[f] = was_cut ? c.cap[q] : -1;
+    } else {
+      d.part[f] = nf + m1 + (q - n1);
+      d.cap[f] = m1 + (q - n1);
+    }
+  }
+  return d;
+}
+
 }  // namespace
 
-void cut_bodies(const std::vector<Plane>& planes, std::vector<SceneBody*>& bodies, std::vector<DrawingBody>& names, std::vector<std::string>& notes) {
+void cut_bodies(const std::vector<Plane>& planes, const std::vector<Plane>& away, std::vector<SceneBody*>& bodies, std::vector<DrawingBody>& names,
+                std::vector<std::string>& notes) {
   std::vector<SceneBody*> kept_bodies;
   std::vector<DrawingBody> kept_names;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
@@ -79,7 +106,7 @@ void cut_bodies(const std::vector<Plane>& planes, std::vector<SceneBody*>& bodie
       kept_bodies.push_back(&b), kept_names.push_back(std::move(names[i]));
       continue;
     }
-    CutSolid c = cut_solid(b.body, planes);
+    CutSolid c = cut_both(b.body, planes, away);
     if (c.state == CutSolid::State::Removed) continue;
     if (c.open) notes.push_back(b.source + ": body '" + b.name + "' is open: its faces are cut, it gets no cap (its inside is not known)");
     if (c.state == CutSolid::State::Cut) {
@@ -89,6 +116,7 @@ void cut_bodies(const std::vector<Plane>& planes, std::vector<SceneBody*>& bodie
       for (int part : c.part)
         input_face.push_back(part < input_faces ? n.output_face(part) : static_cast<int>(n.input_faces(input_faces)) + part - input_faces);
       n.input_face = std::move(input_face);
+      n.numbered = n.input_faces(input_faces) + planes.size() + away.size();
       b.body = Polyhedron(std::move(c.vertices), std::move(c.faces));
       b.section_part = std::move(c.part);
       b.section_cap = std::move(c.cap);

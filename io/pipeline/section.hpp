@@ -16,7 +16,10 @@ namespace hlr {
 /// Cuts every body that takes cuts (SceneBody::cut) by `planes`: a body wholly removed leaves
 /// `bodies` and `names`; a cut one gets its caps and SceneBody::section_part/section_cap; an
 /// open one a note (into `notes`, "SOURCE: body 'NAME' is open: ...").
-void cut_bodies(const std::vector<Plane>& planes, std::vector<SceneBody*>& bodies, std::vector<DrawingBody>& names, std::vector<std::string>& notes);
+/// With `away` (a cut-away, section_cut.hpp's cut_away), after the cut by `planes`: the region
+/// where every plane of `away` is <= 0 is removed too.
+void cut_bodies(const std::vector<Plane>& planes, const std::vector<Plane>& away, std::vector<SceneBody*>& bodies, std::vector<DrawingBody>& names,
+                std::vector<std::string>& notes);
 
 /// The per-face route's hooks that name the cut lines and keep the faces' inner seams undrawn.
 void section_hooks(const std::vector<const SceneBody*>& bodies, FaceRouteHooks& hooks);

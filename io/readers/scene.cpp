@@ -333,7 +333,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
   }
   if (!root || root.IsNull()) throw InputError(path, 0, "empty scene file");
   if (depth(root) > kMaxNesting) throw InputError(path, 0, "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
-  std::vector<std::string> known = {"bodies", "view", "light", "lighting", "ground", "section"};
+  std::vector<std::string> known = {"bodies", "view", "light", "lighting", "ground", "section", "cutaway"};
   known.insert(known.end(), extra_keys.begin(), extra_keys.end());
   // A problem file (docs/problem-format.md) is a scene too: `hlr render` draws its bodies.
   if (extra_keys.empty() && root.IsMap() && root["problem"])
@@ -417,6 +417,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
   if (root["lighting"]) s.lighting = parse_lighting(c, root["lighting"]);
   if (root["ground"]) add_ground(c, root["ground"], s, extra_keys.empty());
   if (root["section"]) s.section = parse_scene_section(c, root["section"]);
+  if (root["cutaway"]) s.cutaway = parse_scene_section(c, root["cutaway"]);
   return s;
 }
 

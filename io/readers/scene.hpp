@@ -68,6 +68,8 @@ struct Scene {
   /// `section:` cutting half-spaces (value <= 0 kept; io/readers/clipper_spec.hpp): what they
   /// remove is gone, each cut body gets its caps.
   std::vector<Plane> section;
+  /// `cutaway:` half-spaces whose common region is removed (a half section: two planes).
+  std::vector<Plane> cutaway;
 };
 
 /// True for .yaml, .yml and .json files.

@@ -19,10 +19,13 @@ struct DrawingBody {
   /// After a repair (mesh_repair.hpp): per face drawn, its number in the input; the input's
   /// numbers of the faces removed and of those changed. Empty: the faces are the input's.
   std::vector<int> input_face, removed_faces, repaired_faces;
+  /// After a section: how many numbers input_face uses (the input's faces, then one per cap:
+  /// the cap on plane k is number input faces + k). 0: no section.
+  std::size_t numbered = 0;
   /// The input's number of drawn face f: what every output calls it.
   int output_face(int f) const { return input_face.empty() ? f : input_face[static_cast<std::size_t>(f)]; }
-  /// How many faces the input body had.
-  std::size_t input_faces(std::size_t drawn) const { return drawn + removed_faces.size(); }
+  /// How many faces the input body had (with a section: and its caps).
+  std::size_t input_faces(std::size_t drawn) const { return numbered ? numbered : drawn + removed_faces.size(); }
 };
 
 /// A number as the SVG writers print it: three decimals, fixed (deterministic, diffable).

@@ -313,6 +313,26 @@ TEST(FaceOccluders, CreaseThresholdIsExact) {
   EXPECT_TRUE(has(r0, 3, 8));
 }
 
+// The crease test decides the same for normals of any size: scaled by 2^k (k up to 3000: the
+// exact cut points of a section give such normals on the rational path) an angle stays on
+// its side of the threshold; the double filter once overflowed to "every edge is a crease".
+TEST(FaceOccluders, CreaseTestIndependentOfTheNormalsSize) {
+  const CreaseAngle a(Q("30"));
+  const long base[][2][3] = {
+      {{0, 0, 1}, {0, 1, 1}}, {{0, 0, 1}, {0, 1, 9}}, {{3, 4, 5}, {3, 4, 6}}, {{1, 0, 0}, {1000, 577, 0}}, {{1, 0, 0}, {1000, 578, 0}}};
+  for (const auto& n : base)
+    for (int k : {0, 100, 500, 1100, 3000})
+      for (int j : {0, 7, 1500}) {
+        mpz_class x[3], y[3];
+        for (int i = 0; i < 3; ++i) {
+          x[i] = mpz_class(n[0][i]) << k;
+          y[i] = mpz_class(n[1][i]) << j;
+        }
+        long lx[3] = {n[0][0], n[0][1], n[0][2]}, ly[3] = {n[1][0], n[1][1], n[1][2]};
+        EXPECT_EQ(a.exceeds(x, y), a.exceeds(lx, ly)) << k << " " << j;
+      }
+}
+
 // Silhouette edges are decided exactly from the facing of the two faces.
 TEST(FaceOccluders, SilhouetteKinds) {
   Polyhedron cube = box("0", "0", "0", "2", "2", "2");

@@ -129,32 +129,44 @@ struct Tally {
 };
 
 // Every oracle check of one cut.
-void check_cut(const Polyhedron& body, const std::vector<Plane>& planes, std::mt19937& rng, Tally& tally, const std::string& what) {
-  SCOPED_TRACE(what);
-  const CutSolid c = cut_solid(body, planes);
+// `away`: cut_away (the planes' region removed), else cut_solid (kept).
+void check_cut(const Polyhedron& body, const std::vector<Plane>& planes, std::mt19937& rng, Tally& tally, const std::string& what,
+               bool away = false) {
+  SCOPED_TRACE(what + (away ? ", cut away" : ""));
+  const CutSolid c = away ? cut_away(body, planes) : cut_solid(body, planes);
   ASSERT_FALSE(c.open);
-  auto kept = [&](const Point3& x) {
+  auto in_region = [&](const Point3& x) {
     for (const Plane& h : planes)
       if (h.value(x) > 0) return false;
     return true;
   };
+  auto in_open_region = [&](const Point3& x) {
+    for (const Plane& h : planes)
+      if (h.value(x) >= 0) return false;
+    return true;
+  };
+  auto kept = [&](const Point3& x) { return away ? !in_region(x) : in_region(x); };
   if (c.state == CutSolid::State::Removed) {
-    for (const Point3& v : body.vertices()) {
-      bool strictly = true;
-      for (const Plane& h : planes) strictly = strictly && h.value(v) < 0;
-      EXPECT_FALSE(strictly) << "a vertex strictly on the kept side of a removed body";
-    }
+    for (const Point3& v : body.vertices())
+      if (away) EXPECT_TRUE(in_region(v)) << "a vertex outside the removed region of a removed body";
+      else EXPECT_FALSE(in_open_region(v)) << "a vertex strictly on the kept side of a removed body";
     return;
   }
   if (c.state == CutSolid::State::Whole) {
-    for (const Point3& v : body.vertices()) EXPECT_TRUE(kept(v));
+    for (const Point3& v : body.vertices()) EXPECT_TRUE(away ? !in_open_region(v) : in_region(v));
     return;
   }
   const Polyhedron cut(c.vertices, c.faces);
   ASSERT_EQ(c.part.size(), cut.num_faces());
   ASSERT_EQ(c.cap.size(), cut.num_faces());
   // The cut solid is closed and oriented: every cap edge is in two faces.
-  EXPECT_TRUE(cut.report().closed()) << cut.report().boundary_edges.size() << " boundary edges";
+  EXPECT_TRUE(cut.report().closed()) << cut.report().boundary_edges.size() << " boundary edges" << [&] {
+    std::string t;
+    for (const auto& e : cut.report().boundary_edges) t += " " + to_string(cut.vertices()[e.first]) + "-" + to_string(cut.vertices()[e.second]);
+    for (const Plane& h : planes) t += " plane " + to_string(h);
+    for (const Point3& v : body.vertices()) t += " v" + to_string(v);
+    return t;
+  }();
   EXPECT_TRUE(cut.report().oriented());
   // Faces: a cap lies in its plane facing the removed side; any other face lies in its input face's plane.
   for (std::size_t f = 0; f < cut.num_faces(); ++f) {
@@ -162,7 +174,7 @@ void check_cut(const Polyhedron& body, const std::vector<Plane>& planes, std::mt
     if (c.cap[f] >= 0) {
       const Plane& k = planes[c.cap[f]];
       for (int v : cut.faces()[f]) EXPECT_EQ(k.value(cut.vertices()[v]), 0);
-      EXPECT_GT(dot(h.normal(), k.normal()), 0);
+      EXPECT_EQ(sgn(dot(h.normal(), k.normal())), away ? -1 : 1);  // facing the removed side
     } else {
       ASSERT_LT(c.part[f], static_cast<int>(body.num_faces()));
       EXPECT_EQ(primitive_plane(h), primitive_plane(body.planes()[c.part[f]]));
@@ -202,7 +214,7 @@ void check_cut(const Polyhedron& body, const std::vector<Plane>& planes, std::mt
       const Rational rest = planes[p].value(Point3(q[0], q[1], q[2]));
       q[a] = -rest / n[a];
       const Point3 x(q[0], q[1], q[2]);
-      if (!kept(x)) continue;
+      if (!in_region(x)) continue;
       bool strictly = true;
       for (std::size_t o = 0; o < planes.size(); ++o) strictly = strictly && (o == p || planes[o].value(x) < 0);
       if (!strictly || inside(body, x) != 1) continue;
@@ -287,6 +299,7 @@ TEST(SectionCut, OracleOnRandomBodiesAndPlanes) {
         planes.emplace_back(n.x(), n.y(), n.z(), -dot(n, at - Point3()));
       }
       check_cut(body, planes, rng, tally, name + ", trial " + std::to_string(trial));
+      check_cut(body, planes, rng, tally, name + ", trial " + std::to_string(trial), true);
     }
   // The oracle decided enough points to mean something.
   EXPECT_GT(tally.solid_points, 1500);
