@@ -60,7 +60,7 @@ LineDrawing Engine<P>::run() {
   std::vector<std::vector<DrawnEdge>> drawn(bodies_.size());
   std::size_t total = 0;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    drawn[b] = collect_edges(static_cast<int>(b));
+    if (!hooks_.extra_only) drawn[b] = collect_edges(static_cast<int>(b));
     total += drawn[b].size();
   }
   vertex_rules();

@@ -68,6 +68,9 @@ struct FaceRouteHooks {
     LineKind kind;
   };
   std::vector<ExtraLine> extra_lines;
+  /// Only the extra lines: no edge of the bodies is drawn (and no intersection line when
+  /// LineOptions::intersections is off), so only the occluders near the extra lines are built.
+  bool extra_only = false;
 };
 
 /// Runs the per-face hidden-line computation. Bodies may be closed solids (closed, manifold,

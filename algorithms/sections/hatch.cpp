@@ -6,21 +6,40 @@
 #include "algorithms/sections/hatch.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <utility>
 
 namespace hlr {
 namespace {
 
-struct LinePlane {
-  Vector3 n;
-  Rational d;
+// g(X) = A − c·B for the line at c (hatch.hpp's planes, rearranged): orthographic A = m·X − o,
+// B = k; perspective A = m·(X − eye), B = f·(X − eye).
+struct Affine {
+  Rational a, b;
+  double ad, bd;
 };
 
-LinePlane plane_of(const HatchFamily& fam, const Rational& c) {
-  if (!fam.perspective) return {fam.m, c * fam.k + fam.o};
-  Vector3 n = fam.m + (Rational(-c) * fam.f);
-  Rational d = dot(n, fam.eye - Point3());
-  return {n, d};
+Affine affine_at(const HatchFamily& fam, const Point3& x) {
+  Affine v;
+  if (fam.perspective) {
+    const Vector3 d = x - fam.eye;
+    v.a = dot(fam.m, d);
+    v.b = dot(fam.f, d);
+  } else {
+    v.a = dot(fam.m, x - Point3()) - fam.o;
+    v.b = fam.k;
+  }
+  v.ad = to_double(v.a), v.bd = to_double(v.b);
+  return v;
+}
+
+// The sign of A − c·B < 0: decided in doubles when the gap is over 1e-9 of the terms' size (the
+// doubles' error is a few units of 2^-53 of it), else exactly.
+bool below(const Affine& v, const Rational& c, double cd) {
+  const double g = v.ad - cd * v.bd, size = std::fabs(v.ad) + std::fabs(cd * v.bd);
+  if (std::isfinite(g) && std::isfinite(size) && std::fabs(g) > 1e-9 * size + 1e-300) return g < 0;
+  return v.a - c * v.b < 0;
 }
 
 }  // namespace
@@ -29,18 +48,23 @@ std::vector<std::array<Point3, 2>> hatch_region(const std::vector<Point3>& pts, 
                                                 const Vector3& normal, const HatchFamily& family) {
   std::vector<std::array<Point3, 2>> out;
   if (boundary.empty() || family.step <= 0) return out;
+  std::map<int, Affine> at;  // the boundary's corners
+  for (const auto& e : boundary)
+    for (int v : e)
+      if (!at.count(v)) at.emplace(v, affine_at(family, pts[v]));
   std::vector<std::pair<Rational, Point3>> hits;
   for (Rational c = family.first; c <= family.last; c += family.step) {
-    const LinePlane lp = plane_of(family, c);
-    const Vector3 along = cross(normal, lp.n);
+    const double cd = to_double(c);
+    const Vector3 n = family.perspective ? family.m + Rational(-c) * family.f : family.m;  // the line's plane's normal
+    const Vector3 along = cross(normal, n);
     if (along.is_zero()) continue;  // the region's plane holds the line's plane's normal: seen edge-on
     hits.clear();
     for (const auto& e : boundary) {
+      const Affine &va = at.at(e[0]), &vb = at.at(e[1]);
+      if (below(va, c, cd) == below(vb, c, cd)) continue;
+      const Rational ga = va.a - c * va.b, gb = vb.a - c * vb.b;
       const Point3& a = pts[e[0]];
-      const Point3& b = pts[e[1]];
-      const Rational ga = dot(lp.n, a - Point3()) - lp.d, gb = dot(lp.n, b - Point3()) - lp.d;
-      if ((ga < 0) == (gb < 0)) continue;
-      Point3 x = a + Rational(ga / (ga - gb)) * (b - a);
+      Point3 x = a + Rational(ga / (ga - gb)) * (pts[e[1]] - a);
       Rational key = dot(along, x - Point3());
       hits.emplace_back(std::move(key), std::move(x));
     }

@@ -195,7 +195,7 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
   lo.intersections = false;
   lo.threads = threads;
   hooks.see_through = see_through_bodies(r);
-  hooks.decide = [](const Segment& s) { return s.line == LineKind::Hatch; };
+  hooks.extra_only = true;
   LineDrawing all = face_occluders(polys, r.camera, lo, hooks);
   for (Segment& s : all.segments)
     if (s.line == LineKind::Hatch) out.segments.push_back(std::move(s));
