@@ -17,6 +17,7 @@ W="$(mktemp -d)"
 trap 'rm -rf "$W"' EXIT
 ln -s "$ROOT/data" "$W/data"
 ln -s "$MESHES/fandisk.off" "$W/fandisk.off"
+ln -s "$MESHES/couplingdown.off" "$W/couplingdown.off"
 cd "$W"
 fail=0 count=0
 picture() {  # NAME COMMAND ARGS...: the picture docs/NAME is `hlr COMMAND ARGS... -o NAME`
@@ -49,6 +50,9 @@ picture sphere_gouraud.png raster data/sphere2000.off --view 1,1.3,1.7 --shading
 picture sphere_phong.png raster data/sphere2000.off --view 1,1.3,1.7 --shading phong --samples 2 --size 240x240
 picture texture_demo.png raster data/texture_demo.yaml --shading phong --samples 3 --size 480x360
 picture glass_demo.png raster data/glass_demo.yaml --bounces 6 --samples 3 --size 640x400
+picture house_plan.svg render data/house.yaml --plan 1.2 --width 120
+picture house_section.svg render data/house.yaml --section 'y>4.5' --width 160
+picture couplingdown_half_section.svg render couplingdown.off --view iso --cutaway 'x>0' --cutaway 'y>0' --width 110
 ridge=(horizon --expr "0.35*exp(-6*x^2)*(1+sin(9*z+2*x))^2/4 + 0.02*cos(17*x+7*z)" --x -1.5:1.5:241 --z -1:1:61 --angles 25,0 --stroke 0.25 --width 180)
 picture horizon_ridgelines.svg "${ridge[@]}"
 picture horizon_ridgelines.png "${ridge[@]}" --page A4 --landscape --dpi 94

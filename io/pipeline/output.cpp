@@ -215,7 +215,14 @@ PartText drawing_text(const std::vector<const RenderResult*>& results, const std
       order_plot(*plot, {plot->bounds[0], plot->bounds[3]}, order);
     }
     const RenderResult& r0 = *results[0];
-    text = to_json_text(r0.names, r0.drawing, r0.camera, plot ? &plot->stats : nullptr, surfaces_json(r0));
+    SurfacesJson sj = surfaces_json(r0);
+    if (!r0.section_planes.empty()) {  // the hatch lines of the page the same options give
+      PlotOptions po = plot_options(a);
+      const Plot lines = plot ? *plot : make_plot(r0.drawing, r0.camera, po);
+      const double scale = layout_single(lines, page_options(a)).views[0].scale;
+      sj.section = section_json(r0, cap_hatching(r0, scale, plot_style(a).weights.at("hatch"), a.threads), scale);
+    }
+    text = to_json_text(r0.names, r0.drawing, r0.camera, plot ? &plot->stats : nullptr, sj);
   } else {
     progress("strokes");
     const PlotOptions po = plot_options(a);

@@ -333,6 +333,8 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   if (sectioned) {
     static const std::vector<Plane> none;
     cut_bodies(planes ? *planes : none, away ? *away : none, editable, r.names, repairs);
+    r.section_planes = planes ? *planes : none;
+    if (away) r.section_planes.insert(r.section_planes.end(), away->begin(), away->end());
     if (editable.empty()) throw std::invalid_argument("the section removes every body: nothing is left to draw");
     polys.clear();
     for (SceneBody* b : editable) polys.push_back(&b->body);

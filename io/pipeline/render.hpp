@@ -106,6 +106,9 @@ struct RenderResult {
   double priority_seconds = 0;
   /// Pieces of lines seen through transparent faces (RenderOptions::through_lines).
   std::size_t through_pieces = 0;
+  /// With a section: its planes, the kept side's (RenderOptions::section) then the cut-away's;
+  /// a cap face of plane k (SceneBody::section_cap) lies on section_planes[k].
+  std::vector<Plane> section_planes;
   /// Remarks for the user ("file: body 'name' is open ...: drawn as a surface", eye in a face plane).
   std::vector<std::string> notes;
 };

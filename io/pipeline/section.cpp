@@ -164,7 +164,9 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
   if (!has_caps(r) || !(mm_per_unit > 0)) return out;
   const Projector proj = drawing_projector(r.drawing, r.camera);
   FaceRouteHooks hooks;
-  int cut_index = 0;
+  // The default angle alternates between materials (bodies of one material: one hatch, as ISO
+  // 128-50 wants for one part or one material) and, for bodies without one, between bodies.
+  std::map<std::string, int> style_index;
   for (std::size_t b = 0; b < r.bodies.size(); ++b) {
     const SceneBody& body = *r.bodies[b];
     std::map<int, std::vector<int>> caps;  // plane -> its cap's faces
@@ -172,7 +174,13 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
       if (body.section_cap[f] >= 0) caps[body.section_cap[f]].push_back(static_cast<int>(f));
     if (caps.empty()) continue;
     const HatchStyle style = body.hatch.value_or(HatchStyle{});
-    const double angle = style.angle.value_or(kHatchAngles[cut_index++ % 2]);
+    std::string key = "body " + std::to_string(b);
+    if (body.material) {
+      const auto& c = body.material->colour;
+      key = "material " + std::to_string(c[0]) + " " + std::to_string(c[1]) + " " + std::to_string(c[2]);
+    }
+    const int index = style_index.emplace(key, static_cast<int>(style_index.size())).first->second;
+    const double angle = style.angle.value_or(kHatchAngles[index % 2]);
     if (style.pattern == HatchStyle::Pattern::None) continue;
     const double mm = style.pattern == HatchStyle::Pattern::Solid ? pen_mm : style.spacing.value_or(kDefaultHatchMm);
     std::vector<double> angles = {angle};
@@ -200,6 +208,76 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
   for (Segment& s : all.segments)
     if (s.line == LineKind::Hatch) out.segments.push_back(std::move(s));
   out.facing = std::move(all.facing);
+  return out;
+}
+
+namespace {
+
+std::string exact_point_json(const Point3& p) { return "[\"" + p.x().get_str() + "\",\"" + p.y().get_str() + "\",\"" + p.z().get_str() + "\"]"; }
+
+// The border's directed edges chained into closed loops.
+std::vector<std::vector<int>> border_loops(const std::vector<std::array<int, 2>>& border) {
+  std::multimap<int, std::size_t> from;
+  for (std::size_t k = 0; k < border.size(); ++k) from.emplace(border[k][0], k);
+  std::vector<char> used(border.size(), 0);
+  std::vector<std::vector<int>> loops;
+  for (std::size_t k = 0; k < border.size(); ++k) {
+    if (used[k]) continue;
+    std::vector<int> loop;
+    for (std::size_t e = k;;) {
+      used[e] = 1;
+      loop.push_back(border[e][0]);
+      auto [lo, hi] = from.equal_range(border[e][1]);
+      std::size_t next = border.size();
+      for (auto it = lo; it != hi; ++it)
+        if (!used[it->second]) next = it->second;
+      if (next == border.size()) break;
+      e = next;
+    }
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+}  // namespace
+
+std::string section_json(const RenderResult& r, const LineDrawing& hatch, double mm_per_unit) {
+  if (r.section_planes.empty()) return "";
+  std::string out = ",\n \"section\": {\"planes\": [";
+  for (std::size_t k = 0; k < r.section_planes.size(); ++k) {
+    const Plane& h = r.section_planes[k];
+    out += std::string(k ? "," : "") + "[\"" + h.a().get_str() + "\",\"" + h.b().get_str() + "\",\"" + h.c().get_str() + "\",\"" + h.d().get_str() +
+           "\"]";
+  }
+  out += "],\n  \"caps\": [";
+  bool first = true;
+  for (std::size_t b = 0; b < r.bodies.size(); ++b) {
+    const SceneBody& body = *r.bodies[b];
+    std::map<int, std::vector<int>> caps;
+    for (std::size_t f = 0; f < body.section_cap.size(); ++f)
+      if (body.section_cap[f] >= 0) caps[body.section_cap[f]].push_back(static_cast<int>(f));
+    for (const auto& [plane, faces] : caps) {
+      out += std::string(first ? "" : ",") + "\n   {\"body\":" + std::to_string(b) + ",\"plane\":" + std::to_string(plane) + ",\"loops\":[";
+      first = false;
+      const auto loops = border_loops(cap_border(body.body, faces));
+      for (std::size_t l = 0; l < loops.size(); ++l) {
+        out += l ? ",[" : "[";
+        for (std::size_t k = 0; k < loops[l].size(); ++k) out += (k ? "," : "") + exact_point_json(body.body.vertices()[loops[l][k]]);
+        out += "]";
+      }
+      out += "]}";
+    }
+  }
+  out += "],\n  \"hatch_scale_mm_per_unit\": " + std::to_string(mm_per_unit) + ",\n  \"hatch\": [";
+  first = true;
+  for (const Segment& s : hatch.segments)
+    for (const Piece& p : s.pieces) {
+      if (!p.visible || p.behind_eye || p.clipped) continue;
+      out += std::string(first ? "" : ",") + "\n   {\"body\":" + std::to_string(s.body) + ",\"from\":" + exact_point_json(s.at(p.t0)) +
+             ",\"to\":" + exact_point_json(s.at(p.t1)) + "}";
+      first = false;
+    }
+  out += "]}";
   return out;
 }
 

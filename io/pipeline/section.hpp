@@ -35,4 +35,9 @@ bool has_caps(const RenderResult& r);
 /// spacing and angle on the page, `pen_mm` the hatch pen (a solid fill's spacing).
 LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_mm, unsigned threads);
 
+/// The JSON's "section" member (docs/output-format.md): the planes, each cap's exact border
+/// loops per body and plane, and the visible pieces of `hatch` (cap_hatching's, made at
+/// `mm_per_unit`). "" when the render has no section.
+std::string section_json(const RenderResult& r, const LineDrawing& hatch, double mm_per_unit);
+
 }  // namespace hlr

@@ -399,6 +399,7 @@ PartText to_json_text(const std::vector<DrawingBody>& bodies, const LineDrawing&
   if (surfaces.priority) out += priority_text(bodies, surfaces, camera);
   if (surfaces.shadows) out += shadows_text(bodies, surfaces);
   if (surfaces.transparent) out += transparency_text(bodies, surfaces);
+  out += surfaces.section;
   out += "\n}\n";
   text.add(std::move(out));
   return text;

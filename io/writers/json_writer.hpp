@@ -43,6 +43,8 @@ struct SurfacesJson {
   /// other (back to front), the final colour, the exact picture polygon and its area.
   const TransparentPicture* transparent = nullptr;
   const std::vector<Rgb>* transparent_colours = nullptr;
+  /// Sections: the "section" object's text (io/pipeline/section.hpp), "" for none.
+  std::string section;
 };
 std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
                     const PlotStats* plot, const SurfacesJson& surfaces);
