@@ -81,7 +81,10 @@ struct Drawing {
     return hlr::drawing_text(*r, o, "svg", "python").str();
   }
   std::string json() const {
-    return hlr::to_json(r->names, r->drawing, r->camera, nullptr, hlr::surfaces_json(*r));
+    std::string j = hlr::to_json(r->names, r->drawing, r->camera, nullptr, hlr::surfaces_json(*r));
+    const std::string section = hlr::section_text(*r, hlr::OutputOptions{});
+    if (!section.empty()) j.insert(j.rfind('}'), section + "\n");  // the "section" member last, as the CLI writes it
+    return j;
   }
   // The painter's list (render(..., method='priority')): one dict per polygon, back to front.
   py::object priority() const {
@@ -186,9 +189,9 @@ struct Drawing {
   }
 };
 
-Drawing render(const py::object& input, std::optional<py::sequence> view, std::optional<py::sequence> eye,
-               std::optional<py::sequence> target, std::optional<py::sequence> up, const std::string& method,
-               const std::string& edges, const py::object& crease, unsigned threads, bool surfaces, bool shadows, bool through) {
+Drawing render(const py::object& input, std::optional<py::sequence> view, std::optional<py::sequence> eye, std::optional<py::sequence> target,
+               std::optional<py::sequence> up, const std::string& method, const std::string& edges, const py::object& crease, unsigned threads,
+               bool surfaces, bool shadows, bool through, const std::vector<std::string>& section, const std::vector<std::string>& cutaway) {
   std::vector<std::string> inputs;
   if (py::isinstance<py::str>(input)) inputs.push_back(input.cast<std::string>());
   else inputs = input.cast<std::vector<std::string>>();
@@ -205,6 +208,10 @@ Drawing render(const py::object& input, std::optional<py::sequence> view, std::o
   o.view.eye = point3(eye);
   o.view.target = point3(target);
   o.view.up = vector3(up);
+  for (const std::string& s : section)
+    for (hlr::Plane& h : hlr::parse_section("section", s)) o.section.push_back(std::move(h));
+  for (const std::string& s : cutaway)
+    for (hlr::Plane& h : hlr::parse_section("cutaway", s)) o.cutaway.push_back(std::move(h));
   py::gil_scoped_release release;
   return Drawing{std::make_shared<hlr::RenderResult>(hlr::render_files(inputs, o))};
 }
@@ -322,12 +329,14 @@ PYBIND11_MODULE(exact_hlr, m) {
            "The drawing to plot or print (svg, pdf, png or dxf bytes), as `hlr render` writes it");
   m.def("render", &render, py::arg("inputs"), py::kw_only(), py::arg("view") = py::none(), py::arg("eye") = py::none(),
         py::arg("target") = py::none(), py::arg("up") = py::none(), py::arg("method") = "faces", py::arg("edges") = "feature",
-        py::arg("crease") = py::int_(30), py::arg("threads") = 0u, py::arg("surfaces") = false, py::arg("shadows") = false,
-        py::arg("through") = true,
+        py::arg("crease") = py::int_(30), py::arg("threads") = 0u, py::arg("surfaces") = false, py::arg("shadows") = false, py::arg("through") = true,
+        py::arg("section") = std::vector<std::string>{}, py::arg("cutaway") = std::vector<std::string>{},
         "Renders mesh files and scene files: exact hidden lines (view: orthographic direction; eye: perspective); "
         "surfaces=True also gives the visible part of every face as exact polygons, shaded; shadows=True cuts them by "
         "the lights' shadows (json()['shadows']); through=False counts lines behind transparent bodies as hidden (by "
-        "default they are their own class: 'through-*' layers, pieces with 'through': true)");
+        "default they are their own class: 'through-*' layers, pieces with 'through': true); section=['z<1.2', ...] cuts "
+        "the bodies and keeps the planes' common side (caps, cut lines, hatching: json()['section']), cutaway=[...] "
+        "removes their common region (hlr render --section / --cutaway)");
   py::class_<Image>(m, "Image", "A raster image with the exact face seen at every sample centre")
       .def_property_readonly("width", [](const Image& i) { return i.r->width; })
       .def_property_readonly("height", [](const Image& i) { return i.r->height; })

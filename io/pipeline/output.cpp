@@ -216,12 +216,7 @@ PartText drawing_text(const std::vector<const RenderResult*>& results, const std
     }
     const RenderResult& r0 = *results[0];
     SurfacesJson sj = surfaces_json(r0);
-    if (!r0.section_planes.empty()) {  // the hatch lines of the page the same options give
-      PlotOptions po = plot_options(a);
-      const Plot lines = plot ? *plot : make_plot(r0.drawing, r0.camera, po);
-      const double scale = layout_single(lines, page_options(a)).views[0].scale;
-      sj.section = section_json(r0, cap_hatching(r0, scale, plot_style(a).weights.at("hatch"), a.threads), scale);
-    }
+    sj.section = section_text(r0, a);
     text = to_json_text(r0.names, r0.drawing, r0.camera, plot ? &plot->stats : nullptr, sj);
   } else {
     progress("strokes");
@@ -245,6 +240,14 @@ PartText drawing_text(const std::vector<RenderResult>& results, const std::vecto
 
 PartText drawing_text(const RenderResult& result, const OutputOptions& a, const std::string& format, const std::string& command) {
   return drawing_text(std::vector<const RenderResult*>{&result}, {}, a, format, command);
+}
+
+std::string section_text(const RenderResult& r, const OutputOptions& a) {
+  if (r.section_planes.empty()) return "";
+  // The hatch lines of the page the same options give the SVG.
+  const Plot lines = make_plot(r.drawing, r.camera, plot_options(a));
+  const double scale = layout_single(lines, page_options(a)).views[0].scale;
+  return section_json(r, cap_hatching(r, scale, plot_style(a).weights.at("hatch"), a.threads), scale);
 }
 
 PlotOptions plot_options(const OutputOptions& a) {

@@ -32,6 +32,9 @@ struct OutputOptions {
 /// shadows, transparency), pointing into `r`.
 SurfacesJson surfaces_json(const RenderResult& r);
 
+/// The JSON's "section" member for a render with a section ("" without): the hatch lines
+/// those of the page `a` gives (section.hpp's section_json).
+std::string section_text(const RenderResult& r, const OutputOptions& a);
 /// Checks the numbers, the page and the line weights (before any long work).
 void check_output_options(const OutputOptions& a);
 

@@ -180,6 +180,15 @@ def test_repaired_mesh_keeps_the_input_face_numbers():
     assert seen == {(0, 11), (0, 13)}
 
 
+def test_section_caps_and_hatch_in_the_json():
+    d = json.loads(exact_hlr.render(path("house.yaml"), section=["z<1.2"], view=[0, 0, 1], up=[0, 1, 0]).json())
+    assert d["section"]["planes"] == [["0", "0", "1", "-6/5"]]
+    assert d["section"]["caps"] and d["section"]["hatch"]
+    assert any(s["kind"] == "cut" for s in d["segments"])
+    with pytest.raises(ValueError):
+        exact_hlr.render(path("house.yaml"), section=["w<1"])
+
+
 def hlr_cli(*args):
     import subprocess
     exe = os.environ.get("HLR_BIN", "hlr")
@@ -187,6 +196,8 @@ def hlr_cli(*args):
 
 
 @pytest.mark.parametrize("name,kwargs,flags", [
+    ("house.yaml", {"section": ["y>4.5"]}, ["--section", "y>4.5"]),
+    ("house.yaml", {"cutaway": ["x>4", "y>3"], "surfaces": True}, ["--cutaway", "x>4", "--cutaway", "y>3", "--surfaces"]),
     ("demo.yaml", {"surfaces": True}, ["--surfaces"]),
     ("demo.yaml", {}, []),
     ("two_boxes.yaml", {"shadows": True}, ["--shadows"]),
