@@ -1,8 +1,8 @@
-// Hatch lines clipped exactly to a planar region (see hatch.hpp). For each line's plane g(X) =
-// N·X − d, an edge ab crosses where the signs of g(a) < 0 and g(b) < 0 differ (the half-open
-// rule: a line through a vertex counts the vertex once, a line along an edge counts it on one
-// side), so every line meets the closed loops an even number of times; the crossing points,
-// sorted along the line, pair into the inside pieces.
+// Hatch lines clipped exactly to a planar region (see hatch.hpp). For a line p0 p1 of the plane
+// and w = normal × (p1 − p0), an edge ab crosses it where the signs of w·(a − p0) < 0 and
+// w·(b − p0) < 0 differ (the half-open rule: a line through a vertex counts the vertex once, a
+// line along an edge counts it on one side), so every line meets the closed loops an even
+// number of times; the crossing points, sorted along the line, pair into the inside pieces.
 #include "algorithms/sections/hatch.hpp"
 
 #include <algorithm>
@@ -13,64 +13,80 @@
 namespace hlr {
 namespace {
 
-// g(X) = A − c·B for the line at c (hatch.hpp's planes, rearranged): orthographic A = m·X − o,
-// B = k; perspective A = m·(X − eye), B = f·(X − eye).
-struct Affine {
-  Rational a, b;
-  double ad, bd;
-};
-
-Affine affine_at(const HatchFamily& fam, const Point3& x) {
-  Affine v;
-  if (fam.perspective) {
-    const Vector3 d = x - fam.eye;
-    v.a = dot(fam.m, d);
-    v.b = dot(fam.f, d);
-  } else {
-    v.a = dot(fam.m, x - Point3()) - fam.o;
-    v.b = fam.k;
-  }
-  v.ad = to_double(v.a), v.bd = to_double(v.b);
-  return v;
+// The exact point of `plane` with coordinates i, j the doubles' rounded to multiples of q (a
+// power of two) and coordinate k solved.
+Point3 snap(const std::array<double, 3>& y, const Plane& plane, double q) {
+  int k = 0;
+  for (int a = 1; a < 3; ++a)
+    if (abs(plane[a]) > abs(plane[k])) k = a;
+  Rational x[3];
+  const Rational quantum(q);
+  for (int a = 0; a < 3; ++a)
+    if (a != k) x[a] = Rational(std::nearbyint(y[a] / q)) * quantum;
+  Rational rest = plane.d();
+  for (int a = 0; a < 3; ++a)
+    if (a != k) rest += plane[a] * x[a];
+  x[k] = -rest / plane[k];
+  return Point3(x[0], x[1], x[2]);
 }
 
-// The sign of A − c·B < 0: decided in doubles when the gap is over 1e-9 of the terms' size (the
-// doubles' error is a few units of 2^-53 of it), else exactly.
-bool below(const Affine& v, const Rational& c, double cd) {
-  const double g = v.ad - cd * v.bd, size = std::fabs(v.ad) + std::fabs(cd * v.bd);
+// Sign of g < 0 for g = w·(x − p0): doubles when the gap is over 1e-9 of the terms, else exact.
+bool left_of(const Vector3& w, const std::array<double, 3>& wd, const Point3& x, const std::array<double, 3>& xd, const Point3& p0,
+             const std::array<double, 3>& p0d) {
+  double g = 0, size = 0;
+  for (int a = 0; a < 3; ++a) {
+    const double t = wd[a] * (xd[a] - p0d[a]);
+    g += t, size += std::fabs(t);
+  }
   if (std::isfinite(g) && std::isfinite(size) && std::fabs(g) > 1e-9 * size + 1e-300) return g < 0;
-  return v.a - c * v.b < 0;
+  return dot(w, x - p0) < 0;
 }
 
 }  // namespace
 
-std::vector<std::array<Point3, 2>> hatch_region(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& boundary,
-                                                const Vector3& normal, const HatchFamily& family) {
-  std::vector<std::array<Point3, 2>> out;
-  if (boundary.empty() || family.step <= 0) return out;
-  std::map<int, Affine> at;  // the boundary's corners
+std::vector<HatchLine> hatch_lines(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& boundary, const Plane& plane,
+                                   const std::function<std::array<double, 3>(double, double)>& lift, double angle_degrees, double first, double step,
+                                   double last, const std::array<double, 4>& page_box, double size) {
+  std::vector<HatchLine> out;
+  if (boundary.empty() || !(step > 0) || !(size > 0)) return out;
+  const double a = angle_degrees * M_PI / 180, n0 = std::cos(a), n1 = std::sin(a), d0 = -n1, d1 = n0;
+  double ulo = INFINITY, uhi = -INFINITY;
+  for (double x : {page_box[0], page_box[2]})
+    for (double y : {page_box[1], page_box[3]}) ulo = std::min(ulo, x * d0 + y * d1), uhi = std::max(uhi, x * d0 + y * d1);
+  const double margin = 0.1 * (uhi - ulo) + step;
+  ulo -= margin, uhi += margin;
+  const double q = std::ldexp(1.0, std::ilogb(size) - 30);
+  const Vector3 normal = plane.normal();
+  std::vector<std::pair<Rational, int>> hits;
+  std::map<int, std::array<double, 3>> approx;  // the border's corners in doubles
+  auto d3 = [](const Point3& p) { return std::array<double, 3>{to_double(p.x()), to_double(p.y()), to_double(p.z())}; };
   for (const auto& e : boundary)
-    for (int v : e)
-      if (!at.count(v)) at.emplace(v, affine_at(family, pts[v]));
-  std::vector<std::pair<Rational, Point3>> hits;
-  for (Rational c = family.first; c <= family.last; c += family.step) {
-    const double cd = to_double(c);
-    const Vector3 n = family.perspective ? family.m + Rational(-c) * family.f : family.m;  // the line's plane's normal
-    const Vector3 along = cross(normal, n);
-    if (along.is_zero()) continue;  // the region's plane holds the line's plane's normal: seen edge-on
+    for (int v : e) approx.emplace(v, d3(pts[v]));
+  for (double c = first; c <= last; c += step) {
+    HatchLine line;
+    line.p0 = snap(lift(c * n0 + ulo * d0, c * n1 + ulo * d1), plane, q);
+    line.p1 = snap(lift(c * n0 + uhi * d0, c * n1 + uhi * d1), plane, q);
+    const Vector3 d = line.p1 - line.p0;
+    if (d.is_zero()) continue;
+    const Vector3 w = cross(normal, d);  // in the plane, across the line
+    const std::array<double, 3> wd = {to_double(w.x()), to_double(w.y()), to_double(w.z())};
     hits.clear();
+    const std::array<double, 3> p0d = d3(line.p0);
     for (const auto& e : boundary) {
-      const Affine &va = at.at(e[0]), &vb = at.at(e[1]);
-      if (below(va, c, cd) == below(vb, c, cd)) continue;
-      const Rational ga = va.a - c * va.b, gb = vb.a - c * vb.b;
-      const Point3& a = pts[e[0]];
-      Point3 x = a + Rational(ga / (ga - gb)) * (pts[e[1]] - a);
-      Rational key = dot(along, x - Point3());
-      hits.emplace_back(std::move(key), std::move(x));
+      const Point3 &pa = pts[e[0]], &pb = pts[e[1]];
+      const bool la = left_of(w, wd, pa, approx.at(e[0]), line.p0, p0d), lb = left_of(w, wd, pb, approx.at(e[1]), line.p0, p0d);
+      if (la == lb) continue;
+      // Where the edge meets the line: t along p0 -> p1 (w·(X − p0) = 0 on the edge).
+      const Vector3 ab = pb - pa;
+      const Rational ga = dot(w, pa - line.p0), gb = dot(w, pb - line.p0);
+      const Point3 x = pa + Rational(ga / (ga - gb)) * ab;
+      hits.emplace_back(Rational(dot(d, x - line.p0) / dot(d, d)), 0);
     }
-    std::sort(hits.begin(), hits.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
-    for (std::size_t i = 0; i + 1 < hits.size(); i += 2)
-      if (hits[i].first < hits[i + 1].first) out.push_back({hits[i].second, hits[i + 1].second});
+    if (hits.empty()) continue;
+    std::sort(hits.begin(), hits.end(), [](const auto& p, const auto& r) { return p.first < r.first; });
+    for (std::size_t k = 0; k + 1 < hits.size(); k += 2)
+      if (hits[k].first < hits[k + 1].first) line.inside.emplace_back(hits[k].first, hits[k + 1].first);
+    if (!line.inside.empty()) out.push_back(std::move(line));
   }
   return out;
 }

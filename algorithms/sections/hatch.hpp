@@ -1,13 +1,13 @@
 // Hatching (ISO 128-50 for section caps; docs/design.md, "Sections"): parallel lines on the
-// page clipped exactly to a planar region in space. A page line is the trace of a plane (the
-// plane through the line and the eye in perspective, the plane along the view direction in
-// orthographic), so the lines of one family are exact segments on the region's plane, found
-// by the exact side of each boundary edge's ends and ordered along the line by exact keys:
-// a hatch line never crosses the region's border. Doubles only place the family (its angle
-// and spacing on the page): what is drawn is decided exactly.
+// page clipped exactly to a planar region in space. Each page line is lifted onto the region's
+// plane and its ends snapped exactly onto it, so it is an exact line of the plane; where it is
+// inside the region is decided by the exact side of each boundary edge's ends and the exact
+// order of the crossing points along it: a hatch line never crosses the region's border.
+// Doubles only place the lines (angle and spacing on the page): what is drawn is decided exactly.
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -24,22 +24,23 @@ struct HatchStyle {
   std::optional<double> angle, spacing;
 };
 
-/// The planes of a family of parallel page lines n·q = c (q the page point in drawing units).
-/// Orthographic: plane c is m·X = c·k + o; perspective: (m − c·f)·(X − eye) = 0, where m is
-/// n in space (n₀·right + n₁·up), f the viewing axis.
-struct HatchFamily {
-  bool perspective = false;
-  Vector3 m, f;
-  Point3 eye;
-  Rational k = 1, o = 0;  // orthographic: the drawing frame's scale and offset
-  /// The values of c drawn: first + i·step, i = 0, 1, ... while c <= last.
-  Rational first, step, last;
+/// A hatch line across a planar region: exact ends on the region's plane with dyadic
+/// coordinates (the lines of a scene then share one small denominator, which keeps the
+/// per-face route that decides their visibility on small integers), and the parameter
+/// intervals of p0 + t·(p1 − p0) inside the closed region, exact.
+struct HatchLine {
+  Point3 p0, p1;
+  std::vector<std::pair<Rational, Rational>> inside;
 };
 
-/// The hatch segments of the region whose boundary is the directed edges `boundary` (indices
-/// into `pts`, closed loops, all in one plane with normal `normal`), every line of `family`.
-/// Each segment is an exact piece of a line inside the closed region, in order along it.
-std::vector<std::array<Point3, 2>> hatch_region(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& boundary,
-                                                const Vector3& normal, const HatchFamily& family);
+/// The page lines n·q = c, n = (cos angle, sin angle), c = first, first + step, ... <= last,
+/// over the region bounded by `boundary` (directed edges into `pts`, closed loops in `plane`):
+/// each line from the page point q0 to q1 across `page_box` (x0, y0, x1, y1 of the region's
+/// picture) is lifted by `lift` (a page point to the point of the plane it shows, doubles) and
+/// its two ends snapped exactly onto the plane (two coordinates rounded to a power of two
+/// 2^-30 of `size`, the third solved from the plane). Only lines that meet the region.
+std::vector<HatchLine> hatch_lines(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& boundary, const Plane& plane,
+                                   const std::function<std::array<double, 3>(double, double)>& lift, double angle_degrees, double first, double step,
+                                   double last, const std::array<double, 4>& page_box, double size);
 
 }  // namespace hlr

@@ -1,6 +1,7 @@
 // Sections in the render pipeline (see section.hpp; docs/design.md, "Sections").
 #include "io/pipeline/section.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <unordered_set>
@@ -36,36 +37,68 @@ std::vector<std::array<int, 2>> cap_border(const Polyhedron& p, const std::vecto
   return out;
 }
 
-Vector3 exact_vector(const std::array<double, 3>& v) { return Vector3(Rational(v[0]), Rational(v[1]), Rational(v[2])); }
-
-// The hatch family at `degrees` on the page with `step` drawing units between lines, over the
-// values the border's corners take.
-HatchFamily family(const Projector& proj, const Camera& cam, double degrees, double step, const Polyhedron& p,
-                   const std::vector<std::array<int, 2>>& border) {
+// A page point (drawing coordinates) to the point of the plane n·X + d = 0 it shows, doubles.
+std::function<std::array<double, 3>(double, double)> lifter(const Projector& proj, const Camera& cam, const Plane& h) {
   const auto ax = proj.axes();
-  const double a = degrees * M_PI / 180, n0 = std::cos(a), n1 = std::sin(a);
-  const std::array<double, 3> m = {n0 * ax[0][0] + n1 * ax[1][0], n0 * ax[0][1] + n1 * ax[1][1], n0 * ax[0][2] + n1 * ax[1][2]};
-  HatchFamily fam;
-  fam.perspective = cam.perspective;
-  fam.m = exact_vector(m);
-  fam.f = exact_vector(ax[2]);
-  fam.eye = cam.eye;
-  if (!cam.perspective && !proj.frame().identity) {
-    fam.k = 1 / proj.frame().scale;
-    fam.o = dot(fam.m, proj.frame().centre - Point3());
+  const DrawingFrame& fr = proj.frame();
+  const double scale = fr.identity ? 1 : to_double(fr.scale);
+  const std::array<double, 3> centre = fr.identity
+                                           ? std::array<double, 3>{0, 0, 0}
+                                           : std::array<double, 3>{to_double(fr.centre.x()), to_double(fr.centre.y()), to_double(fr.centre.z())};
+  const std::array<double, 3> n = {to_double(h.a()), to_double(h.b()), to_double(h.c())},
+                              eye = {to_double(cam.eye.x()), to_double(cam.eye.y()), to_double(cam.eye.z())};
+  const double d = to_double(h.d());
+  const bool persp = cam.perspective;
+  return [=](double x, double y) {
+    std::array<double, 3> o, dir;
+    for (int k = 0; k < 3; ++k) {
+      const double across = x * ax[0][k] + y * ax[1][k];
+      o[k] = persp ? eye[k] : across / scale + centre[k];
+      dir[k] = persp ? ax[2][k] + across : ax[2][k];
+    }
+    const double s = -(n[0] * o[0] + n[1] * o[1] + n[2] * o[2] + d) / (n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2]);
+    return std::array<double, 3>{o[0] + s * dir[0], o[1] + s * dir[1], o[2] + s * dir[2]};
+  };
+}
+
+// The parts of a hatch line inside its cap as extra lines of the per-face pass, in chunks of
+// about 1/32 of the cap's size at dyadic parameters (short lines meet few occluders' boxes; their
+// ends keep small denominators), each with the part of it inside the cap (its own parameters).
+void add_chunks(const HatchLine& l, double size, int body, int face, FaceRouteHooks& hooks,
+                std::vector<std::vector<std::pair<Rational, Rational>>>& inside) {
+  const Vector3 d = l.p1 - l.p0;
+  const double length = std::sqrt(to_double(dot(d, d)));
+  const int m = std::clamp(static_cast<int>(std::ceil(std::log2(std::max(1.0, 32 * length / size)))), 0, 24);
+  const Rational h(mpz_class(1), mpz_class(1) << m);
+  for (const auto& [t0, t1] : l.inside) {
+    const Rational a = t0 / h, b = t1 / h;
+    mpz_class k0, k1;
+    mpz_fdiv_q(k0.get_mpz_t(), a.get_num_mpz_t(), a.get_den_mpz_t());  // floor
+    mpz_cdiv_q(k1.get_mpz_t(), b.get_num_mpz_t(), b.get_den_mpz_t());  // ceiling
+    for (mpz_class k = k0; k < k1; ++k) {
+      const Rational s0 = Rational(k) * h;
+      const Rational lo = std::max(t0, s0), hi = std::min(t1, Rational(s0 + h));
+      if (!(lo < hi)) continue;
+      hooks.extra_lines.push_back({body, face, l.p0 + s0 * d, l.p0 + Rational(s0 + h) * d, LineKind::Hatch});
+      inside.push_back({{Rational((lo - s0) / h), Rational((hi - s0) / h)}});
+    }
   }
-  double lo = INFINITY, hi = -INFINITY;
-  for (const auto& e : border) {
-    const auto q = proj.project(p.vertices()[e[0]]);
-    const double c = n0 * q[0] + n1 * q[1];
-    lo = std::min(lo, c), hi = std::max(hi, c);
+}
+
+// The visible part of a hatch line: its visible pieces within its inside intervals.
+PieceList clipped_pieces(const PieceList& seen, const std::vector<std::pair<Rational, Rational>>& inside) {
+  std::vector<Piece> out;
+  for (const Piece& p : seen) {
+    if (!p.visible || p.behind_eye || p.clipped) continue;
+    for (const auto& [a, b] : inside) {
+      const Rational& lo = std::max(p.t0, a);
+      const Rational& hi = std::min(p.t1, b);
+      if (lo < hi) out.push_back(Piece{lo, hi, true});
+    }
   }
-  if (!(hi > lo)) return fam;  // fam.step 0: no lines
-  step = std::max(step, (hi - lo) / kMaxHatchLines);
-  fam.step = Rational(step);
-  fam.first = Rational(std::floor(lo / step)) * fam.step + fam.step / 2;  // no line through the corner the range starts at
-  fam.last = Rational(hi);
-  return fam;
+  PieceList l;
+  l.assign(std::move(out));
+  return l;
 }
 
 // The keep cut, then the cut-away, as one cut (cap k of the cut-away is cap keep.size() + k).
@@ -164,6 +197,7 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
   if (!has_caps(r) || !(mm_per_unit > 0)) return out;
   const Projector proj = drawing_projector(r.drawing, r.camera);
   FaceRouteHooks hooks;
+  std::vector<std::vector<std::pair<Rational, Rational>>> inside;  // per hatch line
   // The default angle alternates between materials (bodies of one material: one hatch, as ISO
   // 128-50 wants for one part or one material) and, for bodies without one, between bodies.
   std::map<std::string, int> style_index;
@@ -187,11 +221,25 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
     if (style.pattern == HatchStyle::Pattern::Cross) angles.push_back(angle + 90);
     for (const auto& [plane, faces] : caps) {
       const std::vector<std::array<int, 2>> border = cap_border(body.body, faces);
-      const Vector3 normal = body.body.planes()[faces[0]].normal();
+      const Plane& h = body.body.planes()[faces[0]];
+      std::array<double, 4> box = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+      double lo3[3] = {INFINITY, INFINITY, INFINITY}, hi3[3] = {-INFINITY, -INFINITY, -INFINITY};
+      for (const auto& e : border) {
+        const Point3& v = body.body.vertices()[e[0]];
+        const auto q = proj.project(v);
+        box = {std::min(box[0], q[0]), std::min(box[1], q[1]), std::max(box[2], q[0]), std::max(box[3], q[1])};
+        for (int k = 0; k < 3; ++k) lo3[k] = std::min(lo3[k], to_double(v[k])), hi3[k] = std::max(hi3[k], to_double(v[k]));
+      }
+      const double size = std::max({hi3[0] - lo3[0], hi3[1] - lo3[1], hi3[2] - lo3[2]});
       for (double a : angles) {
-        const HatchFamily fam = family(proj, r.camera, a, mm / mm_per_unit, body.body, border);
-        for (auto& seg : hatch_region(body.body.vertices(), border, normal, fam))
-          hooks.extra_lines.push_back({static_cast<int>(b), faces[0], std::move(seg[0]), std::move(seg[1]), LineKind::Hatch});
+        const double rad = a * M_PI / 180, n0 = std::cos(rad), n1 = std::sin(rad);
+        double clo = INFINITY, chi = -INFINITY;
+        for (double x : {box[0], box[2]})
+          for (double y : {box[1], box[3]}) clo = std::min(clo, n0 * x + n1 * y), chi = std::max(chi, n0 * x + n1 * y);
+        const double step = std::max(mm / mm_per_unit, (chi - clo) / kMaxHatchLines);
+        const double first = std::floor(clo / step) * step + step / 2;  // no line through the corner the range starts at
+        for (const HatchLine& l : hatch_lines(body.body.vertices(), border, h, lifter(proj, r.camera, h), a, first, step, chi, box, size))
+          add_chunks(l, size, static_cast<int>(b), faces[0], hooks, inside);
       }
     }
   }
@@ -205,8 +253,12 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
   hooks.see_through = see_through_bodies(r);
   hooks.extra_only = true;
   LineDrawing all = face_occluders(polys, r.camera, lo, hooks);
-  for (Segment& s : all.segments)
-    if (s.line == LineKind::Hatch) out.segments.push_back(std::move(s));
+  std::size_t k = 0;
+  for (Segment& s : all.segments) {
+    if (s.line != LineKind::Hatch) continue;
+    s.pieces = clipped_pieces(s.pieces, inside[k++]);
+    if (!s.pieces.empty()) out.segments.push_back(std::move(s));
+  }
   out.facing = std::move(all.facing);
   return out;
 }

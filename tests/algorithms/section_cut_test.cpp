@@ -318,12 +318,16 @@ TEST(Hatch, LinesStayInsideACapWithAHole) {
   for (const auto& [u, v] : edges)
     if (!edges.count({v, u})) border.push_back({u, v});
   EXPECT_EQ(border.size(), 8u);  // the outer and the inner square
-  HatchFamily fam;               // orthographic from above: lines x - y = c, c = -3.05, -2.95, ...
-  fam.m = Vector3(1, -1, 0);
-  fam.first = Q("-3.05");
-  fam.step = Q("0.1");
-  fam.last = 3;
-  const auto segs = hatch_region(c.vertices, border, Vector3(0, 0, 1), fam);
+  // Seen from above (page x, y = world x, y): lines (x + y) / sqrt 2 = c at 45 degrees, 0.1 apart.
+  auto lift = [](double x, double y) { return std::array<double, 3>{x, y, 0.5}; };
+  const auto lines = hatch_lines(c.vertices, border, Plane(0, 0, 2, -1), lift, 45, 0.05, 0.1, 4.25, {0, 0, 3, 3}, 3);
+  ASSERT_FALSE(lines.empty());
+  std::vector<std::array<Point3, 2>> segs;
+  for (const HatchLine& l : lines) {
+    EXPECT_EQ(l.p0.z(), Q("0.5"));  // the ends snapped exactly onto the plane
+    EXPECT_EQ(l.p1.z(), Q("0.5"));
+    for (const auto& [t0, t1] : l.inside) segs.push_back({l.p0 + t0 * (l.p1 - l.p0), l.p0 + t1 * (l.p1 - l.p0)});
+  }
   ASSERT_FALSE(segs.empty());
   auto in_ring = [](const Point3& x) {
     const bool outer = x.x() >= 0 && x.x() <= 3 && x.y() >= 0 && x.y() <= 3;
@@ -340,7 +344,7 @@ TEST(Hatch, LinesStayInsideACapWithAHole) {
     }
     length += std::hypot(to_double(s[1].x() - s[0].x()), to_double(s[1].y() - s[0].y()));
   }
-  // Lines 0.1 / sqrt(2) apart over the ring's area 8.
-  const double expected = 8 / (0.1 / std::sqrt(2.0));
+  // Lines 0.1 apart over the ring's area 8.
+  const double expected = 8 / 0.1;
   EXPECT_NEAR(length, expected, 0.03 * expected);
 }
