@@ -42,6 +42,7 @@ struct RenderArgs : OutputArgs {
   std::string tile;  // "I/N"
   std::vector<std::string> section, cutaway;
   std::string plan;  // a height: a floor plan
+  bool no_overhead = false;
 };
 
 // A merge of tile files (hlr merge): the tiles and their paths.
@@ -110,6 +111,7 @@ RenderOptions render_options(const RenderArgs& a) {
   if (!a.plan.empty()) {  // a horizontal section at the height along the up axis, kept below
     const std::string axis = a.up_axis == "z" ? "z" : "y";
     for (Plane& h : parse_section("--plan", axis + "<" + a.plan)) o.section.push_back(std::move(h));
+    o.overhead = !a.no_overhead;
   }
   o.surfaces = a.surfaces;
   o.shadows = a.shadows;
@@ -257,6 +259,8 @@ void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   cmd->add_option("--plan", a->plan,
                   "A floor plan: a section at this height along the up axis, the part below kept, seen from above (--view top "
                   "unless a view is given)");
+  cmd->add_flag("--no-overhead", a->no_overhead,
+                "A plan without its overhead lines (what lies above the cut, seen from below, dashed: layer 'visible-overhead')");
   cmd->add_option("--near", a->near,
                   "Perspective near plane at this fraction of the eye-target distance from the eye (default 1/1000)");
   cmd->add_option("--tile", a->tile,

@@ -15,6 +15,8 @@ const char* to_string(LineKind k) {
       return "cut";
     case LineKind::Hatch:
       return "hatch";
+    case LineKind::Overhead:
+      return "overhead";
     case LineKind::Edge: break;
   }
   return "edge";

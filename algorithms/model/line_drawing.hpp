@@ -94,12 +94,13 @@ class PieceList {
 /// What a drawn line is: a boundary edge of an open surface, a crease (dihedral angle over the
 /// threshold), a silhouette (one face toward the viewer, the other not), an intersection line
 /// where two surfaces cross, or any mesh edge (`--edges all`); with a section, a cut line (an
-/// edge of a cap, where the cutting plane meets a body's surface) and a hatch line on a cap.
-enum class LineKind : std::uint8_t { Edge, Boundary, Crease, Silhouette, Intersection, Cut, Hatch };
+/// edge of a cap, where the cutting plane meets a body's surface), a hatch line on a cap, and in
+/// a floor plan an overhead line (what the section removed, seen from below: drawn dashed).
+enum class LineKind : std::uint8_t { Edge, Boundary, Crease, Silhouette, Intersection, Cut, Hatch, Overhead };
 const char* to_string(LineKind k);
 /// Every kind in the order a drawing's layers come in (cut lines first: the widest pen).
 inline constexpr LineKind kLayerKinds[] = {LineKind::Cut,          LineKind::Silhouette, LineKind::Boundary, LineKind::Crease,
-                                           LineKind::Intersection, LineKind::Edge,       LineKind::Hatch};
+                                           LineKind::Intersection, LineKind::Edge,       LineKind::Hatch,    LineKind::Overhead};
 
 /// Which edges a renderer draws.
 enum class EdgeSelection { All, Feature };

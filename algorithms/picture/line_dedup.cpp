@@ -563,6 +563,8 @@ int kind_priority(LineKind k) {
       return 5;
     case LineKind::Hatch:
       return -1;
+    case LineKind::Overhead:
+      return -2;
     case LineKind::Silhouette: return 4;
     case LineKind::Boundary: return 3;
     case LineKind::Crease: return 2;

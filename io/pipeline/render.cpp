@@ -292,6 +292,39 @@ class TileCut {
   std::vector<unsigned char> outside_;   // per vertex: tile_outside()
 };
 
+// A plan's overhead lines (RenderOptions::overhead): what `plane` removed, seen from the other
+// side, its visible lines put into r's drawing as owned overhead segments.
+void add_overhead(RenderResult& r, std::vector<Scene> scene, const Plane& plane, const RenderOptions& o) {
+  RenderOptions up;
+  up.method = o.method == RenderMethod::Roberts ? o.method : RenderMethod::Faces;
+  up.lines = o.lines;
+  up.section = {plane.opposite()};
+  up.view.direction = Rational(-1) * r.camera.direction;
+  up.view.up = r.camera.up;
+  RenderResult u;
+  try {
+    u = render(std::move(scene), up);
+  } catch (const std::invalid_argument&) {
+    return;  // nothing above the plane
+  }
+  for (const Segment& s : u.drawing.segments) {
+    if (s.line == LineKind::Cut) continue;
+    Segment t;
+    t.kind = Segment::Kind::Intersection;
+    t.line = LineKind::Overhead;
+    t.set_ends(s.from(), s.to());
+    std::vector<Piece> pieces = s.pieces.to_vector();
+    bool any = false;
+    for (Piece& p : pieces) {
+      if (!p.visible) p.clipped = true;  // only what is seen from below is drawn
+      any = any || (p.visible && !p.clipped && !p.behind_eye);
+    }
+    if (!any) continue;
+    t.pieces = std::move(pieces);
+    r.drawing.segments.push_back(std::move(t));
+  }
+}
+
 }  // namespace
 
 RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
@@ -330,6 +363,8 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   // The camera of the whole scene: a section and the plain view line up.
   r.camera = choose_camera(o.view, scene_view, polys);
   const bool sectioned = planes || away;
+  std::optional<std::vector<Scene>> above;  // the uncut scene, for the overhead lines
+  if (o.overhead && planes && planes->size() == 1 && !away && !r.camera.perspective) above = *owned;
   if (sectioned) {
     static const std::vector<Plane> none;
     cut_bodies(planes ? *planes : none, away ? *away : none, editable, r.names, repairs);
@@ -370,6 +405,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     throw RenderBodyError(e.body(), b.name, b.source, e.reason());
   }
   if (sectioned) mark_cut_lines(r.drawing, r.bodies);
+  if (above) add_overhead(r, std::move(*above), (*planes)[0], o);
   r.notes = std::move(repairs);
   for (const BodyNote& n : r.drawing.notes)
     r.notes.push_back(r.names[n.body].source + ": body '" + r.names[n.body].name + "' " + n.text);

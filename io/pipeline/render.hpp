@@ -52,6 +52,11 @@ struct RenderOptions {
   /// A cut-away: the convex region where every plane's value is <= 0 is removed (two planes: a
   /// half section), each cut body closed by caps facing into it. Empty: the scene's `cutaway:`.
   std::vector<Plane> cutaway;
+  /// A floor plan's overhead lines: with a section of one plane in an orthographic view, also
+  /// the visible lines of what the section removed seen from the other side (from below, in a
+  /// plan), as LineKind::Overhead segments (no body: -1), drawn dashed; the cut lines there are
+  /// left out (they are the plan's own).
+  bool overhead = false;
   /// Also the visible part of every face as exact polygons, shaded (visible_surfaces.hpp,
   /// lighting.hpp); the line drawing is then the selected lines of the same exact solution.
   bool surfaces = false;

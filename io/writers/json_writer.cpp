@@ -52,7 +52,7 @@ nlohmann::ordered_json piece_json(const Segment& s, const Piece& p) {
     o["kind"] = to_string(s.line);
   } else {
     o["bodies"] = Json::array({s.body, s.body2});
-    o["kind"] = "intersection";
+    o["kind"] = to_string(s.line);  // intersection (or a plan's overhead line: bodies -1)
   }
   o["visible"] = p.visible;
   o["from"] = exact_point(s.at(p.t0));
@@ -84,8 +84,7 @@ void append_piece_json(std::string& out, const Segment& s, const Piece& p) {
   if (s.kind == Segment::Kind::Edge)
     append_all(out, "{\"body\":", std::to_string(s.body), ",\"edge\":[", std::to_string(s.v0), ",", std::to_string(s.v1),
                "],\"kind\":\"", to_string(s.line), "\"");
-  else
-    append_all(out, "{\"bodies\":[", std::to_string(s.body), ",", std::to_string(s.body2), "],\"kind\":\"intersection\"");
+  else append_all(out, "{\"bodies\":[", std::to_string(s.body), ",", std::to_string(s.body2), "],\"kind\":\"", to_string(s.line), "\"");
   out += p.visible ? ",\"visible\":true,\"from\":" : ",\"visible\":false,\"from\":";
   append_exact_point(out, s.at(p.t0));
   out += ",\"to\":";

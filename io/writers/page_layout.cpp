@@ -160,8 +160,9 @@ void parse_weights(const std::string& text, PlotStyle& style) {
     auto eq = item.find('=');
     std::string key = lower(item.substr(0, eq));
     if (eq == std::string::npos || !style.weights.count(key))
-      throw std::invalid_argument("--weights: '" + item +
-                                  "' is not KIND=MM (kinds: cut, silhouette, boundary, crease, intersection, edge, hatch, hidden, through)");
+      throw std::invalid_argument(
+          "--weights: '" + item +
+          "' is not KIND=MM (kinds: cut, silhouette, boundary, crease, intersection, edge, hatch, overhead, hidden, through)");
     style.weights[key] = positive_number(item.substr(eq + 1), "--weights");
   }
 }
@@ -170,7 +171,7 @@ std::vector<std::vector<Point2>> page_strokes(const SheetView& view, const PlotL
                                               std::vector<char>* closed) {
   std::vector<std::vector<Point2>> out;
   if (closed) closed->clear();
-  const bool cut = !layer.visible && !layer.through && style.hidden_dashed && style.dashes == DashMode::Geometry;
+  const bool cut = style.dashed(layer) && style.dashes == DashMode::Geometry;
   auto pattern = style.dash_pattern(layer);
   for (const Stroke& s : layer.strokes) {
     std::vector<Point2> pts;

@@ -64,16 +64,16 @@ inline constexpr const char* kThroughGrey = "#808080";
 struct PlotStyle {
   /// Width in mm per layer key: "cut", "silhouette", "boundary", "crease", "intersection", "edge", "hatch",
   /// "hidden" (all hidden layers), "through" (all layers seen through transparent faces).
-  std::map<std::string, double> weights = {{"cut", 0.7},           {"silhouette", 0.5}, {"boundary", 0.5}, {"crease", 0.35}, {"hatch", 0.25},
-                                           {"intersection", 0.35}, {"edge", 0.35},      {"hidden", 0.25},  {"through", 0.25}};
+  std::map<std::string, double> weights = {{"cut", 0.7},       {"silhouette", 0.5},    {"boundary", 0.5}, {"crease", 0.35}, {"hatch", 0.25},
+                                           {"overhead", 0.25}, {"intersection", 0.35}, {"edge", 0.35},    {"hidden", 0.25}, {"through", 0.25}};
   DashMode dashes = DashMode::Pattern;
   bool hidden_dashed = true;     // false: hidden lines solid (thin)
   bool numbered_layers = true;   // AxiDraw-style "1 visible-silhouette"
   double weight(const PlotLayer& l) const;
   /// Drawn with the dash pattern (hidden lines, dashed, not cut into dash strokes).
-  bool pattern_dashed(const PlotLayer& l) const {
-    return !l.visible && !l.through && hidden_dashed && dashes == DashMode::Pattern;
-  }
+  /// Dashed: hidden lines (unless drawn solid) and a plan's overhead lines.
+  bool dashed(const PlotLayer& l) const { return (!l.visible && !l.through && hidden_dashed) || l.kind == LineKind::Overhead; }
+  bool pattern_dashed(const PlotLayer& l) const { return dashed(l) && dashes == DashMode::Pattern; }
   /// ISO 128 dashed narrow line: dash 12 d, gap 3 d (d: line width).
   std::array<double, 2> dash_pattern(const PlotLayer& l) const;
 };

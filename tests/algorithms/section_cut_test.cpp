@@ -109,7 +109,7 @@ Polyhedron ring() {
 
 Rational random_q(std::mt19937& rng, long lo, long hi) {
   std::uniform_int_distribution<long> n(lo * 97, hi * 97);
-  return Rational(n(rng), 97);
+  return Rational(n(rng)) / 97;  // in lowest terms (GMP's operations need canonical fractions)
 }
 
 // A point of face f's triangle t strictly inside it (barycentric weights 1..5 / sum).
@@ -339,7 +339,7 @@ TEST(Hatch, LinesStayInsideACapWithAHole) {
     EXPECT_EQ(s[0].z(), Q("0.5"));
     EXPECT_EQ(s[1].z(), Q("0.5"));
     for (int t = 0; t <= 16; ++t) {  // every point of the segment in the ring (a segment over the hole fails)
-      const Rational w(t, 16);
+      const Rational w = Rational(t) / 16;
       EXPECT_TRUE(in_ring(s[0] + w * (s[1] - s[0]))) << to_string(s[0]) << " " << to_string(s[1]);
     }
     length += std::hypot(to_double(s[1].x() - s[0].x()), to_double(s[1].y() - s[0].y()));

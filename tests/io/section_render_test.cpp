@@ -79,7 +79,7 @@ TEST(SectionRender, EqualsTheSceneCutByHand) {
       boxes.push_back(b);
     }
     const int axis = trial % 3;
-    const Rational h(h2(rng), 2);  // at the boxes' faces' heights and between them
+    const Rational h = Rational(h2(rng)) / 2;  // at the boxes' faces' heights and between them
     const bool below = trial % 2 == 0;
     // By hand: each box clipped to the kept side (a box wholly on the other side left out).
     std::vector<std::array<Rational, 3>> his;
