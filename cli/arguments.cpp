@@ -1,17 +1,15 @@
 // Exact option values and negative numbers after a space (see arguments.hpp).
 #include "cli/arguments.hpp"
 
-#include "io/pipeline/standard_views.hpp"
-
 #include <unistd.h>
-
-#include <iostream>
-
-#include "algorithms/support/progress.hpp"
 
 #include <cctype>
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
+
+#include "algorithms/support/progress.hpp"
+#include "io/views/standard_views.hpp"
 
 namespace hlr::cli {
 

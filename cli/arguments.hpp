@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/pipeline/view_choice.hpp"
+#include "io/views/view_choice.hpp"
 #include "kernel/geometry.hpp"
 
 namespace hlr::cli {

@@ -21,10 +21,11 @@
 #include "cli/process.hpp"
 #include "io/pipeline/render.hpp"
 #include "io/pipeline/render_methods.hpp"
-#include "io/pipeline/standard_views.hpp"
+#include "io/pipeline/section_views.hpp"
 #include "io/readers/clipper_spec.hpp"
 #include "io/readers/input_error.hpp"
 #include "io/readers/tile_file.hpp"
+#include "io/views/standard_views.hpp"
 #include "io/writers/atomic_file.hpp"
 #include "io/writers/json_writer.hpp"
 #include "io/writers/plot_output.hpp"
@@ -42,7 +43,9 @@ struct RenderArgs : OutputArgs {
   std::string tile;  // "I/N"
   std::vector<std::string> section, cutaway;
   std::string plan;  // a height: a floor plan
+  std::string plan_depth;
   bool no_overhead = false;
+  std::vector<std::string> section_views;  // "A=PLANE"
 };
 
 // A merge of tile files (hlr merge): the tiles and their paths.
@@ -112,11 +115,35 @@ RenderOptions render_options(const RenderArgs& a) {
     const std::string axis = a.up_axis == "z" ? "z" : "y";
     for (Plane& h : parse_section("--plan", axis + "<" + a.plan)) o.section.push_back(std::move(h));
     o.overhead = !a.no_overhead;
+    if (!a.plan_depth.empty()) {  // lines drawn down to HEIGHT - DEPTH
+      const std::vector<Rational> d = parse_numbers("--plan-depth", a.plan_depth, 1);
+      if (d[0] <= 0) throw std::invalid_argument("--plan-depth must be a positive length below the cut");
+      const int k = a.up_axis == "z" ? 2 : 1;
+      const Plane& cut = o.section.back();  // cut[k]·axis + cut[3] <= 0 kept: HEIGHT = -cut[3] / cut[k]
+      const Rational bottom = -cut[3] / cut[k] - d[0];
+      o.view_depth = k == 2 ? Plane(0, 0, 1, -bottom) : Plane(0, 1, 0, -bottom);
+    }
+  } else if (!a.plan_depth.empty()) {
+    throw std::invalid_argument("--plan-depth needs --plan");
   }
   o.surfaces = a.surfaces;
   o.shadows = a.shadows;
   o.through_lines = !a.no_through;
   return o;
+}
+
+// The plane of section view `name` (--section-view NAME=PLANE), if given.
+std::optional<Plane> section_plane(const RenderArgs& a, const std::string& name) {
+  for (const std::string& d : a.section_views) {
+    const std::size_t eq = d.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw std::invalid_argument("--section-view: '" + d + "' is not NAME=PLANE (e.g. A=x<0: keep x <= 0, seen from +x)");
+    if (d.substr(0, eq) != name) continue;
+    std::vector<Plane> h = parse_section("--section-view " + name, d.substr(eq + 1));
+    if (h.size() != 1) throw std::invalid_argument("--section-view " + name + ": a section view takes one plane");
+    return h[0];
+  }
+  return std::nullopt;
 }
 
 int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
@@ -149,7 +176,12 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
       std::size_t comma = a.views.find(',', at);
       std::string v = a.views.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
       at = comma == std::string::npos ? a.views.size() + 1 : comma + 1;
-      if (!standard_view(v, false)) throw std::invalid_argument("--views: '" + v + "' is not a standard view (" + standard_view_names() + ")");
+      const std::string name = section_of_view_name(v);
+      if (!name.empty()) {
+        if (!section_plane(a, name)) throw std::invalid_argument("--views: section " + name + " is not given (--section-view " + name + "=PLANE)");
+      } else if (!standard_view(v, false)) {
+        throw std::invalid_argument("--views: '" + v + "' is not a standard view (" + standard_view_names() + ") or section:NAME");
+      }
       view_names.push_back(v);
     }
   }
@@ -160,7 +192,13 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
     if (!view_names.empty()) one.view = view_names[i];
     if (one.up_axis.empty()) one.up_axis = z_up ? "z" : "y";
     if (!a.plan.empty() && one.view.empty() && one.eye.empty()) one.view = "top";  // a plan is seen from above
+    const std::string section_name = view_names.empty() ? "" : section_of_view_name(view_names[i]);
+    if (!section_name.empty()) one.view = "front";  // replaced by the section's own view below
     RenderOptions options = render_options(one);
+    if (!section_name.empty()) {
+      options.section_view = named_section(section_name, *section_plane(a, section_name), one.up_axis == "z");
+      options.view = section_view_request(*options.section_view, one.up_axis == "z");
+    }
     options.surface_corners = format == "json";
     options.surface_faces = format == "json";
     options.tile = tile;
@@ -223,7 +261,9 @@ void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   cmd->add_option("--view", a->view,
                   "Orthographic view: front, back, top, bottom, left, right, iso, dimetric, or a direction X,Y,Z from the scene "
                   "toward the viewer (default 0,0,1 = front)");
-  cmd->add_option("--views", a->views, "A sheet of standard views at one scale, e.g. front,top,right,iso");
+  cmd->add_option("--views", a->views,
+                  "A sheet of standard views at one scale, e.g. front,top,right,iso, and section views section:NAME "
+                  "(--section-view)");
   cmd->add_option("--up-axis", a->up_axis,
                   "Which axis is up for the named views: y or z (default: z when the scene's view has up 0,0,1, else y)")
       ->check(CLI::IsMember({"y", "z"}));
@@ -259,6 +299,10 @@ void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   cmd->add_option("--plan", a->plan,
                   "A floor plan: a section at this height along the up axis, the part below kept, seen from above (--view top "
                   "unless a view is given)");
+  cmd->add_option("--plan-depth", a->plan_depth, "A plan's view depth: lines are drawn down to this far below the cut (default: all the way down)");
+  cmd->add_option("--section-view", a->section_views,
+                  "A named section for --views section:NAME, as NAME=PLANE (e.g. A=x<0: keep x <= 0, seen from +x, labelled "
+                  "A-A); the other views that see the plane edge-on show its section line, arrows and letters");
   cmd->add_flag("--no-overhead", a->no_overhead,
                 "A plan without its overhead lines (what lies above the cut, seen from below, dashed: layer 'visible-overhead')");
   cmd->add_option("--near", a->near,

@@ -53,6 +53,7 @@ picture glass_demo.png raster data/glass_demo.yaml --bounces 6 --samples 3 --siz
 picture house_plan.svg render data/house.yaml --plan 1.2 --width 120
 picture house_section.svg render data/house.yaml --section 'y>4.5' --width 160
 picture couplingdown_half_section.svg render couplingdown.off --view iso --cutaway 'x>0' --cutaway 'y>0' --width 110
+picture couplingdown_section_sheet.svg render couplingdown.off --views front,section:A,iso --section-view 'A=x<0' --width 150
 ridge=(horizon --expr "0.35*exp(-6*x^2)*(1+sin(9*z+2*x))^2/4 + 0.02*cos(17*x+7*z)" --x -1.5:1.5:241 --z -1:1:61 --angles 25,0 --stroke 0.25 --width 180)
 picture horizon_ridgelines.svg "${ridge[@]}"
 picture horizon_ridgelines.png "${ridge[@]}" --page A4 --landscape --dpi 94

@@ -17,6 +17,10 @@ const char* to_string(LineKind k) {
       return "hatch";
     case LineKind::Overhead:
       return "overhead";
+    case LineKind::SectionLine:
+      return "section-line";
+    case LineKind::SectionMark:
+      return "section-mark";
     case LineKind::Edge: break;
   }
   return "edge";

@@ -95,12 +95,14 @@ class PieceList {
 /// threshold), a silhouette (one face toward the viewer, the other not), an intersection line
 /// where two surfaces cross, or any mesh edge (`--edges all`); with a section, a cut line (an
 /// edge of a cap, where the cutting plane meets a body's surface), a hatch line on a cap, and in
-/// a floor plan an overhead line (what the section removed, seen from below: drawn dashed).
-enum class LineKind : std::uint8_t { Edge, Boundary, Crease, Silhouette, Intersection, Cut, Hatch, Overhead };
+/// a floor plan an overhead line (what the section removed, seen from below: drawn dashed); on
+/// a sheet, a section line's narrow chain and its wide ends and arrows (ISO 128-40: marks that
+/// are not lines of the scene, made on the page).
+enum class LineKind : std::uint8_t { Edge, Boundary, Crease, Silhouette, Intersection, Cut, Hatch, Overhead, SectionLine, SectionMark };
 const char* to_string(LineKind k);
 /// Every kind in the order a drawing's layers come in (cut lines first: the widest pen).
-inline constexpr LineKind kLayerKinds[] = {LineKind::Cut,          LineKind::Silhouette, LineKind::Boundary, LineKind::Crease,
-                                           LineKind::Intersection, LineKind::Edge,       LineKind::Hatch,    LineKind::Overhead};
+inline constexpr LineKind kLayerKinds[] = {LineKind::Cut,  LineKind::Silhouette, LineKind::Boundary, LineKind::Crease,      LineKind::Intersection,
+                                           LineKind::Edge, LineKind::Hatch,      LineKind::Overhead, LineKind::SectionLine, LineKind::SectionMark};
 
 /// Which edges a renderer draws.
 enum class EdgeSelection { All, Feature };

@@ -565,6 +565,9 @@ int kind_priority(LineKind k) {
       return -1;
     case LineKind::Overhead:
       return -2;
+    case LineKind::SectionLine:
+    case LineKind::SectionMark:
+      return -3;
     case LineKind::Silhouette: return 4;
     case LineKind::Boundary: return 3;
     case LineKind::Crease: return 2;

@@ -50,9 +50,18 @@ struct PlotFill {
   double edge_mm = 0.08;
 };
 
+/// A word on the drawing that is not a line (a section line's letter): centred on `at`
+/// (drawing coordinates), `height_mm` high on the page.
+struct PlotText {
+  Point2 at{0, 0};
+  std::string text;
+  double height_mm = 5;
+};
+
 struct Plot {
   std::vector<PlotFill> fills;    // drawn first, under the lines (none for a line drawing)
   std::vector<PlotLayer> layers;  // visible layers first, then seen-through, then hidden; only non-empty ones
+  std::vector<PlotText> texts;    // written with the sheet's labels
   PlotStats stats;
   std::array<double, 4> bounds{0, 0, 0, 0};  // x0, y0, x1, y1 of everything drawn
   bool empty() const;

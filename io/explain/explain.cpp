@@ -41,6 +41,9 @@ SolutionJson explain(const Problem& pr) {
     case Problem::Type::Priority: body = priority_solution(pr); break;
     case Problem::Type::Raster: body = raster_solution(pr); break;
     case Problem::Type::RayTree: body = ray_tree_solution(pr); break;
+    case Problem::Type::Section:
+      body = section_solution(pr);
+      break;
   }
   for (auto it = body.begin(); it != body.end(); ++it) out[it.key()] = it.value();
   return out;

@@ -9,6 +9,7 @@
 //   explain_priority.cpp  the priority-list (painter's) algorithm (32-34, part 3.3)
 //   explain_raster.cpp    z-buffer (32), the scan-line z-buffer (34), Warnock (29-30)
 //   explain_ray_tree.cpp  the ray tree of Whitted ray tracing (43-45)
+//   explain_section.cpp   a body cut by a plane (21-22 applied to a solid): test function, crossings, cap
 //   explain_words.cpp     English and Russian words of the course
 //   explain_render.cpp    Markdown and HTML
 #pragma once
@@ -118,6 +119,7 @@ J weiler_atherton_solution(const Problem& pr);
 J priority_solution(const Problem& pr);
 J raster_solution(const Problem& pr);
 J ray_tree_solution(const Problem& pr);
+J section_solution(const Problem& pr);
 
 /// The word for `id` in `lang` (the id itself when there is none).
 std::string word(const std::string& id, Lang lang);

@@ -8,8 +8,8 @@
 #include "algorithms/hlr/face_occluders.hpp"
 #include "algorithms/surfaces/priority_list.hpp"
 #include "io/explain/explain_parts.hpp"
+#include "io/views/view_choice.hpp"
 #include "io/writers/svg_writer.hpp"
-#include "io/pipeline/view_choice.hpp"
 
 namespace hlr::explain_parts {
 

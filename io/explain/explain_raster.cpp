@@ -15,8 +15,8 @@
 #include "algorithms/raster/warnock.hpp"
 #include "algorithms/raster/zbuffer.hpp"
 #include "io/explain/explain_parts.hpp"
+#include "io/views/view_choice.hpp"
 #include "io/writers/svg_writer.hpp"
-#include "io/pipeline/view_choice.hpp"
 
 namespace hlr::explain_parts {
 

@@ -11,7 +11,7 @@
 #include "algorithms/hlr/face_occluders.hpp"
 #include "algorithms/raster/ray_tracing.hpp"
 #include "io/explain/explain_parts.hpp"
-#include "io/pipeline/view_choice.hpp"
+#include "io/views/view_choice.hpp"
 
 namespace hlr::explain_parts {
 

@@ -4,12 +4,12 @@
 #include <cstdio>
 #include <map>
 
-#include "algorithms/model/facing.hpp"
 #include "algorithms/hlr/roberts.hpp"
-#include "io/writers/json_writer.hpp"
-#include "io/pipeline/view_choice.hpp"
-#include "kernel/predicates.hpp"
+#include "algorithms/model/facing.hpp"
 #include "io/explain/explain_parts.hpp"
+#include "io/views/view_choice.hpp"
+#include "io/writers/json_writer.hpp"
+#include "kernel/predicates.hpp"
 
 namespace hlr::explain_parts {
 

@@ -5,12 +5,12 @@
 // its corners), the cut of polygons that pierce each other, the recursive subdivision by the
 // polygon that violated the order (and a cyclic overlap when a clipper comes back), the
 // polygons displayed; every corner exact. A picture of the visible lines.
-#include "algorithms/hlr/face_occluders.hpp"
 #include "algorithms/clip/weiler_atherton.hpp"
+#include "algorithms/hlr/face_occluders.hpp"
 #include "io/explain/explain_parts.hpp"
 #include "io/pipeline/render.hpp"
+#include "io/views/view_choice.hpp"
 #include "io/writers/svg_writer.hpp"
-#include "io/pipeline/view_choice.hpp"
 
 namespace hlr::explain_parts {
 

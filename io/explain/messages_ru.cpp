@@ -25,13 +25,13 @@ const std::vector<Entry>& catalogue() {
   static const std::vector<Entry> c = {
       // ---- the problem reader (io/explain/problem.cpp)
       {"a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, "
-       "raster, ray-tree)",
+       "raster, ray-tree, section)",
        "в файле задачи нужна строка 'problem: ТИП' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, "
-       "priority, raster, ray-tree)"},
+       "priority, raster, ray-tree, section)"},
       {"unknown problem type '@x' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, "
-       "raster, ray-tree)",
+       "raster, ray-tree, section)",
        "неизвестный тип задачи '@1' (известны: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, "
-       "raster, ray-tree)"},
+       "raster, ray-tree, section)"},
       {"a horizon problem takes heights, not bodies", "задача horizon принимает высоты (heights), а не тела (bodies)"},
       {"a raster problem takes an orthographic view (the notes' depth is linear across the picture)",
        "задача raster принимает только параллельную проекцию (глубина в конспекте линейна по картине)"},
@@ -61,6 +61,8 @@ const std::vector<Entry>& catalogue() {
       {"not valid YAML/JSON: @m", "файл не является правильным YAML/JSON: @1"},
       {"a problem file must be a mapping with 'problem: TYPE'", "файл задачи должен быть словарём «ключ: значение» с ключом 'problem: ТИП'"},
       {"@x problems take exactly one body", "задача @1 принимает ровно одно тело"},
+      {"a section problem needs one cutting plane: 'section: PLANE' (e.g. z<1 or A,B,C,D)",
+       "задаче section нужна одна секущая плоскость: 'section: ПЛОСКОСТЬ' (например, z<1 или A,B,C,D)"},
       {"clipping problems take a clipper and segments, not bodies",
        "задача отсечения принимает отсекатель (clipper) и отрезки (segments), а не тела (bodies)"},
       {"edges must be a list of [body, vertex, vertex]", "edges: ожидается список [тело, вершина, вершина]"},

@@ -23,7 +23,10 @@ std::vector<Rational> numbers(const P& c, const YAML::Node& n, std::size_t count
 }
 
 Problem::Type parse_type(const P& c, const YAML::Node& n) {
-  if (!n || !n.IsScalar()) c.fail(n, "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster, ray-tree)");
+  if (!n || !n.IsScalar())
+    c.fail(n,
+           "a problem file needs 'problem: TYPE' (roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, "
+           "priority, raster, ray-tree, section)");
   const std::string t = n.Scalar();
   if (t == "roberts") return Problem::Type::Roberts;
   if (t == "cyrus-beck") return Problem::Type::CyrusBeck;
@@ -36,7 +39,11 @@ Problem::Type parse_type(const P& c, const YAML::Node& n) {
   if (t == "priority") return Problem::Type::Priority;
   if (t == "raster") return Problem::Type::Raster;
   if (t == "ray-tree") return Problem::Type::RayTree;
-  c.fail(n, "unknown problem type '" + t + "' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster, ray-tree)");
+  if (t == "section") return Problem::Type::Section;
+  c.fail(
+      n,
+      "unknown problem type '" + t +
+          "' (known: roberts, cyrus-beck, midpoint, convexity, decompose, transform, horizon, weiler-atherton, priority, raster, ray-tree, section)");
 }
 
 std::string list_text(const std::vector<Rational>& v) {
@@ -90,9 +97,12 @@ const char* to_string(Problem::Type t) {
     case Problem::Type::WeilerAtherton: return "weiler-atherton";
     case Problem::Type::Priority: return "priority";
     case Problem::Type::Raster: return "raster";
-    case Problem::Type::RayTree: break;
+    case Problem::Type::RayTree:
+      return "ray-tree";
+    case Problem::Type::Section:
+      break;
   }
-  return "ray-tree";
+  return "section";
 }
 
 Problem load_problem(const std::string& path) { return load_problem_text(read_file_bytes(path), path); }
@@ -125,8 +135,11 @@ Problem load_problem_text(const std::string& text, const std::string& path) {
     if (!root["title"].IsScalar()) c.fail(root["title"], "title must be text");
     pr.title = root["title"].Scalar();
   }
-  const bool one_body = pr.type == Problem::Type::Convexity || pr.type == Problem::Type::Decompose || pr.type == Problem::Type::Transform;
+  const bool one_body = pr.type == Problem::Type::Convexity || pr.type == Problem::Type::Decompose || pr.type == Problem::Type::Transform ||
+                        pr.type == Problem::Type::Section;
   if (one_body && pr.scene.bodies.size() != 1) c.fail(root["bodies"], std::string(to_string(pr.type)) + " problems take exactly one body");
+  if (pr.type == Problem::Type::Section && pr.scene.section.size() != 1)
+    c.fail(root["section"] ? root["section"] : root, "a section problem needs one cutting plane: 'section: PLANE' (e.g. z<1 or A,B,C,D)");
   if (clipping && root["bodies"]) c.fail(root["bodies"], "clipping problems take a clipper and segments, not bodies");
   if (root["edges"]) {
     const YAML::Node e = root["edges"];

@@ -2,7 +2,8 @@
 // `problem` type and the data of that type. Types: roberts (bodies, view, optional light and
 // edges to analyse), cyrus-beck (a convex clipper and segments), midpoint (a box or frustum,
 // segments, eps), convexity, decompose, transform (one body), horizon (heights on a grid),
-// weiler-atherton (polygons or bodies and a view). Every number is exact; unknown
+// weiler-atherton (polygons or bodies and a view), section (one body and one plane in
+// `section:`). Every number is exact; unknown
 // keys and wrong types are errors with file and line. Format: docs/problem-format.md.
 #pragma once
 
@@ -19,7 +20,7 @@
 namespace hlr {
 
 struct Problem {
-  enum class Type { Roberts, CyrusBeck, Midpoint, Convexity, Decompose, Transform, Horizon, WeilerAtherton, Priority, Raster, RayTree };
+  enum class Type { Roberts, CyrusBeck, Midpoint, Convexity, Decompose, Transform, Horizon, WeilerAtherton, Priority, Raster, RayTree, Section };
   Type type = Type::Roberts;
   std::string file;
   std::string title;  // optional `title`

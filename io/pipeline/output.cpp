@@ -11,6 +11,7 @@
 
 #include "algorithms/support/progress.hpp"
 #include "io/pipeline/section.hpp"
+#include "io/pipeline/section_views.hpp"
 #include "io/writers/json_writer.hpp"
 #include "io/writers/plot_output.hpp"
 
@@ -138,35 +139,76 @@ void print_stats(const std::vector<Plot>& plots, double scale) {
 }
 
 // Standard views on one sheet: their names and their cells (third-angle: top above front).
-std::vector<std::array<int, 2>> sheet_cells(const std::vector<std::string>& names, bool first_angle) {
+std::array<int, 2> standard_cell(const std::string& n, bool first_angle) {
+  std::array<int, 2> c{0, 0};
+  if (n == "top") c = {0, 1};
+  else if (n == "bottom") c = {0, -1};
+  else if (n == "right") c = {1, 0};
+  else if (n == "left") c = {-1, 0};
+  else if (n == "back") c = {2, 0};
+  else if (n != "front") c = {1, 1};  // a pictorial view: the free corner
+  if (first_angle && n != "back" && n != "front" && (c[0] != 1 || c[1] != 1)) c = {-c[0], -c[1]};
+  return c;
+}
+
+// A sheet's views: each one's cell and label. A section view takes its standard view's place
+// when no other view has it, else a place right of the middle row; it is labelled "A–A".
+struct SheetPlan {
   std::vector<std::array<int, 2>> cells;
-  for (const std::string& n : names) {
-    std::array<int, 2> c{0, 0};
-    if (n == "top") c = {0, 1};
-    else if (n == "bottom") c = {0, -1};
-    else if (n == "right") c = {1, 0};
-    else if (n == "left") c = {-1, 0};
-    else if (n == "back") c = {2, 0};
-    else if (n != "front") c = {1, 1};  // a pictorial view: the free corner
-    if (first_angle && n != "back" && n != "front" && (c[0] != 1 || c[1] != 1)) c = {-c[0], -c[1]};
-    cells.push_back(c);
+  std::vector<std::string> labels;
+};
+
+SheetPlan sheet_plan(const std::vector<std::string>& names, const std::vector<const RenderResult*>& results, bool first_angle) {
+  SheetPlan plan;
+  std::vector<std::size_t> homeless;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const NamedSection* s = i < results.size() && results[i]->section_view ? &*results[i]->section_view : nullptr;
+    std::string up = names[i];
+    for (char& c : up) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    plan.labels.push_back(s ? section_view_label(*s) : up);
+    plan.cells.push_back(standard_cell(s ? s->standard : names[i], first_angle));
+    if (s) homeless.push_back(i);
   }
-  return cells;
+  for (std::size_t i : homeless) {
+    const NamedSection& s = *results[i]->section_view;
+    bool taken = s.standard.empty();
+    for (std::size_t j = 0; j < names.size() && !taken; ++j) taken = j != i && plan.cells[j] == plan.cells[i] && (!results[j]->section_view || j < i);
+    if (!taken) continue;
+    int right = 0;
+    for (std::size_t j = 0; j < names.size(); ++j)
+      if (j != i && plan.cells[j][1] == 0) right = std::max(right, plan.cells[j][0] + 1);
+    plan.cells[i] = {right, 0};
+  }
+  return plan;
+}
+
+Sheet layout_sheet(const std::vector<Plot>& plots, const std::vector<std::string>& view_names, const SheetPlan& plan, const PageOptions& page) {
+  if (view_names.empty()) return layout_single(plots[0], page);
+  std::vector<const Plot*> ptrs;
+  for (const Plot& p : plots) ptrs.push_back(&p);
+  return layout_views(ptrs, plan.cells, plan.labels, page);
+}
+
+std::string write_plots(std::vector<Plot>& plots, const std::vector<std::string>& view_names, const SheetPlan& plan, const PageOptions& page,
+                        const OutputOptions& a, const std::string& format, const std::string& command, bool perspective);
+
+// The page of a sheet: with section views and no margin given, a margin of 12 mm holds the
+// section lines' arrows and letters (they stand up to 11 mm beyond the scene).
+PageOptions sheet_page(const OutputOptions& a, const std::vector<const RenderResult*>& results) {
+  PageOptions page = page_options(a);
+  bool sections = false;
+  for (const RenderResult* r : results) sections = sections || r->section_view;
+  if (sections && !page.margin_mm) page.margin_mm = 12;
+  return page;
 }
 
 // The caps' hatch lines, on the page's scale (the layout is made once without them: they lie
 // inside the caps, so the drawing's bounds and scale do not change by them).
-void add_hatching(std::vector<Plot>& plots, const std::vector<const RenderResult*>& results, const std::vector<std::string>& view_names,
-                  const OutputOptions& a) {
+void add_hatching(std::vector<Plot>& plots, const std::vector<const RenderResult*>& results, const Sheet& sheet, const OutputOptions& a) {
   bool any = false;
   for (const RenderResult* r : results) any = any || has_caps(*r);
   if (!any) return;
   progress("hatching");
-  const PageOptions page = page_options(a);
-  std::vector<const Plot*> ptrs;
-  for (const Plot& p : plots) ptrs.push_back(&p);
-  const Sheet sheet =
-      view_names.empty() ? layout_single(plots[0], page) : layout_views(ptrs, sheet_cells(view_names, a.projection == "first"), view_names, page);
   const double pen = plot_style(a).weights.at("hatch");
   PlotOptions po = plot_options(a);
   po.hidden = false;
@@ -176,6 +218,31 @@ void add_hatching(std::vector<Plot>& plots, const std::vector<const RenderResult
     Plot hp = make_plot(h, results[i]->camera, po);
     for (PlotLayer& l : hp.layers) plots[i].layers.push_back(std::move(l));
   }
+}
+
+std::string write_plots(std::vector<Plot>& plots, const std::vector<std::string>& view_names, const SheetPlan& plan, const PageOptions& page,
+                        const OutputOptions& a, const std::string& format, const std::string& command, bool perspective) {
+  const PlotStyle style = plot_style(a);
+  select_layers(a.layers, plots, a.hidden != "none");
+  if (perspective && page.scale) throw std::invalid_argument("--scale (true scale) needs an orthographic view");
+  Sheet sheet = layout_sheet(plots, view_names, plan, page);
+  // Specks and pen order need the page's scale; the layout does not change by them.
+  progress("pen order");
+  for (Plot& p : plots) {
+    drop_short_strokes(p, a.min_length / sheet.views[0].scale);
+    // A shaded picture is not plotted: its lines keep their chained order.
+    PenOrderOptions order;
+    order.threads = a.threads;
+    if (!a.raw && p.fills.empty()) order_plot(p, {p.bounds[0], p.bounds[3]}, order);
+  }
+  for (const std::string& note : sheet.notes) std::cerr << "hlr " << command << ": note: " << note << "\n";
+  progress("writing");
+  std::string text = format == "pdf"   ? sheet_to_pdf(sheet, style)
+                     : format == "png" ? sheet_to_png(sheet, style, a.dpi)
+                     : format == "dxf" ? sheet_to_dxf(sheet, style)
+                                       : sheet_to_svg(sheet, style);
+  if (a.stats) print_stats(plots, sheet.views[0].scale);
+  return text;
 }
 
 }  // namespace
@@ -225,8 +292,14 @@ PartText drawing_text(const std::vector<const RenderResult*>& results, const std
       plots.push_back(make_plot(r->drawing, r->camera, po));
       add_surface_fills(plots.back(), *r);
     }
-    add_hatching(plots, results, view_names, a);
-    text.add(plots_text(plots, view_names, a, format, command, results[0]->camera.perspective));
+    // Hatching and section lines are sized on the page: the layout is made once without them
+    // (they do not change the drawing's bounds, so neither the scale nor the places).
+    const SheetPlan plan = sheet_plan(view_names, results, a.projection == "first");
+    const PageOptions page = sheet_page(a, results);
+    const Sheet sheet = layout_sheet(plots, view_names, plan, page);
+    add_hatching(plots, results, sheet, a);
+    if (!view_names.empty()) add_section_lines(plots, results, sheet);
+    text.add(write_plots(plots, view_names, plan, page, a, format, command, results[0]->camera.perspective));
   }
   return text;
 }
@@ -260,40 +333,7 @@ PlotOptions plot_options(const OutputOptions& a) {
 
 std::string plots_text(std::vector<Plot>& plots, const std::vector<std::string>& view_names, const OutputOptions& a,
                        const std::string& format, const std::string& command, bool perspective) {
-  const PageOptions page = page_options(a);
-  const PlotStyle style = plot_style(a);
-  std::string text;
-  {
-    select_layers(a.layers, plots, a.hidden != "none");
-    if (perspective && page.scale) throw std::invalid_argument("--scale (true scale) needs an orthographic view");
-    std::vector<const Plot*> ptrs;
-    for (const Plot& p : plots) ptrs.push_back(&p);
-    std::vector<std::string> labels;
-    for (const std::string& v : view_names) {
-      std::string up = v;
-      for (char& c : up) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-      labels.push_back(up);
-    }
-    Sheet sheet = view_names.empty() ? layout_single(plots[0], page)
-                                     : layout_views(ptrs, sheet_cells(view_names, a.projection == "first"), labels, page);
-    // Specks and pen order need the page's scale; the layout does not change by them.
-    progress("pen order");
-    for (Plot& p : plots) {
-      drop_short_strokes(p, a.min_length / sheet.views[0].scale);
-      // A shaded picture is not plotted: its lines keep their chained order.
-      PenOrderOptions order;
-      order.threads = a.threads;
-      if (!a.raw && p.fills.empty()) order_plot(p, {p.bounds[0], p.bounds[3]}, order);
-    }
-    for (const std::string& note : sheet.notes) std::cerr << "hlr " << command << ": note: " << note << "\n";
-    progress("writing");
-    text = format == "pdf" ? sheet_to_pdf(sheet, style)
-         : format == "png" ? sheet_to_png(sheet, style, a.dpi)
-         : format == "dxf" ? sheet_to_dxf(sheet, style)
-                           : sheet_to_svg(sheet, style);
-    if (a.stats) print_stats(plots, sheet.views[0].scale);
-  }
-  return text;
+  return write_plots(plots, view_names, sheet_plan(view_names, {}, a.projection == "first"), page_options(a), a, format, command, perspective);
 }
 
 }  // namespace hlr

@@ -337,6 +337,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   std::vector<std::string> repairs;
   std::vector<SceneBody*> editable;
   const std::vector<Plane>* planes = o.section.empty() ? nullptr : &o.section;
+  std::vector<Plane> with_view_plane;  // a section view's plane and the section's
   const std::vector<Plane>* away = o.cutaway.empty() ? nullptr : &o.cutaway;
   for (Scene& s : *owned) {
     if (!scene_view && is_scene_file(s.file)) scene_view = &s.view;
@@ -360,6 +361,14 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
       r.names.push_back(std::move(name));
     }
   }
+  if (o.section_view) {
+    if (planes) with_view_plane = *planes;
+    with_view_plane.push_back(o.section_view->plane);
+    planes = &with_view_plane;
+    r.section_view = o.section_view;
+  }
+  if (o.view_depth && (o.surfaces || o.shadows || !method_entry(o.method).draws_lines()))
+    throw std::invalid_argument("a plan's depth clips lines: --surfaces and fills take the plan without a depth");
   // The camera of the whole scene: a section and the plain view line up.
   r.camera = choose_camera(o.view, scene_view, polys);
   const bool sectioned = planes || away;
@@ -413,10 +422,11 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   // Clipping: the near plane (perspective) and the clipping volume, exactly, in world space.
   std::optional<Plane> near;
   if (r.camera.perspective) near = near_plane(r.camera, o.near);
-  if ((near || o.clip) && !r.surfaces && !r.priority)
+  if ((near || o.clip || o.view_depth) && !r.surfaces && !r.priority)
     ParallelLoop(o.lines.threads).for_each(r.drawing.segments.size(), 1024, [&](std::size_t i) {
       Segment& s = r.drawing.segments[i];
       if (near) clip_near(s, *near);
+      if (o.view_depth) clip_near(s, *o.view_depth);
       if (o.clip) clip_pieces(s, *o.clip);
     });
   if (cut)

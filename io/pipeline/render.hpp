@@ -20,8 +20,8 @@
 #include "algorithms/surfaces/transparency.hpp"
 #include "algorithms/surfaces/visible_surfaces.hpp"
 #include "io/pipeline/method_table.hpp"
-#include "io/pipeline/view_choice.hpp"
 #include "io/readers/scene.hpp"
+#include "io/views/view_choice.hpp"
 #include "io/writers/svg_writer.hpp"
 
 namespace hlr {
@@ -36,6 +36,15 @@ namespace hlr {
 #define HLR_METHOD_ENUM(e, name, lines, polygons, flags, help) e,
 enum class RenderMethod { HLR_RENDER_METHODS(HLR_METHOD_ENUM) };
 #undef HLR_METHOD_ENUM
+
+/// A named section of a sheet (ISO 128-40): the view "A–A" of what `plane` keeps (value <= 0),
+/// seen from the removed side; `standard` names the standard view of the same direction
+/// ("front", or "" for none), whose place on the sheet it takes when that place is free.
+struct NamedSection {
+  std::string name;
+  Plane plane;
+  std::string standard;
+};
 
 struct RenderOptions {
   RenderMethod method = RenderMethod::Faces;
@@ -57,6 +66,12 @@ struct RenderOptions {
   /// plan), as LineKind::Overhead segments (no body: -1), drawn dashed; the cut lines there are
   /// left out (they are the plan's own).
   bool overhead = false;
+  /// A floor plan's depth: lines are drawn only where this plane's value is >= 0 (the plan's
+  /// lower band; clipped after visibility, exact for views from above, where nothing below the
+  /// plane hides anything above it). Line drawings only.
+  std::optional<Plane> view_depth;
+  /// A section view of a sheet: its plane cuts as `section`'s do, in addition to them.
+  std::optional<NamedSection> section_view;
   /// Also the visible part of every face as exact polygons, shaded (visible_surfaces.hpp,
   /// lighting.hpp); the line drawing is then the selected lines of the same exact solution.
   bool surfaces = false;
@@ -114,6 +129,8 @@ struct RenderResult {
   /// With a section: its planes, the kept side's (RenderOptions::section) then the cut-away's;
   /// a cap face of plane k (SceneBody::section_cap) lies on section_planes[k].
   std::vector<Plane> section_planes;
+  /// With RenderOptions::section_view: the section this view shows.
+  std::optional<NamedSection> section_view;
   /// Remarks for the user ("file: body 'name' is open ...: drawn as a surface", eye in a face plane).
   std::vector<std::string> notes;
 };

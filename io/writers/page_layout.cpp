@@ -141,6 +141,24 @@ Sheet layout_views(const std::vector<const Plot*>& plots, const std::vector<std:
   return sheet;
 }
 
+std::vector<SheetText> sheet_texts(const Sheet& sheet) {
+  std::vector<SheetText> out;
+  for (const SheetView& v : sheet.views) {
+    if (v.plot->empty()) continue;
+    const auto& b = v.plot->bounds;
+    Point2 label = v.page({(b[0] + b[2]) / 2, b[1]});
+    label[1] += 6;
+    for (const PlotText& t : v.plot->texts) {
+      const Point2 at = v.page(t.at);  // the baseline a third of the height under the centre
+      out.push_back({{at[0], at[1] + t.height_mm / 3}, t.text, t.height_mm, 0.5});
+      label[1] = std::max(label[1], at[1] + t.height_mm / 3 + 6);  // the label under the view's letters
+    }
+    if (!v.label.empty()) out.push_back({label, v.label, 3.5, 0.5});
+  }
+  if (!sheet.caption.empty()) out.push_back({{sheet.width_mm - 5, sheet.height_mm - 5}, sheet.caption, 3.5, 1});
+  return out;
+}
+
 double PlotStyle::weight(const PlotLayer& l) const {
   auto it = weights.find(l.visible ? to_string(l.kind) : l.through ? "through" : "hidden");
   return it != weights.end() ? it->second : 0.35;
@@ -160,9 +178,9 @@ void parse_weights(const std::string& text, PlotStyle& style) {
     auto eq = item.find('=');
     std::string key = lower(item.substr(0, eq));
     if (eq == std::string::npos || !style.weights.count(key))
-      throw std::invalid_argument(
-          "--weights: '" + item +
-          "' is not KIND=MM (kinds: cut, silhouette, boundary, crease, intersection, edge, hatch, overhead, hidden, through)");
+      throw std::invalid_argument("--weights: '" + item +
+                                  "' is not KIND=MM (kinds: cut, silhouette, boundary, crease, intersection, edge, hatch, overhead, section-line, "
+                                  "section-mark, hidden, through)");
     style.weights[key] = positive_number(item.substr(eq + 1), "--weights");
   }
 }

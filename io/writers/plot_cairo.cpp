@@ -231,20 +231,13 @@ void draw_band(cairo_t* cr, const Sheet& sheet, const std::vector<std::array<dou
   }
   lib().cairo_set_source_rgb(cr, 0, 0, 0);
   lib().cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  lib().cairo_set_font_size(cr, 3.5);
-  auto text = [&](const std::string& t, double x, double y, double anchor) {
+  for (const SheetText& t : sheet_texts(sheet)) {
+    lib().cairo_set_font_size(cr, t.size_mm);
     cairo_text_extents_t e;
-    lib().cairo_text_extents(cr, t.c_str(), &e);
-    lib().cairo_move_to(cr, x - anchor * e.x_advance, y);
-    lib().cairo_show_text(cr, t.c_str());
-  };
-  for (const SheetView& v : sheet.views) {
-    if (v.label.empty() || v.plot->empty()) continue;
-    const auto& b = v.plot->bounds;
-    Point2 at = v.page({(b[0] + b[2]) / 2, b[1]});
-    text(v.label, at[0], at[1] + 6, 0.5);
+    lib().cairo_text_extents(cr, t.text.c_str(), &e);
+    lib().cairo_move_to(cr, t.at[0] - t.anchor * e.x_advance, t.at[1]);
+    lib().cairo_show_text(cr, t.text.c_str());
   }
-  if (!sheet.caption.empty()) text(sheet.caption, sheet.width_mm - 5, sheet.height_mm - 5, 1);
 }
 
 void check(cairo_status_t st) {

@@ -32,6 +32,18 @@ struct Sheet {
   std::vector<std::string> notes;  // for the user (a drawing larger than the page at its scale)
 };
 
+/// A text of the sheet in page mm (y down): its baseline's point (`anchor` 0: where it starts,
+/// 0.5: its middle, 1: where it ends) and its height.
+struct SheetText {
+  Point2 at{0, 0};
+  std::string text;
+  double size_mm = 3.5, anchor = 0.5;
+};
+
+/// Every text of the sheet, as the writers put them in the layer "labels": each view's label
+/// under it, the views' own texts (Plot::texts, centred on their point) and the caption.
+std::vector<SheetText> sheet_texts(const Sheet& sheet);
+
 struct PageOptions {
   std::optional<std::array<double, 2>> page;  // mm, portrait as named; none: the drawing's own size
   bool landscape = false;
@@ -63,9 +75,10 @@ inline constexpr const char* kThroughGrey = "#808080";
 
 struct PlotStyle {
   /// Width in mm per layer key: "cut", "silhouette", "boundary", "crease", "intersection", "edge", "hatch",
-  /// "hidden" (all hidden layers), "through" (all layers seen through transparent faces).
-  std::map<std::string, double> weights = {{"cut", 0.7},       {"silhouette", 0.5},    {"boundary", 0.5}, {"crease", 0.35}, {"hatch", 0.25},
-                                           {"overhead", 0.25}, {"intersection", 0.35}, {"edge", 0.35},    {"hidden", 0.25}, {"through", 0.25}};
+  /// "overhead", "section-line", "section-mark", "hidden" (all hidden layers), "through" (all layers seen through transparent faces).
+  std::map<std::string, double> weights = {{"cut", 0.7},     {"silhouette", 0.5}, {"boundary", 0.5},      {"crease", 0.35},
+                                           {"hatch", 0.25},  {"overhead", 0.25},  {"intersection", 0.35}, {"edge", 0.35},
+                                           {"hidden", 0.25}, {"through", 0.25},   {"section-line", 0.35}, {"section-mark", 0.7}};
   DashMode dashes = DashMode::Pattern;
   bool hidden_dashed = true;     // false: hidden lines solid (thin)
   bool numbered_layers = true;   // AxiDraw-style "1 visible-silhouette"

@@ -153,21 +153,12 @@ std::string content(const Sheet& sheet, const PlotStyle& style, std::vector<Laye
         if (l.name() == sl.name) append_strokes(out, v, l, style);
     out += "EMC\n";
   }
-  bool labels = !sheet.caption.empty();
-  for (const SheetView& v : sheet.views) labels = labels || (!v.label.empty() && !v.plot->empty());
-  if (labels) {
+  const std::vector<SheetText> texts = sheet_texts(sheet);
+  if (!texts.empty()) {
     begin_layer("labels");
     out += "0 g\n";
-    const double size = 3.5;
-    for (const SheetView& v : sheet.views) {
-      if (v.label.empty() || v.plot->empty()) continue;
-      const auto& b = v.plot->bounds;
-      const Point2 at = v.page({(b[0] + b[2]) / 2, b[1]});
-      append_outline(out, text_outline(v.label, at[0], at[1] + 6, 0.5, size));
-      out += "f\n";
-    }
-    if (!sheet.caption.empty()) {
-      append_outline(out, text_outline(sheet.caption, sheet.width_mm - 5, sheet.height_mm - 5, 1, size));
+    for (const SheetText& t : texts) {
+      append_outline(out, text_outline(t.text, t.at[0], t.at[1], t.anchor, t.size_mm));
       out += "f\n";
     }
     out += "EMC\n";

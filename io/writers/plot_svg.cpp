@@ -87,20 +87,16 @@ std::string sheet_to_svg(const Sheet& sheet, const PlotStyle& style) {
         if (l.name() == sl.name) append_layer(out, v, l, style);
     out += "</g>\n";
   }
-  bool labels = !sheet.caption.empty();
-  for (const SheetView& v : sheet.views) labels = labels || !v.label.empty();
-  if (labels) {
+  const std::vector<SheetText> texts = sheet_texts(sheet);
+  if (!texts.empty()) {
     out += "<g inkscape:groupmode=\"layer\" inkscape:label=\"labels\" id=\"labels\" font-family=\"sans-serif\" font-size=\"3.5\" "
            "fill=\"#000\">\n";
-    for (const SheetView& v : sheet.views) {
-      if (v.label.empty() || v.plot->empty()) continue;
-      const auto& b = v.plot->bounds;
-      Point2 at = v.page({(b[0] + b[2]) / 2, b[1]});
-      out += "  <text x=\"" + f(at[0]) + "\" y=\"" + f(at[1] + 6) + "\" text-anchor=\"middle\">" + svg_escape(v.label) + "</text>\n";
+    for (const SheetText& t : texts) {
+      out += "  <text x=\"" + f(t.at[0]) + "\" y=\"" + f(t.at[1]) + "\"";
+      if (t.size_mm != 3.5) out += " font-size=\"" + f(t.size_mm) + "\"";
+      out += t.anchor == 0.5 ? " text-anchor=\"middle\">" : t.anchor == 1 ? " text-anchor=\"end\">" : ">";
+      out += svg_escape(t.text) + "</text>\n";
     }
-    if (!sheet.caption.empty())
-      out += "  <text x=\"" + f(sheet.width_mm - 5) + "\" y=\"" + f(sheet.height_mm - 5) + "\" text-anchor=\"end\">" +
-             svg_escape(sheet.caption) + "</text>\n";
     out += "</g>\n";
   }
   out += "</svg>\n";

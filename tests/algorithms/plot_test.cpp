@@ -1,11 +1,12 @@
 // The plotting 2D stage: exact clean-up (points, end-on edges, overlaps), chaining
 // into the fewest strokes, pen order, dashes, pages, and the writers read back.
-#include <gtest/gtest.h>
-#include <png.h>
-#include <zlib.h>
+#include "algorithms/plot/plot.hpp"
 
 #include <dxflib/dl_creationadapter.h>
 #include <dxflib/dl_dxf.h>
+#include <gtest/gtest.h>
+#include <png.h>
+#include <zlib.h>
 
 #include <cmath>
 #include <cstdio>
@@ -17,16 +18,15 @@
 #include <set>
 #include <sstream>
 
-#include "algorithms/plot/dashes.hpp"
 #include "algorithms/picture/path_chaining.hpp"
+#include "algorithms/plot/dashes.hpp"
 #include "algorithms/plot/pen_order.hpp"
-#include "algorithms/plot/plot.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "io/pipeline/render.hpp"
+#include "io/views/standard_views.hpp"
 #include "io/writers/cairo_text.hpp"
 #include "io/writers/plot_output.hpp"
-#include "io/pipeline/render.hpp"
-#include "io/pipeline/standard_views.hpp"
 #include "io/writers/svg_writer.hpp"
-#include "algorithms/support/parallel.hpp"
 
 namespace hlr {
 namespace {

@@ -13,8 +13,8 @@
 #include "algorithms/hlr/face_occluders.hpp"
 #include "algorithms/hlr/roberts.hpp"
 #include "io/pipeline/render.hpp"
-#include "io/pipeline/view_choice.hpp"
 #include "io/readers/scene.hpp"
+#include "io/views/view_choice.hpp"
 #include "support/ray_oracle.hpp"
 
 using namespace hlr;

@@ -23,11 +23,11 @@ namespace fs = std::filesystem;
 
 using namespace hlr::test;
 
-TEST(Explain, AtLeastEightProblemsCoveringAllElevenTypes) {
+TEST(Explain, AtLeastEightProblemsCoveringAllTwelveTypes) {
   std::set<std::string> types;
   for (const auto& p : problems()) types.insert(to_string(load_problem(p).type));
   EXPECT_GE(problems().size(), 8u);
-  EXPECT_EQ(types.size(), 11u);
+  EXPECT_EQ(types.size(), 12u);
 }
 
 TEST(Explain, GoldenMarkdownAndJson) {
@@ -410,4 +410,58 @@ TEST(Explain, NumberingFromOne) {
   EXPECT_EQ(svg.find(">0</text>"), std::string::npos);
   // Back to 0 for the next page.
   EXPECT_EQ(table(explain(load_problem(kData + "/problems/roberts_cube.yaml")), "input", "faces")[0][0], "0");
+}
+
+// A section problem checked from its printed values: every crossing point lies on the plane and
+// on its edge at the printed t; the cap's corners are exactly the crossings and the vertices on
+// the plane, in counter-clockwise order seen from the removed side (Newell's normal along the
+// plane's); a plane through three vertices of the cube names them.
+TEST(Explain, SectionPageByHand) {
+  for (const char* plane : {"2,2,2,-1", "1,1,1,-1", "z<1/3"}) {
+    SCOPED_TRACE(plane);
+    const std::string text =
+        std::string("problem: section\nbodies:\n  - {name: cube, box: {min: [-1, -1, -1], max: [1, 1, 1]}}\nsection: \"") + plane + "\"\n";
+    const Problem pr = load_problem_text(text, "p.yaml");
+    const SolutionJson s = explain(pr);
+    const Plane& h = pr.scene.section[0];
+    const Polyhedron& cube = pr.scene.bodies[0].body;
+    std::set<std::vector<Rational>> expected;  // crossings and vertices on the plane
+    for (const auto& row : table(s, "crossed_edges", "edge_crossings")) {
+      const std::string e = row[0];
+      const int u = std::stoi(e.substr(0, e.find('-'))), v = std::stoi(e.substr(e.find('-') + 1));
+      const Rational t = parse_rational(row[3].get<std::string>());
+      const std::vector<Rational> p = numbers(row[4]);
+      const Point3 at = cube.vertices()[u] + t * (cube.vertices()[v] - cube.vertices()[u]);
+      EXPECT_EQ(p, (std::vector<Rational>{at.x(), at.y(), at.z()}));
+      EXPECT_EQ(h.value(at), 0);
+      EXPECT_TRUE(t > 0 && t < 1);
+      expected.insert(p);
+    }
+    std::set<std::string> on_plane;
+    for (std::size_t v = 0; v < cube.num_vertices(); ++v)
+      if (h.value(cube.vertices()[v]) == 0) {
+        const Point3& p = cube.vertices()[v];
+        expected.insert({p.x(), p.y(), p.z()});
+        on_plane.insert(std::to_string(v));
+      }
+    const auto& corners = table(s, "cap", "cap_polygon");
+    std::vector<std::vector<Rational>> loop;
+    for (const auto& row : corners) {
+      loop.push_back(numbers(row[1]));
+      if (on_plane.count(row[2])) on_plane.erase(row[2].get<std::string>());
+    }
+    EXPECT_TRUE(on_plane.empty());
+    EXPECT_EQ(std::set<std::vector<Rational>>(loop.begin(), loop.end()), expected);
+    Rational nx = 0, ny = 0, nz = 0;  // Newell's normal of the loop
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const auto &a = loop[i], &b = loop[(i + 1) % loop.size()];
+      nx += (a[1] - b[1]) * (a[2] + b[2]), ny += (a[2] - b[2]) * (a[0] + b[0]), nz += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    EXPECT_GT(nx * h.a() + ny * h.b() + nz * h.c(), 0);
+  }
+  const SolutionJson tri = explain(
+      load_problem_text("problem: section\nbodies:\n  - {name: c, box: {min: [-1, -1, -1], max: [1, 1, 1]}}\nsection: \"1,1,1,-1\"\n", "p.yaml"));
+  EXPECT_EQ(table(tri, "cap", "cap_polygon").size(), 3u);
+  EXPECT_EQ(table(tri, "crossed_edges", "edge_crossings").size(), 0u);
+  EXPECT_THROW(load_problem_text("problem: section\nbodies:\n  - {name: c, box: {min: [0, 0, 0], max: [1, 1, 1]}}\n", "p.yaml"), InputError);
 }

@@ -244,12 +244,26 @@ TEST(MessagesRu, NestedMessagesAreTranslatedPartByPart) {
 // The catalogue follows the sources: every piece of English text in a `throw`, `fail(...)` or
 // returned reason on the exam path is part of some template.
 TEST(MessagesRu, EveryMessageInTheSourcesHasAnEntry) {
-  const std::vector<std::string> files = {
-      "io/explain/problem.cpp", "io/readers/scene.cpp", "io/readers/yaml_context.hpp", "io/readers/mesh_reader.cpp", "kernel/body_matrix.cpp",
-      "kernel/number.cpp", "kernel/rotation.cpp", "kernel/polyhedron.cpp", "kernel/transform.cpp", "kernel/mesh_checks.cpp",
-      "algorithms/hlr/roberts.cpp", "algorithms/hlr/roberts_pieces.cpp", "algorithms/clip/cyrus_beck.cpp", "algorithms/clip/midpoint_clip.cpp",
-      "algorithms/solids/convex_decomposition.cpp", "algorithms/solids/convexity.cpp", "io/pipeline/view_choice.cpp", "io/readers/scene_lighting.cpp", "algorithms/clip/weiler_atherton.cpp",
-      "algorithms/surfaces/priority_list.cpp"};
+  const std::vector<std::string> files = {"io/explain/problem.cpp",
+                                          "io/readers/scene.cpp",
+                                          "io/readers/yaml_context.hpp",
+                                          "io/readers/mesh_reader.cpp",
+                                          "kernel/body_matrix.cpp",
+                                          "kernel/number.cpp",
+                                          "kernel/rotation.cpp",
+                                          "kernel/polyhedron.cpp",
+                                          "kernel/transform.cpp",
+                                          "kernel/mesh_checks.cpp",
+                                          "algorithms/hlr/roberts.cpp",
+                                          "algorithms/hlr/roberts_pieces.cpp",
+                                          "algorithms/clip/cyrus_beck.cpp",
+                                          "algorithms/clip/midpoint_clip.cpp",
+                                          "algorithms/solids/convex_decomposition.cpp",
+                                          "algorithms/solids/convexity.cpp",
+                                          "io/views/view_choice.cpp",
+                                          "io/readers/scene_lighting.cpp",
+                                          "algorithms/clip/weiler_atherton.cpp",
+                                          "algorithms/surfaces/priority_list.cpp"};
   std::string all;
   for (const std::string& t : message_ru_templates()) all += t + "\n";
   std::regex statement(R"re((throw |fail\(|return "|push_back\(\{face, ")[^;]*;)re");

@@ -1,11 +1,10 @@
 // The picture writers read back: SVG paths, DXF and PDF strokes point by point on every thread
 // count, PNG bands, PDF styles, fills and label outlines (io/writers/plot_output.hpp).
+#include <dxflib/dl_creationadapter.h>
+#include <dxflib/dl_dxf.h>
 #include <gtest/gtest.h>
 #include <png.h>
 #include <zlib.h>
-
-#include <dxflib/dl_creationadapter.h>
-#include <dxflib/dl_dxf.h>
 
 #include <cmath>
 #include <cstdio>
@@ -17,16 +16,16 @@
 #include <set>
 #include <sstream>
 
-#include "algorithms/plot/dashes.hpp"
 #include "algorithms/picture/path_chaining.hpp"
+#include "algorithms/plot/dashes.hpp"
 #include "algorithms/plot/pen_order.hpp"
 #include "algorithms/plot/plot.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "io/pipeline/render.hpp"
+#include "io/views/standard_views.hpp"
 #include "io/writers/cairo_text.hpp"
 #include "io/writers/plot_output.hpp"
-#include "io/pipeline/render.hpp"
-#include "io/pipeline/standard_views.hpp"
 #include "io/writers/svg_writer.hpp"
-#include "algorithms/support/parallel.hpp"
 
 namespace hlr {
 namespace {

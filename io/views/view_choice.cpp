@@ -1,5 +1,5 @@
 // The camera choice (see view_choice.hpp).
-#include "io/pipeline/view_choice.hpp"
+#include "io/views/view_choice.hpp"
 
 #include <stdexcept>
 

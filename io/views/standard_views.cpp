@@ -1,5 +1,5 @@
 // Named views (see standard_views.hpp).
-#include "io/pipeline/standard_views.hpp"
+#include "io/views/standard_views.hpp"
 
 #include <cctype>
 
