@@ -422,6 +422,8 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   // Clipping: the near plane (perspective) and the clipping volume, exactly, in world space.
   std::optional<Plane> near;
   if (r.camera.perspective) near = near_plane(r.camera, o.near);
+  r.near_plane = near;
+  r.clip = o.clip;
   if ((near || o.clip || o.view_depth) && !r.surfaces && !r.priority)
     ParallelLoop(o.lines.threads).for_each(r.drawing.segments.size(), 1024, [&](std::size_t i) {
       Segment& s = r.drawing.segments[i];

@@ -129,6 +129,10 @@ struct RenderResult {
   /// With a section: its planes, the kept side's (RenderOptions::section) then the cut-away's;
   /// a cap face of plane k (SceneBody::section_cap) lies on section_planes[k].
   std::vector<Plane> section_planes;
+  /// The clipping the drawing got (the perspective near plane, RenderOptions::clip), for lines
+  /// made later on the page (a section's hatching).
+  std::optional<Plane> near_plane;
+  std::optional<ConvexClipper> clip;
   /// With RenderOptions::section_view: the section this view shows.
   std::optional<NamedSection> section_view;
   /// Remarks for the user ("file: body 'name' is open ...: drawn as a surface", eye in a face plane).

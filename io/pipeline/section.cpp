@@ -257,6 +257,8 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
   for (Segment& s : all.segments) {
     if (s.line != LineKind::Hatch) continue;
     s.pieces = clipped_pieces(s.pieces, inside[k++]);
+    if (r.near_plane) clip_near(s, *r.near_plane);  // clipped as the drawing is
+    if (r.clip) clip_pieces(s, *r.clip);
     if (!s.pieces.empty()) out.segments.push_back(std::move(s));
   }
   out.facing = std::move(all.facing);

@@ -6,12 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <random>
 #include <set>
 
 #include "algorithms/sections/hatch.hpp"
 #include "algorithms/solids/face_triangles.hpp"
+#include "io/readers/mesh_reader.hpp"
 #include "support/numbers.hpp"
 
 using namespace hlr;
@@ -50,8 +53,32 @@ int ray_inside(const Polyhedron& p, const Point3& x, const Vector3& dir) {
   return count % 2;
 }
 
+// The same along +z, each triangle first rejected exactly by its x and y range (fast on
+// meshes of thousands of faces); -1 when the ray meets an edge or a vertex.
+int ray_inside_z(const Polyhedron& p, const Point3& x) {
+  int count = 0;
+  for (std::size_t f = 0; f < p.num_faces(); ++f) {
+    const FaceTriangles ft = face_triangles(p, static_cast<int>(f));
+    for (const FaceTriangle& t : ft.triangles) {
+      const Point3* c[3] = {&p.vertices()[p.faces()[f][t.v[0]]], &p.vertices()[p.faces()[f][t.v[1]]], &p.vertices()[p.faces()[f][t.v[2]]]};
+      bool left = true, right = true, below = true, above = true;
+      for (const Point3* v : c)
+        left = left && v->x() < x.x(), right = right && v->x() > x.x(), below = below && v->y() < x.y(), above = above && v->y() > x.y();
+      if (left || right || below || above) continue;
+      const int r = ray_inside(Polyhedron({*c[0], *c[1], *c[2]}, {{0, 1, 2}}), x, Vector3(0, 0, 1));
+      if (r < 0) return -1;
+      count += r;
+    }
+  }
+  return count % 2;
+}
+
 // ray_inside along a few generic directions; -1 when every one is undecided.
 int inside(const Polyhedron& p, const Point3& x) {
+  if (p.num_faces() > 200) {
+    const int r = ray_inside_z(p, x);
+    if (r >= 0) return r;
+  }
   for (const Vector3& d :
        {Vector3(Q("1"), Q("0.3137"), Q("0.7219")), Vector3(Q("-0.4411"), Q("1"), Q("0.1931")), Vector3(Q("0.2713"), Q("-0.5923"), Q("1"))}) {
     const int r = ray_inside(p, x, d);
@@ -128,10 +155,30 @@ struct Tally {
   int solid_points = 0, cap_points = 0, plane_points = 0;
 };
 
+// Where the random points are drawn and how many.
+struct Region {
+  std::array<Rational, 3> lo{Rational(-1), Rational(-1), Rational(-1)}, hi{Rational(11), Rational(11), Rational(11)};
+  int solid_points = 60, plane_points = 150, cap_faces = 1 << 30;
+  Point3 point(std::mt19937& rng) const {
+    Rational q[3];
+    for (int k = 0; k < 3; ++k) q[k] = lo[k] + (hi[k] - lo[k]) * (random_q(rng, 0, 1));
+    return Point3(q[0], q[1], q[2]);
+  }
+};
+
+Region box_region(const Polyhedron& p, int solid_points, int plane_points, int cap_faces) {
+  Region r;
+  r.lo = r.hi = {p.vertices()[0].x(), p.vertices()[0].y(), p.vertices()[0].z()};
+  for (const Point3& v : p.vertices())
+    for (int k = 0; k < 3; ++k) r.lo[k] = std::min(r.lo[k], v[k]), r.hi[k] = std::max(r.hi[k], v[k]);
+  r.solid_points = solid_points, r.plane_points = plane_points, r.cap_faces = cap_faces;
+  return r;
+}
+
 // Every oracle check of one cut.
 // `away`: cut_away (the planes' region removed), else cut_solid (kept).
-void check_cut(const Polyhedron& body, const std::vector<Plane>& planes, std::mt19937& rng, Tally& tally, const std::string& what,
-               bool away = false) {
+void check_cut(const Polyhedron& body, const std::vector<Plane>& planes, std::mt19937& rng, Tally& tally, const std::string& what, bool away = false,
+               const Region& region = Region{}) {
   SCOPED_TRACE(what + (away ? ", cut away" : ""));
   const CutSolid c = away ? cut_away(body, planes) : cut_solid(body, planes);
   ASSERT_FALSE(c.open);
@@ -181,8 +228,8 @@ void check_cut(const Polyhedron& body, const std::vector<Plane>& planes, std::mt
     }
   }
   // Random points: inside the cut solid exactly when inside the body and on the kept side.
-  for (int k = 0; k < 60; ++k) {
-    const Point3 x(random_q(rng, -1, 11), random_q(rng, -1, 11), random_q(rng, -1, 11));
+  for (int k = 0; k < region.solid_points; ++k) {
+    const Point3 x = region.point(rng);
     bool off = false;
     for (const Plane& h : planes) off = off || h.value(x) == 0;
     if (off) continue;
@@ -197,7 +244,10 @@ void check_cut(const Polyhedron& body, const std::vector<Plane>& planes, std::mt
       if (c.cap[f] == static_cast<int>(p)) cap.push_back(static_cast<int>(f));
     auto corner = [&](int f, int i) -> const Point3& { return cut.vertices()[cut.faces()[f][i]]; };
     // Random points of the cap: on the plane, inside the body.
-    for (int f : cap) {
+    std::vector<int> sampled = cap;
+    std::shuffle(sampled.begin(), sampled.end(), rng);
+    if (static_cast<int>(sampled.size()) > region.cap_faces) sampled.resize(static_cast<std::size_t>(region.cap_faces));
+    for (int f : sampled) {
       const Point3 x = inside_triangle(corner(f, 0), corner(f, 1), corner(f, 2), rng);
       EXPECT_EQ(planes[p].value(x), 0);
       const int r = inside(body, x);
@@ -208,8 +258,9 @@ void check_cut(const Polyhedron& body, const std::vector<Plane>& planes, std::mt
     // Random points of the plane inside the body and on the other planes' kept sides: in the cap.
     const Vector3 n = planes[p].normal();
     const int a = n.z() != 0 ? 2 : n.y() != 0 ? 1 : 0;
-    for (int k = 0; k < 150; ++k) {
-      Rational q[3] = {random_q(rng, -1, 11), random_q(rng, -1, 11), random_q(rng, -1, 11)};
+    for (int k = 0; k < region.plane_points; ++k) {
+      const Point3 r0 = region.point(rng);
+      Rational q[3] = {r0.x(), r0.y(), r0.z()};
       q[a] = 0;
       const Rational rest = planes[p].value(Point3(q[0], q[1], q[2]));
       q[a] = -rest / n[a];
@@ -305,6 +356,39 @@ TEST(SectionCut, OracleOnRandomBodiesAndPlanes) {
   EXPECT_GT(tally.solid_points, 1500);
   EXPECT_GT(tally.cap_points, 50);
   EXPECT_GT(tally.plane_points, 150);
+}
+
+// CGAL's fandisk (curved, 12,946 triangles) and couplingdown (holes through a flange): random
+// planes through vertices and through random points, axis-aligned and oblique, one to three of
+// them, kept and cut away; the oracle as above with fewer points (each is a ray against every face).
+TEST(SectionCut, OracleOnCgalMeshes) {
+  std::mt19937 rng(4040);
+  std::uniform_int_distribution<long> nc(-3, 3);
+  Tally tally;
+  int meshes = 0;
+  for (const char* name : {"fandisk.off", "couplingdown.off"}) {
+    const std::string path = std::string(HLR_CORPUS_DIR) + "/" + name;
+    if (!std::filesystem::exists(path)) continue;  // scripts/extract_corpus.sh makes them
+    ++meshes;
+    const Polyhedron body = load_mesh(path);
+    const Region region = box_region(body, 12, 36, 6);
+    for (int trial = 0; trial < 4; ++trial) {
+      std::vector<Plane> planes;
+      for (int i = 0; i < 1 + trial / 2; ++i) {
+        Vector3 n;
+        do n = trial == 0 ? Vector3(0, 0, 1) : Vector3(nc(rng), nc(rng), nc(rng));
+        while (n.is_zero());
+        const Point3 at = trial % 2 == 1 ? body.vertices()[static_cast<std::size_t>(rng() % body.num_vertices())] : region.point(rng);
+        planes.emplace_back(n.x(), n.y(), n.z(), -dot(n, at - Point3()));
+      }
+      check_cut(body, planes, rng, tally, std::string(name) + ", trial " + std::to_string(trial), false, region);
+      check_cut(body, planes, rng, tally, std::string(name) + ", trial " + std::to_string(trial), true, region);
+    }
+  }
+  if (meshes == 0) GTEST_SKIP() << "CGAL's meshes are not extracted (scripts/extract_corpus.sh)";
+  EXPECT_GT(tally.solid_points, 50 * meshes);
+  EXPECT_GT(tally.cap_points, 20 * meshes);
+  EXPECT_GT(tally.plane_points, 30 * meshes);
 }
 
 TEST(Hatch, LinesStayInsideACapWithAHole) {

@@ -2,14 +2,18 @@
 // a plane equals, exactly, the drawing of the same scene with the removed parts deleted by hand
 // and the caps added as faces (random boxes that touch and interpenetrate, axis planes at
 // their faces' heights and between, orthographic and perspective views, lines and surfaces);
-// cut lines are their own class; bodies that take no cut stay whole.
+// cut lines are their own class; bodies that take no cut stay whole; CGAL's fandisk and
+// couplingdown drawn cut equal their cut meshes drawn whole.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <map>
 #include <random>
 
 #include "algorithms/picture/picture_plane.hpp"
+#include "algorithms/sections/section_cut.hpp"
 #include "io/pipeline/render.hpp"
+#include "io/readers/mesh_reader.hpp"
 #include "support/numbers.hpp"
 
 using namespace hlr;
@@ -160,4 +164,48 @@ TEST(SectionRender, RemovingEveryBodyIsAnError) {
   RenderOptions o;
   o.section = {Plane(0, 0, 1, 10)};  // keep z <= -10
   EXPECT_THROW(render({scene_of({{{0, 0, 0}, {1, 1, 1}, true}})}, o), std::invalid_argument);
+}
+
+// CGAL's fandisk and couplingdown: the section's drawing equals the drawing of the mesh that
+// cut_solid makes, rendered as a plain mesh (crease 0: every edge between faces that are not
+// coplanar, so the cut lines on both sides and no seam inside a face), orthographic and
+// perspective.
+TEST(SectionRender, CgalMeshesEqualTheirCutMeshes) {
+  int meshes = 0;
+  for (const char* name : {"fandisk.off", "couplingdown.off"}) {
+    const std::string path = std::string(HLR_CORPUS_DIR) + "/" + name;
+    if (!std::filesystem::exists(path)) continue;  // scripts/extract_corpus.sh makes them
+    ++meshes;
+    const Polyhedron body = load_mesh(path);
+    std::array<Rational, 3> lo{body.vertices()[0].x(), body.vertices()[0].y(), body.vertices()[0].z()}, hi = lo;
+    for (const Point3& v : body.vertices())
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
+    const Point3 mid((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
+    const std::vector<Plane> planes = {Plane(0, 0, 1, -mid.z()), Plane(1, -2, 3, -(mid.x() - 2 * mid.y() + 3 * mid.z()) - Rational(1, 50))};
+    for (const Plane& h : planes)
+      for (bool perspective : {false, true}) {
+        SCOPED_TRACE(std::string(name) + " plane " + to_string(h) + (perspective ? " perspective" : ""));
+        const CutSolid cut = cut_solid(body, {h});
+        ASSERT_EQ(cut.state, CutSolid::State::Cut);
+        Scene whole, by_hand;
+        whole.file = by_hand.file = "mesh.yaml";
+        whole.bodies.push_back(SceneBody{"m", "mesh.yaml", body, identity_transform(), {}, {}, {}, std::nullopt});
+        by_hand.bodies.push_back(SceneBody{"m", "mesh.yaml", Polyhedron(cut.vertices, cut.faces), identity_transform(), {}, {}, {}, std::nullopt});
+        RenderOptions o;
+        o.lines.crease_degrees = 0;
+        if (perspective) {
+          o.view.eye = Point3(hi[0] + (hi[0] - lo[0]), hi[1] + 2 * (hi[1] - lo[1]), hi[2] + 3 * (hi[2] - lo[2]));
+          o.view.target = mid;
+        } else {
+          o.view.direction = Vector3(1, Rational(13, 10), Rational(17, 10));
+        }
+        RenderOptions plain = o;
+        o.section = {h};
+        const RenderResult a = render({whole}, o), b = render({by_hand}, plain);
+        const Lines la = visible_lines(a), lb = visible_lines(b);
+        EXPECT_GT(la.size(), 100u);
+        EXPECT_EQ(la, lb);
+      }
+  }
+  if (meshes == 0) GTEST_SKIP() << "CGAL's meshes are not extracted (scripts/extract_corpus.sh)";
 }
