@@ -1,5 +1,5 @@
 // The output options on the command line (see drawing_output.hpp); the output stage itself is
-// the library's (io/pipeline/output.hpp).
+// the library's (io/output/output.hpp).
 #include "cli/drawing_output.hpp"
 
 #include <unistd.h>
@@ -31,7 +31,10 @@ void add_output_options(CLI::App* cmd, OutputArgs& a, bool sheets) {
   cmd->add_option("--stroke", a.stroke, "Width of visible edges in millimetres (default 0.35; outlines 0.5 and hidden 0.25 in proportion)");
   cmd->add_option("--weights", a.weights, "Line widths per kind in mm, e.g. silhouette=0.7,crease=0.35,hidden=0.18");
   cmd->add_option("--layers", a.layers, "Layers to write: visible, through, hidden, visible-silhouette, through-edge, hidden-crease, ... or their numbers");
-  cmd->add_option("--min-length", a.min_length, "Drop strokes shorter than this many millimetres on the page (specks)");
+  cmd->add_option("--pens", a.pens,
+                  "Layer numbers by pen, stable whatever --layers selects: e.g. visible=1,hidden=2,tone=3 (a key is a layer, "
+                  "its kind or visible/hidden/through; the most particular wins; every layer needs a pen)");
+  cmd->add_option("--min-length", a.min_length, "Drop strokes shorter than this many millimetres on the page (specks; after dashes are cut)");
   cmd->add_option("--dpi", a.dpi, "PNG resolution (default 150)");
   cmd->add_flag("--raw", a.raw, "One line per exact piece: no clean-up, chaining or pen order");
 }

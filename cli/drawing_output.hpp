@@ -1,13 +1,12 @@
 // The output options every drawing command shares (`hlr render`, `hlr horizon`) on the command
 // line: format by extension, hidden lines, dashes, page, scale, line weights, layers, specks,
-// PNG resolution. The output stage itself is the library's (io/pipeline/output.hpp).
+// PNG resolution. The output stage itself is the library's (io/output/output.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>
-
 #include <string>
 
-#include "io/pipeline/output.hpp"
+#include "io/output/output.hpp"
 
 namespace hlr::cli {
 

@@ -19,9 +19,9 @@
 #include "cli/commands.hpp"
 #include "cli/drawing_output.hpp"
 #include "cli/process.hpp"
+#include "io/output/section_views.hpp"
 #include "io/pipeline/render.hpp"
 #include "io/pipeline/render_methods.hpp"
-#include "io/pipeline/section_views.hpp"
 #include "io/readers/clipper_spec.hpp"
 #include "io/readers/input_error.hpp"
 #include "io/readers/tile_file.hpp"
@@ -46,6 +46,8 @@ struct RenderArgs : OutputArgs {
   std::string plan_depth;
   bool no_overhead = false;
   std::vector<std::string> section_views;  // "A=PLANE"
+  std::vector<std::string> lines;          // polyline files
+  std::string input_format;                // the inputs' format whatever their names ("-": standard input)
 };
 
 // A merge of tile files (hlr merge): the tiles and their paths.
@@ -126,7 +128,7 @@ RenderOptions render_options(const RenderArgs& a) {
   } else if (!a.plan_depth.empty()) {
     throw std::invalid_argument("--plan-depth needs --plan");
   }
-  o.surfaces = a.surfaces;
+  o.surfaces = a.surfaces || a.hatch;
   o.shadows = a.shadows;
   o.through_lines = !a.no_through;
   return o;
@@ -161,7 +163,12 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
   auto t_start = Clock::now();
   progress("loading");
   std::vector<Scene> scenes;
-  for (const auto& in : a.inputs) scenes.push_back(is_scene_file(in) ? load_scene(in) : scene_from_mesh(in));
+  const long stdin_uses = std::count(a.inputs.begin(), a.inputs.end(), "-") + std::count(a.lines.begin(), a.lines.end(), "-");
+  if (stdin_uses > 1) throw std::invalid_argument("standard input ('-') can be read once: give it to one input or one --lines");
+  for (const auto& in : a.inputs) scenes.push_back(load_input(in, a.input_format));
+  std::vector<Polyline3> polylines;  // read once: one file may be standard input
+  for (const std::string& f : a.lines)
+    for (Polyline3& l : read_polylines(f)) polylines.push_back(std::move(l));
   auto t_loaded = Clock::now();
   // Named views follow the scene's up axis: z when its view says up 0,0,1 (CAD, architecture).
   bool z_up = false;
@@ -199,9 +206,10 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
       options.section_view = named_section(section_name, *section_plane(a, section_name), one.up_axis == "z");
       options.view = section_view_request(*options.section_view, one.up_axis == "z");
     }
-    options.surface_corners = format == "json";
-    options.surface_faces = format == "json";
+    options.surface_corners = format == "json" || a.hatch;  // hatching lifts its lines into the faces
+    options.surface_faces = format == "json" || a.hatch;
     options.tile = tile;
+    options.polylines = polylines;
     options.segments_only = merge != nullptr;
     progress(view_names.empty() ? "hidden lines" : "hidden lines, view " + view_names[i]);
     try {
@@ -256,7 +264,12 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
 }
 
 void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
-  cmd->add_option("inputs", a->inputs, "Mesh files (.off .obj .stl .ply) and scene files (.yaml .yml .json)")->required();
+  cmd->add_option("inputs", a->inputs,
+                  "Mesh files (.off .obj .stl .ply) and scene files (.yaml .yml .json); - is standard input (with --input-format)")
+      ->required();
+  cmd->add_option("--input-format", a->input_format,
+                  "Read the inputs as off, obj, stl, ply, yaml or json whatever their names (needed for - , standard input)")
+      ->check(CLI::IsMember({"off", "obj", "stl", "ply", "yaml", "json"}));
   add_output_options(cmd, *a, true);
   cmd->add_option("--view", a->view,
                   "Orthographic view: front, back, top, bottom, left, right, iso, dimetric, or a direction X,Y,Z from the scene "
@@ -283,6 +296,14 @@ void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   cmd->add_flag("--shadows", a->shadows,
                 "Shadows of the scene's lights on the visible surfaces, as exact polygons (implies --surfaces; "
                 "each region shaded by the lights that reach it; JSON 'shadows')");
+  cmd->add_flag("--hatch", a->hatch,
+                "Tone hatching for pen plotters: every visible region (with --shadows, lit and shadowed apart) hatched by its "
+                "shade instead of filled, exact lines clipped to the exact visible polygons (implies --surfaces; layers "
+                "'visible-tone-1' .. lightest to darkest)");
+  cmd->add_option("--hatch-levels", a->hatch_levels, "Tone levels, 2 to 8 (default 5: white, then coverage 1/5 .. 4/5; over 1/2 cross-hatched)");
+  cmd->add_option("--hatch-angle", a->hatch_angle,
+                  "The hatch lines' angle on the page in degrees (default 45), or 'contour': each face's level lines");
+  cmd->add_option("--hatch-pen", a->hatch_pen, "The hatching pen's width in mm (default 0.25, the 'tone' weight); spacing = pen / coverage");
   cmd->add_flag("--no-through", a->no_through,
                 "Lines behind transparent bodies (material transparency > 0) count as hidden; by default they are their own "
                 "class, seen through (thin grey layers 'through-*', JSON pieces with \"through\": true)");
@@ -305,6 +326,9 @@ void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
                   "A-A); the other views that see the plane edge-on show its section line, arrows and letters");
   cmd->add_flag("--no-overhead", a->no_overhead,
                 "A plan without its overhead lines (what lies above the cut, seen from below, dashed: layer 'visible-overhead')");
+  cmd->add_option("--lines", a->lines,
+                  "Your own 3D polylines, drawn with their hidden parts removed by the bodies (layers 'visible-polyline', "
+                  "'hidden-polyline'): a text file, one polyline per line as x y z x y z ... ('-': standard input)");
   cmd->add_option("--near", a->near,
                   "Perspective near plane at this fraction of the eye-target distance from the eye (default 1/1000)");
   cmd->add_option("--tile", a->tile,

@@ -9,7 +9,7 @@
 #include "algorithms/clip/cyrus_beck.hpp"
 #include "io/explain/explain.hpp"
 #include "io/explain/problem.hpp"
-#include "io/pipeline/output.hpp"
+#include "io/output/output.hpp"
 #include "io/pipeline/raster.hpp"
 #include "io/pipeline/render.hpp"
 #include "io/pipeline/render_methods.hpp"
@@ -71,7 +71,7 @@ struct Drawing {
       }
     return out;
   }
-  // The CLI's output stage (io/pipeline/output.hpp): the same bytes as `hlr render -o x.svg`.
+  // The CLI's output stage (io/output/output.hpp): the same bytes as `hlr render -o x.svg`.
   std::string svg(bool hidden_dashed, double width_mm, double stroke_mm) const {
     hlr::OutputOptions o;
     o.hidden = hidden_dashed ? "dashed" : "none";

@@ -21,6 +21,24 @@ const char* to_string(LineKind k) {
       return "section-line";
     case LineKind::SectionMark:
       return "section-mark";
+    case LineKind::Polyline:
+      return "polyline";
+    case LineKind::Tone1:
+      return "tone-1";
+    case LineKind::Tone2:
+      return "tone-2";
+    case LineKind::Tone3:
+      return "tone-3";
+    case LineKind::Tone4:
+      return "tone-4";
+    case LineKind::Tone5:
+      return "tone-5";
+    case LineKind::Tone6:
+      return "tone-6";
+    case LineKind::Tone7:
+      return "tone-7";
+    case LineKind::Tone8:
+      return "tone-8";
     case LineKind::Edge: break;
   }
   return "edge";

@@ -561,7 +561,17 @@ int kind_priority(LineKind k) {
   switch (k) {
     case LineKind::Cut:
       return 5;
+    case LineKind::Polyline:
+      return 0;  // a line of its own: under the bodies' edges where they coincide
     case LineKind::Hatch:
+    case LineKind::Tone1:
+    case LineKind::Tone2:
+    case LineKind::Tone3:
+    case LineKind::Tone4:
+    case LineKind::Tone5:
+    case LineKind::Tone6:
+    case LineKind::Tone7:
+    case LineKind::Tone8:
       return -1;
     case LineKind::Overhead:
       return -2;

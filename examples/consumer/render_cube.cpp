@@ -6,7 +6,7 @@
 #include <iostream>
 
 #include "algorithms/picture/drawing_2d.hpp"
-#include "io/pipeline/output.hpp"
+#include "io/output/output.hpp"
 #include "io/pipeline/render.hpp"
 #include "io/writers/svg_writer.hpp"
 
@@ -32,7 +32,7 @@ int main() {
   }
   hlr::Drawing2D d = hlr::project_drawing(r.drawing, r.camera);
   std::string svg = hlr::to_svg(r.names, d, hlr::SvgOptions{});
-  // The output stage of `hlr render` (io/pipeline/output.hpp): the page hlr writes, with layers.
+  // The output stage of `hlr render` (io/output/output.hpp): the page hlr writes, with layers.
   const std::string page = hlr::drawing_text(r, hlr::OutputOptions{}, "svg", "consumer").str();
   bool ok = r.drawing.segments.size() == 12 && visible == 9 && hidden == 3 && d.lines.size() == 12 &&
             svg.find("<line") != std::string::npos && page.find("inkscape:label=\"1 visible-") != std::string::npos;

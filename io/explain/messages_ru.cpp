@@ -203,8 +203,11 @@ const std::vector<Entry>& catalogue() {
       {"cannot open: Permission denied", "не удаётся открыть: нет прав доступа"},
       {"cannot open: @x", "не удаётся открыть (@1)"},
       {"read error", "ошибка чтения"},
-      {"unknown mesh file extension '@x' (expected .off, .obj, .stl or .ply)",
-       "неизвестное расширение файла сетки '@1' (ожидается .off, .obj, .stl или .ply)"},
+      {"unknown mesh file extension '@x' (expected .off, .obj, .stl or .ply; standard input: - with --input-format)",
+       "неизвестное расширение файла сетки '@1' (ожидается .off, .obj, .stl или .ply; стандартный ввод: - с --input-format)"},
+      {"unknown mesh format '@x' (expected off, obj, stl or ply)", "неизвестный формат сетки '@1' (ожидается off, obj, stl или ply)"},
+      {"standard input needs --input-format (off, obj, stl, ply, yaml or json)",
+       "для стандартного ввода нужен --input-format (off, obj, stl, ply, yaml или json)"},
       {"empty mesh: no vertices", "пустая сетка: нет вершин"},
       {"empty mesh: no faces", "пустая сетка: нет граней"},
       // ---- the body matrix and convexity (kernel/body_matrix.cpp, algorithms/solids/convexity.cpp)

@@ -20,6 +20,7 @@
 #include "algorithms/surfaces/priority_list.hpp"
 #include "algorithms/surfaces/shadows.hpp"
 #include "algorithms/surfaces/transparency.hpp"
+#include "io/pipeline/polylines.hpp"
 #include "io/pipeline/render_methods.hpp"
 #include "io/pipeline/render_steps.hpp"
 #include "io/pipeline/section.hpp"
@@ -387,8 +388,8 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   const RenderMethodEntry& m = method_entry(o.method);
   if (m.flags & kChecksSolids)
     for (const Polyhedron* p : polys) p->report();  // the method's checks belong to loading
-  if ((o.tile || o.segments_only) && (!(m.flags & kTakesTiles) || o.surfaces || o.shadows || o.clip))
-    throw std::invalid_argument("tiles take line drawings of the per-face route (not --method roberts, --surfaces, --shadows or --clip)");
+  if ((o.tile || o.segments_only) && (!(m.flags & kTakesTiles) || o.surfaces || o.shadows || o.clip || !o.polylines.empty()))
+    throw std::invalid_argument("tiles take line drawings of the per-face route (not --method roberts, --surfaces, --shadows, --clip or --lines)");
   FaceRouteHooks hooks;
   hooks.facing_only = o.facing_only;
   if (sectioned) section_hooks(r.bodies, hooks);
@@ -415,6 +416,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   }
   if (sectioned) mark_cut_lines(r.drawing, r.bodies);
   if (above) add_overhead(r, std::move(*above), (*planes)[0], o);
+  if (!o.polylines.empty()) add_polylines(r, o.polylines, o);
   r.notes = std::move(repairs);
   for (const BodyNote& n : r.drawing.notes)
     r.notes.push_back(r.names[n.body].source + ": body '" + r.names[n.body].name + "' " + n.text);

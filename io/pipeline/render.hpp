@@ -20,6 +20,7 @@
 #include "algorithms/surfaces/transparency.hpp"
 #include "algorithms/surfaces/visible_surfaces.hpp"
 #include "io/pipeline/method_table.hpp"
+#include "io/readers/polyline_file.hpp"
 #include "io/readers/scene.hpp"
 #include "io/views/view_choice.hpp"
 #include "io/writers/svg_writer.hpp"
@@ -72,6 +73,9 @@ struct RenderOptions {
   std::optional<Plane> view_depth;
   /// A section view of a sheet: its plane cuts as `section`'s do, in addition to them.
   std::optional<NamedSection> section_view;
+  /// The user's own 3D lines, drawn with their hidden parts removed by the bodies (LineKind::
+  /// Polyline, no body: io/pipeline/polylines.hpp); any route, not with tiles.
+  std::vector<Polyline3> polylines;
   /// Also the visible part of every face as exact polygons, shaded (visible_surfaces.hpp,
   /// lighting.hpp); the line drawing is then the selected lines of the same exact solution.
   bool surfaces = false;

@@ -6,7 +6,7 @@
 #include <map>
 #include <unordered_set>
 
-#include "algorithms/sections/hatch.hpp"
+#include "algorithms/hatching/hatch.hpp"
 #include "algorithms/sections/section_cut.hpp"
 #include "io/pipeline/render_steps.hpp"
 

@@ -1,7 +1,7 @@
 // Sections in the render pipeline (docs/design.md, "Sections"): the scene's bodies cut by the
 // section's half-spaces before any hidden-line or surface route runs (algorithms/sections/
 // section_cut.hpp), so that what is removed hides nothing; the cut lines named; the caps
-// hatched on the page once the page's scale is known (algorithms/sections/hatch.hpp), with the
+// hatched on the page once the page's scale is known (algorithms/hatching/hatch.hpp), with the
 // hatch lines' visibility decided exactly by the per-face route.
 #pragma once
 

@@ -11,21 +11,26 @@
 
 namespace hlr {
 
+MeshData read_mesh_bytes(std::string_view bytes, const std::string& format, const std::string& name) {
+  MeshData (*reader)(std::string_view, const std::string&) = nullptr;
+  if (format == "off") reader = read_off;
+  else if (format == "obj") reader = read_obj;
+  else if (format == "stl") reader = read_stl;
+  else if (format == "ply") reader = read_ply;
+  else throw InputError(name, 0, "unknown mesh format '" + format + "' (expected off, obj, stl or ply)");
+  MeshData m = reader(bytes, name);
+  if (m.vertices.empty()) throw InputError(name, 0, "empty mesh: no vertices");
+  if (m.faces.empty()) throw InputError(name, 0, "empty mesh: no faces");
+  return m;
+}
+
 MeshData read_mesh_file(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  MeshData (*reader)(std::string_view, const std::string&) = nullptr;
-  if (ext == ".off") reader = read_off;
-  else if (ext == ".obj") reader = read_obj;
-  else if (ext == ".stl") reader = read_stl;
-  else if (ext == ".ply") reader = read_ply;
-  else
-    throw InputError(path, 0, "unknown mesh file extension '" + ext + "' (expected .off, .obj, .stl or .ply)");
-  std::string bytes = read_file_bytes(path);
-  MeshData m = reader(bytes, path);
-  if (m.vertices.empty()) throw InputError(path, 0, "empty mesh: no vertices");
-  if (m.faces.empty()) throw InputError(path, 0, "empty mesh: no faces");
-  return m;
+  if (ext != ".off" && ext != ".obj" && ext != ".stl" && ext != ".ply")
+    throw InputError(path, 0, "unknown mesh file extension '" + ext + "' (expected .off, .obj, .stl or .ply; standard input: - with --input-format)");
+  const std::string bytes = read_file_bytes(path);
+  return read_mesh_bytes(bytes, ext.substr(1), path);
 }
 
 Polyhedron make_polyhedron(MeshData data, const std::string& file) {

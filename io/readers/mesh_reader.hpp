@@ -39,6 +39,9 @@ MeshData read_ply(std::string_view bytes, const std::string& file);
 /// missing file, unknown extension, parse error (with line), empty mesh.
 MeshData read_mesh_file(const std::string& path);
 
+/// Reads mesh bytes of a format ("off", "obj", "stl", "ply"); `name` names them in errors.
+MeshData read_mesh_bytes(std::string_view bytes, const std::string& format, const std::string& name);
+
 /// Builds the polyhedron of mesh data; bad faces become InputError with the face's line.
 Polyhedron make_polyhedron(MeshData data, const std::string& file);
 

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <iostream>
+#include <iterator>
 #include <set>
 
 #include "io/readers/clipper_spec.hpp"
@@ -205,6 +207,35 @@ Scene scene_from_mesh(const std::string& path) {
   auto face_texcoords = std::move(data.face_texcoords);
   s.bodies.push_back(SceneBody{std::filesystem::path(path).stem().string(), path, make_polyhedron(std::move(data), path),
                                identity_transform(), {}, {}, {}, std::nullopt, std::move(texcoords), std::move(face_texcoords)});
+  return s;
+}
+
+Scene load_input(const std::string& path, const std::string& format) {
+  if (format.empty()) {
+    if (path == "-") throw InputError("<stdin>", 0, "standard input needs --input-format (off, obj, stl, ply, yaml or json)");
+    return is_scene_file(path) ? load_scene(path) : scene_from_mesh(path);
+  }
+  const std::string name = path == "-" ? "<stdin>" : path;
+  std::string bytes;
+  if (path == "-") bytes.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+  else bytes = read_file_bytes(path);
+  if (format == "yaml" || format == "json") return load_scene_text(bytes, name);
+  Scene s;
+  s.file = name;
+  MeshData data = read_mesh_bytes(bytes, format, name);
+  auto texcoords = std::move(data.texcoords);
+  auto face_texcoords = std::move(data.face_texcoords);
+  const std::string body = path == "-" ? "stdin" : std::filesystem::path(path).stem().string();
+  s.bodies.push_back(SceneBody{body,
+                               name,
+                               make_polyhedron(std::move(data), name),
+                               identity_transform(),
+                               {},
+                               {},
+                               {},
+                               std::nullopt,
+                               std::move(texcoords),
+                               std::move(face_texcoords)});
   return s;
 }
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/sections/hatch.hpp"
+#include "algorithms/hatching/hatch.hpp"
 #include "algorithms/shading/lighting.hpp"
 #include "io/readers/input_error.hpp"
 #include "kernel/polyhedron.hpp"
@@ -88,5 +88,11 @@ Scene load_scene_text(const std::string& text, const std::string& path, const st
 
 /// A scene of one body from a mesh file (name: the file's stem), default view.
 Scene scene_from_mesh(const std::string& path);
+
+/// An input of hlr render: a scene or mesh file by its extension, or, with `format` (off, obj,
+/// stl, ply, yaml or json), read as that format whatever its name; "-" is standard input
+/// (named <stdin> in messages, mesh paths in it relative to the working directory) and needs
+/// a format. Throws InputError.
+Scene load_input(const std::string& path, const std::string& format);
 
 }  // namespace hlr

@@ -160,7 +160,7 @@ std::vector<SheetText> sheet_texts(const Sheet& sheet) {
 }
 
 double PlotStyle::weight(const PlotLayer& l) const {
-  auto it = weights.find(l.visible ? to_string(l.kind) : l.through ? "through" : "hidden");
+  auto it = weights.find(l.visible ? (is_tone(l.kind) ? "tone" : to_string(l.kind)) : l.through ? "through" : "hidden");
   return it != weights.end() ? it->second : 0.35;
 }
 
@@ -180,10 +180,21 @@ void parse_weights(const std::string& text, PlotStyle& style) {
     if (eq == std::string::npos || !style.weights.count(key))
       throw std::invalid_argument("--weights: '" + item +
                                   "' is not KIND=MM (kinds: cut, silhouette, boundary, crease, intersection, edge, hatch, overhead, section-line, "
-                                  "section-mark, hidden, through)");
+                                  "section-mark, polyline, tone, hidden, through)");
     style.weights[key] = positive_number(item.substr(eq + 1), "--weights");
   }
 }
+
+namespace {
+
+double polyline_length(const std::vector<Point2>& p, bool closed) {
+  double t = 0;
+  for (std::size_t i = 1; i < p.size(); ++i) t += std::hypot(p[i][0] - p[i - 1][0], p[i][1] - p[i - 1][1]);
+  if (closed && p.size() > 2) t += std::hypot(p.back()[0] - p[0][0], p.back()[1] - p[0][1]);
+  return t;
+}
+
+}  // namespace
 
 std::vector<std::vector<Point2>> page_strokes(const SheetView& view, const PlotLayer& layer, const PlotStyle& style,
                                               std::vector<char>* closed) {
@@ -197,6 +208,7 @@ std::vector<std::vector<Point2>> page_strokes(const SheetView& view, const PlotL
     for (const Point2& p : s.points) pts.push_back(view.page(p));
     if (cut) {
       for (auto& d : cut_dashes(pts, s.closed, pattern[0], pattern[1])) {
+        if (style.min_length_mm > 0 && polyline_length(d, false) < style.min_length_mm) continue;  // a remnant of the cut
         out.push_back(std::move(d));
         if (closed) closed->push_back(0);
       }
@@ -228,7 +240,9 @@ std::vector<SheetLayer> sheet_layers(const Sheet& sheet, const PlotStyle& style)
   std::vector<SheetLayer> out;
   const std::vector<std::string> names = sheet_layer_names(sheet);
   for (std::size_t n = 0; n < names.size(); ++n) {
-    SheetLayer l{names[n], style.numbered_layers ? std::to_string(n + 1) + " " + names[n] : names[n], nullptr};
+    const auto number = style.layer_numbers.find(names[n]);
+    const int k = number != style.layer_numbers.end() ? number->second : static_cast<int>(n + 1);
+    SheetLayer l{names[n], style.numbered_layers ? std::to_string(k) + " " + names[n] : names[n], nullptr};
     for (const SheetView& v : sheet.views)
       for (const PlotLayer& p : v.plot->layers)
         if (!l.layer && p.name() == names[n]) l.layer = &p;

@@ -53,7 +53,7 @@ void append_stroke_text(std::string& out, std::size_t strokes, const Size& size,
 class PageStrokes {
  public:
   PageStrokes(const SheetView& v, const PlotLayer& l, const PlotStyle& style) : view_(v), strokes_(l.strokes) {
-    if (!l.visible && !l.through && style.hidden_dashed && style.dashes == DashMode::Geometry) {
+    if ((style.dashed(l) && style.dashes == DashMode::Geometry) || style.min_length_mm > 0) {  // cut dashes, specks dropped
       cut_ = true;
       dashes_ = page_strokes(v, l, style, &closed_);
     }

@@ -12,7 +12,7 @@
 #include <random>
 #include <set>
 
-#include "algorithms/sections/hatch.hpp"
+#include "algorithms/hatching/hatch.hpp"
 #include "algorithms/solids/face_triangles.hpp"
 #include "io/readers/mesh_reader.hpp"
 #include "support/numbers.hpp"

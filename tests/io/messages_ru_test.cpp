@@ -26,22 +26,22 @@ const std::string kSource = std::string(HLR_DATA_DIR) + "/..";
 // the student types), formula symbols, and format names.
 bool allowed_latin(const std::string& w) {
   static const std::set<std::string> keys = {
-      "problem", "roberts",  "cyrus",     "beck",       "midpoint",     "convexity", "decompose", "transform", "horizon",   "heights",
-      "bodies",  "vertices", "faces",     "box",        "frustum",      "mesh",      "clipper",   "segments",  "edges",     "eps",
-      "title",   "view",     "direction", "eye",        "target",       "up",        "light",     "name",      "translate", "scale",
-      "rotate",  "reflect",  "matrix",    "factors",    "axis",         "degrees",   "cos",       "sin",       "tan_half",  "centre",
-      "center",  "min",      "max",       "xmin",       "xmax",         "ymin",      "ymax",      "zmin",      "zmax",      "xl",
-      "xr",      "yb",       "yt",        "znear",      "zfar",         "zcp",       "XMIN",      "XMAX",      "YMIN",      "YMAX",
-      "ZMIN",    "ZMAX",     "XL",        "XR",         "YB",           "YT",        "ZCP",       "ZNEAR",     "ZFAR",      "x1",
-      "y1",      "z1",       "x2",        "y2",         "z2",           "YAML",      "JSON",      "NaN",       "hlr",       "off",
-      "obj",     "stl",      "ply",       "GiB",        "yaml",         "material",  "lighting",  "lights",    "ambient",   "specular",
-      "phong",   "blinn",    "colour",    "color",      "ka",           "kd",        "ks",        "shininess", "type",      "directional",
-      "point",   "spot",     "position",  "intensity",  "attenuation",  "cone",      "exponent",  "rrggbb",    "a0",        "a1",
-      "a2",      "r",        "g",         "b",          "weiler",       "atherton",  "faces",     "method",    "priority",  "raster",
-      "size",    "window",   "trace",     "reflection", "transparency", "ior",       "x0",        "x1",        "y0",        "y1",
-      "PNG",     "ray",      "tree",      "from",       "direction",    "dx",        "dy",        "dz",        "depth",     "cut",
-      "hatch",   "section",  "pattern",   "angle",      "spacing",      "single",    "cross",     "solid",     "none",      "true",
-      "false",   "mm"};
+      "problem",  "roberts",     "cyrus",     "beck",    "midpoint", "convexity",  "decompose",    "transform", "horizon",   "heights",
+      "bodies",   "vertices",    "faces",     "box",     "frustum",  "mesh",       "clipper",      "segments",  "edges",     "eps",
+      "title",    "view",        "direction", "eye",     "target",   "up",         "light",        "name",      "translate", "scale",
+      "rotate",   "reflect",     "matrix",    "factors", "axis",     "degrees",    "cos",          "sin",       "tan_half",  "centre",
+      "center",   "min",         "max",       "xmin",    "xmax",     "ymin",       "ymax",         "zmin",      "zmax",      "xl",
+      "xr",       "yb",          "yt",        "znear",   "zfar",     "zcp",        "XMIN",         "XMAX",      "YMIN",      "YMAX",
+      "ZMIN",     "ZMAX",        "XL",        "XR",      "YB",       "YT",         "ZCP",          "ZNEAR",     "ZFAR",      "x1",
+      "y1",       "z1",          "x2",        "y2",      "z2",       "YAML",       "JSON",         "NaN",       "hlr",       "off",
+      "input",    "format",      "obj",       "stl",     "ply",      "GiB",        "yaml",         "material",  "lighting",  "lights",
+      "ambient",  "specular",    "phong",     "blinn",   "colour",   "color",      "ka",           "kd",        "ks",        "shininess",
+      "type",     "directional", "point",     "spot",    "position", "intensity",  "attenuation",  "cone",      "exponent",  "rrggbb",
+      "a0",       "a1",          "a2",        "r",       "g",        "b",          "weiler",       "atherton",  "faces",     "method",
+      "priority", "raster",      "size",      "window",  "trace",    "reflection", "transparency", "ior",       "x0",        "x1",
+      "y0",       "y1",          "PNG",       "ray",     "tree",     "from",       "direction",    "dx",        "dy",        "dz",
+      "depth",    "cut",         "hatch",     "section", "pattern",  "angle",      "spacing",      "single",    "cross",     "solid",
+      "none",     "true",        "false",     "mm"};
   return keys.count(w) > 0;
 }
 

@@ -1,9 +1,9 @@
-// Section views on a sheet (io/pipeline/section_views.hpp, ISO 128-40): a section's view looks
+// Section views on a sheet (io/output/section_views.hpp, ISO 128-40): a section's view looks
 // from the removed side and takes its standard view's place; the section line appears in every
 // orthographic view that sees the plane edge-on and in no other, at the plane's trace, with its
 // wide ends beyond the scene's box, the arrows' tips on the line pointing the way the section
 // view looks, and the letters past the arrows.
-#include "io/pipeline/section_views.hpp"
+#include "io/output/section_views.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// Hatching (ISO 128-50 for section caps; docs/design.md, "Sections"): parallel lines on the
-// page clipped exactly to a planar region in space. Each page line is lifted onto the region's
+// Hatching (ISO 128-50 for section caps; docs/design.md, "Sections" and "Tone hatching"):
+// parallel lines clipped exactly to a planar region in space. Each page line is lifted onto the region's
 // plane and its ends snapped exactly onto it, so it is an exact line of the plane; where it is
 // inside the region is decided by the exact side of each boundary edge's ends and the exact
 // order of the crossing points along it: a hatch line never crosses the region's border.
@@ -32,6 +32,23 @@ struct HatchLine {
   Point3 p0, p1;
   std::vector<std::pair<Rational, Rational>> inside;
 };
+
+/// A line of a plane by two points near it, in doubles: clip_lines snaps them exactly onto it.
+struct ApproxLine {
+  std::array<double, 3> a, b;
+};
+
+/// The exact lines through `lines`' ends snapped onto `plane` (two coordinates rounded to a
+/// power of two 2^-30 of `size`, the third solved from the plane), each with the parameter
+/// intervals inside the closed region bounded by `boundary` (directed edges into `pts`, closed
+/// loops in `plane`, holes as loops of their own: inside is an odd number of crossings). Only
+/// lines that meet the region; a line whose two ends snap to one point is left out.
+std::vector<HatchLine> clip_lines(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& boundary, const Plane& plane,
+                                  const std::vector<ApproxLine>& lines, double size);
+
+/// The same for exact lines of `plane` (p0 p1 of each; `inside` is filled in).
+std::vector<HatchLine> clip_exact_lines(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& boundary, const Plane& plane,
+                                        std::vector<HatchLine> lines);
 
 /// The page lines n·q = c, n = (cos angle, sin angle), c = first, first + step, ... <= last,
 /// over the region bounded by `boundary` (directed edges into `pts`, closed loops in `plane`):

@@ -22,8 +22,16 @@ struct OutputOptions {
   std::string dashes = "pattern";             ///< pattern or geometry
   std::string page, margin, scale, weights;   ///< empty: the drawing's own size, 10 mm, fit, defaults
   std::string layers;                         ///< empty: all; else names or numbers, comma-separated
+  std::string pens;                           ///< a pen map "visible=1,hidden=2,tone=3": layer numbers (empty: drawing order)
   std::string projection = "third";           ///< a sheet of standard views: first or third angle
   bool landscape = false, raw = false, stats = false;
+  /// Tone hatching instead of fills (a surfaces render: io/output/tone_hatching.hpp): the
+  /// number of tone levels, the angle in degrees or "contour", the pen's width in mm (0: the
+  /// "tone" weight).
+  bool hatch = false;
+  int hatch_levels = 5;
+  std::string hatch_angle = "45";
+  double hatch_pen = 0;
   double width = 150, stroke = 0.35, min_length = 0, dpi = 150;
   unsigned threads = 0;
 };

@@ -3,7 +3,7 @@
 // w·(b − p0) < 0 differ (the half-open rule: a line through a vertex counts the vertex once, a
 // line along an edge counts it on one side), so every line meets the closed loops an even
 // number of times; the crossing points, sorted along the line, pair into the inside pieces.
-#include "algorithms/sections/hatch.hpp"
+#include "algorithms/hatching/hatch.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -46,28 +46,17 @@ bool left_of(const Vector3& w, const std::array<double, 3>& wd, const Point3& x,
 
 }  // namespace
 
-std::vector<HatchLine> hatch_lines(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& boundary, const Plane& plane,
-                                   const std::function<std::array<double, 3>(double, double)>& lift, double angle_degrees, double first, double step,
-                                   double last, const std::array<double, 4>& page_box, double size) {
+std::vector<HatchLine> clip_exact_lines(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& boundary, const Plane& plane,
+                                        std::vector<HatchLine> lines) {
   std::vector<HatchLine> out;
-  if (boundary.empty() || !(step > 0) || !(size > 0)) return out;
-  const double a = angle_degrees * M_PI / 180, n0 = std::cos(a), n1 = std::sin(a), d0 = -n1, d1 = n0;
-  double ulo = INFINITY, uhi = -INFINITY;
-  for (double x : {page_box[0], page_box[2]})
-    for (double y : {page_box[1], page_box[3]}) ulo = std::min(ulo, x * d0 + y * d1), uhi = std::max(uhi, x * d0 + y * d1);
-  const double margin = 0.1 * (uhi - ulo) + step;
-  ulo -= margin, uhi += margin;
-  const double q = std::ldexp(1.0, std::ilogb(size) - 30);
+  if (boundary.empty()) return out;
   const Vector3 normal = plane.normal();
-  std::vector<std::pair<Rational, int>> hits;
+  std::vector<Rational> hits;
   std::map<int, std::array<double, 3>> approx;  // the border's corners in doubles
   auto d3 = [](const Point3& p) { return std::array<double, 3>{to_double(p.x()), to_double(p.y()), to_double(p.z())}; };
   for (const auto& e : boundary)
     for (int v : e) approx.emplace(v, d3(pts[v]));
-  for (double c = first; c <= last; c += step) {
-    HatchLine line;
-    line.p0 = snap(lift(c * n0 + ulo * d0, c * n1 + ulo * d1), plane, q);
-    line.p1 = snap(lift(c * n0 + uhi * d0, c * n1 + uhi * d1), plane, q);
+  for (HatchLine& line : lines) {
     const Vector3 d = line.p1 - line.p0;
     if (d.is_zero()) continue;
     const Vector3 w = cross(normal, d);  // in the plane, across the line
@@ -82,15 +71,42 @@ std::vector<HatchLine> hatch_lines(const std::vector<Point3>& pts, const std::ve
       const Vector3 ab = pb - pa;
       const Rational ga = dot(w, pa - line.p0), gb = dot(w, pb - line.p0);
       const Point3 x = pa + Rational(ga / (ga - gb)) * ab;
-      hits.emplace_back(Rational(dot(d, x - line.p0) / dot(d, d)), 0);
+      hits.push_back(Rational(dot(d, x - line.p0) / dot(d, d)));
     }
     if (hits.empty()) continue;
-    std::sort(hits.begin(), hits.end(), [](const auto& p, const auto& r) { return p.first < r.first; });
+    std::sort(hits.begin(), hits.end());
+    line.inside.clear();
     for (std::size_t k = 0; k + 1 < hits.size(); k += 2)
-      if (hits[k].first < hits[k + 1].first) line.inside.emplace_back(hits[k].first, hits[k + 1].first);
+      if (hits[k] < hits[k + 1]) line.inside.emplace_back(hits[k], hits[k + 1]);
     if (!line.inside.empty()) out.push_back(std::move(line));
   }
   return out;
+}
+
+std::vector<HatchLine> clip_lines(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& boundary, const Plane& plane,
+                                  const std::vector<ApproxLine>& lines, double size) {
+  if (boundary.empty() || !(size > 0)) return {};
+  const double q = std::ldexp(1.0, std::ilogb(size) - 30);
+  std::vector<HatchLine> exact;
+  exact.reserve(lines.size());
+  for (const ApproxLine& a : lines) exact.push_back(HatchLine{snap(a.a, plane, q), snap(a.b, plane, q), {}});
+  return clip_exact_lines(pts, boundary, plane, std::move(exact));
+}
+
+std::vector<HatchLine> hatch_lines(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& boundary, const Plane& plane,
+                                   const std::function<std::array<double, 3>(double, double)>& lift, double angle_degrees, double first, double step,
+                                   double last, const std::array<double, 4>& page_box, double size) {
+  if (boundary.empty() || !(step > 0) || !(size > 0)) return {};
+  const double a = angle_degrees * M_PI / 180, n0 = std::cos(a), n1 = std::sin(a), d0 = -n1, d1 = n0;
+  double ulo = INFINITY, uhi = -INFINITY;
+  for (double x : {page_box[0], page_box[2]})
+    for (double y : {page_box[1], page_box[3]}) ulo = std::min(ulo, x * d0 + y * d1), uhi = std::max(uhi, x * d0 + y * d1);
+  const double margin = 0.1 * (uhi - ulo) + step;
+  ulo -= margin, uhi += margin;
+  std::vector<ApproxLine> lines;
+  for (double c = first; c <= last; c += step)
+    lines.push_back({lift(c * n0 + ulo * d0, c * n1 + ulo * d1), lift(c * n0 + uhi * d0, c * n1 + uhi * d1)});
+  return clip_lines(pts, boundary, plane, lines, size);
 }
 
 }  // namespace hlr

@@ -1,5 +1,5 @@
 // Section views and section lines on a sheet (see section_views.hpp; ISO 128-40, ISO 128-44).
-#include "io/pipeline/section_views.hpp"
+#include "io/output/section_views.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,23 +1,24 @@
 // The output stage: from exact line drawings to the text or bytes written (the plotting 2D
 // stage, the page layout, the writers; or the exact JSON). See output.hpp and docs/design.md,
 // "The render pipeline, one screen".
-#include "io/pipeline/output.hpp"
+#include "io/output/output.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <set>
 
 #include "algorithms/support/progress.hpp"
+#include "io/output/section_views.hpp"
+#include "io/output/tone_hatching.hpp"
 #include "io/pipeline/section.hpp"
-#include "io/pipeline/section_views.hpp"
 #include "io/writers/json_writer.hpp"
 #include "io/writers/plot_output.hpp"
 
 namespace hlr {
 namespace {
-
 
 PageOptions page_options(const OutputOptions& a) {
   PageOptions p;
@@ -44,6 +45,7 @@ PlotStyle plot_style(const OutputOptions& a) {
   PlotStyle st;
   for (auto& [k, w] : st.weights) w *= a.stroke / 0.35;  // --stroke: the visible edges' width, the rest in proportion
   if (!a.weights.empty()) parse_weights(a.weights, st);
+  if (a.hatch_pen > 0) st.weights["tone"] = a.hatch_pen;
   st.dashes = a.dashes == "geometry" ? DashMode::Geometry : DashMode::Pattern;
   st.hidden_dashed = a.hidden != "solid";
   return st;
@@ -89,13 +91,17 @@ void select_layers(const std::string& list, std::vector<Plot>& plots, bool hidde
         if (n.rfind(item + "-", 0) == 0) keep.insert(n);
       continue;
     }
-    static const std::set<std::string> known = {"visible-silhouette", "visible-boundary", "visible-crease", "visible-intersection",
-                                                "visible-edge", "hidden-silhouette", "hidden-boundary", "hidden-crease",
-                                                "hidden-intersection", "hidden-edge", "through-silhouette", "through-boundary",
-                                                "through-crease", "through-intersection", "through-edge"};
+    std::set<std::string> known;
+    for (const char* seen : {"visible-", "hidden-", "through-"})
+      for (LineKind k : kLayerKinds) known.insert(seen + std::string(to_string(k)));
+    if (item == "tone") {  // every tone level
+      for (const std::string& n : names)
+        if (n.find("-tone-") != std::string::npos) keep.insert(n);
+      continue;
+    }
     if (!known.count(item))
       throw std::invalid_argument("--layers: unknown layer '" + item +
-                                  "' (visible, through, hidden, visible-silhouette, hidden-crease, ... or numbers)");
+                                  "' (visible, through, hidden, tone, visible-silhouette, hidden-crease, visible-tone-2, ... or numbers)");
     keep.insert(item);
   }
   bool drawn = false;
@@ -114,6 +120,77 @@ void select_layers(const std::string& list, std::vector<Plot>& plots, bool hidde
   }
 }
 
+// The layer numbers of a pen map "visible=1,hidden=2,hatch=3" for the layers `names`: a key is
+// a layer's name, its kind (both visibilities; "tone": every tone level) or its visibility;
+// the most particular key wins. A layer no key names is an error (a pen map is the plotter's
+// whole setup).
+std::map<std::string, int> pen_numbers(const std::string& map, const std::vector<std::string>& names) {
+  std::map<std::string, int> keys;
+  std::size_t at = 0;
+  while (at < map.size()) {
+    std::size_t comma = map.find(',', at);
+    const std::string item = map.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
+    at = comma == std::string::npos ? map.size() : comma + 1;
+    const std::size_t eq = item.find('=');
+    int pen = 0;
+    std::size_t used = 0;
+    try {
+      pen = eq == std::string::npos ? 0 : std::stoi(item.substr(eq + 1), &used);
+    } catch (const std::exception&) {
+      pen = 0;
+    }
+    if (eq == std::string::npos || eq == 0 || used != item.size() - eq - 1 || pen < 1 || pen > 999)
+      throw std::invalid_argument("--pens: '" + item + "' is not LAYER=PEN with a pen number from 1 to 999 (e.g. visible=1,hidden=2,tone=3)");
+    keys[item.substr(0, eq)] = pen;
+  }
+  std::map<std::string, int> out;
+  std::string missing;
+  for (const std::string& n : names) {
+    const std::size_t dash = n.find('-');
+    const std::string seen = n.substr(0, dash), kind = n.substr(dash + 1);
+    int best = -1, pen = 0;
+    auto consider = [&](const std::string& key, int rank) {
+      auto it = keys.find(key);
+      if (it != keys.end() && rank > best) best = rank, pen = it->second;
+    };
+    consider(seen, 0);
+    if (kind.rfind("tone-", 0) == 0) consider("tone", 1);
+    consider(kind, 2);
+    consider(n, 3);
+    if (best < 0) missing += (missing.empty() ? "" : ", ") + n;
+    else out[n] = pen;
+  }
+  if (!missing.empty())
+    throw std::invalid_argument("--pens: no pen for the layers " + missing + " (name them, their kind or visible/hidden/through)");
+  return out;
+}
+
+// What the file holds, per layer: its strokes (dashes cut, specks dropped) and their length on
+// the page.
+void print_layer_stats(const Sheet& sheet, const PlotStyle& style) {
+  std::size_t strokes = 0;
+  double length = 0;
+  for (const SheetLayer& l : sheet_layers(sheet, style)) {
+    std::size_t n = 0;
+    double len = 0;
+    for (const SheetView& v : sheet.views)
+      for (const PlotLayer& pl : v.plot->layers) {
+        if (pl.name() != l.name) continue;
+        std::vector<char> closed;
+        const auto st = page_strokes(v, pl, style, &closed);
+        for (std::size_t k = 0; k < st.size(); ++k) {
+          const auto& p = st[k];
+          for (std::size_t i = 1; i < p.size(); ++i) len += std::hypot(p[i][0] - p[i - 1][0], p[i][1] - p[i - 1][1]);
+          if (closed[k] && p.size() > 2) len += std::hypot(p.back()[0] - p[0][0], p.back()[1] - p[0][1]);
+        }
+        n += st.size();
+      }
+    std::cerr << "stats: layer " << l.label << ": " << n << " strokes, pen-down " << len << " mm\n";
+    strokes += n, length += len;
+  }
+  std::cerr << "stats: the file holds " << strokes << " strokes, pen-down " << length << " mm\n";
+}
+
 void print_stats(const std::vector<Plot>& plots, double scale) {
   PlotStats t;
   for (const Plot& p : plots) {
@@ -128,11 +205,10 @@ void print_stats(const std::vector<Plot>& plots, double scale) {
   }
   std::cerr << std::fixed;
   std::cerr.precision(1);
-  std::cerr << "stats: pieces " << t.pieces << ", end-on " << t.zero_length << ", overlap groups " << t.overlap_groups
-            << " (duplicate length " << t.duplicate_length << " mm removed), edges " << t.edges << ", paths " << t.path_count
-            << " (minimum " << t.min_path_count << "), specks dropped " << t.dropped_short << ", pen-down " << t.pen_down_length
-            << " mm, pen-up " << t.pen_up_length << " mm (greedy " << t.pen_up_greedy << ", unordered " << t.pen_up_unordered
-            << ")";
+  std::cerr << "stats: pieces " << t.pieces << ", end-on " << t.zero_length << ", overlap groups " << t.overlap_groups << " (duplicate length "
+            << t.duplicate_length << " mm removed), edges " << t.edges << ", paths " << t.path_count << " (minimum " << t.min_path_count
+            << "), specks dropped " << t.dropped_short << ", pen-down " << t.pen_down_length << " mm, pen-up " << t.pen_up_length << " mm (greedy "
+            << t.pen_up_greedy << ", unordered " << t.pen_up_unordered << ")";
   std::cerr.precision(3);
   std::cerr << ", exact tests: points " << t.exact_point_tests << ", lines " << t.exact_line_tests;
   std::cerr << ", clean-up " << t.seconds_dedup << " s, chaining " << t.seconds_chain << " s, ordering " << t.seconds_order << " s\n";
@@ -220,12 +296,62 @@ void add_hatching(std::vector<Plot>& plots, const std::vector<const RenderResult
   }
 }
 
+// The tone hatching options of `a` (the pen: the "tone" weight).
+ToneHatchOptions tone_options(const OutputOptions& a) {
+  ToneHatchOptions o;
+  if (a.hatch_levels < 2 || a.hatch_levels > kMaxToneLevels)
+    throw std::invalid_argument("--hatch-levels must be from 2 to " + std::to_string(kMaxToneLevels) + " (got " + std::to_string(a.hatch_levels) +
+                                ")");
+  o.tone.levels = a.hatch_levels;
+  o.tone.pen_mm = plot_style(a).weights.at("tone");
+  o.threads = a.threads;
+  if (a.hatch_angle == "contour") {
+    o.contour = true;
+  } else {
+    std::size_t used = 0;
+    double deg = NAN;
+    try {
+      deg = std::stod(a.hatch_angle, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != a.hatch_angle.size() || !std::isfinite(deg) || std::fabs(deg) > 360)
+      throw std::invalid_argument("--hatch-angle must be an angle in degrees (-360 to 360) or 'contour' (got '" + a.hatch_angle + "')");
+    o.angle = deg;
+  }
+  return o;
+}
+
+// The visible faces' tone hatching, on the page's scale (the fills it replaces set the bounds).
+void add_tone_hatching(std::vector<Plot>& plots, const std::vector<const RenderResult*>& results, const Sheet& sheet, const OutputOptions& a) {
+  if (!a.hatch) return;
+  progress("tone hatching");
+  const ToneHatchOptions o = tone_options(a);
+  PlotOptions po = plot_options(a);
+  po.hidden = false;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const LineDrawing h = tone_hatching(*results[i], sheet.views[i].scale, o);
+    if (h.segments.empty()) continue;
+    Plot hp = make_plot(h, results[i]->camera, po);
+    for (PlotLayer& l : hp.layers) plots[i].layers.push_back(std::move(l));
+  }
+}
+
 std::string write_plots(std::vector<Plot>& plots, const std::vector<std::string>& view_names, const SheetPlan& plan, const PageOptions& page,
                         const OutputOptions& a, const std::string& format, const std::string& command, bool perspective) {
-  const PlotStyle style = plot_style(a);
+  PlotStyle style = plot_style(a);
+  {  // layer numbers: the pen map's, else the drawing's order before a selection
+    Sheet all;
+    for (const Plot& p : plots) all.views.push_back(SheetView{&p, 1, 0, 0, ""});
+    const std::vector<std::string> names = sheet_layer_names(all);
+    if (!a.pens.empty()) style.layer_numbers = pen_numbers(a.pens, names);
+    else
+      for (std::size_t k = 0; k < names.size(); ++k) style.layer_numbers[names[k]] = static_cast<int>(k + 1);
+  }
   select_layers(a.layers, plots, a.hidden != "none");
   if (perspective && page.scale) throw std::invalid_argument("--scale (true scale) needs an orthographic view");
   Sheet sheet = layout_sheet(plots, view_names, plan, page);
+  style.min_length_mm = a.min_length;  // specks go once the dashes are cut (the writers)
   // Specks and pen order need the page's scale; the layout does not change by them.
   progress("pen order");
   for (Plot& p : plots) {
@@ -241,7 +367,7 @@ std::string write_plots(std::vector<Plot>& plots, const std::vector<std::string>
                      : format == "png" ? sheet_to_png(sheet, style, a.dpi)
                      : format == "dxf" ? sheet_to_dxf(sheet, style)
                                        : sheet_to_svg(sheet, style);
-  if (a.stats) print_stats(plots, sheet.views[0].scale);
+  if (a.stats) print_stats(plots, sheet.views[0].scale), print_layer_stats(sheet, style);
   return text;
 }
 
@@ -263,6 +389,9 @@ void check_output_options(const OutputOptions& a) {
   if (!(a.dpi > 0) || a.dpi > 4800) throw std::invalid_argument("--dpi must be between 0 and 4800");
   page_options(a);
   plot_style(a);
+  if (!(a.hatch_pen >= 0) || !std::isfinite(a.hatch_pen) || a.hatch_pen > 10)
+    throw std::invalid_argument("--hatch-pen must be a pen width in millimetres");
+  tone_options(a);
 }
 
 PartText drawing_text(const std::vector<const RenderResult*>& results, const std::vector<std::string>& view_names, const OutputOptions& a,
@@ -291,6 +420,7 @@ PartText drawing_text(const std::vector<const RenderResult*>& results, const std
     for (const RenderResult* r : results) {
       plots.push_back(make_plot(r->drawing, r->camera, po));
       add_surface_fills(plots.back(), *r);
+      if (a.hatch) plots.back().fills.clear();  // a pen draws the shade as hatching (the fills set the bounds)
     }
     // Hatching and section lines are sized on the page: the layout is made once without them
     // (they do not change the drawing's bounds, so neither the scale nor the places).
@@ -298,6 +428,7 @@ PartText drawing_text(const std::vector<const RenderResult*>& results, const std
     const PageOptions page = sheet_page(a, results);
     const Sheet sheet = layout_sheet(plots, view_names, plan, page);
     add_hatching(plots, results, sheet, a);
+    add_tone_hatching(plots, results, sheet, a);
     if (!view_names.empty()) add_section_lines(plots, results, sheet);
     text.add(write_plots(plots, view_names, plan, page, a, format, command, results[0]->camera.perspective));
   }
@@ -331,8 +462,8 @@ PlotOptions plot_options(const OutputOptions& a) {
   return po;
 }
 
-std::string plots_text(std::vector<Plot>& plots, const std::vector<std::string>& view_names, const OutputOptions& a,
-                       const std::string& format, const std::string& command, bool perspective) {
+std::string plots_text(std::vector<Plot>& plots, const std::vector<std::string>& view_names, const OutputOptions& a, const std::string& format,
+                       const std::string& command, bool perspective) {
   return write_plots(plots, view_names, sheet_plan(view_names, {}, a.projection == "first"), page_options(a), a, format, command, perspective);
 }
 

@@ -1,0 +1,62 @@
+// Tone hatching (docs/design.md, "Tone hatching"; the shading of course notes section 41 drawn
+// with a pen): each visible region of a face is hatched by parallel lines whose spacing gives
+// its shade's darkness as ink on the page. A region's darkness 1 − Y (Y the shade's luminance)
+// is rounded to one of N tone levels with coverage k/N (k = 0 .. N − 1; level 0, paper white,
+// is not hatched). A pen of width p drawing lines s apart covers p/s of the paper, so a level
+// of coverage c is hatched at s = p/c; above `cross_above` it is cross-hatched, two families at
+// right angles, each at s = p/(1 − √(1 − c)) (together they cover 1 − (1 − p/s)² = c).
+// A tone's lines are the faces' intersections with one family of parallel planes in space:
+// parallel in 3D on each face (a perspective foreshortens them), the same on every region of a
+// face, and continuous from face to face across their shared edges; each line is exact and
+// clipped exactly to the region (hatch.hpp). Doubles place the planes; what is drawn and where
+// it stops is exact.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "algorithms/hatching/hatch.hpp"
+
+namespace hlr {
+
+/// The most tone levels (the line drawing's kinds Tone1..Tone8).
+inline constexpr int kToneLevels = 8;
+
+struct ToneOptions {
+  int levels = 5;            ///< tone levels N, 2..kToneLevels
+  double pen_mm = 0.25;      ///< the pen's width on the page
+  double cross_above = 0.5;  ///< coverage above which a level is cross-hatched
+};
+
+/// A tone level and how it is hatched (families 0: not hatched).
+struct ToneLevel {
+  int level = 0;
+  int families = 0;
+  double coverage = 0;    ///< k/N
+  double spacing_mm = 0;  ///< between the lines of one family, on the page
+};
+
+/// Rec. 709 luminance of a colour (0..1 per channel).
+double luminance(const std::array<double, 3>& rgb);
+
+/// The level of a shade of luminance `y` (0 black .. 1 white).
+ToneLevel tone_level(double y, const ToneOptions& options);
+
+/// A family of parallel planes m·X = (k + ½)·step for whole k (m exact; `m_d` its doubles):
+/// the scene's hatch lines of one tone are the faces' intersections with them.
+struct PlaneFamily {
+  Vector3 m;
+  std::array<double, 3> m_d{0, 0, 0};
+  double step = 0;
+};
+
+/// The family's lines across the region bounded by `boundary` (into `pts`, in `plane`), each the
+/// exact intersection of `plane` with a plane of the family, clipped exactly (clip_exact_lines).
+/// The lines' ends are placed by `face_points` (the whole face's corners, in doubles), not by the
+/// region, so every region of one face gets the very same lines; where a line meets an edge the
+/// face shares with another face, both faces' pieces end at the same exact point (the edge's
+/// point on that plane of the family). None when `plane` is parallel to the family.
+std::vector<HatchLine> family_lines(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& boundary, const Plane& plane,
+                                    const PlaneFamily& family, const std::vector<std::array<double, 3>>& face_points);
+
+}  // namespace hlr

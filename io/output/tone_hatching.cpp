@@ -1,0 +1,182 @@
+// Tone hatching in the render pipeline (see tone_hatching.hpp; docs/design.md, "Tone hatching").
+#include "io/output/tone_hatching.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "algorithms/support/parallel.hpp"
+
+namespace hlr {
+static_assert(kToneLevels == kMaxToneLevels, "a line kind per tone level");
+namespace {
+
+using D3 = std::array<double, 3>;
+
+D3 to_d3(const Point3& p) { return {to_double(p.x()), to_double(p.y()), to_double(p.z())}; }
+D3 to_d3(const Vector3& p) { return {to_double(p.x()), to_double(p.y()), to_double(p.z())}; }
+D3 cross_d(const D3& a, const D3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+double norm_d(const D3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+D3 unit_d(const D3& a) {
+  const double n = norm_d(a);
+  return {a[0] / n, a[1] / n, a[2] / n};
+}
+
+// The scene's two families of planes (the second at right angles to the first, for
+// cross-hatching and for faces parallel to the first) and the page distance per unit across
+// each, at the view's centre.
+struct Families {
+  std::array<D3, 2> m;
+  std::array<double, 2> page_per_unit{0, 0};
+  bool ok = false;
+};
+
+D3 page_axis(const std::array<std::array<double, 3>, 3>& ax, double degrees) {
+  const double a = degrees * M_PI / 180;
+  D3 e;
+  for (int k = 0; k < 3; ++k) e[k] = std::cos(a) * ax[0][k] + std::sin(a) * ax[1][k];
+  return e;
+}
+
+Families scene_families(const RenderResult& r, const Projector& proj, const ToneHatchOptions& o) {
+  Families f;
+  const auto ax = proj.axes();
+  // Lines at `angle` on the page are level lines of the page direction at right angles to it.
+  f.m[0] = page_axis(ax, o.angle + 90);
+  f.m[1] = page_axis(ax, o.angle);
+  if (o.contour) f.m[0] = unit_d(to_d3(r.camera.up));  // level planes: each face's contour lines
+  D3 centre{0, 0, 0};
+  if (r.camera.perspective) {
+    centre = to_d3(r.camera.target);
+  } else {
+    D3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+    for (const SceneBody* b : r.bodies)
+      for (const Point3& v : b->body.vertices())
+        for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], to_double(v[k])), hi[k] = std::max(hi[k], to_double(v[k]));
+    for (int k = 0; k < 3; ++k) centre[k] = (lo[k] + hi[k]) / 2;
+    const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    if (!(size > 0) || !std::isfinite(size)) return f;
+  }
+  auto page = [&](const D3& x) {
+    const auto q = proj.project(Point3(Rational(x[0]), Rational(x[1]), Rational(x[2])));
+    return std::array<double, 2>{q[0], q[1]};
+  };
+  const double d = 1e-3 * std::max({std::fabs(centre[0]), std::fabs(centre[1]), std::fabs(centre[2]), 1e-300}) + 1e-6;
+  const auto q0 = page(centre);
+  auto per_unit = [&](const D3& m) {
+    const auto q = page({centre[0] + d * m[0], centre[1] + d * m[1], centre[2] + d * m[2]});
+    return std::hypot(q[0] - q0[0], q[1] - q0[1]) / d;
+  };
+  for (int k = 0; k < 2; ++k) f.page_per_unit[k] = per_unit(f.m[k]);
+  // Contour lines seen from above: the height interval at the drawing's scale.
+  if (o.contour && f.page_per_unit[0] < 0.2 * f.page_per_unit[1]) f.page_per_unit[0] = f.page_per_unit[1];
+  f.ok = f.page_per_unit[0] > 0 && f.page_per_unit[1] > 0 && std::isfinite(f.page_per_unit[0]) && std::isfinite(f.page_per_unit[1]);
+  return f;
+}
+
+PlaneFamily plane_family(const D3& m, double step) {
+  PlaneFamily p;
+  p.m_d = m;
+  p.m = Vector3(Rational(m[0]), Rational(m[1]), Rational(m[2]));
+  p.step = step;
+  return p;
+}
+
+// A face's corners in doubles.
+std::vector<D3> face_corners(const Polyhedron& p, int f) {
+  std::vector<D3> out;
+  for (int v : p.faces()[f]) out.push_back(to_d3(p.vertices()[v]));
+  return out;
+}
+
+// The region's boundary: its rings as directed edges into one point list.
+void region_boundary(const VisiblePolygon& poly, std::vector<Point3>& pts, std::vector<std::array<int, 2>>& edges) {
+  pts.clear(), edges.clear();
+  auto ring = [&](const std::vector<Point3>& r) {
+    const int base = static_cast<int>(pts.size()), n = static_cast<int>(r.size());
+    for (const Point3& p : r) pts.push_back(p);
+    for (int k = 0; k < n; ++k) edges.push_back({base + k, base + (k + 1) % n});
+  };
+  ring(poly.outer);
+  for (const auto& h : poly.holes) ring(h);
+}
+
+void add_pieces(const std::vector<HatchLine>& lines, int body, LineKind kind, std::vector<Segment>& out) {
+  for (const HatchLine& l : lines) {
+    const Vector3 d = l.p1 - l.p0;
+    for (const auto& [t0, t1] : l.inside) {
+      Segment s;
+      s.line = kind;
+      s.body = body;
+      s.set_ends(l.p0 + t0 * d, l.p0 + t1 * d);
+      std::vector<Piece> whole{Piece{Rational(0), Rational(1), true}};
+      s.pieces.assign(std::move(whole));
+      out.push_back(std::move(s));
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<ToneRegion> tone_regions(const RenderResult& r, const ToneOptions& tone) {
+  std::vector<ToneRegion> out;
+  if (r.shadows) {
+    for (std::size_t k = 0; k < r.shadows->faces.size(); ++k) {
+      const ShadowFace& f = r.shadows->faces[k];
+      for (std::size_t j = 0; j < f.regions.size(); ++j)
+        out.push_back({f.body, f.face, &f.regions[j].polygon, tone_level(luminance(r.shadow_colours[k][j]), tone)});
+    }
+    return out;
+  }
+  if (!r.surfaces) return out;
+  for (const VisibleFace& f : r.surfaces->faces)
+    for (const VisiblePolygon& p : f.polygons) out.push_back({f.body, f.face, &p, tone_level(luminance(r.face_colours[f.body][f.face]), tone)});
+  return out;
+}
+
+LineDrawing tone_hatching(const RenderResult& r, double mm_per_unit, const ToneHatchOptions& o) {
+  if (!r.surfaces && !r.shadows) throw std::invalid_argument("tone hatching needs the visible surfaces (--surfaces)");
+  if (r.transparent || r.priority)
+    throw std::invalid_argument("tone hatching takes the visible surfaces, with or without shadows (not transparency or the priority list)");
+  LineDrawing out;
+  out.facing = r.drawing.facing;
+  if (!(mm_per_unit > 0)) return out;
+  const std::vector<ToneRegion> regions = tone_regions(r, o.tone);
+  for (const ToneRegion& t : regions)
+    if (t.level.families && t.polygon->outer.empty())
+      throw std::invalid_argument("tone hatching needs the visible polygons' exact corners in space (RenderOptions::surface_corners)");
+  const Projector proj = drawing_projector(r.drawing, r.camera);
+  const Families fam = scene_families(r, proj, o);
+  if (!fam.ok) return out;
+  std::vector<std::vector<Segment>> per(regions.size());
+  ParallelLoop(o.threads).run(regions.size(), 64, [&](unsigned, std::size_t begin, std::size_t end) {
+    std::vector<Point3> pts;
+    std::vector<std::array<int, 2>> edges;
+    std::vector<D3> corners;
+    int fb = -1, ff = -1;
+    for (std::size_t i = begin; i < end; ++i) {
+      const ToneRegion& t = regions[i];
+      if (!t.level.families) continue;
+      const Polyhedron& body = r.bodies[t.body]->body;
+      if (t.body != fb || t.face != ff) corners = face_corners(body, t.face), fb = t.body, ff = t.face;
+      region_boundary(*t.polygon, pts, edges);
+      const Plane& plane = body.planes()[t.face];
+      const D3 n = unit_d({to_double(plane.a()), to_double(plane.b()), to_double(plane.c())});
+      const double page_step = t.level.spacing_mm / mm_per_unit;
+      // The families this face takes: the first (and the second when cross-hatched); a face
+      // nearly parallel to a family's planes (within 6 degrees) takes the other one instead.
+      std::vector<int> use = {0};
+      if (t.level.families == 2) use.push_back(1);
+      for (int& k : use)
+        if (norm_d(cross_d(n, fam.m[k])) < 0.1 && (r.camera.perspective || o.contour)) k = 1 - k;
+      if (use.size() == 2 && use[0] == use[1]) use.pop_back();
+      for (int k : use)
+        add_pieces(family_lines(pts, edges, plane, plane_family(fam.m[k], page_step / fam.page_per_unit[k]), corners), t.body,
+                   tone_kind(t.level.level), per[i]);
+    }
+  });
+  for (auto& v : per)
+    for (Segment& s : v) out.segments.push_back(std::move(s));
+  return out;
+}
+
+}  // namespace hlr

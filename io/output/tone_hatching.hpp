@@ -1,0 +1,42 @@
+// Tone hatching in the render pipeline (docs/design.md, "Tone hatching"): the visible regions
+// of a surfaces render (with shadows: each face's lit and shadowed regions) hatched by their
+// shade on the page's scale, as lines of the kinds Tone1..Tone8 (algorithms/hatching/
+// tone_hatch.hpp). The regions are the exact visible polygons, so no hatch line crosses a
+// visible line or runs under an occluder; every line is exact.
+#pragma once
+
+#include <optional>
+
+#include "algorithms/hatching/tone_hatch.hpp"
+#include "io/pipeline/render.hpp"
+
+namespace hlr {
+
+struct ToneHatchOptions {
+  ToneOptions tone;
+  /// The lines' angle on the page in degrees: the hatch planes are parallel to the view axis
+  /// and at right angles to that page direction (in a perspective, at the view's centre: the
+  /// lines are parallel in space, not on the page).
+  double angle = 45;
+  /// Contour hatching: the hatch planes are level (at right angles to the camera's up axis), so
+  /// each face's lines are its contour lines, their direction chosen by its normal; level faces
+  /// (within 6 degrees) take `angle`'s planes. Seen from above, the height interval is the
+  /// spacing at the drawing's scale.
+  bool contour = false;
+  unsigned threads = 0;
+};
+
+/// The hatching of every visible region of `r` (made with surfaces, per face, with exact 3D
+/// corners: RenderOptions::surface_faces and surface_corners) at `mm_per_unit` page mm per
+/// drawing unit. Refused (std::invalid_argument) for a render without them.
+LineDrawing tone_hatching(const RenderResult& r, double mm_per_unit, const ToneHatchOptions& options);
+
+/// Every hatched region's level (for tests and statistics): per region, in the order hatched.
+struct ToneRegion {
+  int body = -1, face = -1;
+  const VisiblePolygon* polygon = nullptr;
+  ToneLevel level;
+};
+std::vector<ToneRegion> tone_regions(const RenderResult& r, const ToneOptions& tone);
+
+}  // namespace hlr
