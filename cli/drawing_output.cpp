@@ -35,6 +35,9 @@ void add_output_options(CLI::App* cmd, OutputArgs& a, bool sheets) {
                   "Layer numbers by pen, stable whatever --layers selects: e.g. visible=1,hidden=2,tone=3 (a key is a layer, "
                   "its kind or visible/hidden/through; the most particular wins; every layer needs a pen)");
   cmd->add_option("--min-length", a.min_length, "Drop strokes shorter than this many millimetres on the page (specks; after dashes are cut)");
+  cmd->add_option("--merge-tolerance", a.merge_tolerance,
+                  "Lines closer than this on the page (mm), nearly parallel, are drawn once, the higher class kept (visible over "
+                  "hidden); 0: only the exact clean-up (default: a quarter of the thinnest pen)");
   cmd->add_option("--dpi", a.dpi, "PNG resolution (default 150)");
   cmd->add_flag("--raw", a.raw, "One line per exact piece: no clean-up, chaining or pen order");
 }

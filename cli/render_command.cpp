@@ -208,6 +208,7 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
     }
     options.surface_corners = format == "json" || a.hatch;  // hatching lifts its lines into the faces
     options.surface_faces = format == "json" || a.hatch;
+    options.surface_groups = !a.hatch;  // a hatched drawing has no fills
     options.tile = tile;
     options.polylines = polylines;
     options.segments_only = merge != nullptr;

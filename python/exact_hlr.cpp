@@ -53,7 +53,7 @@ struct Drawing {
     for (const hlr::Segment& s : r->drawing.segments)
       for (const hlr::Piece& p : s.pieces) {
         py::dict d;
-        d["kind"] = s.kind == hlr::Segment::Kind::Intersection ? "intersection" : hlr::to_string(s.line);
+        d["kind"] = s.kind == hlr::Segment::Kind::Intersection && s.line == hlr::LineKind::Intersection ? "intersection" : hlr::to_string(s.line);
         if (s.kind == hlr::Segment::Kind::Edge) {
           d["body"] = s.body;
           d["edge"] = py::make_tuple(s.v0, s.v1);
@@ -191,7 +191,8 @@ struct Drawing {
 
 Drawing render(const py::object& input, std::optional<py::sequence> view, std::optional<py::sequence> eye, std::optional<py::sequence> target,
                std::optional<py::sequence> up, const std::string& method, const std::string& edges, const py::object& crease, unsigned threads,
-               bool surfaces, bool shadows, bool through, const std::vector<std::string>& section, const std::vector<std::string>& cutaway) {
+               bool surfaces, bool shadows, bool through, const std::vector<std::string>& section, const std::vector<std::string>& cutaway,
+               const py::object& lines) {
   std::vector<std::string> inputs;
   if (py::isinstance<py::str>(input)) inputs.push_back(input.cast<std::string>());
   else inputs = input.cast<std::vector<std::string>>();
@@ -212,6 +213,13 @@ Drawing render(const py::object& input, std::optional<py::sequence> view, std::o
     for (hlr::Plane& h : hlr::parse_section("section", s)) o.section.push_back(std::move(h));
   for (const std::string& s : cutaway)
     for (hlr::Plane& h : hlr::parse_section("cutaway", s)) o.cutaway.push_back(std::move(h));
+  if (!lines.is_none())
+    for (const py::handle& line : lines) {
+      hlr::Polyline3 l;
+      for (const py::handle& p : line) l.push_back(*point3(p.cast<py::sequence>()));
+      if (l.size() < 2) throw std::invalid_argument("lines: a polyline needs at least two points");
+      o.polylines.push_back(std::move(l));
+    }
   py::gil_scoped_release release;
   return Drawing{std::make_shared<hlr::RenderResult>(hlr::render_files(inputs, o))};
 }
@@ -330,13 +338,14 @@ PYBIND11_MODULE(exact_hlr, m) {
   m.def("render", &render, py::arg("inputs"), py::kw_only(), py::arg("view") = py::none(), py::arg("eye") = py::none(),
         py::arg("target") = py::none(), py::arg("up") = py::none(), py::arg("method") = "faces", py::arg("edges") = "feature",
         py::arg("crease") = py::int_(30), py::arg("threads") = 0u, py::arg("surfaces") = false, py::arg("shadows") = false, py::arg("through") = true,
-        py::arg("section") = std::vector<std::string>{}, py::arg("cutaway") = std::vector<std::string>{},
+        py::arg("section") = std::vector<std::string>{}, py::arg("cutaway") = std::vector<std::string>{}, py::arg("lines") = py::none(),
         "Renders mesh files and scene files: exact hidden lines (view: orthographic direction; eye: perspective); "
         "surfaces=True also gives the visible part of every face as exact polygons, shaded; shadows=True cuts them by "
         "the lights' shadows (json()['shadows']); through=False counts lines behind transparent bodies as hidden (by "
         "default they are their own class: 'through-*' layers, pieces with 'through': true); section=['z<1.2', ...] cuts "
         "the bodies and keeps the planes' common side (caps, cut lines, hatching: json()['section']), cutaway=[...] "
-        "removes their common region (hlr render --section / --cutaway)");
+        "removes their common region (hlr render --section / --cutaway); lines=[[(x, y, z), ...], ...] are your own 3D "
+        "polylines, drawn with their hidden parts removed by the bodies (segments of kind 'polyline')");
   py::class_<Image>(m, "Image", "A raster image with the exact face seen at every sample centre")
       .def_property_readonly("width", [](const Image& i) { return i.r->width; })
       .def_property_readonly("height", [](const Image& i) { return i.r->height; })

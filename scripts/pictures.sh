@@ -53,6 +53,10 @@ picture glass_demo.png raster data/glass_demo.yaml --bounces 6 --samples 3 --siz
 picture house_plan.svg render data/house.yaml --plan 1.2 --width 120
 picture house_section.svg render data/house.yaml --section 'y>4.5' --width 160
 picture couplingdown_half_section.svg render couplingdown.off --view iso --cutaway 'x>0' --cutaway 'y>0' --width 110
+python3 "$ROOT/examples/spiral_lines.py" > "$W/spiral.txt"
+picture fandisk_hatched.png render fandisk.off --view 1,1.3,1.7 --hatch --width 120 --dpi 200
+picture shadows_hatched.png render data/shadows_demo.yaml --shadows --hatch --hatch-levels 6 --dpi 200
+picture sphere_spiral.svg render data/sphere2000.off --lines spiral.txt --view 1,1.3,1.7 --hidden dashed --width 100
 picture couplingdown_section_sheet.svg render couplingdown.off --views front,section:A,iso --section-view 'A=x<0' --width 150
 ridge=(horizon --expr "0.35*exp(-6*x^2)*(1+sin(9*z+2*x))^2/4 + 0.02*cos(17*x+7*z)" --x -1.5:1.5:241 --z -1:1:61 --angles 25,0 --stroke 0.25 --width 180)
 picture horizon_ridgelines.svg "${ridge[@]}"

@@ -25,42 +25,64 @@ ToneLevel tone_level(double y, const ToneOptions& o) {
   return t;
 }
 
-std::vector<HatchLine> family_lines(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& boundary, const Plane& plane,
-                                    const PlaneFamily& f, const std::vector<std::array<double, 3>>& face_points) {
-  if (boundary.empty() || face_points.empty() || !(f.step > 0) || !std::isfinite(f.step)) return {};
-  const Vector3 n = plane.normal();
-  const Vector3 dir = cross(n, f.m);  // along the lines
-  if (dir.is_zero()) return {};
-  // The region's extent across the planes picks the lines; the face's along them places the ends.
-  double lo = INFINITY, hi = -INFINITY;
-  for (const auto& e : boundary) {
-    const Point3& p = pts[e[0]];
-    const double c = dot3(f.m_d, {to_double(p.x()), to_double(p.y()), to_double(p.z())});
-    lo = std::min(lo, c), hi = std::max(hi, c);
+namespace {
+
+// One crossing of a border edge with a plane of the family: the plane, the exact point and its
+// coordinate along the line (the axis where the line's direction is largest).
+struct Crossing {
+  long k;
+  Point3 at;
+};
+
+// Whether m·X − c < 0: doubles when the value is clear of its error bound (the doubles of X
+// within 2^-53 of theirs, a few roundings more: under 16·2^-53 of Σ|m_i X_i| + |c|), else exact.
+bool below(const PlaneFamily& f, const Point3& x, const std::array<double, 3>& xd, long k) {
+  const double c = (static_cast<double>(k) + 0.5) * f.step;
+  double g = -c, size = std::fabs(c);
+  for (int i = 0; i < 3; ++i) g += f.m_d[i] * xd[i], size += std::fabs(f.m_d[i] * xd[i]);
+  if (std::isfinite(g) && std::isfinite(size) && std::fabs(g) > 1e-14 * size + 1e-300) return g < 0;
+  const Rational exact_c = Rational(static_cast<double>(k) + 0.5) * Rational(f.step);
+  return dot(f.m, x - Point3(Rational(0), Rational(0), Rational(0))) < exact_c;
+}
+
+}  // namespace
+
+std::vector<std::array<Point3, 2>> family_pieces(const std::vector<std::array<const Point3*, 2>>& edges, const Vector3& normal,
+                                                 const PlaneFamily& f) {
+  std::vector<std::array<Point3, 2>> out;
+  if (edges.empty() || !(f.step > 0) || !std::isfinite(f.step)) return out;
+  const Vector3 dir = cross(normal, f.m);  // along the lines
+  if (dir.is_zero()) return out;
+  int axis = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::fabs(to_double(dir[i])) > std::fabs(to_double(dir[axis]))) axis = i;
+  auto d3 = [](const Point3& p) { return std::array<double, 3>{to_double(p.x()), to_double(p.y()), to_double(p.z())}; };
+  std::vector<Crossing> hits;
+  for (const auto& e : edges) {
+    const Point3 &a = *e[0], &b = *e[1];
+    const std::array<double, 3> ad = d3(a), bd = d3(b);
+    const double va = dot3(f.m_d, ad), vb = dot3(f.m_d, bd);
+    // The planes between the ends' values, one more each side for the doubles' error.
+    const double lo = std::min(va, vb) / f.step - 0.5, hi = std::max(va, vb) / f.step - 0.5;
+    if (!std::isfinite(lo) || !std::isfinite(hi) || hi - lo > 1e6) continue;
+    for (long k = static_cast<long>(std::floor(lo)) - 1; k <= static_cast<long>(std::ceil(hi)) + 1; ++k) {
+      if (below(f, a, ad, k) == below(f, b, bd, k)) continue;
+      const Rational c = Rational(static_cast<double>(k) + 0.5) * Rational(f.step);
+      const Vector3 ab = b - a;
+      const Rational ma = dot(f.m, a - Point3(Rational(0), Rational(0), Rational(0)));
+      const Rational s = (c - ma) / dot(f.m, ab);
+      hits.push_back({k, a + s * ab});
+    }
   }
-  const double k0 = std::ceil(lo / f.step - 0.5), k1 = std::floor(hi / f.step - 0.5);
-  if (!(k1 >= k0) || k1 - k0 > 1e6) return {};
-  const std::array<double, 3> dd = {to_double(dir.x()), to_double(dir.y()), to_double(dir.z())};
-  const double dd2 = dot3(dd, dd);
-  double alo = INFINITY, ahi = -INFINITY;
-  for (const auto& p : face_points) alo = std::min(alo, dot3(dd, p) / dd2), ahi = std::max(ahi, dot3(dd, p) / dd2);
-  // Dyadic parameters a little beyond the face: X0 + t·dir covers it for every line.
-  const double margin = 0.05 * (ahi - alo) + 1e-300;
-  const double q = std::ldexp(1.0, std::ilogb(std::max(std::fabs(alo), std::fabs(ahi)) + margin) - 20);
-  const Rational t0(std::floor((alo - margin) / q) * q), t1(std::ceil((ahi + margin) / q) * q);
-  // The point of both planes n·X = −d and m·X = c nearest the origin: (−d (m × D) + c (D × n)) / D·D.
-  const Vector3 m_x_d = cross(f.m, dir), d_x_n = cross(dir, n);
-  const Rational inv = Rational(1) / dot(dir, dir);
-  const Rational step(f.step);
-  const Vector3 base = Rational(-plane.d() * inv) * m_x_d;
-  const Vector3 across = Rational(inv) * d_x_n;
-  std::vector<HatchLine> lines;
-  for (double k = k0; k <= k1; ++k) {
-    const Rational c = Rational(k + 0.5) * step;
-    const Point3 x0 = Point3(0, 0, 0) + (base + c * across);
-    lines.push_back(HatchLine{x0 + t0 * dir, x0 + t1 * dir, {}});
+  std::sort(hits.begin(), hits.end(), [axis](const Crossing& p, const Crossing& q) { return p.k != q.k ? p.k < q.k : p.at[axis] < q.at[axis]; });
+  for (std::size_t i = 0; i + 1 < hits.size();) {
+    std::size_t j = i;
+    while (j < hits.size() && hits[j].k == hits[i].k) ++j;
+    for (std::size_t p = i; p + 1 < j; p += 2)
+      if (hits[p].at != hits[p + 1].at) out.push_back({hits[p].at, hits[p + 1].at});
+    i = j;
   }
-  return clip_exact_lines(pts, boundary, plane, std::move(lines));
+  return out;
 }
 
 }  // namespace hlr

@@ -50,13 +50,16 @@ struct PlaneFamily {
   double step = 0;
 };
 
-/// The family's lines across the region bounded by `boundary` (into `pts`, in `plane`), each the
-/// exact intersection of `plane` with a plane of the family, clipped exactly (clip_exact_lines).
-/// The lines' ends are placed by `face_points` (the whole face's corners, in doubles), not by the
-/// region, so every region of one face gets the very same lines; where a line meets an edge the
-/// face shares with another face, both faces' pieces end at the same exact point (the edge's
-/// point on that plane of the family). None when `plane` is parallel to the family.
-std::vector<HatchLine> family_lines(const std::vector<Point3>& pts, const std::vector<std::array<int, 2>>& boundary, const Plane& plane,
-                                    const PlaneFamily& family, const std::vector<std::array<double, 3>>& face_points);
+/// The family's pieces inside the region bounded by `edges` (directed edges, their ends as
+/// pointers, closed loops in the plane of normal `normal`; holes as loops of their own), exact:
+/// each piece is a pair of exact points of the region's border on one plane of the family.
+/// An edge crosses plane k where the signs of m·X − c_k < 0 at its ends differ (half-open: a
+/// plane through a corner counts it once, a plane along an edge crosses neither it nor, by that
+/// edge, the region), at X = A + s·(B − A), s = (c_k − m·A)/(m·(B − A)); the crossings of one
+/// plane, sorted exactly along its line, pair into the pieces. Where the region's edge is an edge
+/// the face shares with another face, both faces' pieces end at the same exact point, so their
+/// strokes join. None when the region's plane is parallel to the family.
+std::vector<std::array<Point3, 2>> family_pieces(const std::vector<std::array<const Point3*, 2>>& edges, const Vector3& normal,
+                                                 const PlaneFamily& family);
 
 }  // namespace hlr

@@ -10,6 +10,7 @@
 #include <optional>
 #include <set>
 
+#include "algorithms/plot/coincident_lines.hpp"
 #include "algorithms/support/progress.hpp"
 #include "io/output/section_views.hpp"
 #include "io/output/tone_hatching.hpp"
@@ -105,10 +106,8 @@ void select_layers(const std::string& list, std::vector<Plot>& plots, bool hidde
     keep.insert(item);
   }
   bool drawn = false;
-  for (const Plot& p : plots) {
-    drawn = drawn || !p.fills.empty();
+  for (const Plot& p : plots)  // fills alone are not what a selection of layers asks for
     for (const PlotLayer& l : p.layers) drawn = drawn || keep.count(l.name());
-  }
   if (!drawn)
     throw std::invalid_argument("--layers " + list + ": none of this drawing's layers" + (names.empty() ? std::string() : " (" + layer_list() + ")") +
                                 (asked_hidden && !hidden_drawn ? "; hidden lines are drawn with --hidden dashed or --hidden solid" : ""));
@@ -332,7 +331,7 @@ void add_tone_hatching(std::vector<Plot>& plots, const std::vector<const RenderR
   for (std::size_t i = 0; i < results.size(); ++i) {
     const LineDrawing h = tone_hatching(*results[i], sheet.views[i].scale, o);
     if (h.segments.empty()) continue;
-    Plot hp = make_plot(h, results[i]->camera, po);
+    Plot hp = tone_plot(h, *results[i], po);
     for (PlotLayer& l : hp.layers) plots[i].layers.push_back(std::move(l));
   }
 }
@@ -352,6 +351,21 @@ std::string write_plots(std::vector<Plot>& plots, const std::vector<std::string>
   if (perspective && page.scale) throw std::invalid_argument("--scale (true scale) needs an orthographic view");
   Sheet sheet = layout_sheet(plots, view_names, plan, page);
   style.min_length_mm = a.min_length;  // specks go once the dashes are cut (the writers)
+  // Lines that coincide on the page are drawn once (after every exact decision).
+  CoincidentStats merged;
+  if (!a.raw && a.merge_tolerance != 0) {
+    double tol = a.merge_tolerance;
+    if (tol < 0) {
+      double thinnest = INFINITY;
+      for (const Plot& p : plots)
+        for (const PlotLayer& l : p.layers) thinnest = std::min(thinnest, style.weight(l));
+      tol = std::isfinite(thinnest) ? thinnest / 4 : 0;
+    }
+    for (Plot& p : plots) {
+      const CoincidentStats m = merge_coincident_lines(p, tol / sheet.views[0].scale);
+      merged.pieces_removed += m.pieces_removed, merged.length_removed += m.length_removed * sheet.views[0].scale;
+    }
+  }
   // Specks and pen order need the page's scale; the layout does not change by them.
   progress("pen order");
   for (Plot& p : plots) {
@@ -367,7 +381,11 @@ std::string write_plots(std::vector<Plot>& plots, const std::vector<std::string>
                      : format == "png" ? sheet_to_png(sheet, style, a.dpi)
                      : format == "dxf" ? sheet_to_dxf(sheet, style)
                                        : sheet_to_svg(sheet, style);
-  if (a.stats) print_stats(plots, sheet.views[0].scale), print_layer_stats(sheet, style);
+  if (a.stats) {
+    print_stats(plots, sheet.views[0].scale);
+    std::cerr << "stats: coincident on the page: " << merged.pieces_removed << " parts, " << merged.length_removed << " mm left out\n";
+    print_layer_stats(sheet, style);
+  }
   return text;
 }
 
@@ -386,6 +404,8 @@ void check_output_options(const OutputOptions& a) {
   if (!(a.width > 0) || !std::isfinite(a.width) || a.width > 1e6) throw std::invalid_argument("--width must be a positive size in millimetres");
   if (!(a.stroke > 0) || !std::isfinite(a.stroke) || a.stroke > 1e3) throw std::invalid_argument("--stroke must be a positive width in millimetres");
   if (!(a.min_length >= 0) || !std::isfinite(a.min_length)) throw std::invalid_argument("--min-length must be a length in millimetres");
+  if (!std::isfinite(a.merge_tolerance) || a.merge_tolerance > 10)
+    throw std::invalid_argument("--merge-tolerance must be a distance in millimetres (0: off)");
   if (!(a.dpi > 0) || a.dpi > 4800) throw std::invalid_argument("--dpi must be between 0 and 4800");
   page_options(a);
   plot_style(a);

@@ -33,6 +33,10 @@ struct OutputOptions {
   std::string hatch_angle = "45";
   double hatch_pen = 0;
   double width = 150, stroke = 0.35, min_length = 0, dpi = 150;
+  /// Lines closer than this on the page (mm), nearly parallel, are drawn once, the higher class
+  /// kept (algorithms/plot/coincident_lines.hpp; a drawing decision after every exact one). 0:
+  /// only the exact clean-up; negative: a quarter of the thinnest pen drawn.
+  double merge_tolerance = -1;
   unsigned threads = 0;
 };
 

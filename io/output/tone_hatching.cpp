@@ -1,7 +1,10 @@
 // Tone hatching in the render pipeline (see tone_hatching.hpp; docs/design.md, "Tone hatching").
 #include "io/output/tone_hatching.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "algorithms/support/parallel.hpp"
@@ -81,37 +84,26 @@ PlaneFamily plane_family(const D3& m, double step) {
   return p;
 }
 
-// A face's corners in doubles.
-std::vector<D3> face_corners(const Polyhedron& p, int f) {
-  std::vector<D3> out;
-  for (int v : p.faces()[f]) out.push_back(to_d3(p.vertices()[v]));
-  return out;
-}
-
-// The region's boundary: its rings as directed edges into one point list.
-void region_boundary(const VisiblePolygon& poly, std::vector<Point3>& pts, std::vector<std::array<int, 2>>& edges) {
-  pts.clear(), edges.clear();
+// The region's boundary: its rings as directed edges, their ends pointing into the polygon.
+void region_edges(const VisiblePolygon& poly, std::vector<std::array<const Point3*, 2>>& edges) {
+  edges.clear();
   auto ring = [&](const std::vector<Point3>& r) {
-    const int base = static_cast<int>(pts.size()), n = static_cast<int>(r.size());
-    for (const Point3& p : r) pts.push_back(p);
-    for (int k = 0; k < n; ++k) edges.push_back({base + k, base + (k + 1) % n});
+    for (std::size_t k = 0; k < r.size(); ++k) edges.push_back({&r[k], &r[(k + 1) % r.size()]});
   };
   ring(poly.outer);
   for (const auto& h : poly.holes) ring(h);
 }
 
-void add_pieces(const std::vector<HatchLine>& lines, int body, LineKind kind, std::vector<Segment>& out) {
-  for (const HatchLine& l : lines) {
-    const Vector3 d = l.p1 - l.p0;
-    for (const auto& [t0, t1] : l.inside) {
-      Segment s;
-      s.line = kind;
-      s.body = body;
-      s.set_ends(l.p0 + t0 * d, l.p0 + t1 * d);
-      std::vector<Piece> whole{Piece{Rational(0), Rational(1), true}};
-      s.pieces.assign(std::move(whole));
-      out.push_back(std::move(s));
-    }
+void add_pieces(std::vector<std::array<Point3, 2>> pieces, int body, LineKind kind, std::vector<Segment>& out) {
+  for (auto& p : pieces) {
+    Segment s;
+    s.kind = Segment::Kind::Intersection;  // no edge of a body: its own ends
+    s.line = kind;
+    s.body = body;
+    s.set_ends(std::move(p[0]), std::move(p[1]));
+    std::vector<Piece> whole{Piece{Rational(0), Rational(1), true}};
+    s.pieces.assign(std::move(whole));
+    out.push_back(std::move(s));
   }
 }
 
@@ -149,16 +141,12 @@ LineDrawing tone_hatching(const RenderResult& r, double mm_per_unit, const ToneH
   if (!fam.ok) return out;
   std::vector<std::vector<Segment>> per(regions.size());
   ParallelLoop(o.threads).run(regions.size(), 64, [&](unsigned, std::size_t begin, std::size_t end) {
-    std::vector<Point3> pts;
-    std::vector<std::array<int, 2>> edges;
-    std::vector<D3> corners;
-    int fb = -1, ff = -1;
+    std::vector<std::array<const Point3*, 2>> edges;
     for (std::size_t i = begin; i < end; ++i) {
       const ToneRegion& t = regions[i];
       if (!t.level.families) continue;
       const Polyhedron& body = r.bodies[t.body]->body;
-      if (t.body != fb || t.face != ff) corners = face_corners(body, t.face), fb = t.body, ff = t.face;
-      region_boundary(*t.polygon, pts, edges);
+      region_edges(*t.polygon, edges);
       const Plane& plane = body.planes()[t.face];
       const D3 n = unit_d({to_double(plane.a()), to_double(plane.b()), to_double(plane.c())});
       const double page_step = t.level.spacing_mm / mm_per_unit;
@@ -170,13 +158,61 @@ LineDrawing tone_hatching(const RenderResult& r, double mm_per_unit, const ToneH
         if (norm_d(cross_d(n, fam.m[k])) < 0.1 && (r.camera.perspective || o.contour)) k = 1 - k;
       if (use.size() == 2 && use[0] == use[1]) use.pop_back();
       for (int k : use)
-        add_pieces(family_lines(pts, edges, plane, plane_family(fam.m[k], page_step / fam.page_per_unit[k]), corners), t.body,
-                   tone_kind(t.level.level), per[i]);
+        add_pieces(family_pieces(edges, plane.normal(), plane_family(fam.m[k], page_step / fam.page_per_unit[k])), t.body, tone_kind(t.level.level),
+                   per[i]);
     }
   });
   for (auto& v : per)
     for (Segment& s : v) out.segments.push_back(std::move(s));
   return out;
+}
+
+Plot tone_plot(const LineDrawing& h, const RenderResult& r, const PlotOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Projector proj = drawing_projector(r.drawing, r.camera);
+  const std::size_t n = 2 * h.segments.size();
+  auto end = [&](std::size_t i) -> const Point3& { return i % 2 ? h.segments[i / 2].to() : h.segments[i / 2].from(); };
+  std::vector<std::array<double, 3>> d(n);
+  ParallelLoop(o.threads).for_each(n, 4096, [&](std::size_t i) {
+    const Point3& p = end(i);
+    d[i] = {to_double(p.x()), to_double(p.y()), to_double(p.z())};
+  });
+  // Equal exact points have equal doubles: sort by the doubles, then join runs of equal points.
+  std::vector<std::uint32_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return d[a] < d[b]; });
+  CleanDrawing c;
+  c.pieces_in = h.segments.size();
+  std::vector<std::uint32_t> point_of(n);
+  for (std::size_t i = 0; i < n;) {
+    std::size_t j = i;
+    while (j < n && d[order[j]] == d[order[i]]) ++j;
+    // Within a run of equal doubles, distinct exact points stay apart.
+    std::vector<std::pair<const Point3*, std::uint32_t>> seen;
+    for (std::size_t k = i; k < j; ++k) {
+      const Point3& p = end(order[k]);
+      std::uint32_t id = UINT32_MAX;
+      for (const auto& [q, qid] : seen)
+        if (*q == p) id = qid;
+      if (id == UINT32_MAX) {
+        id = static_cast<std::uint32_t>(c.points.size());
+        const auto xy = proj.project(p);
+        c.points.push_back({xy[0], xy[1]});
+        seen.emplace_back(&p, id);
+      }
+      point_of[order[k]] = id;
+    }
+    i = j;
+  }
+  for (std::size_t s = 0; s < h.segments.size(); ++s) {
+    const Segment& sg = h.segments[s];
+    if (point_of[2 * s] == point_of[2 * s + 1]) {
+      ++c.zero_length;
+      continue;
+    }
+    c.edges.push_back(CleanEdge{point_of[2 * s], point_of[2 * s + 1], PieceRef{static_cast<int>(s), 0}, sg.line, true, false, sg.body});
+  }
+  return plot_from_clean(c, o, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 }  // namespace hlr

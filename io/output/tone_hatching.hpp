@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "algorithms/hatching/tone_hatch.hpp"
+#include "algorithms/plot/plot.hpp"
 #include "io/pipeline/render.hpp"
 
 namespace hlr {
@@ -30,6 +31,12 @@ struct ToneHatchOptions {
 /// corners: RenderOptions::surface_faces and surface_corners) at `mm_per_unit` page mm per
 /// drawing unit. Refused (std::invalid_argument) for a render without them.
 LineDrawing tone_hatching(const RenderResult& r, double mm_per_unit, const ToneHatchOptions& options);
+
+/// The hatching's strokes in the drawing coordinates of `r`'s drawing (its frame): the pieces
+/// joined where their ends are the same exact point (a line's pieces on the faces it crosses),
+/// chained into strokes. No clean-up is needed: every piece lies inside one visible region,
+/// regions do not overlap, and no piece runs along a region's border, so no two overlap.
+Plot tone_plot(const LineDrawing& hatch, const RenderResult& r, const PlotOptions& options);
 
 /// Every hatched region's level (for tests and statistics): per region, in the order hatched.
 struct ToneRegion {

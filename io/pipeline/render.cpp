@@ -215,8 +215,8 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
   so.faces = o.surface_faces || o.shadows;  // the shadows are cut from the regions of each face
   so.exact_groups = false;  // the groups only feed the fills (add_surface_fills)
   std::map<std::array<int, 3>, int> group_of;
-  so.face_group.resize(r.bodies.size());
-  for (std::size_t b = 0; b < r.bodies.size(); ++b)
+  if (o.surface_groups) so.face_group.resize(r.bodies.size());
+  for (std::size_t b = 0; b < r.bodies.size() && o.surface_groups; ++b)
     for (const Rgb& c : r.face_colours[b]) {
       auto [it, fresh] = group_of.emplace(rgb8(c), static_cast<int>(r.group_colours.size()));
       if (fresh) r.group_colours.push_back(c);

@@ -84,6 +84,9 @@ struct RenderOptions {
   bool surface_corners = true;
   /// The visible polygons per face (JSON, Python); off: per colour group only (SVG, PDF, PNG).
   bool surface_faces = true;
+  /// The visible polygons merged per colour (the fills of SVG, PDF and PNG); off: none (a
+  /// drawing hatched by tone, made from the per-face polygons).
+  bool surface_groups = true;
   /// Shadows of the scene's lights on the visible surfaces, as exact polygons (shadows.hpp);
   /// implies `surfaces` (the per-face route).
   bool shadows = false;

@@ -189,6 +189,16 @@ def test_section_caps_and_hatch_in_the_json():
         exact_hlr.render(path("house.yaml"), section=["w<1"])
 
 
+def test_own_lines_hidden_by_the_bodies():
+    # The cube [-1, 1]^3 seen from +z: a line through it along x is hidden inside it, seen
+    # outside; Fractions and strings are exact.
+    d = exact_hlr.render(path("cube.off"), view=(0, 0, 1), lines=[[(-3, 0, 0), (Fraction(3), "0", 0)]])
+    got = sorted((s["from"][0], s["to"][0], s["visible"]) for s in d.segments if s["kind"] == "polyline")
+    assert got == [(-3, -1, True), (-1, 1, False), (1, 3, True)]
+    with pytest.raises(ValueError):
+        exact_hlr.render(path("cube.off"), lines=[[(0, 0, 0)]])
+
+
 def hlr_cli(*args):
     import subprocess
     exe = os.environ.get("HLR_BIN", "hlr")
