@@ -206,7 +206,7 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
       options.section_view = named_section(section_name, *section_plane(a, section_name), one.up_axis == "z");
       options.view = section_view_request(*options.section_view, one.up_axis == "z");
     }
-    options.surface_corners = format == "json" || a.hatch;  // hatching lifts its lines into the faces
+    options.surface_corners = format == "json";  // hatching lifts what it needs itself
     options.surface_faces = format == "json" || a.hatch;
     options.surface_groups = !a.hatch;  // a hatched drawing has no fills
     options.tile = tile;

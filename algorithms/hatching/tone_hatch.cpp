@@ -85,4 +85,54 @@ std::vector<std::array<Point3, 2>> family_pieces(const std::vector<std::array<co
   return out;
 }
 
+namespace {
+
+struct PictureCrossing {
+  long k;
+  Exact2 at;
+};
+
+bool below_2d(const PictureFamily& f, const Exact2& q, const std::array<double, 2>& qd, long k) {
+  const double c = (static_cast<double>(k) + 0.5) * f.step;
+  const double g = f.alpha * qd[0] + f.beta * qd[1] - c;
+  const double size = std::fabs(f.alpha * qd[0]) + std::fabs(f.beta * qd[1]) + std::fabs(c);
+  if (std::isfinite(g) && std::isfinite(size) && std::fabs(g) > 1e-14 * size + 1e-300) return g < 0;
+  return Rational(f.alpha) * q[0] + Rational(f.beta) * q[1] < Rational(static_cast<double>(k) + 0.5) * Rational(f.step);
+}
+
+}  // namespace
+
+std::vector<std::array<Exact2, 2>> picture_family_pieces(const std::vector<std::array<const Exact2*, 2>>& edges, const PictureFamily& f) {
+  std::vector<std::array<Exact2, 2>> out;
+  if (edges.empty() || !(f.step > 0) || !std::isfinite(f.step) || (f.alpha == 0 && f.beta == 0)) return out;
+  const int axis = std::fabs(f.beta) >= std::fabs(f.alpha) ? 0 : 1;  // along the lines (−β, α)
+  const Rational alpha(f.alpha), beta(f.beta), step(f.step);
+  std::vector<PictureCrossing> hits;
+  for (const auto& e : edges) {
+    const Exact2 &a = *e[0], &b = *e[1];
+    const std::array<double, 2> ad{a[0].get_d(), a[1].get_d()}, bd{b[0].get_d(), b[1].get_d()};
+    const double va = f.alpha * ad[0] + f.beta * ad[1], vb = f.alpha * bd[0] + f.beta * bd[1];
+    const double lo = std::min(va, vb) / f.step - 0.5, hi = std::max(va, vb) / f.step - 0.5;
+    if (!std::isfinite(lo) || !std::isfinite(hi) || hi - lo > 1e6) continue;
+    bool have = false;
+    Rational ga, gab;
+    for (long k = static_cast<long>(std::floor(lo)) - 1; k <= static_cast<long>(std::ceil(hi)) + 1; ++k) {
+      if (below_2d(f, a, ad, k) == below_2d(f, b, bd, k)) continue;
+      if (!have) ga = alpha * a[0] + beta * a[1], gab = alpha * (b[0] - a[0]) + beta * (b[1] - a[1]), have = true;
+      const Rational s = (Rational(static_cast<double>(k) + 0.5) * step - ga) / gab;
+      hits.push_back({k, Exact2{Rational(a[0] + s * (b[0] - a[0])), Rational(a[1] + s * (b[1] - a[1]))}});
+    }
+  }
+  std::sort(hits.begin(), hits.end(),
+            [axis](const PictureCrossing& p, const PictureCrossing& q) { return p.k != q.k ? p.k < q.k : p.at[axis] < q.at[axis]; });
+  for (std::size_t i = 0; i + 1 < hits.size();) {
+    std::size_t j = i;
+    while (j < hits.size() && hits[j].k == hits[i].k) ++j;
+    for (std::size_t p = i; p + 1 < j; p += 2)
+      if (hits[p].at != hits[p + 1].at) out.push_back({hits[p].at, hits[p + 1].at});
+    i = j;
+  }
+  return out;
+}
+
 }  // namespace hlr

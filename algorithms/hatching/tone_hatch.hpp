@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "algorithms/hatching/hatch.hpp"
+#include "kernel/predicates_2d.hpp"
 
 namespace hlr {
 
@@ -61,5 +62,18 @@ struct PlaneFamily {
 /// strokes join. None when the region's plane is parallel to the family.
 std::vector<std::array<Point3, 2>> family_pieces(const std::vector<std::array<const Point3*, 2>>& edges, const Vector3& normal,
                                                  const PlaneFamily& family);
+
+/// A family of parallel lines of an orthographic picture, α·x + β·y = (k + ½)·step (α, β and
+/// step doubles, taken exactly): the picture of a family of planes that contain the viewing
+/// direction (m = α·r + β·u for the picture plane's axes r and u), so a face's hatch lines are
+/// found in the picture, from the exact picture corners of its visible region.
+struct PictureFamily {
+  double alpha = 0, beta = 0, step = 0;
+};
+
+/// The family's pieces inside the picture region bounded by `edges` (directed edges of exact
+/// picture points, closed loops, holes as loops of their own), exact, by the rules of
+/// family_pieces.
+std::vector<std::array<Exact2, 2>> picture_family_pieces(const std::vector<std::array<const Exact2*, 2>>& edges, const PictureFamily& family);
 
 }  // namespace hlr

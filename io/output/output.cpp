@@ -329,8 +329,8 @@ void add_tone_hatching(std::vector<Plot>& plots, const std::vector<const RenderR
   PlotOptions po = plot_options(a);
   po.hidden = false;
   for (std::size_t i = 0; i < results.size(); ++i) {
-    const LineDrawing h = tone_hatching(*results[i], sheet.views[i].scale, o);
-    if (h.segments.empty()) continue;
+    const std::vector<TonePiece> h = tone_hatching(*results[i], sheet.views[i].scale, o);
+    if (h.empty()) continue;
     Plot hp = tone_plot(h, *results[i], po);
     for (PlotLayer& l : hp.layers) plots[i].layers.push_back(std::move(l));
   }

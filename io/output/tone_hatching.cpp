@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <stdexcept>
 
+#include "algorithms/picture/picture_plane.hpp"
 #include "algorithms/support/parallel.hpp"
 
 namespace hlr {
@@ -29,7 +30,11 @@ D3 unit_d(const D3& a) {
 // each, at the view's centre.
 struct Families {
   std::array<D3, 2> m;
-  std::array<double, 2> page_per_unit{0, 0};
+  std::array<double, 2> page_per_unit{0, 0};  // per unit of m·X
+  /// Orthographic and not contour: the planes contain the viewing direction, m = α·r + β·u
+  /// exactly (the picture plane's axes), and the lines are found in the picture.
+  bool picture = false;
+  std::array<std::array<double, 2>, 2> alpha_beta{};
   bool ok = false;
 };
 
@@ -47,6 +52,18 @@ Families scene_families(const RenderResult& r, const Projector& proj, const Tone
   f.m[0] = page_axis(ax, o.angle + 90);
   f.m[1] = page_axis(ax, o.angle);
   if (o.contour) f.m[0] = unit_d(to_d3(r.camera.up));  // level planes: each face's contour lines
+  f.picture = !r.camera.perspective && !o.contour;
+  if (f.picture) {  // m = α·r + β·u, exactly
+    const PicturePlane pp(r.camera);
+    const D3 rd = to_d3(pp.r()), ud = to_d3(pp.u());
+    const double rr = rd[0] * rd[0] + rd[1] * rd[1] + rd[2] * rd[2], uu = ud[0] * ud[0] + ud[1] * ud[1] + ud[2] * ud[2];
+    for (int k = 0; k < 2; ++k) {
+      const double a = (f.m[k][0] * rd[0] + f.m[k][1] * rd[1] + f.m[k][2] * rd[2]) / rr;
+      const double b = (f.m[k][0] * ud[0] + f.m[k][1] * ud[1] + f.m[k][2] * ud[2]) / uu;
+      f.alpha_beta[k] = {a, b};
+      f.m[k] = to_d3(Rational(a) * pp.r() + Rational(b) * pp.u());
+    }
+  }
   D3 centre{0, 0, 0};
   if (r.camera.perspective) {
     centre = to_d3(r.camera.target);
@@ -65,9 +82,10 @@ Families scene_families(const RenderResult& r, const Projector& proj, const Tone
   };
   const double d = 1e-3 * std::max({std::fabs(centre[0]), std::fabs(centre[1]), std::fabs(centre[2]), 1e-300}) + 1e-6;
   const auto q0 = page(centre);
-  auto per_unit = [&](const D3& m) {
-    const auto q = page({centre[0] + d * m[0], centre[1] + d * m[1], centre[2] + d * m[2]});
-    return std::hypot(q[0] - q0[0], q[1] - q0[1]) / d;
+  auto per_unit = [&](const D3& m) {  // moving d along m's direction changes m·X by d·|m|
+    const D3 u = unit_d(m);
+    const auto q = page({centre[0] + d * u[0], centre[1] + d * u[1], centre[2] + d * u[2]});
+    return std::hypot(q[0] - q0[0], q[1] - q0[1]) / (d * norm_d(m));
   };
   for (int k = 0; k < 2; ++k) f.page_per_unit[k] = per_unit(f.m[k]);
   // Contour lines seen from above: the height interval at the drawing's scale.
@@ -84,27 +102,38 @@ PlaneFamily plane_family(const D3& m, double step) {
   return p;
 }
 
-// The region's boundary: its rings as directed edges, their ends pointing into the polygon.
-void region_edges(const VisiblePolygon& poly, std::vector<std::array<const Point3*, 2>>& edges) {
+// The region's boundary: its rings as directed edges, their ends pointing into the polygon (or
+// into `lifted`: its picture corners lifted into the face's plane, when it has no corners in
+// space).
+void region_edges(const VisiblePolygon& poly, const PicturePlane& pp, const Plane& plane, std::vector<std::vector<Point3>>& lifted,
+                  std::vector<std::array<const Point3*, 2>>& edges) {
   edges.clear();
   auto ring = [&](const std::vector<Point3>& r) {
     for (std::size_t k = 0; k < r.size(); ++k) edges.push_back({&r[k], &r[(k + 1) % r.size()]});
   };
-  ring(poly.outer);
-  for (const auto& h : poly.holes) ring(h);
+  if (!poly.outer.empty() || poly.outer_2d.empty()) {
+    ring(poly.outer);
+    for (const auto& h : poly.holes) ring(h);
+    return;
+  }
+  const auto ray = pp.ray_parameter(plane);
+  lifted.assign(1 + poly.holes_2d.size(), {});
+  for (std::size_t k = 0; k < lifted.size(); ++k)
+    for (const Exact2& q : k == 0 ? poly.outer_2d : poly.holes_2d[k - 1]) lifted[k].push_back(pp.lift(q, ray));
+  for (const auto& l : lifted) ring(l);
 }
 
-void add_pieces(std::vector<std::array<Point3, 2>> pieces, int body, LineKind kind, std::vector<Segment>& out) {
-  for (auto& p : pieces) {
-    Segment s;
-    s.kind = Segment::Kind::Intersection;  // no edge of a body: its own ends
-    s.line = kind;
-    s.body = body;
-    s.set_ends(std::move(p[0]), std::move(p[1]));
-    std::vector<Piece> whole{Piece{Rational(0), Rational(1), true}};
-    s.pieces.assign(std::move(whole));
-    out.push_back(std::move(s));
-  }
+void picture_edges(const VisiblePolygon& poly, std::vector<std::array<const Exact2*, 2>>& edges) {
+  edges.clear();
+  auto ring = [&](const std::vector<Exact2>& r) {
+    for (std::size_t k = 0; k < r.size(); ++k) edges.push_back({&r[k], &r[(k + 1) % r.size()]});
+  };
+  ring(poly.outer_2d);
+  for (const auto& h : poly.holes_2d) ring(h);
+}
+
+void add_pieces(const std::vector<std::array<Exact2, 2>>& pieces, const ToneRegion& t, std::vector<TonePiece>& out) {
+  for (const auto& p : pieces) out.push_back(TonePiece{t.body, t.face, tone_kind(t.level.level), p});
 }
 
 }  // namespace
@@ -125,29 +154,40 @@ std::vector<ToneRegion> tone_regions(const RenderResult& r, const ToneOptions& t
   return out;
 }
 
-LineDrawing tone_hatching(const RenderResult& r, double mm_per_unit, const ToneHatchOptions& o) {
+std::vector<TonePiece> tone_hatching(const RenderResult& r, double mm_per_unit, const ToneHatchOptions& o) {
   if (!r.surfaces && !r.shadows) throw std::invalid_argument("tone hatching needs the visible surfaces (--surfaces)");
   if (r.transparent || r.priority)
     throw std::invalid_argument("tone hatching takes the visible surfaces, with or without shadows (not transparency or the priority list)");
-  LineDrawing out;
-  out.facing = r.drawing.facing;
+  std::vector<TonePiece> out;
   if (!(mm_per_unit > 0)) return out;
   const std::vector<ToneRegion> regions = tone_regions(r, o.tone);
   for (const ToneRegion& t : regions)
-    if (t.level.families && t.polygon->outer.empty())
-      throw std::invalid_argument("tone hatching needs the visible polygons' exact corners in space (RenderOptions::surface_corners)");
+    if (t.level.families && t.polygon->outer_2d.empty())
+      throw std::invalid_argument("tone hatching needs the visible polygons of every face (RenderOptions::surface_faces)");
   const Projector proj = drawing_projector(r.drawing, r.camera);
   const Families fam = scene_families(r, proj, o);
   if (!fam.ok) return out;
-  std::vector<std::vector<Segment>> per(regions.size());
+  const PicturePlane pp(r.camera);
+  std::vector<std::vector<TonePiece>> per(regions.size());
   ParallelLoop(o.threads).run(regions.size(), 64, [&](unsigned, std::size_t begin, std::size_t end) {
     std::vector<std::array<const Point3*, 2>> edges;
+    std::vector<std::array<const Exact2*, 2>> edges_2d;
+    std::vector<std::vector<Point3>> lifted;
     for (std::size_t i = begin; i < end; ++i) {
       const ToneRegion& t = regions[i];
       if (!t.level.families) continue;
       const Polyhedron& body = r.bodies[t.body]->body;
-      region_edges(*t.polygon, edges);
       const Plane& plane = body.planes()[t.face];
+      if (fam.picture) {  // in the picture
+        picture_edges(*t.polygon, edges_2d);
+        const double page_step = t.level.spacing_mm / mm_per_unit;
+        for (int k = 0; k < t.level.families; ++k) {
+          const PictureFamily f{fam.alpha_beta[k][0], fam.alpha_beta[k][1], page_step / fam.page_per_unit[k]};
+          add_pieces(picture_family_pieces(edges_2d, f), t, per[i]);
+        }
+        continue;
+      }
+      region_edges(*t.polygon, pp, plane, lifted, edges);
       const D3 n = unit_d({to_double(plane.a()), to_double(plane.b()), to_double(plane.c())});
       const double page_step = t.level.spacing_mm / mm_per_unit;
       // The families this face takes: the first (and the second when cross-hatched); a face
@@ -157,46 +197,52 @@ LineDrawing tone_hatching(const RenderResult& r, double mm_per_unit, const ToneH
       for (int& k : use)
         if (norm_d(cross_d(n, fam.m[k])) < 0.1 && (r.camera.perspective || o.contour)) k = 1 - k;
       if (use.size() == 2 && use[0] == use[1]) use.pop_back();
-      for (int k : use)
-        add_pieces(family_pieces(edges, plane.normal(), plane_family(fam.m[k], page_step / fam.page_per_unit[k])), t.body, tone_kind(t.level.level),
-                   per[i]);
+      for (int k : use) {  // in space, the pieces' ends projected
+        std::vector<std::array<Exact2, 2>> pieces;
+        for (const auto& q : family_pieces(edges, plane.normal(), plane_family(fam.m[k], page_step / fam.page_per_unit[k])))
+          pieces.push_back({pp.project(q[0]), pp.project(q[1])});
+        add_pieces(pieces, t, per[i]);
+      }
     }
   });
   for (auto& v : per)
-    for (Segment& s : v) out.segments.push_back(std::move(s));
+    for (TonePiece& p : v) out.push_back(std::move(p));
   return out;
 }
 
-Plot tone_plot(const LineDrawing& h, const RenderResult& r, const PlotOptions& o) {
+Point3 tone_point(const RenderResult& r, const TonePiece& p, const Exact2& q) {
+  const PicturePlane pp(r.camera);
+  return pp.lift(q, pp.ray_parameter(r.bodies[p.body]->body.planes()[p.face]));
+}
+
+Plot tone_plot(const std::vector<TonePiece>& h, const RenderResult& r, const PlotOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   const Projector proj = drawing_projector(r.drawing, r.camera);
-  const std::size_t n = 2 * h.segments.size();
-  auto end = [&](std::size_t i) -> const Point3& { return i % 2 ? h.segments[i / 2].to() : h.segments[i / 2].from(); };
-  std::vector<std::array<double, 3>> d(n);
-  ParallelLoop(o.threads).for_each(n, 4096, [&](std::size_t i) {
-    const Point3& p = end(i);
-    d[i] = {to_double(p.x()), to_double(p.y()), to_double(p.z())};
-  });
+  const PictureToDrawing to_drawing(PicturePlane(r.camera), proj.frame());
+  const std::size_t n = 2 * h.size();
+  auto end = [&](std::size_t i) -> const Exact2& { return h[i / 2].ends[i % 2]; };
+  std::vector<std::array<double, 2>> d(n);
+  ParallelLoop(o.threads).for_each(n, 4096, [&](std::size_t i) { d[i] = {end(i)[0].get_d(), end(i)[1].get_d()}; });
   // Equal exact points have equal doubles: sort by the doubles, then join runs of equal points.
   std::vector<std::uint32_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return d[a] < d[b]; });
   CleanDrawing c;
-  c.pieces_in = h.segments.size();
+  c.pieces_in = h.size();
   std::vector<std::uint32_t> point_of(n);
   for (std::size_t i = 0; i < n;) {
     std::size_t j = i;
     while (j < n && d[order[j]] == d[order[i]]) ++j;
     // Within a run of equal doubles, distinct exact points stay apart.
-    std::vector<std::pair<const Point3*, std::uint32_t>> seen;
+    std::vector<std::pair<const Exact2*, std::uint32_t>> seen;
     for (std::size_t k = i; k < j; ++k) {
-      const Point3& p = end(order[k]);
+      const Exact2& p = end(order[k]);
       std::uint32_t id = UINT32_MAX;
       for (const auto& [q, qid] : seen)
         if (*q == p) id = qid;
       if (id == UINT32_MAX) {
         id = static_cast<std::uint32_t>(c.points.size());
-        const auto xy = proj.project(p);
+        const auto xy = to_drawing(d[order[k]]);
         c.points.push_back({xy[0], xy[1]});
         seen.emplace_back(&p, id);
       }
@@ -204,13 +250,12 @@ Plot tone_plot(const LineDrawing& h, const RenderResult& r, const PlotOptions& o
     }
     i = j;
   }
-  for (std::size_t s = 0; s < h.segments.size(); ++s) {
-    const Segment& sg = h.segments[s];
+  for (std::size_t s = 0; s < h.size(); ++s) {
     if (point_of[2 * s] == point_of[2 * s + 1]) {
       ++c.zero_length;
       continue;
     }
-    c.edges.push_back(CleanEdge{point_of[2 * s], point_of[2 * s + 1], PieceRef{static_cast<int>(s), 0}, sg.line, true, false, sg.body});
+    c.edges.push_back(CleanEdge{point_of[2 * s], point_of[2 * s + 1], PieceRef{static_cast<int>(s), 0}, h[s].kind, true, false, h[s].body});
   }
   return plot_from_clean(c, o, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }

@@ -27,16 +27,27 @@ struct ToneHatchOptions {
   unsigned threads = 0;
 };
 
-/// The hatching of every visible region of `r` (made with surfaces, per face, with exact 3D
-/// corners: RenderOptions::surface_faces and surface_corners) at `mm_per_unit` page mm per
-/// drawing unit. Refused (std::invalid_argument) for a render without them.
-LineDrawing tone_hatching(const RenderResult& r, double mm_per_unit, const ToneHatchOptions& options);
+/// One hatch piece: exact picture points (picture_plane.hpp) of its ends, which lie on the
+/// border of a visible region of face `face` of body `body`; `kind` its tone level's line kind.
+struct TonePiece {
+  int body = -1, face = -1;
+  LineKind kind = LineKind::Tone1;
+  std::array<Exact2, 2> ends;
+};
+
+/// The hatching of every visible region of `r` (made with surfaces, per face:
+/// RenderOptions::surface_faces) at `mm_per_unit` page mm per drawing unit. Refused
+/// (std::invalid_argument) for a render without them.
+std::vector<TonePiece> tone_hatching(const RenderResult& r, double mm_per_unit, const ToneHatchOptions& options);
+
+/// The point of face `face` of body `body` that picture point `q` shows, exactly.
+Point3 tone_point(const RenderResult& r, const TonePiece& piece, const Exact2& q);
 
 /// The hatching's strokes in the drawing coordinates of `r`'s drawing (its frame): the pieces
-/// joined where their ends are the same exact point (a line's pieces on the faces it crosses),
-/// chained into strokes. No clean-up is needed: every piece lies inside one visible region,
-/// regions do not overlap, and no piece runs along a region's border, so no two overlap.
-Plot tone_plot(const LineDrawing& hatch, const RenderResult& r, const PlotOptions& options);
+/// joined where their ends are the same exact picture point (a line's pieces on the faces it
+/// crosses), chained into strokes. No clean-up is needed: every piece lies inside one visible
+/// region, regions do not overlap, and no piece runs along a region's border, so no two overlap.
+Plot tone_plot(const std::vector<TonePiece>& hatch, const RenderResult& r, const PlotOptions& options);
 
 /// Every hatched region's level (for tests and statistics): per region, in the order hatched.
 struct ToneRegion {

@@ -35,12 +35,14 @@ Scene boxes_scene(const std::vector<std::array<long, 6>>& boxes) {
   return s;
 }
 
-RenderResult render_surfaces(const Scene& s, const ViewRequest& view, bool shadows) {
+RenderResult render_surfaces(const Scene& s, const ViewRequest& view, bool shadows, bool corners = true) {
   RenderOptions o;
   o.view = view;
   o.lines.edges = EdgeSelection::All;
   o.surfaces = true;
   o.shadows = shadows;
+  o.surface_corners = corners;  // off: the hatching lifts what it needs
+  o.surface_groups = false;
   return render({s}, o);
 }
 
@@ -74,7 +76,7 @@ struct Checked {
 
 // The oracle's checks of one hatched render: each piece's points at 1/4, 1/2 and 3/4 are the
 // nearest point of the scene on their sight rays; no piece crosses a visible line.
-Checked check_hatching(const RenderResult& r, const LineDrawing& h) {
+Checked check_hatching(const RenderResult& r, const std::vector<TonePiece>& h) {
   Checked c;
   std::vector<const Polyhedron*> polys;
   for (const SceneBody* b : r.bodies) polys.push_back(&b->body);
@@ -92,35 +94,29 @@ Checked check_hatching(const RenderResult& r, const LineDrawing& h) {
         o << "segment body " << s.body << "/" << s.body2 << " kind " << to_string(s.line) << " " << s.at(p.t0) << " - " << s.at(p.t1);
         what.push_back(o.str());
       }
-  for (const Segment& s : h.segments) {
-    EXPECT_TRUE(is_tone(s.line));
-    for (const Piece& piece : s.pieces) {
-      EXPECT_TRUE(piece.visible);
-      ++c.pieces;
-      for (const Rational t : {Rational(1, 4), Rational(1, 2), Rational(3, 4)}) {
-        const Point3 x = s.at(piece.t0 + t * (piece.t1 - piece.t0));
-        const Exact2 q = pp.project(x);
-        const auto hits = test::sight_hits(faces, r.camera, pp, q);
-        EXPECT_FALSE(hits.empty());
-        if (hits.empty()) continue;
-        const test::SightHit& near = hits.back();
-        EXPECT_TRUE(near.at[0] == x.x() && near.at[1] == x.y() && near.at[2] == x.z())
-            << "a hatch point is not the nearest point on its sight ray: under an occluder or off its face";
-        ++c.points;
-      }
-      const Exact2 a = pp.project(s.at(piece.t0)), b = pp.project(s.at(piece.t1));
-      // The plane of the hatched face: a line lying in it (the seam where a flush coplanar body's
-      // face meets it) is drawn on the face, over its hatching.
-      const Plane* on = nullptr;
-      for (const Plane& h : r.bodies[s.body]->body.planes())
-        if (h.value(s.from()) == 0 && h.value(s.to()) == 0) on = &h;
-      EXPECT_NE(on, nullptr);
-      for (std::size_t vi = 0; vi < visible.size(); ++vi) {
-        const auto& v = visible[vi];
-        if (on && on->value(visible_3d[vi][0]) == 0 && on->value(visible_3d[vi][1]) == 0) continue;
-        EXPECT_FALSE(cross_properly(a, b, v[0], v[1]))
-            << "a hatch piece crosses a visible line: body " << s.body << " " << s.from() << " - " << s.to() << " against " << what[vi];
-      }
+  for (const TonePiece& piece : h) {
+    EXPECT_TRUE(is_tone(piece.kind));
+    ++c.pieces;
+    const Exact2 &a = piece.ends[0], &b = piece.ends[1];
+    for (const Rational t : {Rational(1, 4), Rational(1, 2), Rational(3, 4)}) {
+      const Exact2 q{Rational(a[0] + t * (b[0] - a[0])), Rational(a[1] + t * (b[1] - a[1]))};
+      const Point3 x = tone_point(r, piece, q);
+      const auto hits = test::sight_hits(faces, r.camera, pp, q);
+      EXPECT_FALSE(hits.empty());
+      if (hits.empty()) continue;
+      const test::SightHit& near = hits.back();
+      EXPECT_TRUE(near.at[0] == x.x() && near.at[1] == x.y() && near.at[2] == x.z())
+          << "a hatch point is not the nearest point on its sight ray: under an occluder or off its face";
+      ++c.points;
+    }
+    // A line lying in the hatched face's plane (the seam where a flush coplanar body's face
+    // meets it) is drawn on the face, over its hatching.
+    const Plane& on = r.bodies[piece.body]->body.planes()[piece.face];
+    for (std::size_t vi = 0; vi < visible.size(); ++vi) {
+      const auto& v = visible[vi];
+      if (on.value(visible_3d[vi][0]) == 0 && on.value(visible_3d[vi][1]) == 0) continue;
+      EXPECT_FALSE(cross_properly(a, b, v[0], v[1]))
+          << "a hatch piece crosses a visible line: body " << piece.body << " face " << piece.face << " against " << what[vi];
     }
   }
   return c;
@@ -157,7 +153,7 @@ TEST(ToneHatch, OracleOnRandomBoxes) {
   const std::vector<ViewRequest> views = {ortho(1, 2, 3), ortho(-2, 1, 1), ortho(0, 0, 1), persp(14, 11, 17), persp(-9, 12, 15)};
   Checked total;
   int renders = 0;
-  for (int trial = 0; trial < 10; ++trial) {
+  for (int trial = 0; trial < 14; ++trial) {
     std::vector<std::array<long, 6>> boxes;
     for (int k = 0; k < 3; ++k) {
       std::array<long, 6> b;
@@ -167,11 +163,13 @@ TEST(ToneHatch, OracleOnRandomBoxes) {
     if (trial % 3 == 0) boxes[1] = {boxes[0][3], boxes[0][1], boxes[0][2], boxes[0][3] + 2, boxes[0][1] + 2, boxes[0][2] + 2};  // touching
     const Scene s = boxes_scene(boxes);
     const ViewRequest& v = views[trial % views.size()];
-    const RenderResult r = render_surfaces(s, v, trial % 2 == 1);
+    const RenderResult r = render_surfaces(s, v, trial % 2 == 1, trial % 4 < 2);
     ToneHatchOptions o;
     o.tone.levels = 5;
+    o.contour = trial % 5 == 1;  // level planes (the lines found in space, not in the picture)
+    o.angle = 10 + 17 * trial;
     const double mm_per_unit = v.eye ? 400 : 20;  // several lines across every face
-    const LineDrawing h = tone_hatching(r, mm_per_unit, o);
+    const std::vector<TonePiece> h = tone_hatching(r, mm_per_unit, o);
     std::string desc = "trial " + std::to_string(trial);
     for (const auto& b : boxes)
       desc += " [" + std::to_string(b[0]) + "," + std::to_string(b[1]) + "," + std::to_string(b[2]) + " .. " + std::to_string(b[3]) + "," +
@@ -181,7 +179,7 @@ TEST(ToneHatch, OracleOnRandomBoxes) {
     total.pieces += k.pieces, total.points += k.points;
     ++renders;
   }
-  EXPECT_EQ(renders, 10);
+  EXPECT_EQ(renders, 14);
   EXPECT_GT(total.pieces, 500u);
 }
 
@@ -191,10 +189,9 @@ TEST(ToneHatch, InkPerAreaFollowsTheLevel) {
   const RenderResult r = render_surfaces(s, ortho(2, 3, 4), false);
   ToneHatchOptions o;
   const double mm_per_unit = 10;
-  const LineDrawing h = tone_hatching(r, mm_per_unit, o);
+  const std::vector<TonePiece> h = tone_hatching(r, mm_per_unit, o);
   const Projector proj = drawing_projector(r.drawing, r.camera);
   const PictureToDrawing to_drawing(PicturePlane(r.camera), proj.frame());
-  const PicturePlane pp(r.camera);
   int measured = 0;
   std::set<int> levels;
   for (const ToneRegion& t : tone_regions(r, o.tone)) {
@@ -206,11 +203,11 @@ TEST(ToneHatch, InkPerAreaFollowsTheLevel) {
       area += (a[0] * b[1] - b[0] * a[1]) / 2;
     }
     double length = 0;
-    for (const Segment& sg : h.segments) {
-      if (sg.line != tone_kind(t.level.level)) continue;
-      const Exact2 mid = pp.project(sg.at(Rational(1, 2)));
+    for (const TonePiece& p : h) {
+      if (p.kind != tone_kind(t.level.level)) continue;
+      const Exact2 mid{Rational((p.ends[0][0] + p.ends[1][0]) / 2), Rational((p.ends[0][1] + p.ends[1][1]) / 2)};
       if (test::in_rings(t.polygon->outer_2d, t.polygon->holes_2d, mid) <= 0) continue;
-      const auto a = proj.project(sg.from()), b = proj.project(sg.to());
+      const auto a = to_drawing(p.ends[0]), b = to_drawing(p.ends[1]);
       length += std::hypot(a[0] - b[0], a[1] - b[1]);
     }
     const double step = t.level.spacing_mm / mm_per_unit;  // drawing units
@@ -233,16 +230,18 @@ TEST(ToneHatch, OneFamilyAcrossAnOccluder) {
   const RenderResult r = render_surfaces(s, ortho(0, 0, 1), false);
   ToneHatchOptions o;
   o.angle = 30;
-  const LineDrawing h = tone_hatching(r, 10, o);
+  const std::vector<TonePiece> h = tone_hatching(r, 10, o);
   // The wall's front face z = 1: its pieces, left and right of the post, by their exact line.
   std::map<std::array<Rational, 3>, std::array<int, 2>> lines;  // line in the face (a x + b y = c) -> pieces left, right
   int pieces = 0;
-  for (const Segment& sg : h.segments) {
-    if (sg.body != 0 || sg.from().z() != 1 || sg.to().z() != 1) continue;
-    const Rational a = sg.to().y() - sg.from().y(), b = sg.from().x() - sg.to().x();
+  for (const TonePiece& p : h) {
+    if (p.body != 0) continue;
+    const Point3 from = tone_point(r, p, p.ends[0]), to = tone_point(r, p, p.ends[1]);
+    if (from.z() != 1 || to.z() != 1) continue;
+    const Rational a = to.y() - from.y(), b = from.x() - to.x();
     const Rational k = a != 0 ? a : b;
-    const Rational A = a / k, B = b / k, C = A * sg.from().x() + B * sg.from().y();
-    const bool left = sg.at(Rational(1, 2)).x() < 9;
+    const Rational A = a / k, B = b / k, C = A * from.x() + B * from.y();
+    const bool left = (from.x() + to.x()) / 2 < 9;
     ++lines[{A, B, C}][left ? 0 : 1];
     ++pieces;
   }
