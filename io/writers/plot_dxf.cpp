@@ -1,6 +1,8 @@
 // The sheet as DXF through dxflib (see plot_output.hpp): AutoCAD 2000 (AC1015), one layer per
 // visibility and line kind with its lineweight, hidden layers with the DASHED linetype (or
-// their dashes cut as geometry), each stroke one LWPOLYLINE, millimetres with y up. dxflib
+// their dashes cut as geometry), each stroke one LWPOLYLINE, millimetres with y up ($INSUNITS
+// 4); the sheet's texts (view labels, section letters, the scale caption) as TEXT entities in
+// the layer "labels". dxflib
 // writes the file's frame; the entities are made on all cores in its format (parallel_text.hpp).
 #include <dxflib/dl_dxf.h>
 #include <unistd.h>
@@ -31,7 +33,7 @@ int lineweight(double mm) {
 }
 
 void write_tables(DL_Dxf& dxf, DL_WriterA& dw, const std::vector<std::string>& names, const std::vector<const PlotLayer*>& layers,
-                  const PlotStyle& style) {
+                  const PlotStyle& style, bool labels) {
   dw.sectionTables();
   dxf.writeVPort(dw);
   dw.tableLinetypes(4);
@@ -41,8 +43,9 @@ void write_tables(DL_Dxf& dxf, DL_WriterA& dw, const std::vector<std::string>& n
   double dash[2] = {12 * style.weights.at("hidden"), -3 * style.weights.at("hidden")};
   dxf.writeLinetype(dw, DL_LinetypeData("DASHED", "Dashed __ __ __", 0, 2, dash[0] - dash[1], dash));
   dw.tableEnd();
-  dw.tableLayers(static_cast<int>(names.size()) + 1);
+  dw.tableLayers(static_cast<int>(names.size()) + 1 + (labels ? 1 : 0));
   dxf.writeLayer(dw, DL_LayerData("0", 0), DL_Attributes("", 7, -1, 25, "CONTINUOUS"));
+  if (labels) dxf.writeLayer(dw, DL_LayerData("labels", 0), DL_Attributes("", 7, -1, 25, "CONTINUOUS"));
   for (std::size_t i = 0; i < names.size(); ++i) {
     const bool dashed = style.pattern_dashed(*layers[i]);
     dxf.writeLayer(dw, DL_LayerData(names[i], 0),
@@ -89,6 +92,28 @@ void append_code(std::string& d, int code) {
   d += code < 10 ? "  " : code < 100 ? " " : "";
   d += std::to_string(code);
   d += '\n';
+}
+
+// Text for a DXF TEXT entity: ASCII as it is, every other character as AutoCAD's \U+XXXX
+// (the file's code page is ANSI_1252; "A–A" is "A\U+2013A").
+std::string dxf_text(const std::string& utf8) {
+  std::string out;
+  for (std::size_t i = 0; i < utf8.size();) {
+    const unsigned char c = static_cast<unsigned char>(utf8[i]);
+    if (c < 0x80) {
+      out += static_cast<char>(c);
+      ++i;
+      continue;
+    }
+    const int n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : 2;
+    unsigned long cp = c & (n == 4 ? 0x07 : n == 3 ? 0x0F : 0x1F);
+    for (int k = 1; k < n && i + k < utf8.size(); ++k) cp = (cp << 6) | (static_cast<unsigned char>(utf8[i + k]) & 0x3F);
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "\\U+%04lX", cp);
+    out += buf;
+    i += n;
+  }
+  return out;
 }
 
 // dxflib's writer, which counts the handles it writes, told of those written here.
@@ -171,9 +196,24 @@ std::string sheet_to_dxf(const Sheet& sheet, const PlotStyle& style) {
     Writer dw(tmpl.c_str(), DL_Codes::AC1015);
     if (dw.openFailed()) throw std::runtime_error("cannot write the DXF");
     dxf.writeHeader(dw);
+    dw.dxfString(9, "$INSUNITS");  // millimetres
+    dw.dxfInt(70, 4);
+    dw.dxfString(9, "$MEASUREMENT");  // metric
+    dw.dxfInt(70, 1);
     dw.sectionEnd();
-    write_tables(dxf, dw, names, layers, style);
+    const std::vector<SheetText> texts = sheet_texts(sheet);
+    write_tables(dxf, dw, names, layers, style, !texts.empty());
     dw.sectionEntities();
+    for (const SheetText& t : texts) {  // centred (or right-aligned) on their baseline point, y up
+      const double x = t.at[0], y = sheet.height_mm - t.at[1];
+      dxf.writeText(dw,
+                    DL_TextData(x, y, 0, x, y, 0, t.size_mm, 1.0, 0,
+                                t.anchor >= 1  ? 2
+                                : t.anchor > 0 ? 1
+                                               : 0,
+                                0, dxf_text(t.text), "Standard", 0.0),
+                    DL_Attributes("labels", 256, -1, -1, "BYLAYER"));
+    }
     dw.dxfString(999, kEntitiesMark);
     handle = dw.getNextHandle();  // the entities' handles follow the tables', the objects' them
     dw.skip_handles(entities);

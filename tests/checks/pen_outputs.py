@@ -3,6 +3,8 @@
 
   pen_outputs.py lines JSON          polylines through, in front of and behind the cube: the
                                      exact visible and hidden pieces
+  pen_outputs.py dxf DXF TEXT...     the DXF's $INSUNITS is 4 (millimetres) and its TEXT
+                                     entities hold every TEXT given
   pen_outputs.py stats SVG STATS MM  --stats's "the file holds N strokes" is the SVG's <path>
                                      count, and no path is shorter than MM (--min-length)
 """
@@ -44,5 +46,21 @@ def stats(svg, text, min_mm):
     print("stats hold", held)
 
 
+def dxf(path, *want):
+    t = [line.rstrip("\r") for line in open(path, encoding="latin-1").read().split("\n")]
+    pairs = list(zip(t[0::2], t[1::2]))  # (group code, value)
+    units = [v for (c, v), (c2, v2) in zip(pairs, pairs[1:]) if v == "$INSUNITS" for v in [v2.strip()]]
+    assert units == ["4"], units
+    texts, entity = [], None
+    for c, v in pairs:
+        if c.strip() == "0":
+            entity = v.strip()
+        elif entity == "TEXT" and c.strip() == "1":
+            texts.append(v)
+    missing = [w for w in want if w not in texts]
+    assert not missing, (missing, texts)
+    print("dxf units and texts", texts)
+
+
 if __name__ == "__main__":
-    {"lines": lines, "stats": stats}[sys.argv[1]](*sys.argv[2:])
+    {"lines": lines, "stats": stats, "dxf": dxf}[sys.argv[1]](*sys.argv[2:])
