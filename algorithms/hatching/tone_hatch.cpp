@@ -53,9 +53,9 @@ std::vector<std::array<Point3, 2>> family_pieces(const std::vector<std::array<co
   if (edges.empty() || !(f.step > 0) || !std::isfinite(f.step)) return out;
   const Vector3 dir = cross(normal, f.m);  // along the lines
   if (dir.is_zero()) return out;
-  int axis = 0;
+  int axis = 0;  // where the line's direction is largest, exactly (any non-zero one orders the points)
   for (int i = 1; i < 3; ++i)
-    if (std::fabs(to_double(dir[i])) > std::fabs(to_double(dir[axis]))) axis = i;
+    if (abs(dir[i]) > abs(dir[axis])) axis = i;
   auto d3 = [](const Point3& p) { return std::array<double, 3>{to_double(p.x()), to_double(p.y()), to_double(p.z())}; };
   std::vector<Crossing> hits;
   for (const auto& e : edges) {
