@@ -19,6 +19,7 @@
 #include "cli/commands.hpp"
 #include "cli/drawing_output.hpp"
 #include "cli/process.hpp"
+#include "io/models/model_input.hpp"
 #include "io/output/section_views.hpp"
 #include "io/pipeline/render.hpp"
 #include "io/pipeline/render_methods.hpp"
@@ -45,10 +46,20 @@ struct RenderArgs : OutputArgs {
   std::string plan;  // a height: a floor plan
   std::string plan_depth;
   bool no_overhead = false;
-  std::vector<std::string> section_views;  // "A=PLANE"
-  std::vector<std::string> lines;          // polyline files
-  std::string input_format;                // the inputs' format whatever their names ("-": standard input)
+  std::vector<std::string> section_views;        // "A=PLANE"
+  std::vector<std::string> lines;                // polyline files
+  std::string input_format;                      // the inputs' format whatever their names ("-": standard input)
+  double deflection = 0, deflection_angle = 15;  // a STEP or IGES model's tessellation
+  std::string tangent_edges = "thin", units;
 };
+
+ModelOptions model_options(const RenderArgs& a) {
+  ModelOptions m;
+  m.tessellation.deflection = a.deflection;
+  m.tessellation.angle_degrees = a.deflection_angle;
+  m.units = a.units;
+  return m;
+}
 
 // A merge of tile files (hlr merge): the tiles and their paths.
 struct MergeInput {
@@ -94,6 +105,7 @@ RenderOptions render_options(const RenderArgs& a) {
   RenderOptions o;
   o.method = parse_render_method(a.method);
   o.lines.edges = a.edges == "all" ? EdgeSelection::All : EdgeSelection::Feature;
+  o.tangent_edges = a.tangent_edges == "none" ? TangentEdges::None : a.tangent_edges == "visible" ? TangentEdges::Visible : TangentEdges::Thin;
   o.lines.threads = a.threads;
   try {
     o.lines.crease_degrees = parse_rational(a.crease);
@@ -165,7 +177,7 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
   std::vector<Scene> scenes;
   const long stdin_uses = std::count(a.inputs.begin(), a.inputs.end(), "-") + std::count(a.lines.begin(), a.lines.end(), "-");
   if (stdin_uses > 1) throw std::invalid_argument("standard input ('-') can be read once: give it to one input or one --lines");
-  for (const auto& in : a.inputs) scenes.push_back(load_input(in, a.input_format));
+  for (const auto& in : a.inputs) scenes.push_back(load_any_input(in, a.input_format, model_options(a)));
   std::vector<Polyline3> polylines;  // read once: one file may be standard input
   for (const std::string& f : a.lines)
     for (Polyline3& l : read_polylines(f)) polylines.push_back(std::move(l));
@@ -266,8 +278,25 @@ int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
 
 void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   cmd->add_option("inputs", a->inputs,
-                  "Mesh files (.off .obj .stl .ply) and scene files (.yaml .yml .json); - is standard input (with --input-format)")
+                  "Mesh files (.off .obj .stl .ply), models (.step .stp .iges .igs) and scene files (.yaml .yml .json); - is "
+                  "standard input (with --input-format)")
       ->required();
+  cmd->add_option("--deflection", a->deflection,
+                  "A STEP or IGES model's tessellation: the largest distance in mm from a triangle to the surface (default: a "
+                  "thousandth of the model's size)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--deflection-angle", a->deflection_angle,
+                  "A STEP or IGES model's tessellation: the largest angle in degrees between neighbouring triangles of one "
+                  "surface (default 15)")
+      ->check(CLI::Range(0.01, 90.0));
+  cmd->add_option("--tangent-edges", a->tangent_edges,
+                  "Edges where two faces of a model meet tangentially: thin (default, a narrow line of their own, layer "
+                  "'tangent'), none, or visible (as sharp edges)")
+      ->check(CLI::IsMember({"thin", "none", "visible"}));
+  cmd->add_option("--units", a->units,
+                  "The length unit of mesh files (mm default, cm, m, in): coordinates are brought to millimetres, so that "
+                  "--scale 1:100 means a hundredth of the real size (models say their own unit)")
+      ->check(CLI::IsMember({"mm", "cm", "m", "in"}));
   cmd->add_option("--input-format", a->input_format,
                   "Read the inputs as off, obj, stl, ply, yaml or json whatever their names (needed for - , standard input)")
       ->check(CLI::IsMember({"off", "obj", "stl", "ply", "yaml", "json"}));

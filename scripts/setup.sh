@@ -21,6 +21,8 @@ PACKAGES=(build-essential cmake pkg-config
   python3-dev python3-pybind11 python3-pytest   # the Python module and its tests
   libgtest-dev libbenchmark-dev time   # time: peak memory in scripts/bench_render.sh
   clang libclang-rt-14-dev   # the sanitizer build and the libFuzzer targets
+  libocct-data-exchange-dev libocct-modeling-algorithms-dev   # STEP and IGES models (Open CASCADE)
+  occt-misc assimp-testmodels             # tests: real STEP, IGES, glTF and 3MF models
   libcgal-demo)   # libcgal-demo ships data.tar.gz, the mesh corpus used by tests and benchmarks
 
 missing=()

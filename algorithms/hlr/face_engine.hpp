@@ -112,6 +112,7 @@ class Engine {
   std::vector<DrawnEdge> collect_edges(int b) const;
   Segment edge_segment(int b, const DrawnEdge& e) const;
   bool opposite_in_projection(int u, int v, int x, int y) const;
+  LineKind feature_kind(int b, const EdgeUse& a, const EdgeUse& c) const;
   bool crease(int b, const EdgeUse& a, const EdgeUse& c) const;
   // face_engine_intersections.cpp
   void find_intersections(LineDrawing& res);

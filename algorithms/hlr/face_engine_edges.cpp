@@ -51,7 +51,7 @@ std::vector<DrawnEdge> Engine<P>::collect_edges(int b) const {
         if (third_a >= 0 && third_c >= 0 && !opposite_in_projection(voff_[b] + e.u, voff_[b] + e.v, third_a, third_c))
           kind = LineKind::Silhouette;
       }
-      if (kind == LineKind::Edge && (opt_.edges == EdgeSelection::Feature || opt_.classify_all) && crease(b, a, c)) kind = LineKind::Crease;
+      if (kind == LineKind::Edge && (opt_.edges == EdgeSelection::Feature || opt_.classify_all)) kind = feature_kind(b, a, c);
     } else if (n_live == 1) {
       kind = LineKind::Boundary;
     } else {
@@ -103,6 +103,24 @@ bool Engine<P>::opposite_in_projection(int u, int v, int x, int y) const {
   V c;
   side_plane(u, v, m, c);
   return P::sign(dot<P>(m, X_[x]) - c) * P::sign(dot<P>(m, X_[y]) - c) < 0;
+}
+
+// A non-silhouette edge between two faces: a crease, a tangent edge or nothing (Edge), by the
+// faces' surfaces where the model has them, else by the crease angle.
+template <class P>
+LineKind Engine<P>::feature_kind(int b, const EdgeUse& a, const EdgeUse& c) const {
+  const FaceSurfaces* s = static_cast<std::size_t>(b) < hooks_.surfaces.size() ? hooks_.surfaces[b] : nullptr;
+  switch (s ? surface_edge(*s, a.face, c.face) : SurfaceEdge::ByAngle) {
+    case SurfaceEdge::Inside:
+      return LineKind::Edge;
+    case SurfaceEdge::Sharp:
+      return LineKind::Crease;
+    case SurfaceEdge::Tangent:
+      return LineKind::Tangent;
+    case SurfaceEdge::ByAngle:
+      break;
+  }
+  return crease(b, a, c) ? LineKind::Crease : LineKind::Edge;
 }
 
 template <class P>

@@ -31,6 +31,7 @@
 
 #include "algorithms/model/camera.hpp"
 #include "algorithms/model/line_drawing.hpp"
+#include "algorithms/solids/face_surfaces.hpp"
 #include "kernel/polyhedron.hpp"
 
 namespace hlr {
@@ -59,6 +60,10 @@ struct FaceRouteHooks {
   /// Per body (empty: none), per face: 1 for a face of a section's cap. An edge between a cap
   /// face and a face of another part is a cut line (LineKind::Cut), always drawn.
   std::vector<std::vector<char>> cap_face;
+  /// Per body (empty or null: none), the surface of the model each face is part of
+  /// (face_surfaces.hpp): an edge inside one surface is never a crease, an edge between two is
+  /// sharp (always a crease), tangent (LineKind::Tangent) or goes by the crease angle.
+  std::vector<const FaceSurfaces*> surfaces;
   /// Lines of the caller's own lying on a face of a body (hatch lines on a cap): their visibility
   /// is decided like an intersection line's (their face does not hide them), and they come
   /// after the intersection lines as segments of kind `kind`.

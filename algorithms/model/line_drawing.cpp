@@ -23,6 +23,8 @@ const char* to_string(LineKind k) {
       return "section-mark";
     case LineKind::Polyline:
       return "polyline";
+    case LineKind::Tangent:
+      return "tangent";
     case LineKind::Tone1:
       return "tone-1";
     case LineKind::Tone2:

@@ -100,7 +100,8 @@ class PieceList {
 /// are not lines of the scene, made on the page).
 /// Hatch: a section cap's hatching; Tone1..Tone8: tone hatching of the visible faces by their
 /// shade, one kind per tone level (1 the lightest hatched level); Polyline: the user's own 3D
-/// lines, hidden by the bodies.
+/// lines, hidden by the bodies. Tangent: an edge where two surfaces of a CAD model meet
+/// tangentially (G1; face_surfaces.hpp), a narrow line of its own (ISO 128, as TechDraw and Make2D).
 enum class LineKind : std::uint8_t {
   Edge,
   Boundary,
@@ -120,7 +121,8 @@ enum class LineKind : std::uint8_t {
   Tone5,
   Tone6,
   Tone7,
-  Tone8
+  Tone8,
+  Tangent
 };
 const char* to_string(LineKind k);
 /// The tone levels' kinds: tone_kind(1) is Tone1; is_tone(k) for any of them.
@@ -128,10 +130,10 @@ inline constexpr int kMaxToneLevels = 8;
 inline LineKind tone_kind(int level) { return static_cast<LineKind>(static_cast<int>(LineKind::Tone1) + level - 1); }
 inline bool is_tone(LineKind k) { return k >= LineKind::Tone1 && k <= LineKind::Tone8; }
 /// Every kind in the order a drawing's layers come in (cut lines first: the widest pen).
-inline constexpr LineKind kLayerKinds[] = {LineKind::Cut,   LineKind::Silhouette, LineKind::Boundary,    LineKind::Crease,     LineKind::Intersection,
-                                           LineKind::Edge,  LineKind::Polyline,   LineKind::Hatch,       LineKind::Tone1,      LineKind::Tone2,
-                                           LineKind::Tone3, LineKind::Tone4,      LineKind::Tone5,       LineKind::Tone6,      LineKind::Tone7,
-                                           LineKind::Tone8, LineKind::Overhead,   LineKind::SectionLine, LineKind::SectionMark};
+inline constexpr LineKind kLayerKinds[] = {
+    LineKind::Cut,      LineKind::Silhouette, LineKind::Boundary, LineKind::Crease,   LineKind::Tangent,     LineKind::Intersection, LineKind::Edge,
+    LineKind::Polyline, LineKind::Hatch,      LineKind::Tone1,    LineKind::Tone2,    LineKind::Tone3,       LineKind::Tone4,        LineKind::Tone5,
+    LineKind::Tone6,    LineKind::Tone7,      LineKind::Tone8,    LineKind::Overhead, LineKind::SectionLine, LineKind::SectionMark};
 
 /// Which edges a renderer draws.
 enum class EdgeSelection { All, Feature };

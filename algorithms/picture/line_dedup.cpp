@@ -581,6 +581,8 @@ int kind_priority(LineKind k) {
     case LineKind::Silhouette: return 4;
     case LineKind::Boundary: return 3;
     case LineKind::Crease: return 2;
+    case LineKind::Tangent:
+      return 1;
     case LineKind::Intersection: return 1;
     case LineKind::Edge: return 0;
   }

@@ -37,6 +37,41 @@ RenderBodyError::RenderBodyError(int body, std::string name, std::string source,
 namespace {
 
 // Degenerate but drawable views get a note, never a wrong picture.
+// The lines a model's surfaces decide (face_surfaces.hpp) for every route: inside one surface no
+// crease, between two sharp or tangent; then tangent edges as --tangent-edges says. The per-face
+// route decided them already (FaceRouteHooks::surfaces); the others get the same lines here,
+// except a sharp edge under the crease angle they did not make.
+void surface_lines(LineDrawing& d, const std::vector<const SceneBody*>& bodies, const RenderOptions& o) {
+  const bool classify = o.lines.edges == EdgeSelection::Feature || o.lines.classify_all;
+  std::vector<Segment> kept;
+  kept.reserve(d.segments.size());
+  for (Segment& s : d.segments) {
+    const bool edge = s.kind == Segment::Kind::Edge && s.body >= 0 && static_cast<std::size_t>(s.body) < bodies.size();
+    if (classify && edge && (s.line == LineKind::Crease || s.line == LineKind::Edge || s.line == LineKind::Tangent)) {
+      switch (surface_edge(bodies[s.body]->surfaces, s.face0, s.face1)) {
+        case SurfaceEdge::Inside:
+          s.line = LineKind::Edge;
+          break;
+        case SurfaceEdge::Sharp:
+          s.line = LineKind::Crease;
+          break;
+        case SurfaceEdge::Tangent:
+          s.line = LineKind::Tangent;
+          break;
+        case SurfaceEdge::ByAngle:
+          break;
+      }
+      if (s.line == LineKind::Edge && o.lines.edges == EdgeSelection::Feature) continue;
+    }
+    if (s.line == LineKind::Tangent) {
+      if (o.tangent_edges == TangentEdges::None) continue;
+      if (o.tangent_edges == TangentEdges::Visible) s.line = LineKind::Crease;
+    }
+    kept.push_back(std::move(s));
+  }
+  d.segments = std::move(kept);
+}
+
 void eye_plane_notes(const RenderResult& r, std::vector<std::string>& notes) {
   if (!r.camera.perspective) return;
   for (std::size_t i = 0; i < r.drawing.facing.size(); ++i) {
@@ -225,6 +260,7 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
   PolygonStep step{r, polys, scenes, o, d, so};
   m.polygons(step);
   mark_cut_lines(d, r.bodies);
+  surface_lines(d, r.bodies, o);
   if (o.lines.edges == EdgeSelection::Feature) {
     std::vector<Segment> kept;
     for (Segment& s : d.segments)
@@ -344,6 +380,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     if (!scene_view && is_scene_file(s.file)) scene_view = &s.view;
     if (!planes && is_scene_file(s.file) && !s.section.empty()) planes = &s.section;
     if (!away && is_scene_file(s.file) && !s.cutaway.empty()) away = &s.cutaway;
+    for (const std::string& n : s.notes) repairs.push_back(s.file + ": " + n);
     for (SceneBody& b : s.bodies) {
       DrawingBody name{b.name, b.source};
       if (auto fixed = remove_zero_area_triangles(b.body)) {
@@ -351,6 +388,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
         name.input_face = std::move(fixed->input_face);
         name.removed_faces = std::move(fixed->removed);
         name.repaired_faces = std::move(fixed->joined);
+        b.surfaces = renumbered_surfaces(b.surfaces, name.input_face);
         for (const std::string& n : fixed->notes) repairs.push_back(b.source + ": body '" + b.name + "' " + n);
         if (!b.face_texcoords.empty()) {  // the faces changed: their texture corners no longer match
           b.face_texcoords.clear();
@@ -393,6 +431,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   FaceRouteHooks hooks;
   hooks.facing_only = o.facing_only;
   if (sectioned) section_hooks(r.bodies, hooks);
+  for (const SceneBody* b : r.bodies) hooks.surfaces.push_back(b->surfaces.empty() ? nullptr : &b->surfaces);
   std::optional<TileCut> cut;
   if (o.tile) {
     cut.emplace(polys, r.camera, *o.tile, o.lines.threads);
@@ -415,6 +454,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     throw RenderBodyError(e.body(), b.name, b.source, e.reason());
   }
   if (sectioned) mark_cut_lines(r.drawing, r.bodies);
+  surface_lines(r.drawing, r.bodies, o);
   if (above) add_overhead(r, std::move(*above), (*planes)[0], o);
   if (!o.polylines.empty()) add_polylines(r, o.polylines, o);
   r.notes = std::move(repairs);

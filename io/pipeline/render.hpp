@@ -47,9 +47,14 @@ struct NamedSection {
   std::string standard;
 };
 
+/// How tangent edges (where two surfaces of a CAD model meet tangentially) are drawn: Thin, a
+/// narrow line of their own (layer "tangent", ISO 128); None, left out; Visible, as sharp edges.
+enum class TangentEdges { Thin, None, Visible };
+
 struct RenderOptions {
   RenderMethod method = RenderMethod::Faces;
   LineOptions lines;
+  TangentEdges tangent_edges = TangentEdges::Thin;
   ViewRequest view;
   /// Perspective near plane, as a fraction of the eye-target distance (positive).
   Rational near = Rational(1, 1000);

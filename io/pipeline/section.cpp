@@ -151,6 +151,7 @@ void cut_bodies(const std::vector<Plane>& planes, const std::vector<Plane>& away
       n.input_face = std::move(input_face);
       n.numbered = n.input_faces(input_faces) + planes.size() + away.size();
       b.body = Polyhedron(std::move(c.vertices), std::move(c.faces));
+      b.surfaces = renumbered_surfaces(b.surfaces, c.part);
       b.section_part = std::move(c.part);
       b.section_cap = std::move(c.cap);
       b.face_texcoords.clear();

@@ -11,6 +11,7 @@
 
 #include "algorithms/hatching/hatch.hpp"
 #include "algorithms/shading/lighting.hpp"
+#include "algorithms/solids/face_surfaces.hpp"
 #include "io/readers/input_error.hpp"
 #include "kernel/polyhedron.hpp"
 #include "kernel/transform.hpp"
@@ -53,6 +54,9 @@ struct SceneBody {
   /// input faces + k for the cap on plane k), and the plane whose cap it is on (-1: none).
   /// Empty: not cut.
   std::vector<int> section_part = {}, section_cap = {};
+  /// Which surface of the model each face is part of and which surfaces meet tangentially
+  /// (a CAD model's B-rep faces, a polygon split into triangles); empty: none.
+  FaceSurfaces surfaces = {};
 };
 
 struct Scene {
@@ -70,6 +74,8 @@ struct Scene {
   std::vector<Plane> section;
   /// `cutaway:` half-spaces whose common region is removed (a half section: two planes).
   std::vector<Plane> cutaway;
+  /// What reading the file did that the drawing says in its notes (a model's tessellation).
+  std::vector<std::string> notes = {};
 };
 
 /// True for .yaml, .yml and .json files.

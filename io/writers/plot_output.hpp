@@ -77,9 +77,9 @@ struct PlotStyle {
   /// Width in mm per layer key: "cut", "silhouette", "boundary", "crease", "intersection", "edge", "hatch",
   /// "overhead", "section-line", "section-mark", "polyline", "tone" (every tone level), "hidden" (all hidden layers),
   /// "through" (all layers seen through transparent faces).
-  std::map<std::string, double> weights = {{"cut", 0.7},           {"silhouette", 0.5},    {"boundary", 0.5},  {"crease", 0.35}, {"hatch", 0.25},
-                                           {"overhead", 0.25},     {"intersection", 0.35}, {"edge", 0.35},     {"hidden", 0.25}, {"through", 0.25},
-                                           {"section-line", 0.35}, {"section-mark", 0.7},  {"polyline", 0.35}, {"tone", 0.25}};
+  std::map<std::string, double> weights = {{"cut", 0.7},      {"silhouette", 0.5},    {"boundary", 0.5},      {"crease", 0.35},   {"tangent", 0.25},
+                                           {"hatch", 0.25},   {"overhead", 0.25},     {"intersection", 0.35}, {"edge", 0.35},     {"hidden", 0.25},
+                                           {"through", 0.25}, {"section-line", 0.35}, {"section-mark", 0.7},  {"polyline", 0.35}, {"tone", 0.25}};
   /// The number each layer is written with ("2 hidden-crease"; AxiDraw plots by number), by
   /// layer name: a pen map's (several layers may share a pen) or the drawing's order before a
   /// selection of layers. Empty: the order of the layers written.
