@@ -20,6 +20,7 @@
 #include "algorithms/surfaces/priority_list.hpp"
 #include "algorithms/surfaces/shadows.hpp"
 #include "algorithms/surfaces/transparency.hpp"
+#include "io/models/model_input.hpp"
 #include "io/pipeline/polylines.hpp"
 #include "io/pipeline/render_methods.hpp"
 #include "io/pipeline/render_steps.hpp"
@@ -568,7 +569,7 @@ void add_surface_fills(Plot& plot, const RenderResult& r) {
 
 RenderResult render_files(const std::vector<std::string>& inputs, const RenderOptions& o) {
   std::vector<Scene> scenes;
-  for (const auto& in : inputs) scenes.push_back(is_scene_file(in) ? load_scene(in) : scene_from_mesh(in));
+  for (const auto& in : inputs) scenes.push_back(load_any_input(in, "", {}));
   return render(std::move(scenes), o);
 }
 

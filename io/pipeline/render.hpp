@@ -190,7 +190,8 @@ Material body_material(const RenderResult& result, std::size_t body);
 /// it marks (the others black).
 std::vector<std::vector<Rgb>> flat_face_colours(const RenderResult& result, const std::vector<std::vector<char>>* only = nullptr);
 
-/// Loads mesh files (.off .obj .stl .ply) and scene files (.yaml .yml .json), then renders.
+/// Loads mesh files (.off .obj .stl .ply), models (.step .stp .iges .igs: default tessellation) and
+/// scene files (.yaml .yml .json), then renders.
 /// Also throws InputError (file and line) for bad input.
 RenderResult render_files(const std::vector<std::string>& inputs, const RenderOptions& options = {});
 
