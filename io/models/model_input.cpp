@@ -12,12 +12,6 @@ namespace hlr {
 
 namespace {
 
-std::string lower_extension(const std::string& path) {
-  std::string e = std::filesystem::path(path).extension().string();
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return e;
-}
-
 Model read_model(const std::string& path, const ModelOptions& o) {
   if (is_cad_file(path)) return read_cad_file(path, o.tessellation);
   throw InputError(path, 0, "not a model file (.step, .stp, .iges, .igs)");
@@ -50,7 +44,7 @@ Scene load_model(const std::string& path, const ModelOptions& options) {
   Scene s;
   s.file = path;
   for (ModelBody& mb : m.bodies) {
-    SceneBody b{mb.name, path, make_polyhedron(std::move(mb.mesh), path), identity_transform()};
+    SceneBody b{mb.name, path, make_polyhedron(std::move(mb.mesh), path), identity_transform(), {}, {}, {}};
     b.surfaces = std::move(mb.surfaces);
     if (mb.colour) {
       Material mat;
