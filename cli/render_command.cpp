@@ -294,9 +294,9 @@ void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
                   "'tangent'), none, or visible (as sharp edges)")
       ->check(CLI::IsMember({"thin", "none", "visible"}));
   cmd->add_option("--units", a->units,
-                  "The length unit of mesh files (mm default, cm, m, in): coordinates are brought to millimetres, so that "
+                  "The length unit of mesh files (mm default, cm, m, in, ft, um): coordinates are brought to millimetres, so that "
                   "--scale 1:100 means a hundredth of the real size (models say their own unit)")
-      ->check(CLI::IsMember({"mm", "cm", "m", "in"}));
+      ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft", "um"}));
   cmd->add_option("--input-format", a->input_format,
                   "Read the inputs as off, obj, stl, ply, yaml or json whatever their names (needed for - , standard input)")
       ->check(CLI::IsMember({"off", "obj", "stl", "ply", "yaml", "json"}));

@@ -22,6 +22,8 @@ PACKAGES=(build-essential cmake pkg-config
   libgtest-dev libbenchmark-dev time   # time: peak memory in scripts/bench_render.sh
   clang libclang-rt-14-dev   # the sanitizer build and the libFuzzer targets
   libocct-data-exchange-dev libocct-modeling-algorithms-dev   # STEP and IGES models (Open CASCADE)
+  libtinygltf-dev lib3mf-dev              # glTF 2 and 3MF models
+  python3-ezdxf                           # tests: ezdxf audits our DXF files
   occt-misc assimp-testmodels             # tests: real STEP, IGES, glTF and 3MF models
   libcgal-demo)   # libcgal-demo ships data.tar.gz, the mesh corpus used by tests and benchmarks
 

@@ -23,7 +23,7 @@ struct ModelBody {
 
 struct Model {
   std::vector<ModelBody> bodies;
-  /// The length unit of the coordinates: "mm", "cm", "m" or "in".
+  /// The length unit of the coordinates: "mm", "cm", "m", "in", "ft" or "um".
   std::string units = "mm";
   /// The file's convention: Z up (CAD, 3D printing) or Y up (glTF).
   bool z_up = true;

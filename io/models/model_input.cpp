@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "io/models/cad_reader.hpp"
+#include "io/models/gltf_reader.hpp"
+#include "io/models/threemf_reader.hpp"
 #include "kernel/transform.hpp"
 
 namespace hlr {
@@ -14,7 +16,9 @@ namespace {
 
 Model read_model(const std::string& path, const ModelOptions& o) {
   if (is_cad_file(path)) return read_cad_file(path, o.tessellation);
-  throw InputError(path, 0, "not a model file (.step, .stp, .iges, .igs)");
+  if (is_gltf_file(path)) return read_gltf_file(path);
+  if (is_3mf_file(path)) return read_3mf_file(path);
+  throw InputError(path, 0, "not a model file (.step, .stp, .iges, .igs, .gltf, .glb, .3mf)");
 }
 
 // Every body's coordinates multiplied by `k` (exactly).
@@ -34,10 +38,12 @@ Rational millimetres_per(const std::string& unit) {
   if (unit == "cm") return 10;
   if (unit == "m") return 1000;
   if (unit == "in") return Rational(254, 10);
-  throw std::invalid_argument("--units: '" + unit + "' is not a unit (mm, cm, m, in)");
+  if (unit == "ft") return Rational(3048, 10);
+  if (unit == "um") return Rational(1, 1000);
+  throw std::invalid_argument("--units: '" + unit + "' is not a unit (mm, cm, m, in, ft, um)");
 }
 
-bool is_model_file(const std::string& path) { return is_cad_file(path); }
+bool is_model_file(const std::string& path) { return is_cad_file(path) || is_gltf_file(path) || is_3mf_file(path); }
 
 Scene load_model(const std::string& path, const ModelOptions& options) {
   Model m = read_model(path, options);

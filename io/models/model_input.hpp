@@ -29,7 +29,7 @@ Scene load_model(const std::string& path, const ModelOptions& options);
 /// mesh files, standard input), its coordinates brought to millimetres by `options.units`.
 Scene load_any_input(const std::string& path, const std::string& format, const ModelOptions& options);
 
-/// Millimetres per unit: "mm" 1, "cm" 10, "m" 1000, "in" 25.4; throws std::invalid_argument
+/// Millimetres per unit: "mm" 1, "cm" 10, "m" 1000, "in" 25.4, "ft" 304.8, "um" 0.001; throws std::invalid_argument
 /// for another name.
 Rational millimetres_per(const std::string& unit);
 

@@ -22,7 +22,7 @@
 #include "io/pipeline/render.hpp"
 #include "io/views/standard_views.hpp"
 #include "kernel/mesh_checks.hpp"
-#include "support/face_oracle.hpp"
+#include "support/drawing_oracle.hpp"
 
 namespace hlr {
 namespace {
@@ -133,42 +133,17 @@ TEST(CadModel, FilletMeetsItsFacesTangentially) {
   EXPECT_EQ(kinds[TangentEdges::None][LineKind::Crease], kinds[TangentEdges::Thin][LineKind::Crease]);
 }
 
-// The oracle: the middle of every piece is visible exactly when no face is nearer on its sight
-// ray (pieces whose ray grazes a face's border are skipped). Returns the pieces decided.
-long check_visibility(const RenderResult& r) {
-  std::vector<const Polyhedron*> polys;
-  for (const SceneBody* b : r.bodies) polys.push_back(&b->body);
-  const PicturePlane pp(r.camera);
-  const auto faces = test::oracle_faces(polys, pp);
-  long decided = 0;
-  for (const Segment& s : r.drawing.segments)
-    for (const Piece& p : s.pieces) {
-      const Point3 x = s.at((p.t0 + p.t1) / 2);
-      const Exact2 q = pp.project(x);
-      const test::SightRay ray = test::sight_ray(r.camera, pp, q);
-      int k = ray.dir[0] != 0 ? 0 : ray.dir[1] != 0 ? 1 : 2;
-      const Rational t = (x[k] - ray.base[k]) / ray.dir[k];  // orthographic: larger is nearer
-      bool nearer = false, unsure = false;
-      for (const test::SightHit& h : test::sight_hits(faces, r.camera, pp, q))
-        if (h.nearness > t) (h.in == 0 ? unsure : nearer) = true;
-      if (unsure && !nearer) continue;
-      ++decided;
-      EXPECT_EQ(p.visible, !nearer) << to_string(s.line) << " piece of " << s.from() << " - " << s.to();
-    }
-  return decided;
-}
-
 TEST(CadModel, OracleAgreesOnTessellatedSolids) {
   for (const char* view : {"front", "top", "iso"}) {
     RenderOptions o;
     set_view(o, view);
-    EXPECT_GT(check_visibility(render({load_model(write_step(filleted_box(), "fillet"), {})}, o)), 10) << view;
+    EXPECT_GT(test::check_visibility(render({load_model(write_step(filleted_box(), "fillet"), {})}, o)), 10) << view;
   }
   const char* screw = "/usr/share/opencascade/data/step/screw.step";
   if (!std::filesystem::exists(screw)) GTEST_SKIP() << "occt-misc is not installed";
   RenderOptions o;
   set_view(o, "iso");
-  EXPECT_GT(check_visibility(render({load_model(screw, {})}, o)), 100);
+  EXPECT_GT(test::check_visibility(render({load_model(screw, {})}, o)), 100);
 }
 
 TEST(CadModel, RealFilesAreClosedSolids) {
