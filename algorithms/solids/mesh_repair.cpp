@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 
+#include "algorithms/solids/triangulate.hpp"
 #include "algorithms/support/parallel.hpp"
 #include "kernel/predicates.hpp"
 
@@ -28,7 +29,73 @@ bool middle_of(const std::vector<Point3>& vs, const Face& f, int& a, int& m, int
   return false;
 }
 
+// Whether a face of four or more vertices has a vertex off the plane of its Newell normal; sets
+// the normal.
+bool nonplanar(const std::vector<Point3>& vs, const Face& f, Vector3& normal) {
+  if (f.size() < 4) return false;
+  std::vector<const Point3*> p(f.size());
+  for (std::size_t k = 0; k < f.size(); ++k) p[k] = &vs[f[k]];
+  normal = newell_normal(p.data(), p.size());
+  for (std::size_t k = 1; k < f.size(); ++k)
+    if (dot(normal, *p[k] - *p[0]) != 0) return true;
+  return false;
+}
+
+// The triangles of a non-planar face (vertex ids); empty when it cannot be split.
+std::vector<Face> split_face(const std::vector<Point3>& vs, const Face& f, const Vector3& normal) {
+  if (f.size() == 4) {
+    const Vector3 d02 = vs[f[2]] - vs[f[0]], d13 = vs[f[3]] - vs[f[1]];
+    if (dot(d13, d13) < dot(d02, d02)) return {Face{f[0], f[1], f[3]}, Face{f[1], f[2], f[3]}};
+    return {Face{f[0], f[1], f[2]}, Face{f[0], f[2], f[3]}};
+  }
+  std::vector<Face> out;
+  if (normal.is_zero()) return out;
+  const std::vector<int> poly(f.begin(), f.end());
+  for (const FaceTriangle& t : triangulate_face(vs, poly, normal)) out.push_back(Face{poly[t.v[0]], poly[t.v[1]], poly[t.v[2]]});
+  return out;
+}
+
 }  // namespace
+
+std::optional<MeshRepair> split_nonplanar_faces(const Polyhedron& body) {
+  const std::vector<Point3>& vs = body.vertices();
+  std::atomic<bool> any{false};
+  ParallelLoop().run(body.faces().size(), 8192, [&](unsigned, std::size_t b, std::size_t e) {
+    Vector3 n;
+    for (std::size_t f = b; f < e && !any.load(std::memory_order_relaxed); ++f)
+      if (nonplanar(vs, body.faces()[f], n)) any = true;
+  });
+  if (!any) return std::nullopt;
+  std::vector<Face> faces;
+  std::vector<int> input, split;
+  long quads = 0, polygons = 0;
+  for (std::size_t f = 0; f < body.faces().size(); ++f) {
+    const Face& face = body.faces()[f];
+    Vector3 n;
+    std::vector<Face> parts;
+    if (nonplanar(vs, face, n)) parts = split_face(vs, face, n);
+    if (parts.empty()) {
+      faces.push_back(face);
+      input.push_back(static_cast<int>(f));
+      continue;
+    }
+    (face.size() == 4 ? quads : polygons)++;
+    split.push_back(static_cast<int>(f));
+    for (Face& t : parts) {
+      faces.push_back(std::move(t));
+      input.push_back(static_cast<int>(f));
+    }
+  }
+  if (split.empty()) return std::nullopt;
+  std::string what;
+  if (quads > 0) what = std::to_string(quads) + " non-planar quad" + (quads > 1 ? "s" : "") + " split along the shorter diagonal";
+  if (polygons > 0)
+    what += (what.empty() ? "" : ", ") + std::to_string(polygons) + " non-planar polygon" + (polygons > 1 ? "s" : "") + " split into triangles";
+  MeshRepair out{Polyhedron(vs, std::move(faces)), {}, std::move(input), {}, std::move(split)};
+  out.notes.push_back("had " + what + " (first: face " + std::to_string(out.joined[0]) +
+                      "); the drawing is exact for those triangles, the diagonals are not creases");
+  return out;
+}
 
 std::optional<MeshRepair> remove_zero_area_triangles(const Polyhedron& body) {
   const std::vector<Point3>& vs = body.vertices();

@@ -363,6 +363,59 @@ void add_overhead(RenderResult& r, std::vector<Scene> scene, const Plane& plane,
   }
 }
 
+// The mesh repairs before any route runs (algorithms/solids/mesh_repair.hpp): non-planar
+// polygons split into triangles (each polygon stays one surface: its diagonals are not
+// creases), then zero-area triangles removed; `name` maps the faces drawn to the input's.
+void repair_body(SceneBody& b, DrawingBody& name, std::vector<std::string>& repairs) {
+  const std::string who = b.source + ": body '" + b.name + "' ";
+  if (auto split = split_nonplanar_faces(b.body)) {
+    name.numbered = b.body.faces().size();
+    if (!b.face_texcoords.empty()) {
+      // Each triangle's corners take the texture corners of the same vertices in its polygon.
+      std::vector<std::vector<int>> tex;
+      for (std::size_t k = 0; k < split->body.faces().size(); ++k) {
+        const Face& from = b.body.faces()[split->input_face[k]];
+        const std::vector<int>& t = b.face_texcoords[split->input_face[k]];
+        std::vector<int> corners;
+        for (int v : split->body.faces()[k]) {
+          const auto at = std::find(from.begin(), from.end(), v) - from.begin();
+          if (!t.empty()) corners.push_back(t[at]);
+        }
+        tex.push_back(std::move(corners));
+      }
+      b.face_texcoords = std::move(tex);
+    }
+    b.body = std::move(split->body);
+    if (b.surfaces.empty()) {
+      b.surfaces.surface = split->input_face;
+      b.surfaces.sharp_between = false;
+    } else {
+      b.surfaces = renumbered_surfaces(b.surfaces, split->input_face);
+    }
+    name.input_face = std::move(split->input_face);
+    name.repaired_faces = std::move(split->joined);
+    for (const std::string& n : split->notes) repairs.push_back(who + n);
+  }
+  if (auto fixed = remove_zero_area_triangles(b.body)) {
+    b.body = std::move(fixed->body);
+    b.surfaces = renumbered_surfaces(b.surfaces, fixed->input_face);
+    auto input = [&](int f) { return name.output_face(f); };
+    for (int& f : fixed->input_face) f = input(f);
+    for (int& f : fixed->removed) f = input(f);
+    for (int& f : fixed->joined) f = input(f);
+    name.input_face = std::move(fixed->input_face);
+    name.removed_faces = std::move(fixed->removed);
+    name.repaired_faces.insert(name.repaired_faces.end(), fixed->joined.begin(), fixed->joined.end());
+    std::sort(name.repaired_faces.begin(), name.repaired_faces.end());
+    name.repaired_faces.erase(std::unique(name.repaired_faces.begin(), name.repaired_faces.end()), name.repaired_faces.end());
+    for (const std::string& n : fixed->notes) repairs.push_back(who + n);
+    if (!b.face_texcoords.empty()) {  // the faces changed: their texture corners no longer match
+      b.face_texcoords.clear();
+      repairs.push_back(who + "texture coordinates dropped with the repair");
+    }
+  }
+}
+
 }  // namespace
 
 RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
@@ -384,18 +437,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     for (const std::string& n : s.notes) repairs.push_back(s.file + ": " + n);
     for (SceneBody& b : s.bodies) {
       DrawingBody name{b.name, b.source};
-      if (auto fixed = remove_zero_area_triangles(b.body)) {
-        b.body = std::move(fixed->body);
-        name.input_face = std::move(fixed->input_face);
-        name.removed_faces = std::move(fixed->removed);
-        name.repaired_faces = std::move(fixed->joined);
-        b.surfaces = renumbered_surfaces(b.surfaces, name.input_face);
-        for (const std::string& n : fixed->notes) repairs.push_back(b.source + ": body '" + b.name + "' " + n);
-        if (!b.face_texcoords.empty()) {  // the faces changed: their texture corners no longer match
-          b.face_texcoords.clear();
-          repairs.push_back(b.source + ": body '" + b.name + "' texture coordinates dropped with the repair");
-        }
-      }
+      repair_body(b, name, repairs);
       editable.push_back(&b);
       polys.push_back(&b.body);
       r.names.push_back(std::move(name));

@@ -8,11 +8,13 @@
 #include <filesystem>
 #include <map>
 #include <random>
+#include <sstream>
 #include <tuple>
 
 #include "algorithms/hlr/face_occluders.hpp"
 #include "algorithms/hlr/roberts.hpp"
 #include "io/pipeline/render.hpp"
+#include "io/readers/mesh_reader.hpp"
 #include "io/readers/scene.hpp"
 #include "io/views/view_choice.hpp"
 #include "support/ray_oracle.hpp"
@@ -425,6 +427,37 @@ TEST(Torture, ZeroAreaSeamDoesNotLeak) {
   RenderResult r = render_files({std::string(HLR_DATA_DIR) + "/degenerate/meshes/zero_area_seam.off"}, opt);
   for (const Segment& s : r.drawing.segments) EXPECT_NE(s.line, LineKind::Boundary);
   for (const Segment& s : r.drawing.segments) EXPECT_FALSE(s.v0 == 16 || s.v1 == 16) << "a line through the seam's middle vertex";
+}
+
+// A quad mesh's non-planar quads are split along their shorter diagonals (the family: polygon
+// meshes from modellers, CGAL's torus_quad and mpi, PLY cubes with moved corners): the drawing
+// is exact for those triangles (the oracle against the hand-split convex solid), and is the
+// drawing of the hand-split OFF except the diagonals' creases (a diagonal is still drawn where it
+// is a silhouette).
+TEST(Torture, NonPlanarQuadsAreSplit) {
+  const std::string dir = std::string(HLR_DATA_DIR) + "/degenerate/meshes/";
+  const Polyhedron truth = load_mesh(dir + "twisted_quads_triangles.off");
+  ASSERT_TRUE(truth.report().closed());
+  for (ViewRequest v : {ViewRequest{Vector3(1, Rational(13, 10), Rational(17, 10)), {}, {}, {}}, ViewRequest{Vector3(0, -1, 0), {}, {}, {}},
+                        ViewRequest{{}, Point3(0, -200, 20), Point3(0, 0, 20), {}}}) {
+    EXPECT_TRUE(has_note(check_named("twisted_quads.off", v, {truth}), "4 non-planar quads split along the shorter diagonal"));
+    RenderOptions opt;
+    opt.view = v;
+    std::map<std::pair<int, int>, std::string> quads, triangles;
+    auto text = [](const Segment& s) {
+      std::ostringstream o;
+      o << to_string(s.line);
+      for (const Piece& p : s.pieces) o << " [" << p.t0 << "," << p.t1 << (p.visible ? " v]" : " h]");
+      return o.str();
+    };
+    for (const Segment& s : render_files({dir + "twisted_quads.off"}, opt).drawing.segments) quads[{s.v0, s.v1}] = text(s);
+    for (const Segment& s : render_files({dir + "twisted_quads_triangles.off"}, opt).drawing.segments) {
+      const std::pair<int, int> e{std::min(s.v0, s.v1), std::max(s.v0, s.v1)};
+      const bool diagonal = e == std::pair{1, 4} || e == std::pair{2, 5} || e == std::pair{3, 6} || e == std::pair{0, 7};
+      if (!diagonal || s.line == LineKind::Silhouette) triangles[{s.v0, s.v1}] = text(s);  // a diagonal can be an outline
+    }
+    EXPECT_EQ(quads, triangles);
+  }
 }
 
 TEST(Torture, OverlappingComponentsRefusedByRoberts) {
