@@ -11,14 +11,16 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
 
-#include "io/writers/plot_output.hpp"
 #include "io/writers/parallel_text.hpp"
+#include "io/writers/plot_output.hpp"
 
 namespace hlr {
 namespace {
@@ -152,6 +154,39 @@ void append_entities(std::string& out, const PageStrokes& st, const std::string&
   handle = first + st.size();
 }
 
+// dxflib writes the OBJECTS section without owner handles (group 330 right after an object's
+// handle), which DXF readers then repair (ezdxf's audit made 13 fixes): here each object gets
+// its owner, the dictionary that lists it (350 or 360), the root dictionary the owner 0.
+std::string with_owners(const std::string& frame) {
+  const std::string head = "OBJECTS\n";
+  const std::size_t begin = frame.find(head);
+  if (begin == std::string::npos) return frame;
+  const std::size_t end = frame.find("\nENDSEC\n", begin);
+  std::vector<std::string> lines;
+  std::istringstream in(frame.substr(begin + head.size(), end + 1 - begin - head.size()));
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  auto code = [](const std::string& c) { return std::atoi(c.c_str()); };
+  std::map<std::string, std::string> owner;
+  std::string dict;
+  for (std::size_t i = 0; i + 1 < lines.size(); i += 2) {
+    const int c = code(lines[i]);
+    if (c == 0) dict = lines[i + 1] == "DICTIONARY" || lines[i + 1] == "ACDBDICTIONARYWDFLT" ? "?" : "";
+    if (c == 5 && dict == "?") dict = lines[i + 1];
+    if ((c == 350 || c == 360) && !dict.empty() && dict != "?") owner.emplace(lines[i + 1], dict);
+  }
+  std::string body;
+  bool first = true;
+  for (std::size_t i = 0; i + 1 < lines.size(); i += 2) {
+    body += lines[i] + "\n" + lines[i + 1] + "\n";
+    if (code(lines[i]) != 5) continue;
+    auto it = owner.find(lines[i + 1]);
+    if (it != owner.end() || first) body += "330\n" + (it != owner.end() ? it->second : std::string("0")) + "\n";
+    first = false;
+  }
+  if (lines.size() % 2 == 1) body += lines.back() + "\n";  // the group code of ENDSEC
+  return frame.substr(0, begin + head.size()) + body + frame.substr(end + 1);
+}
+
 }  // namespace
 
 std::string sheet_to_dxf(const Sheet& sheet, const PlotStyle& style) {
@@ -226,7 +261,7 @@ std::string sheet_to_dxf(const Sheet& sheet, const PlotStyle& style) {
   std::ifstream in(tmpl, std::ios::binary);
   std::stringstream ss;
   ss << in.rdbuf();
-  const std::string frame = ss.str();
+  const std::string frame = with_owners(ss.str());
   const std::string mark = std::string("999\n") + kEntitiesMark + "\n";
   const std::size_t at = frame.find(mark);
   if (at == std::string::npos || frame.find(mark, at + 1) != std::string::npos) throw std::runtime_error("the DXF writer lost its entities' place");
