@@ -4,8 +4,11 @@
 // identity").
 #pragma once
 
+#include <cstdint>
 #include <utility>
 #include <vector>
+
+#include "kernel/face.hpp"
 
 namespace hlr {
 
@@ -28,6 +31,12 @@ struct FaceSurfaces {
 /// edge, its own line class), or ByAngle (the crease angle decides).
 enum class SurfaceEdge { Inside, Sharp, Tangent, ByAngle };
 SurfaceEdge surface_edge(const FaceSurfaces& s, int f0, int f1);
+
+/// The smooth surfaces a file marks (its normals, OBJ's smoothing groups): per face and corner
+/// a key (a normal's number, a smoothing group); two faces that share an edge are one surface
+/// when each end of the edge has the same key in both. Edges between surfaces go by the crease
+/// angle (`sharp_between` false): the keys say what is smooth, not what must be drawn.
+FaceSurfaces surfaces_from_corner_keys(const std::vector<Face>& faces, const std::vector<std::vector<std::int64_t>>& keys);
 
 /// The surfaces after faces were split or renumbered: new face k is part of old face
 /// `part[k]`; a part >= the old face count (a section's cap) gets a surface of its own, one per

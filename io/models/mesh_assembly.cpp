@@ -4,8 +4,6 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
-#include <numeric>
-#include <unordered_map>
 
 namespace hlr {
 
@@ -39,41 +37,17 @@ Rational determinant3(const Matrix4& m) {
          m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
 }
 
-int find(std::vector<int>& parent, int a) {
-  while (parent[a] != a) a = parent[a] = parent[parent[a]];
-  return a;
-}
-
-// Faces joined across every edge where both faces' corners carry the same normals: one smooth
-// surface per group. `corner[f][k]` is the file's position index of face f's corner k.
-FaceSurfaces smooth_surfaces(const std::vector<Face>& faces, const std::vector<std::array<int, 3>>& corner,
-                             const std::vector<std::array<float, 3>>& normals) {
-  std::vector<int> parent(faces.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  // Per undirected edge of welded vertices: the first face on it and its two corners' normals.
-  struct Seen {
-    int face;
-    FloatKey na, nb;  // normals at the edge's lower and higher vertex
-  };
-  std::unordered_map<std::uint64_t, Seen> edges;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    for (int k = 0; k < 3; ++k) {
-      const int a = faces[f][k], b = faces[f][(k + 1) % 3];
-      const int ca = corner[f][k], cb = corner[f][(k + 1) % 3];
-      const bool up = a < b;
-      const std::uint64_t e = (static_cast<std::uint64_t>(up ? a : b) << 32) | static_cast<std::uint32_t>(up ? b : a);
-      const FloatKey na = key_of(normals[up ? ca : cb]), nb = key_of(normals[up ? cb : ca]);
-      auto [it, inserted] = edges.emplace(e, Seen{static_cast<int>(f), na, nb});
-      if (!inserted && it->second.na == na && it->second.nb == nb) parent[find(parent, static_cast<int>(f))] = find(parent, it->second.face);
-    }
+// Per face and corner, the number of its normal (equal floats, one number).
+std::vector<std::vector<std::int64_t>> normal_keys(const std::vector<std::array<int, 3>>& corner, const std::vector<std::array<float, 3>>& normals) {
+  std::map<FloatKey, std::int64_t> number;
+  std::vector<std::vector<std::int64_t>> keys;
+  keys.reserve(corner.size());
+  for (const std::array<int, 3>& c : corner) {
+    std::vector<std::int64_t> k(3);
+    for (int i = 0; i < 3; ++i) k[i] = number.emplace(key_of(normals[c[i]]), static_cast<std::int64_t>(number.size())).first->second;
+    keys.push_back(std::move(k));
   }
-  FaceSurfaces s;
-  s.sharp_between = false;
-  s.surface.resize(faces.size());
-  std::unordered_map<int, int> number;
-  for (std::size_t f = 0; f < faces.size(); ++f)
-    s.surface[f] = number.emplace(find(parent, static_cast<int>(f)), static_cast<int>(number.size())).first->second;
-  return s;
+  return keys;
 }
 
 }  // namespace
@@ -115,7 +89,7 @@ ModelBody assemble_body(const FloatBody& body, long& dropped) {
     corner.push_back(c);
   }
   out.mesh.face_lines.assign(out.mesh.faces.size(), 0);
-  if (!body.normals.empty()) out.surfaces = smooth_surfaces(out.mesh.faces, corner, body.normals);
+  if (!body.normals.empty()) out.surfaces = surfaces_from_corner_keys(out.mesh.faces, normal_keys(corner, body.normals));
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "algorithms/solids/face_surfaces.hpp"
 #include "io/readers/input_error.hpp"
 #include "kernel/polyhedron.hpp"
 
@@ -25,6 +26,8 @@ struct MeshData {
   /// each corner's (aligned with the face's vertices; empty: the face has none).
   std::vector<std::array<double, 2>> texcoords;
   std::vector<std::vector<int>> face_texcoords;
+  /// The smooth surfaces the file marks (OBJ's normals or smoothing groups); empty: none.
+  FaceSurfaces surfaces;
 };
 
 /// Most vertices a single face may have.

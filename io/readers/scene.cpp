@@ -205,8 +205,10 @@ Scene scene_from_mesh(const std::string& path) {
   MeshData data = read_mesh_file(path);
   auto texcoords = std::move(data.texcoords);
   auto face_texcoords = std::move(data.face_texcoords);
+  FaceSurfaces surfaces = std::move(data.surfaces);
   s.bodies.push_back(SceneBody{std::filesystem::path(path).stem().string(), path, make_polyhedron(std::move(data), path),
                                identity_transform(), {}, {}, {}, std::nullopt, std::move(texcoords), std::move(face_texcoords)});
+  s.bodies.back().surfaces = std::move(surfaces);
   return s;
 }
 
@@ -225,6 +227,7 @@ Scene load_input(const std::string& path, const std::string& format) {
   MeshData data = read_mesh_bytes(bytes, format, name);
   auto texcoords = std::move(data.texcoords);
   auto face_texcoords = std::move(data.face_texcoords);
+  FaceSurfaces surfaces = std::move(data.surfaces);
   const std::string body = path == "-" ? "stdin" : std::filesystem::path(path).stem().string();
   s.bodies.push_back(SceneBody{body,
                                name,
@@ -236,6 +239,7 @@ Scene load_input(const std::string& path, const std::string& format) {
                                std::nullopt,
                                std::move(texcoords),
                                std::move(face_texcoords)});
+  s.bodies.back().surfaces = std::move(surfaces);
   return s;
 }
 
@@ -391,6 +395,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
     std::vector<Face> typed;
     std::vector<std::array<double, 2>> texcoords;
     std::vector<std::vector<int>> face_texcoords;
+    FaceSurfaces surfaces;
     if (b["mesh"]) {
       std::string rel = c.text(b["mesh"], "mesh");
       std::filesystem::path mp = rel;
@@ -400,6 +405,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
         MeshData data = read_mesh_file(source);
         texcoords = std::move(data.texcoords);
         face_texcoords = std::move(data.face_texcoords);
+        surfaces = std::move(data.surfaces);
         poly.emplace(make_polyhedron(std::move(data), source));
       } catch (const InputError& e) {
         c.fail(b["mesh"], "mesh '" + rel + "': " + e.what());
@@ -432,6 +438,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
     }
     s.bodies.push_back(SceneBody{name, source, std::move(*poly), m, std::move(steps), std::move(notes), std::move(typed), std::nullopt,
                                  std::move(texcoords), std::move(face_texcoords)});
+    s.bodies.back().surfaces = std::move(surfaces);
     if (b["material"]) s.bodies.back().material = parse_material(c, b["material"], static_cast<int>(i));
     if (b["cut"]) {
       const std::string t = c.text(b["cut"], "cut");

@@ -7,8 +7,11 @@
 #include <fstream>
 #include <map>
 #include <random>
+#include <sstream>
 
+#include "io/pipeline/render.hpp"
 #include "io/readers/mesh_reader.hpp"
+#include "io/readers/scene.hpp"
 #include "support/numbers.hpp"
 
 using namespace hlr;
@@ -86,6 +89,64 @@ TEST(MeshIO, ObjTextureCoordinatesPerCorner) {
   fails("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/1\n", "texture index 2 is out of range", 5);
   fails("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2 3/1\n", "some corners and not others", 5);
   fails("v 0 0 0\nvt zero 0\n", "bad number 'zero' in texture coordinates", 2);
+}
+
+// A hexagonal prism as OBJ exporters write a shaded cylinder: its side smooth (one smoothing
+// group, or normals shared along the side's edges), its caps flat.
+std::string obj_prism(bool with_normals) {
+  std::ostringstream o;
+  const char* xy[6] = {"1 0", "0.5 0.866", "-0.5 0.866", "-1 0", "-0.5 -0.866", "0.5 -0.866"};
+  for (const char* p : xy) o << "v " << p << " 0\nv " << p << " 2\n";  // vertex 2k+1 low, 2k+2 high
+  if (with_normals) {
+    for (const char* p : xy) o << "vn " << p << " 0\n";  // 1..6: the side's
+    o << "vn 0 0 -1\nvn 0 0 1\n";                        // 7, 8: the caps'
+  }
+  o << (with_normals ? "" : "s 1\n");
+  for (int k = 0; k < 6; ++k) {
+    const int j = (k + 1) % 6, lo = 2 * k + 1, hi = 2 * k + 2, lo2 = 2 * j + 1, hi2 = 2 * j + 2;
+    if (with_normals)
+      o << "f " << lo << "//" << k + 1 << " " << lo2 << "//" << j + 1 << " " << hi2 << "//" << j + 1 << " " << hi << "//" << k + 1 << "\n";
+    else o << "f " << lo << " " << lo2 << " " << hi2 << " " << hi << "\n";
+  }
+  o << (with_normals ? "" : "s off\n");
+  o << "f";
+  for (int k = 5; k >= 0; --k) o << " " << 2 * k + 1 << (with_normals ? "//7" : "");
+  o << "\nf";
+  for (int k = 0; k < 6; ++k) o << " " << 2 * k + 2 << (with_normals ? "//8" : "");
+  o << "\n";
+  return o.str();
+}
+
+TEST(MeshIO, ObjNormalsAndSmoothingGroupsMarkSmoothSurfaces) {
+  for (bool normals : {true, false}) {
+    MeshData m = read_obj(obj_prism(normals), "prism.obj");
+    ASSERT_EQ(m.surfaces.surface.size(), 8u) << normals;
+    for (int f = 1; f < 6; ++f) EXPECT_EQ(m.surfaces.surface[f], m.surfaces.surface[0]) << "the side is one surface";
+    EXPECT_NE(m.surfaces.surface[6], m.surfaces.surface[0]);
+    EXPECT_NE(m.surfaces.surface[7], m.surfaces.surface[0]);
+    EXPECT_NE(m.surfaces.surface[6], m.surfaces.surface[7]);
+    EXPECT_FALSE(m.surfaces.sharp_between);
+  }
+  // Drawn through a scene: no crease across the smooth side (its 60-degree edges are creases in
+  // the same prism without smoothing: the OBJ with its `s` lines taken out).
+  auto across_side = [](const std::string& text) {
+    const std::string path = (std::filesystem::temp_directory_path() / "hlr_prism.obj").string();
+    std::ofstream(path) << text;
+    RenderOptions o;
+    o.view.direction = Vector3(1, Rational(13, 10), Rational(17, 10));
+    int n = 0;
+    for (const Segment& s : render({load_input(path, "")}, o).drawing.segments) n += s.line == LineKind::Crease && s.from().z() != s.to().z();
+    return n;
+  };
+  std::string plain = obj_prism(false);
+  for (std::size_t at; (at = plain.find("s ")) != std::string::npos;) plain.erase(at, plain.find('\n', at) + 1 - at);
+  EXPECT_EQ(across_side(obj_prism(true)), 0);
+  EXPECT_EQ(across_side(obj_prism(false)), 0);
+  EXPECT_GT(across_side(plain), 0);
+  // Without either, no surfaces: every edge goes by the crease angle.
+  EXPECT_TRUE(read_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "t.obj").surfaces.empty());
+  EXPECT_THROW(read_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//2 3//1\n", "t.obj"), InputError);
+  EXPECT_THROW(read_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\ns one\nf 1 2 3\n", "t.obj"), InputError);
 }
 
 TEST(MeshIO, AsciiStlMergesEqualCornersExactly) {
