@@ -113,7 +113,9 @@ class Engine {
   Segment edge_segment(int b, const DrawnEdge& e) const;
   bool opposite_in_projection(int u, int v, int x, int y) const;
   LineKind feature_kind(int b, const EdgeUse& a, const EdgeUse& c) const;
-  bool crease(int b, const EdgeUse& a, const EdgeUse& c) const;
+  bool crease(int b, const EdgeUse& a, const EdgeUse& c, const CreaseAngle& angle) const;
+  void continue_creases(int b, std::vector<signed char>& kinds, std::vector<signed char>& hidden, std::vector<char>& line) const;
+  bool continues(int b, const BodyEdge& e) const;
   // face_engine_intersections.cpp
   void find_intersections(LineDrawing& res);
   std::vector<Segment> crossing_segments(LineDrawing& res);
@@ -154,6 +156,7 @@ class Engine {
   Rational scale_;
   Projector proj_;
   CreaseAngle crease_;
+  CreaseAngle continued_;  // half the crease angle: how far a crease line continues
 
   std::vector<int> voff_;
   std::vector<bool> solid_;

@@ -38,7 +38,8 @@ Engine<P>::Engine(const std::vector<const Polyhedron*>& bodies, const Camera& ca
       view_(std::move(view)),
       scale_(std::move(scale)),
       proj_(cam, frame_of(bodies)),
-      crease_(opt.crease_degrees) {}
+      crease_(opt.crease_degrees),
+      continued_(opt.crease_degrees / 2) {}
 
 template <class P>
 LineDrawing Engine<P>::run() {

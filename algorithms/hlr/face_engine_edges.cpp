@@ -1,6 +1,7 @@
 // The per-face engine, drawn edges (see face_engine.hpp): which edges of each body are lines
 // of the drawing (boundary, silhouette, crease over the threshold, or every edge) and which
-// are self-hidden (both faces non-facing, the notes' Stage 1).
+// are self-hidden (both faces non-facing, the notes' Stage 1); a crease line that ends goes on
+// along its straightest continuation over half the crease angle (docs/design.md, "Crease lines").
 #include "algorithms/hlr/face_engine.hpp"
 #include "algorithms/support/parallel.hpp"
 #include "algorithms/support/parallel_scan.hpp"
@@ -14,6 +15,10 @@ std::vector<DrawnEdge> Engine<P>::collect_edges(int b) const {
   const RawVector<BodyEdge>& edges = topo_[b].edges;
   // Each edge classified on every core (-1: not drawn), then the drawn ones appended in order.
   std::vector<signed char> kinds(edges.size()), hidden(edges.size());
+  // Per edge: a line whatever the view (a boundary, a crease, a cut, a non-manifold edge), the
+  // ends of crease lines are found by.
+  const bool continuing = opt_.continue_creases && (opt_.edges == EdgeSelection::Feature || opt_.classify_all);
+  std::vector<char> line(continuing ? edges.size() : 0);
   ParallelLoop(opt_.threads).for_each(edges.size(), 4096, [&](std::size_t i) {
     const BodyEdge& e = edges[i];
     LineKind kind = LineKind::Edge;
@@ -36,6 +41,7 @@ std::vector<DrawnEdge> Engine<P>::collect_edges(int b) const {
         }
         const std::vector<char>& cap = hooks_.cap_face[b];
         if (cap[a.face] || cap[c.face]) {
+          if (continuing) line[i] = 1;
           kinds[i] = static_cast<signed char>(LineKind::Cut);
           hidden[i] = solid_[b] && fa < 0 && fc < 0;
           return;
@@ -51,11 +57,19 @@ std::vector<DrawnEdge> Engine<P>::collect_edges(int b) const {
         if (third_a >= 0 && third_c >= 0 && !opposite_in_projection(voff_[b] + e.u, voff_[b] + e.v, third_a, third_c))
           kind = LineKind::Silhouette;
       }
-      if (kind == LineKind::Edge && (opt_.edges == EdgeSelection::Feature || opt_.classify_all)) kind = feature_kind(b, a, c);
+      if (continuing) {
+        const LineKind f = feature_kind(b, a, c);
+        line[i] = f == LineKind::Crease;
+        if (kind == LineKind::Edge) kind = f;
+      } else if (kind == LineKind::Edge && (opt_.edges == EdgeSelection::Feature || opt_.classify_all)) {
+        kind = feature_kind(b, a, c);
+      }
     } else if (n_live == 1) {
       kind = LineKind::Boundary;
+      if (continuing) line[i] = 1;
     } else {
       kind = LineKind::Crease;  // non-manifold: a feature
+      if (continuing) line[i] = 1;
     }
     if (opt_.edges == EdgeSelection::All && !opt_.classify_all && kind != LineKind::Edge) kind = LineKind::Edge;
     else if (opt_.edges == EdgeSelection::Feature && kind == LineKind::Edge) {
@@ -65,6 +79,7 @@ std::vector<DrawnEdge> Engine<P>::collect_edges(int b) const {
     kinds[i] = static_cast<signed char>(kind);
     hidden[i] = self_hidden;
   });
+  if (continuing) continue_creases(b, kinds, hidden, line);
   // The drawn ones in order, on all cores.
   const ParallelLoop loop(opt_.threads);
   const std::vector<std::uint32_t> drawn = parallel_select(edges.size(), [&](std::size_t i) { return kinds[i] >= 0; }, loop);
@@ -120,20 +135,98 @@ LineKind Engine<P>::feature_kind(int b, const EdgeUse& a, const EdgeUse& c) cons
     case SurfaceEdge::ByAngle:
       break;
   }
-  return crease(b, a, c) ? LineKind::Crease : LineKind::Edge;
+  return crease(b, a, c, crease_) ? LineKind::Crease : LineKind::Edge;
 }
 
 template <class P>
-bool Engine<P>::crease(int b, const EdgeUse& a, const EdgeUse& c) const {
+bool Engine<P>::crease(int b, const EdgeUse& a, const EdgeUse& c, const CreaseAngle& angle) const {
   // Consistently oriented neighbours traverse the edge in opposite directions; otherwise turn one.
   const Vec<P>& na = face_normal_[b][a.face];
   Vec<P> nc = a.forward != c.forward ? face_normal_[b][c.face] : neg<P>(face_normal_[b][c.face]);
   if constexpr (std::is_same_v<P, Fast>) {
     long x[3] = {na[0], na[1], na[2]}, y[3] = {nc[0], nc[1], nc[2]};
-    return crease_.exceeds(x, y);
+    return angle.exceeds(x, y);
   } else {
     mpz_class x[3] = {P::zc(na[0]), P::zc(na[1]), P::zc(na[2])}, y[3] = {P::zc(nc[0]), P::zc(nc[1]), P::zc(nc[2])};
-    return crease_.exceeds(x, y);
+    return angle.exceeds(x, y);
+  }
+}
+
+// Whether an edge may continue a crease line: two live faces, not inside one surface of the
+// model nor tangent, at more than half the crease angle.
+template <class P>
+bool Engine<P>::continues(int b, const BodyEdge& e) const {
+  int live[2], n = 0;
+  for (std::size_t k = 0; k < e.uses.size(); ++k)
+    if (!degenerate_[b][e.uses[k].face] && n++ < 2) live[n - 1] = static_cast<int>(k);
+  if (n != 2) return false;
+  const EdgeUse &a = e.uses[live[0]], &c = e.uses[live[1]];
+  if (static_cast<std::size_t>(b) < hooks_.face_part.size() && !hooks_.face_part[b].empty() &&
+      hooks_.face_part[b][a.face] == hooks_.face_part[b][c.face])
+    return false;
+  const FaceSurfaces* s = static_cast<std::size_t>(b) < hooks_.surfaces.size() ? hooks_.surfaces[b] : nullptr;
+  if (s && surface_edge(*s, a.face, c.face) != SurfaceEdge::ByAngle) return false;
+  return crease(b, a, c, continued_);
+}
+
+// A crease line that ends at a vertex (the vertex has one line edge) goes on along the
+// straightest edge there that turns less than 45 degrees and meets its faces at more than half
+// the crease angle, and so on until it meets another line or finds no such edge (or two
+// equally straight ones): the intersection of a cone and a plane is drawn whole where its
+// angle falls under the crease angle near the tangent point. Exact (rational dot products);
+// independent of the view.
+template <class P>
+void Engine<P>::continue_creases(int b, std::vector<signed char>& kinds, std::vector<signed char>& hidden, std::vector<char>& line) const {
+  const RawVector<BodyEdge>& edges = topo_[b].edges;
+  const std::vector<Point3>& pts = bodies_[b]->vertices();
+  std::vector<int> degree(pts.size());
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    if (line[i]) ++degree[edges[i].u], ++degree[edges[i].v];
+  std::vector<int> ends;
+  for (std::size_t v = 0; v < degree.size(); ++v)
+    if (degree[v] == 1) ends.push_back(static_cast<int>(v));
+  if (ends.empty()) return;
+  // Each vertex's edges (compressed rows).
+  std::vector<int> first(pts.size() + 1), at(2 * edges.size());
+  for (const BodyEdge& e : edges) ++first[e.u + 1], ++first[e.v + 1];
+  for (std::size_t v = 0; v < pts.size(); ++v) first[v + 1] += first[v];
+  std::vector<int> fill(first.begin(), first.end() - 1);
+  for (std::size_t i = 0; i < edges.size(); ++i) at[fill[edges[i].u]++] = at[fill[edges[i].v]++] = static_cast<int>(i);
+  auto other = [&](int i, int v) { return edges[i].u == v ? edges[i].v : edges[i].u; };
+  for (int v : ends) {
+    if (degree[v] != 1) continue;  // a line continued from elsewhere reached it
+    int came = -1;
+    for (int k = first[v]; k < first[v + 1]; ++k)
+      if (line[at[k]]) came = at[k];
+    for (std::size_t steps = 0; steps < edges.size(); ++steps) {
+      const Vector3 d = pts[v] - pts[other(came, v)];
+      const Rational dd = dot(d, d);
+      int best = -1;
+      bool tie = false;
+      Rational best_key;
+      for (int k = first[v]; k < first[v + 1]; ++k) {
+        const int i = at[k];
+        if (line[i] || !continues(b, edges[i])) continue;
+        const Vector3 e = pts[other(i, v)] - pts[v];
+        const Rational de = dot(d, e), ee = dot(e, e);
+        if (de <= 0 || 2 * de * de <= dd * ee) continue;  // turns by 45 degrees or more
+        const Rational key = de * de / ee;                // |d|² cos²: larger is straighter
+        if (best < 0 || key > best_key) best = i, best_key = key, tie = false;
+        else if (key == best_key) tie = true;
+      }
+      if (best < 0 || tie) break;
+      line[best] = 1;
+      const int w = other(best, v);
+      ++degree[v], ++degree[w];
+      if (kinds[best] < 0 || kinds[best] == static_cast<signed char>(LineKind::Edge)) {
+        kinds[best] = static_cast<signed char>(LineKind::Crease);
+        const EdgeUse &a = edges[best].uses[0], &c = edges[best].uses[1];
+        hidden[best] = solid_[b] && facing_[b][a.face] < 0 && facing_[b][c.face] < 0;
+      }
+      if (degree[w] != 1) break;  // it met another line
+      came = best;
+      v = w;
+    }
   }
 }
 

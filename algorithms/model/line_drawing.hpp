@@ -144,6 +144,8 @@ struct Segment;
 struct LineOptions {
   EdgeSelection edges = EdgeSelection::Feature;  // Feature: boundaries, silhouettes, creases
   Rational crease_degrees = 30;                   // Feature: creases over this angle
+  bool continue_creases = true;                   // Feature: a crease line that ends goes on along the straightest
+                                                  // edge over half the angle (docs/design.md, "Crease lines")
   bool intersections = true;                      // per-face route: intersection lines (and self)
   bool classify_all = false;                      // All: still name silhouettes, boundaries, creases
   bool prefilter = true;                          // Roberts: spatial pre-filter of (edge, body) pairs
