@@ -25,6 +25,7 @@ PACKAGES=(build-essential cmake pkg-config
   libtinygltf-dev lib3mf-dev              # glTF 2 and 3MF models
   python3-ezdxf                           # tests: ezdxf audits our DXF files
   occt-misc assimp-testmodels             # tests: real STEP, IGES, glTF and 3MF models
+  assimp-utils                            # docs: IFC buildings converted to glTF
   libcgal-demo)   # libcgal-demo ships data.tar.gz, the mesh corpus used by tests and benchmarks
 
 missing=()

@@ -72,6 +72,13 @@ Scene load_any_input(const std::string& path, const std::string& format, const M
   if (format.empty() && is_model_file(path)) return load_model(path, options);
   Scene s = load_input(path, format);
   if (!options.units.empty()) scale_bodies(s, millimetres_per(options.units));
+  // STL is the 3D-printing and CAD exchange format: Z up, as its producers model.
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (format == "stl" || (format.empty() && ext == ".stl")) {
+    s.view.up = Vector3(Rational(0), Rational(0), Rational(1));
+    s.view.up_given = true;
+  }
   return s;
 }
 

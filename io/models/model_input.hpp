@@ -26,7 +26,8 @@ bool is_model_file(const std::string& path);
 Scene load_model(const std::string& path, const ModelOptions& options);
 
 /// Any input of hlr render: a model by its extension, else load_input(path, format) (scene and
-/// mesh files, standard input), its coordinates brought to millimetres by `options.units`.
+/// mesh files, standard input), its coordinates brought to millimetres by `options.units`; an
+/// STL file's view is Z up (as 3MF, STEP and IGES; OFF, OBJ and PLY stay Y up).
 Scene load_any_input(const std::string& path, const std::string& format, const ModelOptions& options);
 
 /// Millimetres per unit: "mm" 1, "cm" 10, "m" 1000, "in" 25.4, "ft" 304.8, "um" 0.001; throws std::invalid_argument

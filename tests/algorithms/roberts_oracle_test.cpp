@@ -69,6 +69,7 @@ void check_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, EdgeS
   sample_check(r, planes, cam, tally, "roberts");
   LineOptions lo;
   lo.edges = edges;
+  lo.continue_creases = false;  // Roberts draws the plain crease rule: compare the routes on it
   LineDrawing f = face_occluders(ptrs, cam, lo);
   sample_check(f, planes, cam, tally, "faces");
   std::map<std::tuple<int, int, int>, const Segment*> by_edge;
