@@ -28,7 +28,12 @@ void add_output_options(CLI::App* cmd, OutputArgs& a, bool sheets) {
   cmd->add_option("--margin", a.margin, "Margin in millimetres (default 10 on a page)");
   cmd->add_option("--scale", a.scale, "True scale 1:N or N:1 (scene units are millimetres; default: fit the page)");
   cmd->add_option("--width", a.width, "Drawing width in millimetres without --page (default 150)");
-  cmd->add_option("--stroke", a.stroke, "Width of visible edges in millimetres (default 0.35; outlines 0.5 and hidden 0.25 in proportion)");
+  cmd->add_option("--stroke", a.stroke,
+                  "Width of visible edges in millimetres (default 0.5, ISO 128's wide line; hidden, tangent and hatch lines 0.25 and "
+                  "cut lines 0.7 in proportion)");
+  cmd->add_option("--line-widths", a.line_widths,
+                  "iso (default: one wide width for every visible edge, ISO 128) or kinds (outlines 0.5, other visible edges 0.35)")
+      ->check(CLI::IsMember({"iso", "kinds"}));
   cmd->add_option("--weights", a.weights, "Line widths per kind in mm, e.g. silhouette=0.7,crease=0.35,hidden=0.18");
   cmd->add_option("--layers", a.layers, "Layers to write: visible, through, hidden, visible-silhouette, through-edge, hidden-crease, ... or their numbers");
   cmd->add_option("--pens", a.pens,

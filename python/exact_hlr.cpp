@@ -317,12 +317,11 @@ PYBIND11_MODULE(exact_hlr, m) {
   py::register_exception<hlr::InputError>(m, "InputError", PyExc_ValueError);
   py::register_exception<hlr::NumberError>(m, "NumberError", PyExc_ValueError);
   py::class_<Drawing>(m, "Drawing", "An exact hidden-line drawing")
-      .def_property_readonly("segments", &Drawing::segments,
-                             "Pieces of the drawn lines: kind, body/edge or bodies, visible, from/to (Fractions), t")
+      .def_property_readonly("segments", &Drawing::segments, "Pieces of the drawn lines: kind, body/edge or bodies, visible, from/to (Fractions), t")
       .def_property_readonly("bodies", &Drawing::bodies, "Body names, in drawing order")
       .def_property_readonly("notes", [](const Drawing& d) { return d.r->notes; })
       .def_property_readonly("method", [](const Drawing& d) { return std::string(hlr::to_string(d.r->drawing.stats.method)); })
-      .def("svg", &Drawing::svg, py::arg("hidden_dashed") = false, py::arg("width_mm") = 150.0, py::arg("stroke_mm") = 0.35)
+      .def("svg", &Drawing::svg, py::arg("hidden_dashed") = false, py::arg("width_mm") = 150.0, py::arg("stroke_mm") = 0.0)
       .def("json", &Drawing::json, "The exact JSON of `hlr render` (docs/output-format.md)")
       .def_property_readonly("surfaces", &Drawing::surfaces,
                              "With surfaces=True: per face seen, its side, shade, exact area and visible polygons (outer, holes: "

@@ -44,7 +44,13 @@ PageOptions page_options(const OutputOptions& a) {
 
 PlotStyle plot_style(const OutputOptions& a) {
   PlotStyle st;
-  for (auto& [k, w] : st.weights) w *= a.stroke / 0.35;  // --stroke: the visible edges' width, the rest in proportion
+  // ISO 128: every visible edge the wide line (the table's outlines' 0.5 mm).
+  const bool iso = a.line_widths != "kinds";
+  if (iso)
+    for (const char* k : {"crease", "intersection", "edge"}) st.weights[k] = st.weights["silhouette"];
+  const double visible = iso ? st.weights["silhouette"] : st.weights["crease"];
+  if (a.stroke > 0)
+    for (auto& [k, w] : st.weights) w *= a.stroke / visible;  // --stroke: the visible edges' width, the rest in proportion
   if (!a.weights.empty()) parse_weights(a.weights, st);
   if (a.hatch_pen > 0) st.weights["tone"] = a.hatch_pen;
   st.dashes = a.dashes == "geometry" ? DashMode::Geometry : DashMode::Pattern;
@@ -402,7 +408,8 @@ SurfacesJson surfaces_json(const RenderResult& r) {
 
 void check_output_options(const OutputOptions& a) {
   if (!(a.width > 0) || !std::isfinite(a.width) || a.width > 1e6) throw std::invalid_argument("--width must be a positive size in millimetres");
-  if (!(a.stroke > 0) || !std::isfinite(a.stroke) || a.stroke > 1e3) throw std::invalid_argument("--stroke must be a positive width in millimetres");
+  if (!(a.stroke >= 0) || !std::isfinite(a.stroke) || a.stroke > 1e3) throw std::invalid_argument("--stroke must be a positive width in millimetres");
+  if (a.line_widths != "iso" && a.line_widths != "kinds") throw std::invalid_argument("--line-widths must be iso or kinds");
   if (!(a.min_length >= 0) || !std::isfinite(a.min_length)) throw std::invalid_argument("--min-length must be a length in millimetres");
   if (!std::isfinite(a.merge_tolerance) || a.merge_tolerance > 10)
     throw std::invalid_argument("--merge-tolerance must be a distance in millimetres (0: off)");

@@ -32,7 +32,12 @@ struct OutputOptions {
   int hatch_levels = 5;
   std::string hatch_angle = "45";
   double hatch_pen = 0;
-  double width = 150, stroke = 0.35, min_length = 0, dpi = 150;
+  /// Line widths: "iso" (ISO 128: one wide width for every visible edge, narrow hidden, tangent
+  /// and hatch lines) or "kinds" (outlines wider than the other visible edges).
+  std::string line_widths = "iso";
+  /// The visible edges' width in mm, the other widths in proportion; 0: the default (0.5 iso,
+  /// 0.35 kinds).
+  double width = 150, stroke = 0, min_length = 0, dpi = 150;
   /// Lines closer than this on the page (mm), nearly parallel, are drawn once, the higher class
   /// kept (algorithms/plot/coincident_lines.hpp; a drawing decision after every exact one). 0:
   /// only the exact clean-up; negative: a quarter of the thinnest pen drawn.

@@ -2,8 +2,9 @@
 // placed on a page (size, margins, true scale 1:N or fit, several views at one scale in first-
 // or third-angle arrangement) and written as SVG with Inkscape layers, PDF and PNG (cairo) or
 // DXF (dxflib) with layers and linetypes. Line weights follow ISO 128 (extra wide 0.7 mm for
-// cut lines, wide 0.5 for outlines, 0.35 for other visible edges, narrow 0.25 for hatching and,
-// dashed, for hidden lines; all settable).
+// cut lines, wide 0.5 for visible edges, narrow 0.25 for hatching, tangent edges and, dashed,
+// for hidden lines; all settable). The table below is the "kinds" set (outlines 0.5, other
+// visible edges 0.35); io/output's plot_style makes every visible edge wide by default.
 #pragma once
 
 #include <array>
