@@ -1,13 +1,10 @@
-// Command-line helpers: exact vectors from "X,Y,Z" text, and negative numbers after a space
-// (`--view -1,0.25,0.5`), which option parsers otherwise take for options.
+// Command-line helpers: negative numbers after a space (`--view -1,0.25,0.5`), which option
+// parsers otherwise take for options; the output format by extension; the progress line.
 #pragma once
 
 #include <string>
 #include <utility>
 #include <vector>
-
-#include "io/views/view_choice.hpp"
-#include "kernel/geometry.hpp"
 
 namespace hlr::cli {
 
@@ -20,14 +17,6 @@ std::vector<std::string> join_negative_values(int argc, char** argv);
 /// The whole command line (after join_negative_values), kept by main: tile files record it.
 void set_command_line(std::vector<std::string> args);
 const std::vector<std::string>& command_line();
-
-/// Parses "X,Y,Z" exactly; throws std::invalid_argument naming the option and the bad part.
-Vector3 parse_vector3(const std::string& option, const std::string& text);
-
-/// The view of `--view` (a standard view name, with `up_axis` "y" or "z", or a direction),
-/// `--eye`, `--target` and `--up` (empty: not given), exactly; shared by render and raster.
-ViewRequest parse_view_request(const std::string& view, const std::string& eye, const std::string& target,
-                               const std::string& up, const std::string& up_axis);
 
 /// The output format: `format` when given, else from the output file's extension (case does
 /// not matter) looked up in `by_extension` ({".json", "json"}, ...), else `fallback` when there

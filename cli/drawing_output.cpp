@@ -8,8 +8,8 @@
 
 namespace hlr::cli {
 
-void add_output_options(CLI::App* cmd, OutputArgs& a, bool sheets) {
-  cmd->add_option("-o", a.output, "Output file (default: standard output); the extension picks the format (.svg .pdf .png .dxf .json)");
+void add_output_options(CLI::App* cmd, OutputOptions& a, OutputFlags& f, bool sheets) {
+  cmd->add_option("-o", f.output, "Output file (default: standard output); the extension picks the format (.svg .pdf .png .dxf .json)");
   cmd->add_option("--format", a.format, "svg, pdf, png, dxf or json (default: from the output file's extension, else svg)")
       ->check(CLI::IsMember({"svg", "pdf", "png", "dxf", "json"}));
   if (sheets)
@@ -21,8 +21,8 @@ void add_output_options(CLI::App* cmd, OutputArgs& a, bool sheets) {
       ->check(CLI::IsMember({"pattern", "geometry"}));
   cmd->add_option("--threads", a.threads, "Threads (default: all cores)");
   cmd->add_flag("--stats", a.stats, "Print the 2D stage's numbers (paths, pen-up and pen-down lengths in mm) to standard error");
-  cmd->add_flag("--progress", a.progress, "Say what it is doing on standard error (default: when it is a terminal)");
-  cmd->add_flag("--quiet", a.quiet, "No progress messages");
+  cmd->add_flag("--progress", f.progress, "Say what it is doing on standard error (default: when it is a terminal)");
+  cmd->add_flag("--quiet", f.quiet, "No progress messages");
   cmd->add_option("--page", a.page, "Page: A0..A5, letter, legal, tabloid or WxHmm (default: the drawing's own size)");
   cmd->add_flag("--landscape", a.landscape, "Turn the page to landscape");
   cmd->add_option("--margin", a.margin, "Margin in millimetres (default 10 on a page)");
@@ -47,12 +47,12 @@ void add_output_options(CLI::App* cmd, OutputArgs& a, bool sheets) {
   cmd->add_flag("--raw", a.raw, "One line per exact piece: no clean-up, chaining or pen order");
 }
 
-std::string check_output_args(const OutputArgs& a, bool sheet) {
+std::string check_output_args(const OutputOptions& a, const OutputFlags& f, bool sheet) {
   check_output_options(a);
-  const std::string format = output_format(a.format, a.output,
-                                           {{".svg", "svg"}, {".pdf", "pdf"}, {".png", "png"}, {".dxf", "dxf"}, {".json", "json"}}, "svg");
+  const std::string format =
+      output_format(a.format, f.output, {{".svg", "svg"}, {".pdf", "pdf"}, {".png", "png"}, {".dxf", "dxf"}, {".json", "json"}}, "svg");
   if (format == "json" && sheet) throw std::invalid_argument("--views makes a sheet: write svg, pdf, png or dxf (JSON is one view)");
-  if ((format == "pdf" || format == "png") && a.output.empty() && isatty(1))
+  if ((format == "pdf" || format == "png") && f.output.empty() && isatty(1))
     throw std::invalid_argument("a " + format + " file goes to -o FILE, not to the terminal");
   return format;
 }

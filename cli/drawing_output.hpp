@@ -10,17 +10,20 @@
 
 namespace hlr::cli {
 
-struct OutputArgs : OutputOptions {
+/// What a command's output options hold besides the library's OutputOptions.
+struct OutputFlags {
   std::string output;
   bool quiet = false, progress = false;
 };
 
+struct OutputArgs : OutputOptions, OutputFlags {};
+
 /// Adds -o, --format, --hidden, --dashes, --page, --landscape, --margin, --scale, --width,
 /// --stroke, --weights, --layers, --min-length, --dpi, --raw, --stats, --progress, --quiet,
 /// --threads (and --projection when `sheets`).
-void add_output_options(CLI::App* cmd, OutputArgs& a, bool sheets);
+void add_output_options(CLI::App* cmd, OutputOptions& a, OutputFlags& f, bool sheets);
 
 /// Checks the options (before any long work) and returns the format: svg, pdf, png, dxf, json.
-std::string check_output_args(const OutputArgs& a, bool sheet);
+std::string check_output_args(const OutputOptions& a, const OutputFlags& f, bool sheet);
 
 }  // namespace hlr::cli

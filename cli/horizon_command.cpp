@@ -6,14 +6,15 @@
 #include <iostream>
 #include <optional>
 
-#include "algorithms/support/progress.hpp"
 #include "algorithms/support/parallel.hpp"
+#include "algorithms/support/progress.hpp"
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
-#include "cli/process.hpp"
 #include "cli/drawing_output.hpp"
-#include "io/writers/atomic_file.hpp"
+#include "cli/process.hpp"
 #include "io/pipeline/horizon.hpp"
+#include "io/views/view_choice.hpp"
+#include "io/writers/atomic_file.hpp"
 #include "kernel/rotation.hpp"
 
 namespace hlr::cli {
@@ -38,7 +39,7 @@ Vector3 view_from_angles(const std::string& text) {
 int run_horizon(const HorizonArgs& a) {
   const ThreadLimit limit(a.threads);  // every parallel stage, sorts included
   if (a.expression.empty() == a.grid.empty()) throw std::invalid_argument("give --expr EXPRESSION or --grid FILE.csv (one of them)");
-  const std::string format = check_output_args(a, false);
+  const std::string format = check_output_args(a, a, false);
   SampleRange x = parse_sample_range("--x", a.x, 81), z = parse_sample_range("--z", a.z, 41);
   Vector3 v = a.view.empty() ? view_from_angles(a.angles) : parse_vector3("--view", a.view);
   std::optional<Vector3> up;
@@ -112,7 +113,7 @@ void add_horizon_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--method", a->method, "exact (default) or classic: the notes' per-column arrays, approximate, to compare")
       ->check(CLI::IsMember({"exact", "classic"}));
   cmd->add_option("--dx", a->dx, "classic: the column width in the picture (drawing units)");
-  add_output_options(cmd, *a, false);
+  add_output_options(cmd, *a, *a, false);
   cmd->add_flag("--timings", a->timings, "Print the time of each stage to standard error");
   cmd->callback([a, &exit_code] { exit_code = run_horizon(*a); });
 }

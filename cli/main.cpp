@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
   hlr::cli::use_number_pool();
   CLI::App app{"hlr: exact hidden-line removal for polyhedra"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "hlr 0.1.0");
+  app.set_version_flag("--version", "hlr " HLR_VERSION);
   int exit_code = 0;
   hlr::cli::add_info_command(app, exit_code);
   hlr::cli::add_render_command(app, exit_code);

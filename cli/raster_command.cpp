@@ -7,12 +7,13 @@
 #include <memory>
 
 #include "algorithms/support/parallel.hpp"
+#include "algorithms/support/progress.hpp"
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
 #include "cli/process.hpp"
-#include "io/writers/atomic_file.hpp"
 #include "io/pipeline/raster.hpp"
-#include "algorithms/support/progress.hpp"
+#include "io/views/view_choice.hpp"
+#include "io/writers/atomic_file.hpp"
 
 namespace hlr::cli {
 namespace {

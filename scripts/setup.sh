@@ -19,6 +19,7 @@ PACKAGES=(build-essential cmake pkg-config
   clang-format                            # tests: the house style on changed lines (.clang-format)
   parallel                                # tests: the tile example of docs/usage.md runs GNU parallel
   python3-dev python3-pybind11 python3-pytest   # the Python module and its tests
+  python3-numpy python3-venv python3-pip python3-build   # the Python package: numpy arrays, pip install ., wheels
   libgtest-dev libbenchmark-dev time   # time: peak memory in scripts/bench_render.sh
   clang libclang-rt-14-dev   # the sanitizer build and the libFuzzer targets
   libocct-data-exchange-dev libocct-modeling-algorithms-dev   # STEP and IGES models (Open CASCADE)

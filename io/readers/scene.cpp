@@ -199,17 +199,28 @@ bool is_scene_file(const std::string& path) {
   return ext == ".yaml" || ext == ".yml" || ext == ".json";
 }
 
-Scene scene_from_mesh(const std::string& path) {
+Scene scene_from_mesh_data(MeshData data, const std::string& body, const std::string& source) {
   Scene s;
-  s.file = path;
-  MeshData data = read_mesh_file(path);
+  s.file = source;
   auto texcoords = std::move(data.texcoords);
   auto face_texcoords = std::move(data.face_texcoords);
   FaceSurfaces surfaces = std::move(data.surfaces);
-  s.bodies.push_back(SceneBody{std::filesystem::path(path).stem().string(), path, make_polyhedron(std::move(data), path),
-                               identity_transform(), {}, {}, {}, std::nullopt, std::move(texcoords), std::move(face_texcoords)});
+  s.bodies.push_back(SceneBody{body,
+                               source,
+                               make_polyhedron(std::move(data), source),
+                               identity_transform(),
+                               {},
+                               {},
+                               {},
+                               std::nullopt,
+                               std::move(texcoords),
+                               std::move(face_texcoords)});
   s.bodies.back().surfaces = std::move(surfaces);
   return s;
+}
+
+Scene scene_from_mesh(const std::string& path) {
+  return scene_from_mesh_data(read_mesh_file(path), std::filesystem::path(path).stem().string(), path);
 }
 
 Scene load_input(const std::string& path, const std::string& format) {
@@ -222,25 +233,8 @@ Scene load_input(const std::string& path, const std::string& format) {
   if (path == "-") bytes.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
   else bytes = read_file_bytes(path);
   if (format == "yaml" || format == "json") return load_scene_text(bytes, name);
-  Scene s;
-  s.file = name;
-  MeshData data = read_mesh_bytes(bytes, format, name);
-  auto texcoords = std::move(data.texcoords);
-  auto face_texcoords = std::move(data.face_texcoords);
-  FaceSurfaces surfaces = std::move(data.surfaces);
   const std::string body = path == "-" ? "stdin" : std::filesystem::path(path).stem().string();
-  s.bodies.push_back(SceneBody{body,
-                               name,
-                               make_polyhedron(std::move(data), name),
-                               identity_transform(),
-                               {},
-                               {},
-                               {},
-                               std::nullopt,
-                               std::move(texcoords),
-                               std::move(face_texcoords)});
-  s.bodies.back().surfaces = std::move(surfaces);
-  return s;
+  return scene_from_mesh_data(read_mesh_bytes(bytes, format, name), body, name);
 }
 
 // `ground: z = 0` (or x, y; a map {plane: "z = 0", size: S, material: {...}}): a square open

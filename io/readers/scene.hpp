@@ -13,6 +13,7 @@
 #include "algorithms/shading/lighting.hpp"
 #include "algorithms/solids/face_surfaces.hpp"
 #include "io/readers/input_error.hpp"
+#include "io/readers/mesh_reader.hpp"
 #include "kernel/polyhedron.hpp"
 #include "kernel/transform.hpp"
 
@@ -94,6 +95,10 @@ Scene load_scene_text(const std::string& text, const std::string& path, const st
 
 /// A scene of one body from a mesh file (name: the file's stem), default view.
 Scene scene_from_mesh(const std::string& path);
+
+/// A scene of one body from a mesh's data (checked by make_polyhedron; `source` names it in
+/// messages), default view: meshes read from a file or handed over in memory.
+Scene scene_from_mesh_data(MeshData data, const std::string& body, const std::string& source);
 
 /// An input of hlr render: a scene or mesh file by its extension, or, with `format` (off, obj,
 /// stl, ply, yaml or json), read as that format whatever its name; "-" is standard input

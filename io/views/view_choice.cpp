@@ -3,6 +3,8 @@
 
 #include <stdexcept>
 
+#include "io/views/standard_views.hpp"
+
 namespace hlr {
 
 Point3 bounding_box_centre(const std::vector<const Polyhedron*>& bodies) {
@@ -37,6 +39,45 @@ Camera choose_camera(const ViewRequest& req, const View* sv, const std::vector<c
   if (!up && sv && sv->up_given) up = sv->up;
   Vector3 dir = req.direction ? *req.direction : sv ? sv->direction : Vector3(0, 0, 1);
   return make_orthographic(dir, up);
+}
+
+Vector3 parse_vector3(const std::string& option, const std::string& text) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    std::size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (parts.size() != 3) throw std::invalid_argument(option + " needs three numbers X,Y,Z, got '" + text + "'");
+  Rational c[3];
+  for (int i = 0; i < 3; ++i) {
+    try {
+      c[i] = parse_rational(parts[i]);
+    } catch (const NumberError& e) {
+      throw std::invalid_argument(option + ": " + e.what());
+    }
+  }
+  return Vector3(c[0], c[1], c[2]);
+}
+
+ViewRequest parse_view_request(const std::string& view, const std::string& eye, const std::string& target, const std::string& up,
+                               const std::string& up_axis) {
+  ViewRequest v;
+  auto point = [](const Vector3& x) { return Point3(x.x(), x.y(), x.z()); };
+  if (!view.empty()) {
+    if (auto named = standard_view(view, up_axis == "z")) {
+      v.direction = named->direction;
+      if (up.empty()) v.up = named->up;
+    } else {
+      v.direction = parse_vector3("--view", view);
+    }
+  }
+  if (!eye.empty()) v.eye = point(parse_vector3("--eye", eye));
+  if (!target.empty()) v.target = point(parse_vector3("--target", target));
+  if (!up.empty()) v.up = parse_vector3("--up", up);
+  return v;
 }
 
 }  // namespace hlr

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "algorithms/model/camera.hpp"
@@ -19,6 +20,14 @@ struct ViewRequest {
   std::optional<Point3> target;      // perspective
   std::optional<Vector3> up;
 };
+
+/// Parses "X,Y,Z" exactly; throws std::invalid_argument naming the option and the bad part.
+Vector3 parse_vector3(const std::string& option, const std::string& text);
+
+/// The view of `--view` (a standard view name, with `up_axis` "y" or "z", or a direction),
+/// `--eye`, `--target` and `--up` (empty: not given), exactly; shared by render and raster.
+ViewRequest parse_view_request(const std::string& view, const std::string& eye, const std::string& target, const std::string& up,
+                               const std::string& up_axis);
 
 /// The centre of the bounding box of the bodies' vertices, exactly.
 Point3 bounding_box_centre(const std::vector<const Polyhedron*>& bodies);

@@ -6,11 +6,12 @@
 #include "cli/arguments.hpp"
 #include "io/readers/clipper_spec.hpp"
 #include "io/readers/input_error.hpp"
+#include "io/views/view_choice.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    (void)hlr::cli::parse_vector3("--view", text);
+    (void)hlr::parse_vector3("--view", text);
   } catch (const std::invalid_argument&) {
   }
   try {
