@@ -99,8 +99,8 @@ py::dict Drawing::piece(long i) {
     d["bodies"] = py::make_tuple(s.body, s.body2);
   }
   d["visible"] = p.visible;
-  d["from"] = point(s.at(p.t0));
-  d["to"] = point(s.at(p.t1));
+  d["from"] = end_point(s, p.t0);
+  d["to"] = end_point(s, p.t1);
   d["t"] = py::make_tuple(fraction(p.t0), fraction(p.t1));
   d["self_hidden"] = s.self_hidden;
   d["through"] = p.through;
@@ -108,6 +108,16 @@ py::dict Drawing::piece(long i) {
   d["clipped"] = p.clipped;
   cached = d;
   return d;
+}
+
+// A piece's end: a segment's own end (a mesh vertex, shared by the pieces of every edge at it)
+// made into Fractions once.
+py::tuple Drawing::end_point(const Segment& s, const Rational& t) {
+  if (t != 0 && t != 1) return point(s.at(t));
+  const Point3& p = t == 0 ? s.from() : s.to();
+  auto [it, added] = points_.try_emplace(&p);
+  if (added) it->second = point(p);
+  return it->second;
 }
 
 py::list Drawing::segments() {

@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "io/request/render_request.hpp"
@@ -50,7 +51,9 @@ class Drawing {
   std::vector<std::pair<int, int>> index_;  // piece -> (segment, piece in it), made on first use
   std::vector<pybind11::object> pieces_;    // exact pieces made so far
   pybind11::object segments_, arrays_;
+  std::unordered_map<const Point3*, pybind11::tuple> points_;  // ends' Fractions by the exact point
   void make_index();
+  pybind11::tuple end_point(const Segment& s, const Rational& t);
 };
 
 /// The names of LineKind in order of their numbers (the arrays' "kind" column).

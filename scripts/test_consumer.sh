@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the build into a temporary prefix, then builds and runs examples/consumer against
-# the installed ExactHLR package, outside the source tree.
+# the installed ExactHLR package, outside the source tree; imports the installed Python package.
 #   scripts/test_consumer.sh [BUILD_DIR]
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -12,3 +12,14 @@ cp -r "$ROOT/examples/consumer" "$WORK/src"
 cmake -S "$WORK/src" -B "$WORK/build" -DCMAKE_PREFIX_PATH="$WORK/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$WORK/build" -j "$(nproc 2>/dev/null || echo 2)" >/dev/null
 "$WORK/build/render_cube"
+# The Python package that cmake --install put under the prefix (HLR_PYTHON_INSTALL_DIR).
+site="$(sed -n 's/^HLR_PYTHON_INSTALL_DIR:PATH=//p' "$BUILD/CMakeCache.txt")"
+if [ -n "$site" ]; then
+  case "$site" in /*) ;; *) site="$WORK/prefix/$site" ;; esac
+  (cd "$WORK" && PYTHONPATH="$site" /usr/bin/python3 -c "
+import exact_hlr
+assert exact_hlr.__file__.startswith('$site'), exact_hlr.__file__
+d = exact_hlr.render(([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]), view='iso')
+assert len(d) == 6 and d.svg().startswith('<?xml')
+print('consumer: python package', exact_hlr.__version__, 'installed')")
+fi

@@ -3,8 +3,8 @@
 
   readme_examples.py ROOT BUILD_DIR MESH_DIR [--list]
 
-In a fresh folder that holds `build` (the build under test), `data` and `examples` (the
-repository's) and the meshes the README names (MESH_DIR: the CGAL meshes that
+In a fresh folder that holds `build` (the build under test), the repository's files (links to
+them: `data`, `examples`, `pyproject.toml`, ...) and the meshes the README names (MESH_DIR: the CGAL meshes that
 scripts/extract_corpus.sh extracts):
 
 - every command of a ```sh block runs with bash (continuation lines joined) and must exit 0.
@@ -110,11 +110,13 @@ def main(argv):
     failed = 0
     with tempfile.TemporaryDirectory() as work:
         os.symlink(build, os.path.join(work, "build"))
-        for d in ("data", "examples"):
-            os.symlink(os.path.join(root, d), os.path.join(work, d))
+        for d in sorted(os.listdir(root)):  # the source tree (`pip install .`), as a clone has it
+            if not d.startswith(("build", ".")):
+                os.symlink(os.path.join(root, d), os.path.join(work, d))
         for m in glob.glob(os.path.join(meshes, "*.off")):
             os.symlink(m, os.path.join(work, os.path.basename(m)))
-        env = dict(os.environ, PYTHONPATH=os.path.join(work, "build", "python"))
+        # Debian's python3 first (as on a machine the README's commands set up)
+        env = dict(os.environ, PYTHONPATH=os.path.join(work, "build", "python"), PATH="/usr/bin:" + os.environ.get("PATH", ""))
         for kind, where, cmd, shown in found:
             where = os.path.relpath(where, root)
             if kind == "sh":

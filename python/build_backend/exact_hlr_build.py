@@ -7,7 +7,8 @@ packages and no package index installs it (pip's isolated build environment is e
 
 Settings (pip --config-settings KEY=VALUE, build -C KEY=VALUE):
   build-dir=PATH   a CMake build folder to use; an existing one is only brought up to date
-                   (default: build-wheel/ in the source tree, configured Release without tests)
+                   (default: build/, the README's commands' Release build, when it is there;
+                   else build-wheel/ in the source tree, configured Release without tests)
   jobs=N           parallel compile jobs (default: every core)
 """
 from __future__ import annotations
@@ -67,7 +68,13 @@ def _setting(config_settings, key, default=None):
 
 
 def _build(config_settings):
-    build = os.path.abspath(_setting(config_settings, "build-dir") or os.path.join(ROOT, "build-wheel"))
+    build = _setting(config_settings, "build-dir")
+    if not build:
+        readme_build = os.path.join(ROOT, "build")
+        release = os.path.exists(os.path.join(readme_build, "CMakeCache.txt")) and \
+            "CMAKE_BUILD_TYPE:STRING=Release" in open(os.path.join(readme_build, "CMakeCache.txt")).read()
+        build = readme_build if release else os.path.join(ROOT, "build-wheel")
+    build = os.path.abspath(build)
     jobs = str(_setting(config_settings, "jobs") or os.cpu_count() or 2)
     if not os.path.exists(os.path.join(build, "CMakeCache.txt")):
         subprocess.run(["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release", "-DHLR_BUILD_TESTS=OFF",
@@ -126,7 +133,7 @@ def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
     with zipfile.ZipFile(os.path.join(wheel_directory, wheel_name), "w", zipfile.ZIP_DEFLATED) as z:
         for name, data in files.items():
             info = zipfile.ZipInfo(name, date_time=(2020, 1, 1, 0, 0, 0))
-            info.external_attr = (0o755 if name.endswith("/hlr") or name.endswith(".so") else 0o644) << 16
+            info.external_attr = (0o100755 if name.endswith("/hlr") or name.endswith(".so") else 0o100644) << 16  # regular files
             info.compress_type = zipfile.ZIP_DEFLATED
             z.writestr(info, data)
     return wheel_name

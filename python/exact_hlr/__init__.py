@@ -122,7 +122,8 @@ def _items(inputs: Any) -> List[tuple]:
             items.append(("file", os.fspath(x)))
             continue
         if isinstance(x, dict) and "bodies" in x:
-            items.append(("scene", json.dumps(_exact(x)), "<scene dict>"))
+            # a scene file's text (JSON) under a scene file's name: its view, lights and sections count
+            items.append(("scene", json.dumps(_exact(x), indent=1), "<scene dict>.json"))
             continue
         meshes += 1
         if isinstance(x, dict) and "vertices" in x and "faces" in x:
@@ -151,12 +152,15 @@ class Drawing:
     def __init__(self, core: "_core.Drawing", options: Dict[str, Any]):
         self._core = core
         self._options = options
+        self._views: Optional[Dict[str, "Drawing"]] = None
 
     # -- what the render is
     @property
     def views(self) -> Dict[str, "Drawing"]:
         """A sheet's views by name (`views="front,top,iso"`); {} for one view."""
-        return {n: Drawing(self._core.view(n), self._options) for n in self._core.views}
+        if self._views is None:
+            self._views = {n: Drawing(self._core.view(n), self._options) for n in self._core.views}
+        return self._views
 
     @property
     def bodies(self) -> List[str]:
