@@ -90,6 +90,8 @@ const std::vector<Entry>& catalogue() {
       {"Weiler-Atherton: body @x reaches the eye's plane or behind it",
        "алгоритм Вейлера–Азертона: тело @1 доходит до плоскости глаза или заходит за неё"},
       {"Weiler-Atherton: recursion did not end", "алгоритм Вейлера–Азертона: рекурсия не закончилась"},
+      // ---- view options (io/views/view_choice.cpp)
+      {"@x needs three numbers X,Y,Z, got '@x'", "@1: нужны три числа X,Y,Z, получено '@2'"},
       // ---- the ground plane (io/readers/scene.cpp)
       {"ground needs a 'plane' (x = C, y = C or z = C)", "для ground нужна плоскость 'plane' (x = C, y = C или z = C)"},
       {"ground must be a plane x = C, y = C or z = C", "ground должна быть плоскостью x = C, y = C или z = C"},
