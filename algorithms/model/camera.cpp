@@ -1,12 +1,12 @@
 // Exact viewpoint and double drawing projection (see camera.hpp).
 #include "algorithms/model/camera.hpp"
 
-#include "algorithms/support/parallel.hpp"
-
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <stdexcept>
 
+#include "algorithms/support/parallel.hpp"
 #include "kernel/predicates.hpp"
 
 namespace hlr {
@@ -61,6 +61,24 @@ Vector3 choose_up(const Vector3& axis, std::optional<Vector3> up) {
   return Vector3(0, 0, 1);
 }
 
+// The vector times the power of two that brings its largest component into [1, 2) when it lies
+// outside [2^-32, 2^32): the same direction, so that a direction's length never matters (a
+// view typed as 0,2e60,0 is the view 0,1,0, and its picture's numbers are as short).
+Vector3 power_of_two_scaled(const Vector3& v) {
+  long most = LONG_MIN;
+  for (int k = 0; k < 3; ++k) {
+    const Rational& c = v[k];
+    if (c == 0) continue;
+    const long bits = static_cast<long>(mpz_sizeinbase(c.get_num_mpz_t(), 2)) - static_cast<long>(mpz_sizeinbase(c.get_den_mpz_t(), 2));
+    most = std::max(most, bits);
+  }
+  if (most == LONG_MIN || (most > -32 && most < 32)) return v;
+  Rational f = 1;
+  if (most > 0) mpq_div_2exp(f.get_mpq_t(), f.get_mpq_t(), static_cast<mp_bitcnt_t>(most));
+  else mpq_mul_2exp(f.get_mpq_t(), f.get_mpq_t(), static_cast<mp_bitcnt_t>(-most));
+  return Vector3(v.x() * f, v.y() * f, v.z() * f);
+}
+
 }  // namespace
 
 RowVector4 Camera::viewpoint() const {
@@ -91,8 +109,8 @@ Sign Camera::in_front(const Point3& p) const {
 Camera make_orthographic(const Vector3& direction, std::optional<Vector3> up) {
   if (direction.is_zero()) throw std::invalid_argument("the view direction has zero length");
   Camera c;
-  c.direction = direction;
-  c.up = choose_up(direction, up);
+  c.direction = power_of_two_scaled(direction);
+  c.up = choose_up(c.direction, up && !up->is_zero() ? std::optional<Vector3>(power_of_two_scaled(*up)) : up);
   return c;
 }
 
@@ -102,7 +120,7 @@ Camera make_perspective(const Point3& eye, const Point3& target, std::optional<V
   c.perspective = true;
   c.eye = eye;
   c.target = target;
-  c.up = choose_up(target - eye, up);
+  c.up = choose_up(target - eye, up && !up->is_zero() ? std::optional<Vector3>(power_of_two_scaled(*up)) : up);
   return c;
 }
 
