@@ -88,6 +88,14 @@ void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   cmd->add_option("--lines", a->lines,
                   "Your own 3D polylines, drawn with their hidden parts removed by the bodies (layers 'visible-polyline', "
                   "'hidden-polyline'): a text file, one polyline per line as x y z x y z ... ('-': standard input)");
+  cmd->add_option("--fov", a->fov,
+                  "Perspective: the horizontal field of view in degrees; the picture is clipped exactly to its frame and the page "
+                  "shows the frame (the vertical from --aspect, default 3:2)");
+  cmd->add_option("--fov-v", a->fov_v, "Perspective: the vertical field of view in degrees (with --fov: both sides of the frame)");
+  cmd->add_option("--aspect", a->aspect, "The frame's width to height, W:H or a number, when one angle is given (default 3:2)");
+  cmd->add_option("--frame", a->frame, "Perspective: the frame's width and height W,H at the target's distance (scene units)");
+  cmd->add_option("--focal", a->focal, "Perspective: a lens's focal length in mm on --sensor (the photographer's and Blender's frame)");
+  cmd->add_option("--sensor", a->sensor, "The sensor's width and height in mm for --focal, and the default aspect (default 36,24: full frame)");
   cmd->add_option("--near", a->near, "Perspective near plane at this fraction of the eye-target distance from the eye (default 1/1000)");
   cmd->add_option("--tile", a->tile,
                   "Only tile I of an N-tile split of the picture, as a tile file for hlr merge (I/N, e.g. 3/9; the per-face route's "

@@ -90,6 +90,13 @@ const std::vector<Entry>& catalogue() {
       {"Weiler-Atherton: body @x reaches the eye's plane or behind it",
        "алгоритм Вейлера–Азертона: тело @1 доходит до плоскости глаза или заходит за неё"},
       {"Weiler-Atherton: recursion did not end", "алгоритм Вейлера–Азертона: рекурсия не закончилась"},
+      // ---- a perspective view's frame (io/readers/scene.cpp)
+      {"@x shapes a frame: give fov, fov_v or focal", "@1 задаёт форму кадра: укажите fov, fov_v или focal"},
+      {"@x must be a list of two numbers [W, H]", "@1: нужен список из двух чисел [W, H]"},
+      {"view: @x", "view: @1"},
+      {"a frame (fov, fov_v, frame, focal) belongs to a perspective view (with 'eye')",
+       "кадр (fov, fov_v, frame, focal) бывает только у перспективного вида (с 'eye')"},
+      {"give 'view' or 'camera' (the same keys), not both", "укажите 'view' или 'camera' (ключи те же), но не оба"},
       // ---- view options (io/views/view_choice.cpp)
       {"@x needs three numbers X,Y,Z, got '@x'", "@1: нужны три числа X,Y,Z, получено '@2'"},
       // ---- the ground plane (io/readers/scene.cpp)

@@ -280,6 +280,8 @@ PageOptions sheet_page(const OutputOptions& a, const std::vector<const RenderRes
   bool sections = false;
   for (const RenderResult* r : results) sections = sections || r->section_view;
   if (sections && !page.margin_mm) page.margin_mm = 12;
+  // A picture frame is the picture's edge: no margin around it without a page.
+  if (!page.page && !page.margin_mm && results.size() == 1 && results[0]->pyramid) page.margin_mm = 0;
   return page;
 }
 
@@ -440,12 +442,14 @@ PartText drawing_text(const std::vector<const RenderResult*>& results, const std
     const RenderResult& r0 = *results[0];
     SurfacesJson sj = surfaces_json(r0);
     sj.section = section_text(r0, a);
+    if (r0.pyramid) sj.frame = &*r0.pyramid;
     text = to_json_text(r0.names, r0.drawing, r0.camera, plot ? &plot->stats : nullptr, sj);
   } else {
     progress("strokes");
     const PlotOptions po = plot_options(a);
     for (const RenderResult* r : results) {
       plots.push_back(make_plot(r->drawing, r->camera, po));
+      if (r->pyramid) plots.back().bounds = r->pyramid->rect;  // the page shows the picture's frame
       add_surface_fills(plots.back(), *r);
       if (a.hatch) plots.back().fills.clear();  // a pen draws the shade as hatching (the fills set the bounds)
     }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "algorithms/clip/cyrus_beck.hpp"
+#include "algorithms/clip/view_pyramid.hpp"
 #include "algorithms/model/line_drawing.hpp"
 #include "algorithms/plot/plot.hpp"
 #include "algorithms/shading/face_shading.hpp"
@@ -149,6 +150,9 @@ struct RenderResult {
   std::optional<NamedSection> section_view;
   /// Remarks for the user ("file: body 'name' is open ...: drawn as a surface", eye in a face plane).
   std::vector<std::string> notes;
+  /// A perspective view's picture frame (--fov, --frame, --focal, or the scene's): the lines are
+  /// clipped exactly to its pyramid and the page shows its rectangle.
+  std::optional<ViewPyramid> pyramid;
 };
 
 /// A body a route cannot take, named: what() is "SOURCE: body 'NAME' REASON".

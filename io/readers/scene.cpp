@@ -165,8 +165,38 @@ Polyhedron inline_body(const Ctx& c, const YAML::Node& n, std::vector<Face>& typ
   return Polyhedron(std::move(vs), std::move(faces));
 }
 
+// A perspective view's frame keys (fov, fov_v, aspect, frame, focal, sensor), as --fov etc.
+std::optional<FrameRequest> parse_frame(const Ctx& c, const YAML::Node& n) {
+  if (!n["fov"] && !n["fov_v"] && !n["frame"] && !n["focal"]) {
+    for (const char* k : {"aspect", "sensor"})
+      if (n[k]) c.fail(n[k], std::string(k) + " shapes a frame: give fov, fov_v or focal");
+    return std::nullopt;
+  }
+  FrameRequest f;
+  auto real = [&](const char* k) { return to_double(c.number(n[k], k)); };
+  auto pair = [&](const char* k) {
+    if (!n[k].IsSequence() || n[k].size() != 2) c.fail(n[k], std::string(k) + " must be a list of two numbers [W, H]");
+    return std::array<Rational, 2>{c.number(n[k][0], k), c.number(n[k][1], k)};
+  };
+  if (n["fov"]) f.fov = real("fov");
+  if (n["fov_v"]) f.fov_v = real("fov_v");
+  if (n["focal"]) f.focal = real("focal");
+  if (n["aspect"]) f.aspect = real("aspect");
+  if (n["frame"]) f.frame = pair("frame");
+  if (n["sensor"]) {
+    const auto s = pair("sensor");
+    f.sensor = {to_double(s[0]), to_double(s[1])};
+  }
+  try {
+    check_frame_request(f);
+  } catch (const std::invalid_argument& e) {
+    c.fail(n, std::string("view: ") + e.what());
+  }
+  return f;
+}
+
 View parse_view(const Ctx& c, const YAML::Node& n) {
-  c.check_keys(n, "view", {"direction", "eye", "target", "up"});
+  c.check_keys(n, "view", {"direction", "eye", "target", "up", "fov", "fov_v", "aspect", "frame", "focal", "sensor"});
   View v;
   if (n["direction"] && n["eye"]) c.fail(n, "view has both 'direction' (orthographic) and 'eye' (perspective)");
   if (n["direction"]) {
@@ -188,6 +218,8 @@ View parse_view(const Ctx& c, const YAML::Node& n) {
     if (v.up.is_zero()) c.fail(n["up"], "up vector has zero length");
     v.up_given = true;
   }
+  v.frame = parse_frame(c, n);
+  if (v.frame && v.type != View::Type::Perspective) c.fail(n, "a frame (fov, fov_v, frame, focal) belongs to a perspective view (with 'eye')");
   return v;
 }
 
@@ -362,7 +394,7 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
   }
   if (!root || root.IsNull()) throw InputError(path, 0, "empty scene file");
   if (depth(root) > kMaxNesting) throw InputError(path, 0, "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
-  std::vector<std::string> known = {"bodies", "view", "light", "lighting", "ground", "section", "cutaway"};
+  std::vector<std::string> known = {"bodies", "view", "camera", "light", "lighting", "ground", "section", "cutaway"};
   known.insert(known.end(), extra_keys.begin(), extra_keys.end());
   // A problem file (docs/problem-format.md) is a scene too: `hlr render` draws its bodies.
   if (extra_keys.empty() && root.IsMap() && root["problem"])
@@ -441,7 +473,9 @@ Scene load_scene_text(const std::string& bytes, const std::string& path, const s
     }
     if (b["hatch"]) s.bodies.back().hatch = parse_hatch(c, b["hatch"]);
   }
+  if (root["view"] && root["camera"]) c.fail(root["camera"], "give 'view' or 'camera' (the same keys), not both");
   if (root["view"]) s.view = parse_view(c, root["view"]);
+  if (root["camera"]) s.view = parse_view(c, root["camera"]);
   if (root["light"]) {
     s.light = c.vector(root["light"], "light");
     if (s.light->is_zero()) c.fail(root["light"], "light vector has zero length");

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/clip/view_pyramid.hpp"
 #include "algorithms/hatching/hatch.hpp"
 #include "algorithms/shading/lighting.hpp"
 #include "algorithms/solids/face_surfaces.hpp"
@@ -29,6 +30,9 @@ struct View {
   std::optional<Point3> target;
   Vector3 up{Rational(0), Rational(1), Rational(0)};
   bool up_given = false;
+  /// Perspective: the picture's frame (fov, fov_v, aspect, frame, focal, sensor); unset: the
+  /// drawing fits its lines.
+  std::optional<FrameRequest> frame;
 };
 
 struct SceneBody {

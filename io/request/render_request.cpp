@@ -70,6 +70,38 @@ Rational option_number(const std::string& option, const std::string& text) {
   }
 }
 
+double option_real(const std::string& option, const std::string& text) { return to_double(option_number(option, text)); }
+
+// "W,H" as two positive numbers.
+std::array<Rational, 2> option_pair(const std::string& option, const std::string& text) {
+  const std::vector<Rational> v = parse_numbers(option, text, 2);
+  return {v[0], v[1]};
+}
+
+// The picture frame of --fov, --fov-v, --aspect, --frame, --focal and --sensor (none: unset).
+std::optional<FrameRequest> frame_request(const RenderRequest& r) {
+  if (r.fov.empty() && r.fov_v.empty() && r.frame.empty() && r.focal.empty()) {
+    if (!r.aspect.empty() || !r.sensor.empty()) throw std::invalid_argument("--aspect and --sensor shape a frame: give --fov, --fov-v or --focal");
+    return std::nullopt;
+  }
+  FrameRequest f;
+  if (!r.fov.empty()) f.fov = option_real("--fov", r.fov);
+  if (!r.fov_v.empty()) f.fov_v = option_real("--fov-v", r.fov_v);
+  if (!r.frame.empty()) f.frame = option_pair("--frame", r.frame);
+  if (!r.focal.empty()) f.focal = option_real("--focal", r.focal);
+  if (!r.sensor.empty()) {
+    const auto s = option_pair("--sensor", r.sensor);
+    f.sensor = {to_double(s[0]), to_double(s[1])};
+  }
+  if (!r.aspect.empty()) {
+    const std::size_t colon = r.aspect.find(':');
+    f.aspect = colon == std::string::npos ? option_real("--aspect", r.aspect)
+                                          : option_real("--aspect", r.aspect.substr(0, colon)) / option_real("--aspect", r.aspect.substr(colon + 1));
+  }
+  check_frame_request(f);
+  return f;
+}
+
 }  // namespace
 
 ModelOptions model_options(const RenderRequest& r) {
@@ -100,6 +132,7 @@ RenderOptions render_options(const RenderRequest& r) {
   o.lines.crease_degrees = option_number("--crease", r.crease);
   if (o.lines.crease_degrees < 0 || o.lines.crease_degrees > 180) throw std::invalid_argument("--crease must be an angle in degrees from 0 to 180");
   o.view = parse_view_request(r.view, r.eye, r.target, r.up, r.up_axis);
+  o.view.frame = frame_request(r);
   o.near = option_number("--near", r.near);
   if (!r.clip.empty()) o.clip = parse_clipper("--clip", r.clip).clipper;
   for (const std::string& s : r.section)

@@ -30,6 +30,7 @@ struct RenderRequest : OutputOptions {
   std::string input_format;                      ///< the inputs' format whatever their names
   double deflection = 0, deflection_angle = 15;  ///< a STEP or IGES model's tessellation
   std::string tangent_edges = "thin", units;
+  std::string fov, fov_v, aspect, frame, focal, sensor;  ///< a perspective picture's frame
 };
 
 /// What a call adds to the request's options: a tile of the picture, the caller's own 3D

@@ -19,6 +19,7 @@ struct ViewRequest {
   std::optional<Point3> eye;         // perspective
   std::optional<Point3> target;      // perspective
   std::optional<Vector3> up;
+  std::optional<FrameRequest> frame;  // perspective: the picture's frame
 };
 
 /// Parses "X,Y,Z" exactly; throws std::invalid_argument naming the option and the bad part.

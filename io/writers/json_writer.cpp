@@ -318,6 +318,15 @@ PartText to_json_text(const std::vector<DrawingBody>& bodies, const LineDrawing&
     view["direction"] = exact_vector(camera.direction);
   }
   view["up"] = exact_vector(camera.up);
+  if (surfaces.frame) {
+    Json planes = Json::array();
+    for (const Plane& h : surfaces.frame->sides)
+      planes.push_back(Json::array({to_string(h.a()), to_string(h.b()), to_string(h.c()), to_string(h.d())}));
+    Json frame;
+    frame["planes"] = planes;
+    frame["rect"] = surfaces.frame->rect;
+    view["frame"] = frame;
+  }
   j["view"] = view;
   Json st;
   st["edges"] = r.stats.edges;

@@ -2,20 +2,20 @@
 // exact rational in lowest terms, world coordinates; one body and one segment per line.
 #pragma once
 
-#include "io/writers/atomic_file.hpp"
-
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "algorithms/model/line_drawing.hpp"
+#include "algorithms/clip/view_pyramid.hpp"
 #include "algorithms/model/camera.hpp"
-#include "algorithms/shading/lighting.hpp"
+#include "algorithms/model/line_drawing.hpp"
 #include "algorithms/plot/plot.hpp"
+#include "algorithms/shading/lighting.hpp"
 #include "algorithms/surfaces/priority_list.hpp"
 #include "algorithms/surfaces/shadows.hpp"
 #include "algorithms/surfaces/transparency.hpp"
 #include "algorithms/surfaces/visible_surfaces.hpp"
+#include "io/writers/atomic_file.hpp"
 #include "io/writers/svg_writer.hpp"
 
 namespace hlr {
@@ -45,6 +45,9 @@ struct SurfacesJson {
   const std::vector<Rgb>* transparent_colours = nullptr;
   /// Sections: the "section" object's text (io/pipeline/section.hpp), "" for none.
   std::string section;
+  /// A perspective view's picture frame: the view's "frame" (its four exact planes through the
+  /// eye, positive inside, and the rectangle the page shows).
+  const ViewPyramid* frame = nullptr;
 };
 std::string to_json(const std::vector<DrawingBody>& bodies, const LineDrawing& drawing, const Camera& camera,
                     const PlotStats* plot, const SurfacesJson& surfaces);
