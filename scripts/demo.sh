@@ -4,7 +4,7 @@
 # sheet of four views (PDF, hidden lines cut into dashes); prints the paths.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$ROOT/scripts/setup.sh"
+HLR_BUILD_TARGET=hlr "$ROOT/scripts/setup.sh"   # the program alone: the test command builds the rest
 BUILD_DIR="${HLR_BUILD_DIR:-$ROOT/build}"
 OUT="$BUILD_DIR/demo"
 mkdir -p "$OUT"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages exact-hlr needs (only when something is missing),
-# then configures and builds Release into build/. Idempotent; works as root or via sudo.
+# then configures and builds Release into build/ (HLR_BUILD_TARGET: one target only). Idempotent;
+# works as root or via sudo.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${HLR_BUILD_DIR:-$ROOT/build}"
@@ -52,4 +53,6 @@ fi
 
 JOBS="$(nproc 2>/dev/null || echo 2)"
 cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" "$@" >/dev/null
-cmake --build "$BUILD_DIR" -j "$JOBS"
+# HLR_BUILD_TARGET=hlr builds the program alone (the demo); unset: everything (tests, benchmarks,
+# the Python package).
+cmake --build "$BUILD_DIR" -j "$JOBS" ${HLR_BUILD_TARGET:+--target "$HLR_BUILD_TARGET"}
