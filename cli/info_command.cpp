@@ -6,6 +6,7 @@
 #include "algorithms/support/progress.hpp"
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
+#include "io/models/model_input.hpp"
 #include "io/pipeline/info_report.hpp"
 #include "io/readers/scene.hpp"
 
@@ -44,7 +45,7 @@ int run_info(const InfoArgs& a) {
   int failures = 0;
   for (const auto& input : a.inputs) {
     progress("loading " + input);
-    Scene scene = is_scene_file(input) ? load_scene(input) : scene_from_mesh(input);
+    Scene scene = load_any_input(input, "", ModelOptions{});  // meshes, models (STEP, IGES, glTF, 3MF) and scenes
     if (is_scene_file(input)) {
       std::cout << "scene " << input << ": " << scene.bodies.size() << " bodies, view ";
       if (scene.view.type == View::Type::Orthographic)

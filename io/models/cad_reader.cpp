@@ -166,6 +166,7 @@ std::vector<NamedShape> bodies_of(const std::vector<NamedShape>& shapes, double 
   for (TopExp_Explorer e(sewing.SewedShape(), TopAbs_FACE, TopAbs_SHELL); e.More(); e.Next()) bodies.push_back({"", e.Current(), std::nullopt});
   std::ostringstream note;
   note << n_loose << " faces in no solid were sewn (tolerance " << tolerance << " mm) into " << shells << " shells, " << closed << " of them closed";
+  if (sewing.NbFreeEdges() > 0) note << " (" << sewing.NbFreeEdges() << " free edges: the file's surfaces leave gaps wider than the tolerance)";
   notes.push_back(note.str());
   return bodies;
 }

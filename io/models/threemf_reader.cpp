@@ -4,7 +4,9 @@
 #include <Model/COM/NMR_DLLInterfaces.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
+#include <map>
 
 #include "io/models/mesh_assembly.hpp"
 #include "io/readers/input_error.hpp"
@@ -32,6 +34,7 @@ class Handle3mf {
 struct Reader {
   const std::string& path;
   Model& out;
+  NMR::PLib3MFBase* model = nullptr;
   long dropped = 0;
 
   void check(LIB3MFRESULT r, NMR::PLib3MFBase* from, const std::string& what) const {
@@ -77,7 +80,66 @@ struct Reader {
         if (i >= nv) throw InputError(path, 0, "'" + name + "': a triangle's vertex index is out of range");
       b.triangles.push_back({static_cast<int>(x.m_nIndices[0]), static_cast<int>(x.m_nIndices[1]), static_cast<int>(x.m_nIndices[2])});
     }
+    b.colour = mesh_colour(object, nt);
     if (!b.triangles.empty()) out.bodies.push_back(assemble_body(b, dropped));
+  }
+
+  using Srgb = std::array<BYTE, 3>;
+
+  // A base material's display colour.
+  std::optional<Srgb> base_colour(DWORD group, DWORD index) const {
+    Handle3mf material;
+    BYTE r = 0, g = 0, b = 0, a = 0;
+    if (NMR::lib3mf_model_getbasematerialbyid(model, group, material.out()) != 0 ||
+        NMR::lib3mf_basematerial_getdisplaycolor(material.get(), index, &r, &g, &b, &a) != 0)
+      return std::nullopt;
+    return Srgb{r, g, b};
+  }
+
+  // The colour of most of a mesh's triangles (a colour, or a base material's display colour;
+  // the first corner's for a gradient), else the object's default property's: the body's colour
+  // in --surfaces, as glTF's base colour.
+  std::optional<Rgb> mesh_colour(NMR::PLib3MFBase* object, DWORD nt) const {
+    std::map<Srgb, long> count;
+    Handle3mf h;
+    if (nt && NMR::lib3mf_meshobject_createpropertyhandler(object, h.out()) == 0)
+      for (DWORD i = 0; i < nt; ++i) {
+        NMR::eModelPropertyType type = NMR::MODELPROPERTYTYPE_NONE;
+        if (NMR::lib3mf_propertyhandler_getpropertytype(h.get(), i, &type) != 0) continue;
+        DWORD group = 0, index = 0;
+        NMR::MODELMESH_TRIANGLECOLOR_SRGB c;
+        if (type == NMR::MODELPROPERTYTYPE_COLOR && NMR::lib3mf_propertyhandler_getcolor(h.get(), i, &c) == 0)
+          ++count[Srgb{c.m_Colors[0].m_Red, c.m_Colors[0].m_Green, c.m_Colors[0].m_Blue}];
+        else if (type == NMR::MODELPROPERTYTYPE_BASEMATERIALS && NMR::lib3mf_propertyhandler_getbasematerial(h.get(), i, &group, &index) == 0)
+          if (auto m = base_colour(group, index)) ++count[*m];
+      }
+    if (count.empty()) {  // the object's default property
+      Handle3mf d;
+      NMR::eModelPropertyType type = NMR::MODELPROPERTYTYPE_NONE;
+      DWORD group = 0, index = 0;
+      NMR::MODELMESHCOLOR_SRGB c;
+      if (NMR::lib3mf_object_createdefaultpropertyhandler(object, d.out()) == 0 &&
+          NMR::lib3mf_defaultpropertyhandler_getpropertytype(d.get(), &type) == 0) {
+        if (type == NMR::MODELPROPERTYTYPE_COLOR && NMR::lib3mf_defaultpropertyhandler_getcolor(d.get(), 0, &c) == 0)
+          ++count[Srgb{c.m_Red, c.m_Green, c.m_Blue}];
+        else if (type == NMR::MODELPROPERTYTYPE_BASEMATERIALS && NMR::lib3mf_defaultpropertyhandler_getbasematerial(d.get(), &group, &index) == 0)
+          if (auto m = base_colour(group, index)) ++count[*m];
+      }
+    }
+    if (count.empty()) return std::nullopt;
+    const auto most = std::max_element(count.begin(), count.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+    return Rgb{most->first[0] / 255.0, most->first[1] / 255.0, most->first[2] / 255.0};
+  }
+
+  // An optional transform (a component's or a build item's; identity without one).
+  template <class Has, class Get>
+  Matrix4 optional_transform(NMR::PLib3MFBase* of, Has has_transform, Get get_transform) const {
+    BOOL has = false;
+    check(has_transform(of, &has), of, "reading a transform");
+    if (!has) return identity_transform();
+    NMR::MODELTRANSFORM t;
+    check(get_transform(of, &t), of, "reading a transform");
+    return matrix(t);
   }
 
   void add_object(NMR::PLib3MFBase* object, const Matrix4& m, const std::string& above, int depth) {
@@ -95,14 +157,7 @@ struct Reader {
       Handle3mf c, child;
       check(NMR::lib3mf_componentsobject_getcomponent(object, k, c.out()), object, "reading a component");
       check(NMR::lib3mf_component_getobjectresource(c.get(), child.out()), c.get(), "reading a component");
-      BOOL has = false;
-      Matrix4 local = identity_transform();
-      check(NMR::lib3mf_component_hastransform(c.get(), &has), c.get(), "reading a component");
-      if (has) {
-        NMR::MODELTRANSFORM t;
-        check(NMR::lib3mf_component_gettransform(c.get(), &t), c.get(), "reading a transform");
-        local = matrix(t);
-      }
+      const Matrix4 local = optional_transform(c.get(), NMR::lib3mf_component_hastransform, NMR::lib3mf_component_gettransform);
       add_object(child.get(), compose(local, m), name + "/" + std::to_string(k + 1), depth + 1);
     }
   }
@@ -116,14 +171,7 @@ struct Reader {
       Handle3mf item, object;
       check(NMR::lib3mf_builditemiterator_getcurrent(items.get(), item.out()), items.get(), "reading the build");
       check(NMR::lib3mf_builditem_getobjectresource(item.get(), object.out()), item.get(), "reading a build item");
-      BOOL has = false;
-      Matrix4 m = identity_transform();
-      check(NMR::lib3mf_builditem_hasobjecttransform(item.get(), &has), item.get(), "reading a build item");
-      if (has) {
-        NMR::MODELTRANSFORM t;
-        check(NMR::lib3mf_builditem_getobjecttransform(item.get(), &t), item.get(), "reading a transform");
-        m = matrix(t);
-      }
+      const Matrix4 m = optional_transform(item.get(), NMR::lib3mf_builditem_hasobjecttransform, NMR::lib3mf_builditem_getobjecttransform);
       add_object(object.get(), m, "item " + std::to_string(++k), 0);
     }
   }
@@ -161,9 +209,10 @@ Model read_3mf_file(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, "cannot open file");
   Model out;
   out.z_up = true;
-  Reader r{path, out, 0};
   Handle3mf model, reader;
+  Reader r{path, out, nullptr, 0};
   r.check(NMR::lib3mf_createmodel(model.out()), nullptr, "lib3mf could not make a model");
+  r.model = model.get();
   r.check(NMR::lib3mf_model_queryreader(model.get(), "3mf", reader.out()), model.get(), "lib3mf has no 3MF reader");
   r.check(NMR::lib3mf_reader_readfromfileutf8(reader.get(), path.c_str()), reader.get(), "not a 3MF file lib3mf can read");
   DWORD unit = NMR::MODELUNIT_MILLIMETER;

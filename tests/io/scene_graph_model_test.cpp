@@ -392,6 +392,71 @@ std::string write_3mf(const std::string& name, DWORD unit) {
   return path;
 }
 
+// A box whose triangles carry colours (8 red, 4 blue) or one base material for all.
+std::string write_coloured_3mf(const std::string& name, bool base_material) {
+  using namespace NMR;
+  PLib3MFModel* model = nullptr;
+  EXPECT_EQ(lib3mf_createmodel(&model), 0);
+  PLib3MFModelMeshObject* mesh = nullptr;
+  EXPECT_EQ(lib3mf_model_addmeshobject(model, &mesh), 0);
+  const std::vector<float> c = box_corners();
+  std::vector<MODELMESHVERTEX> v(8);
+  for (int i = 0; i < 8; ++i) v[i] = {{c[3 * i], c[3 * i + 1], c[3 * i + 2]}};
+  std::vector<MODELMESHTRIANGLE> t(12);
+  for (int i = 0; i < 12; ++i) t[i] = {{kBoxTriangles[3 * i], kBoxTriangles[3 * i + 1], kBoxTriangles[3 * i + 2]}};
+  EXPECT_EQ(lib3mf_meshobject_setgeometry(mesh, v.data(), 8, t.data(), 12), 0);
+  PLib3MFPropertyHandler* h = nullptr;
+  EXPECT_EQ(lib3mf_meshobject_createpropertyhandler(mesh, &h), 0);
+  PLib3MFDefaultPropertyHandler* d = nullptr;  // lib3mf writes triangle properties with an object's default
+  EXPECT_EQ(lib3mf_object_createdefaultpropertyhandler(mesh, &d), 0);
+  PLib3MFModelBaseMaterial* group = nullptr;
+  if (base_material) {
+    EXPECT_EQ(lib3mf_model_addbasematerialgroup(model, &group), 0);
+    DWORD index = 0, id = 0;
+    EXPECT_EQ(lib3mf_basematerial_addmaterialutf8(group, "steel", 40, 90, 200, &index), 0);
+    EXPECT_EQ(lib3mf_resource_getresourceid(group, &id), 0);
+    EXPECT_EQ(lib3mf_defaultpropertyhandler_setbasematerial(d, id, index), 0);
+    for (DWORD i = 0; i < 12; ++i) EXPECT_EQ(lib3mf_propertyhandler_setbasematerial(h, i, id, index), 0);
+  } else {
+    EXPECT_EQ(lib3mf_defaultpropertyhandler_setcolorrgb(d, 10, 20, 240), 0);  // the minority's colour
+    for (DWORD i = 0; i < 12; ++i) EXPECT_EQ(lib3mf_propertyhandler_setsinglecolorrgb(h, i, i < 8 ? 220 : 10, 20, i < 8 ? 30 : 240), 0);
+  }
+  lib3mf_release(h);
+  lib3mf_release(d);
+  MODELTRANSFORM place = transform_of({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0});
+  PLib3MFModelBuildItem* item = nullptr;
+  EXPECT_EQ(lib3mf_model_addbuilditem(model, mesh, &place, &item), 0);
+  PLib3MFModelWriter* writer = nullptr;
+  EXPECT_EQ(lib3mf_model_querywriter(model, "3mf", &writer), 0);
+  const std::string path = temp(name + ".3mf");
+  const LIB3MFRESULT written = lib3mf_writer_writetofileutf8(writer, path.c_str());
+  DWORD code = 0;
+  LPCSTR message = nullptr;
+  if (written) lib3mf_getlasterror(writer, &code, &message);
+  EXPECT_EQ(written, 0) << (message ? message : "");
+  for (PLib3MFBase* p : {writer, item, mesh, model}) lib3mf_release(p);
+  if (group) lib3mf_release(group);
+  return path;
+}
+
+TEST(ThreeMfModel, ColoursAndBaseMaterialsColourTheBody) {
+  // The colour of most triangles (sRGB bytes / 255), as glTF's base colour; none without one.
+  const Model coloured = read_3mf_file(write_coloured_3mf("coloured", false));
+  ASSERT_EQ(coloured.bodies.size(), 1u);
+  ASSERT_TRUE(coloured.bodies[0].colour);
+  EXPECT_DOUBLE_EQ(coloured.bodies[0].colour->at(0), 220 / 255.0);
+  EXPECT_DOUBLE_EQ(coloured.bodies[0].colour->at(2), 30 / 255.0);
+  const Model steel = read_3mf_file(write_coloured_3mf("steel", true));
+  ASSERT_TRUE(steel.bodies[0].colour);
+  EXPECT_DOUBLE_EQ(steel.bodies[0].colour->at(1), 90 / 255.0);
+  EXPECT_DOUBLE_EQ(steel.bodies[0].colour->at(2), 200 / 255.0);
+  EXPECT_FALSE(read_3mf_file(write_3mf("plain", NMR::MODELUNIT_MILLIMETER)).bodies[0].colour);
+  // The scene's body takes it as its material's colour (the --surfaces fill).
+  const Scene s = load_model(write_coloured_3mf("steel_scene", true), {});
+  ASSERT_TRUE(s.bodies[0].material);
+  EXPECT_DOUBLE_EQ(s.bodies[0].material->colour[2], 200 / 255.0);
+}
+
 TEST(ThreeMfModel, BuildItemsAndComponentsAreAppliedExactly) {
   Model m = read_3mf_file(write_3mf("pair", NMR::MODELUNIT_CENTIMETER));
   EXPECT_EQ(m.units, "cm");
