@@ -2,8 +2,6 @@
 // weiler_atherton.hpp.
 #include "algorithms/clip/weiler_atherton.hpp"
 
-#include "algorithms/support/parallel.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -13,6 +11,8 @@
 #include <tuple>
 
 #include "algorithms/picture/scene_polygons.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "algorithms/support/progress.hpp"
 
 namespace hlr {
 namespace {
@@ -156,6 +156,8 @@ class Wa {
       }
       resolve(std::move(inside), clipper, level);
       list = std::move(outside);
+      if (level == 0 && progress_enabled() && res_.clips % 64 == 0)  // the outer loop, where a long run spends its time
+        progress("Weiler-Atherton: " + std::to_string(res_.clips) + " clips, " + std::to_string(list.size()) + " polygons left");
     }
   }
 

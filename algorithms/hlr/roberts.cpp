@@ -6,10 +6,11 @@
 #include <limits>
 #include <map>
 
+#include "algorithms/hlr/int128_interval.hpp"
+#include "algorithms/model/facing.hpp"
 #include "algorithms/solids/convexity.hpp"
 #include "algorithms/solids/crease_angle.hpp"
-#include "algorithms/model/facing.hpp"
-#include "algorithms/hlr/int128_interval.hpp"
+#include "algorithms/support/progress.hpp"
 #include "algorithms/support/screen_grid.hpp"
 #include "kernel/exact_int.hpp"
 
@@ -398,7 +399,9 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
   };
 
   // Stage 1 and 2: the bodies' edges.
-  for (std::size_t i = 0; i < bodies.size(); ++i)
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (progress_enabled() && (bodies.size() < 50 || i % 16 == 0))  // a long run says where it is
+      progress("Roberts: the edges of body " + std::to_string(i + 1) + " of " + std::to_string(bodies.size()) + " against every body");
     for (Segment& s : body_edge_segments(*bodies[i], static_cast<int>(i), res.facing[i], opt, res.stats)) {
       if (s.self_hidden)
         s.pieces = pieces_from_hidden({{Rational(0), Rational(1)}}, depth_of(s));
@@ -406,6 +409,7 @@ RobertsResult roberts(const std::vector<const Polyhedron*>& bodies, const Camera
         solve(s, static_cast<int>(i), -1);
       res.segments.push_back(std::move(s));
     }
+  }
 
   // Stage 3: intersection lines of every pair of bodies whose bounding boxes meet.
   std::vector<Bounds3> bb;
