@@ -1,6 +1,7 @@
 // The picture frame and the viewing pyramid (see view_pyramid.hpp; course notes 21-22).
 #include "algorithms/clip/view_pyramid.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -60,7 +61,30 @@ ViewPyramid view_pyramid(const Camera& camera, const std::array<double, 2>& tang
              through_eye(sy * pp.d() + pp.u())};
   const double hx = to_double(sx) / rd, hy = to_double(sy) / ud;
   p.rect = {-hx, -hy, hx, hy};
+  p.half_x = sx, p.half_y = sy;
   return p;
+}
+
+std::optional<std::array<Exact2, 2>> clip_to_frame(const ViewPyramid& p, const Exact2& a, const Exact2& b) {
+  // Liang-Barsky on the box |X| <= half_x, |Y| <= half_y, in rationals.
+  Rational lo = 0, hi = 1;
+  for (int k = 0; k < 2; ++k) {
+    const Rational& h = k == 0 ? p.half_x : p.half_y;
+    const Rational d = b[k] - a[k];
+    for (int s : {1, -1}) {  // s·(a + t·d) <= h
+      const Rational num = h - s * a[k], den = s * d;
+      if (den == 0) {
+        if (num < 0) return std::nullopt;
+      } else if (den > 0) {
+        hi = std::min(hi, Rational(num / den));
+      } else {
+        lo = std::max(lo, Rational(num / den));
+      }
+    }
+  }
+  if (!(lo < hi)) return std::nullopt;
+  auto at = [&](const Rational& t) { return Exact2{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])}; };
+  return std::array<Exact2, 2>{at(lo), at(hi)};
 }
 
 }  // namespace hlr

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "algorithms/model/camera.hpp"
+#include "kernel/predicates_2d.hpp"
 
 namespace hlr {
 
@@ -35,7 +36,12 @@ std::array<double, 2> frame_tangents(const FrameRequest& f, const Camera& camera
 struct ViewPyramid {
   std::array<Plane, 4> sides;
   std::array<double, 4> rect{0, 0, 0, 0};
+  /// The same frame in exact picture coordinates (PicturePlane::project): |X| <= half_x, |Y| <= half_y.
+  Rational half_x, half_y;
 };
+
+/// The part of a picture segment a-b (exact picture coordinates) inside the frame, or none.
+std::optional<std::array<Exact2, 2>> clip_to_frame(const ViewPyramid& p, const Exact2& a, const Exact2& b);
 
 /// The pyramid of a perspective camera for `tangents` (frame_tangents()).
 ViewPyramid view_pyramid(const Camera& camera, const std::array<double, 2>& tangents);

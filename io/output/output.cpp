@@ -285,6 +285,39 @@ PageOptions sheet_page(const OutputOptions& a, const std::vector<const RenderRes
   return page;
 }
 
+// A ring cut to the half-plane where side·(p - at) >= 0 along axis k (Sutherland-Hodgman).
+std::vector<Point2> crop_ring(const std::vector<Point2>& ring, int k, double at, double side) {
+  std::vector<Point2> out;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Point2 &p = ring[i], &q = ring[(i + 1) % ring.size()];
+    const double dp = side * (p[k] - at), dq = side * (q[k] - at);
+    if (dp >= 0) out.push_back(p);
+    if ((dp < 0) != (dq < 0)) {
+      const double t = dp / (dp - dq);
+      out.push_back(Point2{p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
+    }
+  }
+  return out;
+}
+
+// The fills cut to the picture frame: a page decision in drawing doubles, after the exact
+// visibility (the JSON keeps the whole exact polygons). Each ring on its own: the frame is
+// convex, so what lies inside it is filled as before.
+void crop_fills(Plot& plot, const std::array<double, 4>& rect) {
+  std::vector<PlotFill> kept;
+  for (PlotFill& f : plot.fills) {
+    std::vector<std::vector<Point2>> rings;
+    for (std::vector<Point2>& ring : f.rings) {
+      for (int k = 0; k < 2 && ring.size() >= 3; ++k) ring = crop_ring(crop_ring(ring, k, rect[k], 1), k, rect[k + 2], -1);
+      if (ring.size() >= 3) rings.push_back(std::move(ring));
+    }
+    if (rings.empty()) continue;
+    f.rings = std::move(rings);
+    kept.push_back(std::move(f));
+  }
+  plot.fills = std::move(kept);
+}
+
 // The caps' hatch lines, on the page's scale (the layout is made once without them: they lie
 // inside the caps, so the drawing's bounds and scale do not change by them).
 void add_hatching(std::vector<Plot>& plots, const std::vector<const RenderResult*>& results, const Sheet& sheet, const OutputOptions& a) {
@@ -296,7 +329,10 @@ void add_hatching(std::vector<Plot>& plots, const std::vector<const RenderResult
   PlotOptions po = plot_options(a);
   po.hidden = false;
   for (std::size_t i = 0; i < results.size(); ++i) {
-    const LineDrawing h = cap_hatching(*results[i], sheet.views[i].scale, pen, a.threads);
+    LineDrawing h = cap_hatching(*results[i], sheet.views[i].scale, pen, a.threads);
+    if (results[i]->pyramid)
+      for (Segment& s : h.segments)
+        for (const Plane& side : results[i]->pyramid->sides) clip_near(s, side);
     if (h.segments.empty()) continue;
     Plot hp = make_plot(h, results[i]->camera, po);
     for (PlotLayer& l : hp.layers) plots[i].layers.push_back(std::move(l));
@@ -337,7 +373,13 @@ void add_tone_hatching(std::vector<Plot>& plots, const std::vector<const RenderR
   PlotOptions po = plot_options(a);
   po.hidden = false;
   for (std::size_t i = 0; i < results.size(); ++i) {
-    const std::vector<TonePiece> h = tone_hatching(*results[i], sheet.views[i].scale, o);
+    std::vector<TonePiece> h = tone_hatching(*results[i], sheet.views[i].scale, o);
+    if (const auto& frame = results[i]->pyramid) {  // exactly inside the picture frame
+      std::vector<TonePiece> kept;
+      for (TonePiece& t : h)
+        if (auto e = clip_to_frame(*frame, t.ends[0], t.ends[1])) t.ends = *e, kept.push_back(std::move(t));
+      h = std::move(kept);
+    }
     if (h.empty()) continue;
     Plot hp = tone_plot(h, *results[i], po);
     for (PlotLayer& l : hp.layers) plots[i].layers.push_back(std::move(l));
@@ -449,8 +491,11 @@ PartText drawing_text(const std::vector<const RenderResult*>& results, const std
     const PlotOptions po = plot_options(a);
     for (const RenderResult* r : results) {
       plots.push_back(make_plot(r->drawing, r->camera, po));
-      if (r->pyramid) plots.back().bounds = r->pyramid->rect;  // the page shows the picture's frame
       add_surface_fills(plots.back(), *r);
+      if (r->pyramid) {  // the page shows the picture's frame; the fills are cropped to it there
+        plots.back().bounds = r->pyramid->rect;
+        crop_fills(plots.back(), r->pyramid->rect);
+      }
       if (a.hatch) plots.back().fills.clear();  // a pen draws the shade as hatching (the fills set the bounds)
     }
     // Hatching and section lines are sized on the page: the layout is made once without them

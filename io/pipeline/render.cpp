@@ -457,8 +457,6 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   if (frame) {
     check_frame_request(*frame);
     r.pyramid = view_pyramid(r.camera, frame_tangents(*frame, r.camera));
-    if (o.surfaces || o.shadows || !method_entry(o.method).draws_lines())
-      throw std::invalid_argument("a picture frame (--fov, --frame, --focal) clips line drawings: filled products take the whole view");
   }
   const bool sectioned = planes || away;
   std::optional<std::vector<Scene>> above;  // the uncut scene, for the overhead lines
@@ -516,14 +514,16 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   if (r.camera.perspective) near = near_plane(r.camera, o.near);
   r.near_plane = near;
   r.clip = o.clip;
-  if ((near || o.clip || o.view_depth || r.pyramid) && !r.surfaces && !r.priority)
+  if ((near || o.clip || o.view_depth) && !r.surfaces && !r.priority)
     ParallelLoop(o.lines.threads).for_each(r.drawing.segments.size(), 1024, [&](std::size_t i) {
       Segment& s = r.drawing.segments[i];
       if (near) clip_near(s, *near);
       if (o.view_depth) clip_near(s, *o.view_depth);
       if (o.clip) clip_pieces(s, *o.clip);
-      if (r.pyramid)
-        for (const Plane& side : r.pyramid->sides) clip_near(s, side);  // the picture frame, exactly
+    });
+  if (r.pyramid)  // the picture frame, exactly (the filled products' polygons stay whole: the page crops them)
+    ParallelLoop(o.lines.threads).for_each(r.drawing.segments.size(), 1024, [&](std::size_t i) {
+      for (const Plane& side : r.pyramid->sides) clip_near(r.drawing.segments[i], side);
     });
   if (cut)
     ParallelLoop(o.lines.threads).for_each(r.drawing.segments.size(), 256, [&](std::size_t i) { cut->apply(r.drawing.segments[i]); });

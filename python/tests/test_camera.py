@@ -98,6 +98,27 @@ def test_scene_camera_and_options_agree(tmp_path):
     assert exact_hlr.render(without_camera(tmp_path), eye="1,0.5,1.6", target="4,3,1.2", up="0,0,1", fov=90).svg() == from_file
 
 
+def test_filled_products_in_a_frame(tmp_path):
+    # Surfaces, shadows and tone hatching seen through a frame from outside: the exact visible
+    # polygons are the unframed ones (the JSON keeps them whole), the lines are clipped exactly,
+    # and the page's fills and hatch lines lie inside the frame.
+    scene = without_camera(tmp_path)
+    eye = dict(eye=(14, -9, 7), target=(3, 2, 1), up=(0, 0, 1))
+    plain = json.loads(exact_hlr.render(scene, surfaces=True, **eye).json())
+    framed_d = exact_hlr.render(scene, surfaces=True, fov=20, **eye)
+    framed = json.loads(framed_d.json())
+    assert framed["surfaces"] == plain["surfaces"]
+    planes = framed["view"]["frame"]["planes"]
+    for p in framed["segments"]:
+        if p["visible"] and not p.get("clipped"):
+            assert all(side(h, [Fraction(x) for x in p["from"]]) >= 0 and side(h, [Fraction(x) for x in p["to"]]) >= 0 for h in planes)
+    assert any(p.get("clipped") for p in framed["segments"])
+    for svg in (framed_d.svg(), exact_hlr.render(scene, hatch=True, fov=20, **eye).svg()):
+        w, h = (float(x) for x in re.search(r'viewBox="0 0 ([0-9.]+) ([0-9.]+)"', svg).groups())
+        numbers = [float(x) for path in re.findall(r' d="([^"]+)"', svg) for x in re.findall(r"-?[0-9]+\.?[0-9]*", path)]
+        assert numbers and min(numbers) >= -0.3 and max(numbers[0::2]) <= w + 0.3 and max(numbers[1::2]) <= h + 0.3
+
+
 def test_frames_that_are_refused(tmp_path):
     with pytest.raises(exact_hlr.OptionError, match="perspective"):
         exact_hlr.render(ROOM, view="iso", fov=60)
@@ -107,8 +128,6 @@ def test_frames_that_are_refused(tmp_path):
         exact_hlr.render(ROOM, fov=60, focal=35)
     with pytest.raises(exact_hlr.OptionError, match="shape a frame"):
         exact_hlr.render(ROOM, aspect="16:9", eye=(9, -7, 5))
-    with pytest.raises(exact_hlr.OptionError, match="line drawings"):
-        exact_hlr.render(ROOM, fov=60, surfaces=True)
     bad = tmp_path / "bad.yaml"
     bad.write_text("bodies:\n  - box: {min: [0, 0, 0], max: [1, 1, 1]}\nview:\n  direction: [1, 1, 1]\n  fov: 40\n")
     with pytest.raises(exact_hlr.InputError, match="perspective") as e:
