@@ -20,6 +20,7 @@
 #include "algorithms/shading/face_shading.hpp"
 #include "algorithms/support/parallel.hpp"
 #include "algorithms/support/progress.hpp"
+#include "io/models/model_input.hpp"
 
 namespace hlr {
 
@@ -315,7 +316,7 @@ RasterResult raster(std::vector<Scene> scenes, const RasterOptions& o) {
 RasterResult raster_files(const std::vector<std::string>& inputs, const RasterOptions& o) {
   const auto t0 = Clock::now();
   std::vector<Scene> scenes;
-  for (const auto& in : inputs) scenes.push_back(is_scene_file(in) ? load_scene(in) : scene_from_mesh(in));
+  for (const auto& in : inputs) scenes.push_back(load_any_input(in, "", ModelOptions{}));  // as hlr render reads them
   const double load = since(t0);
   RasterResult r = raster(std::move(scenes), o);
   r.seconds.load = load;
