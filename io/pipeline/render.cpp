@@ -453,7 +453,8 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     throw std::invalid_argument("a plan's depth clips lines: --surfaces and fills take the plan without a depth");
   // The camera of the whole scene: a section and the plain view line up.
   r.camera = choose_camera(o.view, scene_view, polys);
-  const FrameRequest* frame = o.view.frame ? &*o.view.frame : scene_view && scene_view->frame ? &*scene_view->frame : nullptr;
+  // The request's frame, else the scene's camera's (which an orthographic --view leaves out).
+  const FrameRequest* frame = o.view.frame ? &*o.view.frame : scene_view && scene_view->frame && r.camera.perspective ? &*scene_view->frame : nullptr;
   if (frame) {
     check_frame_request(*frame);
     r.pyramid = view_pyramid(r.camera, frame_tangents(*frame, r.camera));

@@ -122,6 +122,7 @@ def test_filled_products_in_a_frame(tmp_path):
 def test_frames_that_are_refused(tmp_path):
     with pytest.raises(exact_hlr.OptionError, match="perspective"):
         exact_hlr.render(ROOM, view="iso", fov=60)
+    assert "frame" not in json.loads(exact_hlr.render(ROOM, view="iso").json())["view"]  # the scene's lens is for its camera
     with pytest.raises(exact_hlr.OptionError, match="--fov"):
         exact_hlr.render(ROOM, fov=180)
     with pytest.raises(exact_hlr.OptionError, match="one of"):
