@@ -358,6 +358,17 @@ NMR::MODELTRANSFORM transform_of(const std::array<float, 12>& rows) {  // x' = r
   return t;
 }
 
+// The test box's corners and triangles as a lib3mf mesh object's geometry.
+void set_box_geometry(NMR::PLib3MFModelMeshObject* mesh) {
+  using namespace NMR;
+  const std::vector<float> c = box_corners();
+  std::vector<MODELMESHVERTEX> v(8);
+  for (int i = 0; i < 8; ++i) v[i] = {{c[3 * i], c[3 * i + 1], c[3 * i + 2]}};
+  std::vector<MODELMESHTRIANGLE> t(12);
+  for (int i = 0; i < 12; ++i) t[i] = {{kBoxTriangles[3 * i], kBoxTriangles[3 * i + 1], kBoxTriangles[3 * i + 2]}};
+  EXPECT_EQ(lib3mf_meshobject_setgeometry(mesh, v.data(), 8, t.data(), 12), 0);
+}
+
 std::string write_3mf(const std::string& name, DWORD unit) {
   using namespace NMR;
   PLib3MFModel* model = nullptr;
@@ -366,12 +377,7 @@ std::string write_3mf(const std::string& name, DWORD unit) {
   PLib3MFModelMeshObject* mesh = nullptr;
   EXPECT_EQ(lib3mf_model_addmeshobject(model, &mesh), 0);
   lib3mf_object_setnameutf8(mesh, "box");
-  const std::vector<float> c = box_corners();
-  std::vector<MODELMESHVERTEX> v(8);
-  for (int i = 0; i < 8; ++i) v[i] = {{c[3 * i], c[3 * i + 1], c[3 * i + 2]}};
-  std::vector<MODELMESHTRIANGLE> t(12);
-  for (int i = 0; i < 12; ++i) t[i] = {{kBoxTriangles[3 * i], kBoxTriangles[3 * i + 1], kBoxTriangles[3 * i + 2]}};
-  EXPECT_EQ(lib3mf_meshobject_setgeometry(mesh, v.data(), 8, t.data(), 12), 0);
+  set_box_geometry(mesh);
   // A components object placing the box twice: shifted, and mirrored in x.
   PLib3MFModelComponentsObject* pair = nullptr;
   EXPECT_EQ(lib3mf_model_addcomponentsobject(model, &pair), 0);
@@ -399,12 +405,7 @@ std::string write_coloured_3mf(const std::string& name, bool base_material) {
   EXPECT_EQ(lib3mf_createmodel(&model), 0);
   PLib3MFModelMeshObject* mesh = nullptr;
   EXPECT_EQ(lib3mf_model_addmeshobject(model, &mesh), 0);
-  const std::vector<float> c = box_corners();
-  std::vector<MODELMESHVERTEX> v(8);
-  for (int i = 0; i < 8; ++i) v[i] = {{c[3 * i], c[3 * i + 1], c[3 * i + 2]}};
-  std::vector<MODELMESHTRIANGLE> t(12);
-  for (int i = 0; i < 12; ++i) t[i] = {{kBoxTriangles[3 * i], kBoxTriangles[3 * i + 1], kBoxTriangles[3 * i + 2]}};
-  EXPECT_EQ(lib3mf_meshobject_setgeometry(mesh, v.data(), 8, t.data(), 12), 0);
+  set_box_geometry(mesh);
   PLib3MFPropertyHandler* h = nullptr;
   EXPECT_EQ(lib3mf_meshobject_createpropertyhandler(mesh, &h), 0);
   PLib3MFDefaultPropertyHandler* d = nullptr;  // lib3mf writes triangle properties with an object's default
