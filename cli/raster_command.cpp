@@ -40,16 +40,18 @@ RasterOptions raster_options(const RasterArgs& a) {
                                             : RasterAlgorithm::ZBuffer;
   auto x = a.size.find('x');
   try {
-    if (x == std::string::npos) throw std::invalid_argument("");
     std::size_t used = 0;
     o.width = std::stoi(a.size.substr(0, x), &used);
-    if (used != x) throw std::invalid_argument("");
-    o.height = std::stoi(a.size.substr(x + 1), &used);
-    if (used != a.size.size() - x - 1) throw std::invalid_argument("");
+    if (used != std::min(x, a.size.size())) throw std::invalid_argument("");
+    o.height = 0;  // WIDTH alone: the frame's aspect (square without a frame)
+    if (x != std::string::npos) {
+      o.height = std::stoi(a.size.substr(x + 1), &used);
+      if (used != a.size.size() - x - 1) throw std::invalid_argument("");
+    }
   } catch (const std::exception&) {
-    throw std::invalid_argument("--size must be WIDTHxHEIGHT in pixels, e.g. 512x512 (got '" + a.size + "')");
+    throw std::invalid_argument("--size must be WIDTHxHEIGHT or WIDTH in pixels, e.g. 512x512 (got '" + a.size + "')");
   }
-  if (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384)
+  if (o.width < 1 || o.height < 0 || (x != std::string::npos && o.height < 1) || o.width > 16384 || o.height > 16384)
     throw std::invalid_argument("--size: each side must be 1 to 16384 pixels");
   o.view = parse_view_request(a.view, a.eye, a.target, a.up, a.up_axis);
   o.shading = a.shading == "gouraud" ? RasterShading::Gouraud : a.shading == "phong" ? RasterShading::Phong : RasterShading::Flat;
@@ -120,7 +122,7 @@ void add_raster_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--algorithm", a->algorithm,
                   "zbuffer (default), scanline, warnock or raytrace: the same exact face at every pixel centre")
       ->check(CLI::IsMember({"zbuffer", "scanline", "warnock", "raytrace"}));
-  cmd->add_option("--size", a->size, "WIDTHxHEIGHT in pixels (default 512x512)");
+  cmd->add_option("--size", a->size, "WIDTHxHEIGHT in pixels (default 512x512), or WIDTH: the height from the camera's frame");
   cmd->add_option("--view", a->view, "Orthographic view: front, top, iso, ... or a direction X,Y,Z toward the viewer");
   cmd->add_option("--up-axis", a->up_axis, "Which axis is up for the named views: y (default) or z")->check(CLI::IsMember({"y", "z"}));
   cmd->add_option("--eye", a->eye, "Perspective: the eye point X,Y,Z");

@@ -7,6 +7,6 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 EXAMPLES=/usr/share/openscad/examples/Old
 command -v openscad >/dev/null || { echo "openscad_examples: install Debian's openscad" >&2; exit 1; }
-for n in 002; do
+for n in 001 002 004; do
   openscad -o "$ROOT/data/openscad/example$n.off" "$EXAMPLES/example$n.scad"
 done

@@ -65,7 +65,7 @@ double dyadic_up(double raw, int& k) {
 
 }  // namespace
 
-RasterGrid raster_grid(const std::array<double, 4>& extent, int width, int height, double x_unit, double y_unit) {
+RasterGrid raster_grid(const std::array<double, 4>& extent, int width, int height, double x_unit, double y_unit, double margin) {
   if (width < 1 || height < 1 || width > 65536 || height > 65536)
     throw std::invalid_argument("--size: the image must be 1 to 65536 pixels each way");
   double x0 = extent[0], y0 = extent[1], x1 = extent[2], y1 = extent[3];
@@ -75,7 +75,7 @@ RasterGrid raster_grid(const std::array<double, 4>& extent, int width, int heigh
     if (!std::isfinite(v) || std::fabs(v) > big)
       throw std::invalid_argument("raster: the picture's coordinates lie beyond 2^500 (scale the scene: the pixel grid is exact in doubles)");
   // The pixel's true size, then its steps in picture units along x and y.
-  double size = std::max((x1 - x0) * x_unit / width, (y1 - y0) * y_unit / height) * 1.04;
+  double size = std::max((x1 - x0) * x_unit / width, (y1 - y0) * y_unit / height) * margin;
   if (!(size > 0)) size = std::max({std::fabs(x0) * x_unit, std::fabs(y0) * y_unit, 1e-300}) * 1e-3 / std::max(width, height);
   const double rx = size / x_unit, ry = size / y_unit;
   if (!(rx > small && ry > small && std::isfinite(rx) && std::isfinite(ry)))
@@ -325,6 +325,13 @@ void add_face(const Polyhedron& p, int b, int f, bool convex, const std::vector<
 // The nearest doubles (mpq_get_d) of the exact extremes of the corners' picture points,
 // {x0, y0, x1, y1}: the intervals find the few corners that may be extreme, their exact
 // projections decide. Empty scene: {1, 1, -1, -1}.
+// The true length of a picture unit along x and y: 1/|r| (perspective: |d|/|r|, the picture at
+// the target's distance), from the exact ratio so that no square overflows the doubles.
+std::array<double, 2> picture_units(const PicturePlane& pp, const Camera& camera) {
+  const Rational rr = dot(pp.r(), pp.r()), uu = dot(pp.u(), pp.u()), k2 = camera.perspective ? dot(pp.d(), pp.d()) : Rational(1);
+  return {std::sqrt(to_double(Rational(k2 / rr))), std::sqrt(to_double(Rational(k2 / uu)))};
+}
+
 std::array<double, 4> picture_extent(const RasterScene& s, const std::vector<std::vector<Pic>>& pic) {
   std::array<double, 4> lo_hi{INFINITY, INFINITY, -INFINITY, -INFINITY};  // the extremes' intervals meet these
   for (const RasterPolygon& p : s.polygons)
@@ -439,13 +446,15 @@ RasterScene raster_scene(const std::vector<const Polyhedron*>& bodies, const Cam
       s.sides[static_cast<std::size_t>(p.first + k)] = filtered(sub(mul(dy, a[0]), mul(dx, a[1])), Interval{-dy.hi, -dy.lo}, dx);
     }
   });
-  // The true length of a picture unit along x: 1/|r| (perspective: |d|/|r|, the picture at the
-  // target's distance), from the exact ratio so that no square overflows the doubles.
-  const Rational rr = dot(pp.r(), pp.r()), uu = dot(pp.u(), pp.u()), k2 = camera.perspective ? dot(pp.d(), pp.d()) : Rational(1);
-  const double x_unit = std::sqrt(to_double(Rational(k2 / rr))), y_unit = std::sqrt(to_double(Rational(k2 / uu)));
-  s.grid = grid ? *grid : raster_grid(picture_extent(s, pic), width, height, x_unit, y_unit);
+  const std::array<double, 2> unit = picture_units(pp, camera);
+  s.grid = grid ? *grid : raster_grid(picture_extent(s, pic), width, height, unit[0], unit[1]);
   return s;
 }
 
+RasterGrid frame_grid(const Camera& camera, const Rational& half_x, const Rational& half_y, int width, int height) {
+  const std::array<double, 2> unit = picture_units(PicturePlane(camera), camera);
+  const double x = to_double(half_x), y = to_double(half_y);
+  return raster_grid({-x, -y, x, y}, width, height, unit[0], unit[1], 1.0);
+}
 
 }  // namespace hlr

@@ -56,7 +56,12 @@ struct RasterGrid {
 /// (`extent` = {x0, y0, x1, y1}, nearest doubles of exact extremes; empty: [-1, 1]²) with a
 /// margin; `x_unit`, `y_unit`: the true length of one picture unit along x and y
 /// (picture_plane.hpp).
-RasterGrid raster_grid(const std::array<double, 4>& extent, int width, int height, double x_unit, double y_unit);
+RasterGrid raster_grid(const std::array<double, 4>& extent, int width, int height, double x_unit, double y_unit, double margin = 1.04);
+
+/// A grid of `width` x `height` square pixels whose picture is a camera's frame: the exact
+/// picture rectangle |X| <= half_x, |Y| <= half_y (view_pyramid.hpp) fitted inside without a
+/// margin, centred (an image of the frame's aspect shows the frame and nothing more).
+RasterGrid frame_grid(const Camera& camera, const Rational& half_x, const Rational& half_y, int width, int height);
 
 /// A convex picture polygon ready for pixel tests: a face, or a triangle of a face that is not
 /// convex, counter-clockwise in the picture. Its corners are body vertices

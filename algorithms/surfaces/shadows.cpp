@@ -25,18 +25,34 @@ void add_rings(const VisiblePolygon& p, std::vector<Ring>& out) {
   for (const auto& h : p.holes_2d) out.push_back(h);
 }
 
-// The lit polygons of a face from the light, carried into the viewer's picture.
-std::vector<Ring> carried(const std::vector<VisiblePolygon>& lit, const PicturePlane& viewer) {
+// A ring of 3D corners clipped to keep.value <= 0 (Sutherland-Hodgman, exact): the even-odd
+// region of the clipped rings of a polygon with holes is the polygon's part on that side.
+std::vector<Point3> clipped(const std::vector<Point3>& ring, const Plane& keep) {
+  std::vector<Point3> out;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Point3 &a = ring[i], &b = ring[(i + 1) % ring.size()];
+    const Rational va = keep.value(a), vb = keep.value(b);
+    if (va <= 0) out.push_back(a);
+    if ((va < 0 && vb > 0) || (va > 0 && vb < 0)) out.push_back(a + Rational(va / (va - vb)) * (b - a));
+  }
+  return out.size() >= 3 ? out : std::vector<Point3>{};
+}
+
+// The lit polygons of a face from the light, carried into the viewer's picture (clipped to
+// `keep` first where the viewer sees only part of the light's bodies).
+std::vector<Ring> carried(const std::vector<VisiblePolygon>& lit, const PicturePlane& viewer, const Plane* keep) {
   std::vector<Ring> out;
-  for (const VisiblePolygon& p : lit) {
+  auto add = [&](const std::vector<Point3>& corners) {
+    const std::vector<Point3> kept = keep ? clipped(corners, *keep) : std::vector<Point3>{};
+    const std::vector<Point3>& ring = keep ? kept : corners;
+    if (ring.empty()) return;
     Ring r;
-    for (const Point3& c : p.outer) r.push_back(viewer.project(c));
+    for (const Point3& c : ring) r.push_back(viewer.project(c));
     out.push_back(std::move(r));
-    for (const auto& h : p.holes) {
-      Ring hr;
-      for (const Point3& c : h) hr.push_back(viewer.project(c));
-      out.push_back(std::move(hr));
-    }
+  };
+  for (const VisiblePolygon& p : lit) {
+    add(p.outer);
+    for (const auto& h : p.holes) add(h);
   }
   return out;
 }
@@ -185,18 +201,20 @@ Shadows shadows(const std::vector<const Polyhedron*>& bodies, const Camera& came
   auto t0 = std::chrono::steady_clock::now();
   if (lights.size() > 16) throw std::invalid_argument("shadows: at most 16 lights");
   Shadows out;
+  const ShadowCasters* casters = options.casters;
+  const std::vector<const Polyhedron*>& lit_bodies = casters ? casters->bodies : bodies;
   // Pass 1: what each light sees, lit polygons lifted to exact 3D corners.
   std::vector<std::map<std::pair<int, int>, const VisibleFace*>> lit_face(lights.size());
   for (const LightPlace& l : lights) {
-    Camera lc = light_camera(bodies, l);
+    Camera lc = light_camera(lit_bodies, l);
     LineOptions lo;
     lo.edges = EdgeSelection::All;
     lo.classify_all = true;
     lo.threads = options.threads;
-    LineDrawing d = face_occluders(bodies, lc, lo);
+    LineDrawing d = face_occluders(lit_bodies, lc, lo);
     SurfaceOptions so;
     so.threads = options.threads;
-    out.from_light.push_back(visible_surfaces(bodies, lc, d, so));
+    out.from_light.push_back(visible_surfaces(lit_bodies, lc, d, so));
   }
   for (std::size_t i = 0; i < lights.size(); ++i)
     for (const VisibleFace& f : out.from_light[i].faces) lit_face[i][{f.body, f.face}] = &f;
@@ -206,10 +224,11 @@ Shadows shadows(const std::vector<const Polyhedron*>& bodies, const Camera& came
   out.faces.resize(seen.faces.size());
   ParallelLoop(options.threads).for_each(seen.faces.size(), 4, [&](std::size_t k) {
     const VisibleFace& vf = seen.faces[k];
+    const std::pair<int, int> key = casters ? std::pair{casters->body[vf.body], casters->face[vf.body][vf.face]} : std::pair{vf.body, vf.face};
     std::vector<std::vector<Ring>> lit(lights.size());
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-      auto it = lit_face[i].find({vf.body, vf.face});
-      if (it != lit_face[i].end() && it->second->front == vf.front) lit[i] = carried(it->second->polygons, pp);
+    for (std::size_t i = 0; i < lights.size() && key.second >= 0; ++i) {
+      auto it = lit_face[i].find(key);
+      if (it != lit_face[i].end() && it->second->front == vf.front) lit[i] = carried(it->second->polygons, pp, casters ? &casters->keep : nullptr);
     }
     out.faces[k] = cut_face(vf, lit, pp, bodies[vf.body]->planes()[vf.face]);
   });

@@ -48,8 +48,18 @@ struct Shadows {
   std::size_t whole_faces = 0; // faces each light lights wholly or not at all (no arrangement)
 };
 
+/// The lights' bodies when they are not the bodies seen: the viewer's bodies are parts of these
+/// (cut by the viewer's near plane: the eye among the bodies), which the lights see whole.
+struct ShadowCasters {
+  std::vector<const Polyhedron*> bodies;
+  std::vector<int> body;               // per body seen: its caster
+  std::vector<std::vector<int>> face;  // per body seen, per face: the caster's face it is part of (-1: none, in every light's shadow)
+  Plane keep;                          // the part seen: keep.value <= 0 (the lit polygons are clipped to it)
+};
+
 struct ShadowOptions {
   unsigned threads = 0;
+  const ShadowCasters* casters = nullptr;
 };
 
 /// Shadows of `lights` (at most 16) on the visible surfaces `seen` of `bodies` from `camera`

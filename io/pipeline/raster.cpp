@@ -258,6 +258,19 @@ void resolve(const RasterResult& r, const RasterOptions& o, const std::vector<Rg
 
 }  // namespace
 
+namespace {
+
+// The image height that gives `width` pixels the frame's aspect (at least one pixel).
+int frame_height(const Camera& cam, const ViewPyramid& f, int width) {
+  const PicturePlane pp(cam);
+  // A picture unit is |d|/|r| long along x and |d|/|u| along y (raster_scene.cpp).
+  const double rr = to_double(dot(pp.r(), pp.r())), uu = to_double(dot(pp.u(), pp.u()));
+  const double aspect = to_double(f.half_y) / to_double(f.half_x) * std::sqrt(rr / uu);
+  return std::clamp(static_cast<int>(std::lround(width * aspect)), 1, 65536);
+}
+
+}  // namespace
+
 RasterResult raster(std::vector<Scene> scenes, const RasterOptions& o) {
   if (o.samples < 1 || o.samples > 16) throw std::invalid_argument("--samples must be 1 to 16");
   if (static_cast<long long>(o.width) * o.samples > 65536 || static_cast<long long>(o.height) * o.samples > 65536)
@@ -272,7 +285,10 @@ RasterResult raster(std::vector<Scene> scenes, const RasterOptions& o) {
   ro.facing_only = true;  // no lines: the facing of every face is all the raster needs
   ro.lines.threads = o.threads;
   ro.through_lines = false;
+  ro.cut_at_near = true;  // the eye among the bodies: what lies behind the near plane is cut away
   r.render = render(std::move(scenes), ro);
+  if (r.render.eye_cut && o.bounces > 0)
+    throw std::invalid_argument("--bounces needs every body in front of the eye (rays would miss what the near plane cuts away)");
   const Camera& cam = r.render.camera;
   std::vector<const Polyhedron*> polys;
   for (const SceneBody* b : r.render.bodies) polys.push_back(&b->body);
@@ -285,11 +301,20 @@ RasterResult raster(std::vector<Scene> scenes, const RasterOptions& o) {
   r.seconds.setup = since(t0);
   t0 = Clock::now();
   r.width = o.width, r.height = o.height;
+  std::optional<RasterGrid> framed;  // a camera's frame is the picture
+  if (r.render.pyramid) {
+    const ViewPyramid& f = *r.render.pyramid;
+    if (r.height == 0) r.height = frame_height(cam, f, r.width);
+    framed = frame_grid(cam, f.half_x, f.half_y, r.width * o.samples, r.height * o.samples);
+  } else if (r.height == 0) {
+    r.height = r.width;
+  }
   progress("exact scene: " + std::to_string(polys.size()) + " bodies");
-  r.scene = raster_scene(polys, cam, r.render.drawing, o.width * o.samples, o.height * o.samples, o.threads);
+  r.scene = raster_scene(polys, cam, r.render.drawing, r.width * o.samples, r.height * o.samples, o.threads, framed ? &*framed : nullptr);
   r.seconds.scene = since(t0);
   t0 = Clock::now();
-  progress(std::string(to_string(o.algorithm)) + ", " + std::to_string(o.width * o.samples) + " x " + std::to_string(o.height * o.samples) + " samples");
+  progress(std::string(to_string(o.algorithm)) + ", " + std::to_string(r.width * o.samples) + " x " + std::to_string(r.height * o.samples) +
+           " samples");
   switch (o.algorithm) {
     case RasterAlgorithm::ZBuffer: r.ids = zbuffer(r.scene, {o.threads}); break;
     case RasterAlgorithm::Scanline: r.ids = scanline(r.scene, {o.threads}); break;

@@ -24,7 +24,7 @@ const char* to_string(RasterAlgorithm a);
 
 struct RasterOptions {
   RasterAlgorithm algorithm = RasterAlgorithm::ZBuffer;
-  int width = 512, height = 512;
+  int width = 512, height = 512;  // height 0: the camera frame's aspect (square without a frame)
   ViewRequest view;
   unsigned threads = 0;  // 0: all cores
   RasterShading shading = RasterShading::Flat;

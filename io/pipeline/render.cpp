@@ -73,6 +73,15 @@ void surface_lines(LineDrawing& d, const std::vector<const SceneBody*>& bodies, 
   d.segments = std::move(kept);
 }
 
+// A perspective view with some vertex on the eye's plane or behind it.
+bool reaches_eye_plane(const std::vector<const Polyhedron*>& polys, const Camera& cam) {
+  if (!cam.perspective) return false;
+  for (const Polyhedron* p : polys)
+    for (const Point3& v : p->vertices())
+      if (cam.in_front(v) != Sign::Positive) return true;
+  return false;
+}
+
 void eye_plane_notes(const RenderResult& r, std::vector<std::string>& notes) {
   if (!r.camera.perspective) return;
   for (std::size_t i = 0; i < r.drawing.facing.size(); ++i) {
@@ -200,6 +209,10 @@ void solve_shadows(RenderResult& r, const std::vector<const Polyhedron*>& polys,
   const Lighting light = scene_lighting(scenes, r.camera);
   ShadowOptions so;
   so.threads = o.lines.threads;
+  if (r.whole) {
+    so.casters = &r.whole->casters;
+    for (const Polyhedron* p : r.whole->casters.bodies) plane_all_faces(*p, o.lines.threads);
+  }
   r.shadows = shadows(polys, r.camera, *r.surfaces, light_places(light), so);
   r.shadow_colours.resize(r.shadows->faces.size());
   const ViewDoubles vd(r.camera);
@@ -459,6 +472,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     check_frame_request(*frame);
     r.pyramid = view_pyramid(r.camera, frame_tangents(*frame, r.camera));
   }
+  const RenderMethodEntry& m = method_entry(o.method);
   const bool sectioned = planes || away;
   std::optional<std::vector<Scene>> above;  // the uncut scene, for the overhead lines
   if (o.overhead && planes && planes->size() == 1 && !away && !r.camera.perspective) above = *owned;
@@ -471,8 +485,37 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     polys.clear();
     for (SceneBody* b : editable) polys.push_back(&b->body);
   }
+  // Filled products with the eye among the bodies: every body cut by the near plane.
+  std::optional<Plane> eye_cut;
+  if ((o.surfaces || o.shadows || o.cut_at_near || !m.draws_lines()) && reaches_eye_plane(polys, r.camera)) {
+    const Plane n = near_plane(r.camera, o.near);
+    eye_cut = Plane(-n.a(), -n.b(), -n.c(), -n.d());  // keeps n >= 0: what lies in front of it
+    r.eye_cut = eye_cut;
+    repairs.push_back("the eye lies among the bodies: every body is cut by the near plane (--near " + to_string(o.near) +
+                      " of the way to the target) and what lies inside a body there is filled by its cap");
+  }
+  if (eye_cut) {
+    std::shared_ptr<RenderResult::WholeBodies> whole;
+    std::vector<const SceneBody*> before(editable.begin(), editable.end());
+    if (o.shadows) {  // the lights see the bodies whole
+      whole = std::make_shared<RenderResult::WholeBodies>();
+      for (const SceneBody* b : editable) whole->bodies.push_back(b->body);
+    }
+    std::vector<std::vector<int>> parent;
+    cut_near(*eye_cut, editable, r.names, whole ? &parent : nullptr);
+    if (editable.empty()) throw std::invalid_argument("every body lies behind the near plane: nothing is left to draw");
+    if (whole) {
+      for (const Polyhedron& p : whole->bodies) whole->casters.bodies.push_back(&p);
+      for (const SceneBody* b : editable)
+        whole->casters.body.push_back(static_cast<int>(std::find(before.begin(), before.end(), b) - before.begin()));
+      whole->casters.face = std::move(parent);
+      whole->casters.keep = *eye_cut;
+      r.whole = whole;
+    }
+    polys.clear();
+    for (SceneBody* b : editable) polys.push_back(&b->body);
+  }
   r.bodies.assign(editable.begin(), editable.end());
-  const RenderMethodEntry& m = method_entry(o.method);
   if (m.flags & kChecksSolids)
     for (const Polyhedron* p : polys) p->report();  // the method's checks belong to loading
   if ((o.tile || o.segments_only) && (!(m.flags & kTakesTiles) || o.surfaces || o.shadows || o.clip || !o.polylines.empty()))
@@ -502,7 +545,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     const SceneBody& b = *r.bodies[e.body()];
     throw RenderBodyError(e.body(), b.name, b.source, e.reason());
   }
-  if (sectioned) mark_cut_lines(r.drawing, r.bodies);
+  if (sectioned || eye_cut) mark_cut_lines(r.drawing, r.bodies);
   surface_lines(r.drawing, r.bodies, o);
   if (above) add_overhead(r, std::move(*above), (*planes)[0], o);
   if (!o.polylines.empty()) add_polylines(r, o.polylines, o);

@@ -57,7 +57,8 @@ struct RenderOptions {
   LineOptions lines;
   TangentEdges tangent_edges = TangentEdges::Thin;
   ViewRequest view;
-  /// Perspective near plane, as a fraction of the eye-target distance (positive).
+  /// Perspective near plane, as a fraction of the eye-target distance (positive). Filled
+  /// products (and `cut_at_near`) with the eye among the bodies cut every body by it first.
   Rational near = Rational(1, 1000);
   /// Clip the drawing to a convex volume (Cyrus-Beck, exact).
   std::optional<ConvexClipper> clip;
@@ -112,6 +113,9 @@ struct RenderOptions {
   /// The prepare stage alone for the raster pipeline: bodies, camera and each face's facing
   /// (LineDrawing::facing, back_faces_unseen), no lines.
   bool facing_only = false;
+  /// Cut every body by the near plane when some body reaches the eye's plane, as filled
+  /// products do (the raster pipeline's prepare stage).
+  bool cut_at_near = false;
 };
 
 struct RenderResult {
@@ -145,6 +149,15 @@ struct RenderResult {
   /// The clipping the drawing got (the perspective near plane, RenderOptions::clip), for lines
   /// made later on the page (a section's hatching).
   std::optional<Plane> near_plane;
+  /// Set when the eye lay among the bodies and every body was cut by the near plane (its
+  /// caps: SceneBody::section_cap kEyeCap): the plane, its kept side n·X + d <= 0.
+  std::optional<Plane> eye_cut;
+  /// With eye_cut and shadows: the bodies before that cut, which the lights see whole.
+  struct WholeBodies {
+    std::vector<Polyhedron> bodies;
+    ShadowCasters casters;
+  };
+  std::shared_ptr<const WholeBodies> whole;
   std::optional<ConvexClipper> clip;
   /// With RenderOptions::section_view: the section this view shows.
   std::optional<NamedSection> section_view;

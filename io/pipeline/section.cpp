@@ -162,6 +162,51 @@ void cut_bodies(const std::vector<Plane>& planes, const std::vector<Plane>& away
   names = std::move(kept_names);
 }
 
+void cut_near(const Plane& keep, std::vector<SceneBody*>& bodies, std::vector<DrawingBody>& names, std::vector<std::vector<int>>* parent) {
+  std::vector<SceneBody*> kept_bodies;
+  std::vector<DrawingBody> kept_names;
+  if (parent) parent->clear();
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    SceneBody& b = *bodies[i];
+    CutSolid c = cut_solid(b.body, {keep});
+    if (c.state == CutSolid::State::Removed) continue;
+    if (parent) {
+      std::vector<int> from(b.body.num_faces());
+      for (std::size_t f = 0; f < from.size(); ++f) from[f] = static_cast<int>(f);
+      if (c.state == CutSolid::State::Cut) {
+        from.clear();
+        for (int q : c.part) from.push_back(q < static_cast<int>(b.body.num_faces()) ? q : -1);
+      }
+      parent->push_back(std::move(from));
+    }
+    if (c.state == CutSolid::State::Cut) {
+      DrawingBody& n = names[i];
+      const int now = static_cast<int>(b.body.num_faces());
+      const int cap_number = static_cast<int>(n.input_faces(now));  // after the input's faces and the section's caps
+      const bool was_cut = !b.section_part.empty();
+      int cap_part = now;  // a part number no face of the body has yet
+      for (int q : b.section_part) cap_part = std::max(cap_part, q + 1);
+      std::vector<int> input_face, part, cap;
+      for (int q : c.part) {
+        const bool old = q < now;
+        input_face.push_back(old ? n.output_face(q) : cap_number);
+        part.push_back(!old ? cap_part : was_cut ? b.section_part[q] : q);
+        cap.push_back(!old ? kEyeCap : was_cut ? b.section_cap[q] : -1);
+      }
+      n.input_face = std::move(input_face);
+      n.numbered = cap_number + 1;
+      b.body = Polyhedron(std::move(c.vertices), std::move(c.faces));
+      b.surfaces = renumbered_surfaces(b.surfaces, c.part);
+      b.section_part = std::move(part);
+      b.section_cap = std::move(cap);
+      b.face_texcoords.clear();
+    }
+    kept_bodies.push_back(&b), kept_names.push_back(std::move(names[i]));
+  }
+  bodies = std::move(kept_bodies);
+  names = std::move(kept_names);
+}
+
 void section_hooks(const std::vector<const SceneBody*>& bodies, FaceRouteHooks& hooks) {
   hooks.face_part.assign(bodies.size(), {});
   hooks.cap_face.assign(bodies.size(), {});
@@ -179,6 +224,7 @@ void mark_cut_lines(LineDrawing& d, const std::vector<const SceneBody*>& bodies)
     if (s.kind == Segment::Kind::Edge && s.face0 >= 0 && s.face1 >= 0 && !bodies[s.body]->section_part.empty()) {
       const SceneBody& b = *bodies[s.body];
       if (b.section_part[s.face0] == b.section_part[s.face1]) continue;
+      if (b.section_cap[s.face0] == kEyeCap || b.section_cap[s.face1] == kEyeCap) continue;  // on the near plane
       if (b.section_cap[s.face0] >= 0 || b.section_cap[s.face1] >= 0) s.line = LineKind::Cut;
     }
     out.push_back(std::move(s));

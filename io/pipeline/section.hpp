@@ -21,6 +21,18 @@ namespace hlr {
 void cut_bodies(const std::vector<Plane>& planes, const std::vector<Plane>& away, std::vector<SceneBody*>& bodies, std::vector<DrawingBody>& names,
                 std::vector<std::string>& notes);
 
+/// SceneBody::section_cap of a face on the near plane (cut_near's caps).
+constexpr int kEyeCap = -2;
+
+/// Filled products of a perspective view with the eye among the bodies: every body (also one
+/// that takes no section) cut by `keep` (the near plane, its kept side keep.value <= 0) after any
+/// section. A body wholly behind it leaves `bodies` and `names`; the cut ones keep their input
+/// face numbers (the cap on the near plane numbered after the input's faces and the section's
+/// caps), their section parts and caps, and get caps marked kEyeCap: faces that hide and are
+/// filled but are not hatched and draw no line. An open body is cut without a cap.
+/// With `parent`: per body kept, per face, the face before the cut it is part of (-1: a cap).
+void cut_near(const Plane& keep, std::vector<SceneBody*>& bodies, std::vector<DrawingBody>& names, std::vector<std::vector<int>>* parent = nullptr);
+
 /// The per-face route's hooks that name the cut lines and keep the faces' inner seams undrawn.
 void section_hooks(const std::vector<const SceneBody*>& bodies, FaceRouteHooks& hooks);
 

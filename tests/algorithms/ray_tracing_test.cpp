@@ -12,6 +12,7 @@
 #include <random>
 
 #include "io/pipeline/raster.hpp"
+#include "io/pipeline/section.hpp"
 #include "support/numbers.hpp"
 
 using namespace hlr;
@@ -143,13 +144,26 @@ TEST(RasterPipeline, FourAlgorithmsWriteTheSameIdsAndTheCameraGridIsExact) {
   EXPECT_EQ(ids[3], ids[0]);
 }
 
-TEST(RasterPipeline, BadSizesAndBodiesBehindTheEyeAreClearErrors) {
+TEST(RasterPipeline, BadSizesAreClearErrorsAndAnEyeInsideABodySeesItsCap) {
   RasterOptions o;
   o.samples = 17;
   EXPECT_THROW(raster_files({std::string(HLR_DATA_DIR) + "/cube.off"}, o), std::invalid_argument);
   o.samples = 1;
-  o.view.eye = P(0.5, 0.5, 0.5);  // inside the cube
-  EXPECT_ANY_THROW(raster_files({std::string(HLR_DATA_DIR) + "/cube.off"}, o));
+  o.width = o.height = 16;
+  o.view.eye = P(0.5, 0.5, 0.5);  // inside the cube: the near plane's cap fills the picture
+  const RasterResult r = raster_files({std::string(HLR_DATA_DIR) + "/cube.off"}, o);
+  ASSERT_TRUE(r.render.eye_cut);
+  ASSERT_GE(r.ids.at(8, 8), 0);
+  const std::array<int, 2> cap = r.scene.faces[r.ids.at(8, 8)];
+  EXPECT_EQ(r.render.bodies[cap[0]]->section_cap[cap[1]], kEyeCap);
+  int seen = 0;  // the cap (a hexagon: the view is diagonal) fills the image fitted to it
+  for (int id : r.ids.ids) {
+    EXPECT_TRUE(id == r.ids.at(8, 8) || id == -1);
+    seen += id >= 0;
+  }
+  EXPECT_GT(seen, 16 * 16 / 3);
+  o.bounces = 1;  // secondary rays would miss what the cut removed
+  EXPECT_THROW(raster_files({std::string(HLR_DATA_DIR) + "/cube.off"}, o), std::invalid_argument);
 }
 
 }  // namespace

@@ -175,36 +175,6 @@ std::vector<Hit> sight(const std::vector<test::OracleFace>& faces, const Camera&
   return hits;
 }
 
-// Does the light reach x on face `self`, on the side the viewer sees? -1: unsure.
-int lit(const std::vector<test::OracleFace>& faces, const test::OracleFace& self, const Camera& cam, const LightPlace& l,
-        const std::array<Rational, 3>& x) {
-  auto f = [](const test::OracleFace& g, const Rational& px, const Rational& py, const Rational& pz) { return Rational(g.a * px + g.b * py + g.c * pz + g.d); };
-  const int viewer = cam.perspective ? sgn(f(self, cam.eye.x(), cam.eye.y(), cam.eye.z()))
-                                     : sgn(self.a * cam.direction.x() + self.b * cam.direction.y() + self.c * cam.direction.z());
-  const int light = l.directional ? sgn(self.a * l.toward.x() + self.b * l.toward.y() + self.c * l.toward.z())
-                                  : sgn(f(self, l.position.x(), l.position.y(), l.position.z()));
-  if (light == 0) return 0;  // the face lies in a plane through the light: in its shadow (documented)
-  if (light != viewer) return 0;
-  std::array<Rational, 3> dir;
-  for (int k = 0; k < 3; ++k) dir[k] = l.directional ? l.toward[k] : l.position[k] - x[k];
-  bool unsure = false;
-  for (const test::OracleFace& g : faces) {
-    if (g.id == self.id) continue;
-    Rational nd = g.a * dir[0] + g.b * dir[1] + g.c * dir[2];
-    if (nd == 0) continue;
-    Rational t = -(g.a * x[0] + g.b * x[1] + g.c * x[2] + g.d) / nd;
-    if (t < 0 || (!l.directional && t > 1)) continue;
-    int in = test::in_face(g, {x[0] + t * dir[0], x[1] + t * dir[1], x[2] + t * dir[2]});
-    if (in < 0) continue;
-    if (t == 0 || in == 0) {
-      unsure = true;
-      continue;
-    }
-    return 0;
-  }
-  return unsure ? -1 : 1;
-}
-
 // The face seen at a picture point by the raster rule (the nearest; at equal depth the face
 // toward the viewer, then the lower number): -2 when the ray grazes a border.
 int seen_face(const std::vector<test::OracleFace>& faces, const Camera& cam, const PicturePlane& pp, const Exact2& q) {
@@ -321,7 +291,7 @@ void run_scene(const Scene3& sc, const std::string& what, std::mt19937& rng, Cou
             }
             const test::OracleFace& self = faces[hits.back().id];
             for (std::size_t i = 0; i < places.size(); ++i) {
-              const int want = lit(faces, self, r.camera, places[i], hits.back().at);
+              const int want = test::lit(faces, self, r.camera, places[i], hits.back().at);
               if (want < 0) {
                 ++n.skipped;
                 continue;

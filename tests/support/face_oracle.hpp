@@ -4,13 +4,14 @@
 // with the algorithms it checks (priority_list_test, shadows_test).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
-#include <algorithm>
 #include <vector>
 
 #include "algorithms/model/camera.hpp"
 #include "algorithms/picture/picture_plane.hpp"
+#include "algorithms/surfaces/shadows.hpp"
 #include "kernel/polyhedron.hpp"
 
 namespace hlr::test {
@@ -39,15 +40,15 @@ inline bool in_box(const std::array<double, 4>& b, const std::array<double, 2>& 
   return b[0] <= q[0] && q[0] <= b[2] && b[1] <= q[1] && q[1] <= b[3];
 }
 
-inline std::vector<OracleFace> oracle_faces(const std::vector<const Polyhedron*>& bodies, const PicturePlane& pp) {
+/// The faces with no picture box (every face tested at every point): for views with the eye
+/// among the bodies, whose vertices behind the eye have no picture.
+inline std::vector<OracleFace> oracle_faces(const std::vector<const Polyhedron*>& bodies) {
   std::vector<OracleFace> out;
   int id = 0;
   for (std::size_t bi = 0; bi < bodies.size(); ++bi)
     for (std::size_t fi = 0; fi < bodies[bi]->num_faces(); ++fi, ++id) {
-      OracleFace of{static_cast<int>(bi), static_cast<int>(fi), id, {}, {}, 0, 0, 0, 0, 0};
-      std::vector<Exact2> pic;
-      for (int i : bodies[bi]->faces()[fi]) of.v.push_back(bodies[bi]->vertices()[i]), pic.push_back(pp.project(of.v.back()));
-      of.box = box_of(pic);
+      OracleFace of{static_cast<int>(bi), static_cast<int>(fi), id, {}, {-INFINITY, -INFINITY, INFINITY, INFINITY}, 0, 0, 0, 0, 0};
+      for (int i : bodies[bi]->faces()[fi]) of.v.push_back(bodies[bi]->vertices()[i]);
       for (std::size_t i = 0; i < of.v.size(); ++i) {
         const Point3 &A = of.v[i], &B = of.v[(i + 1) % of.v.size()];
         of.a += (A.y() - B.y()) * (A.z() + B.z());
@@ -59,6 +60,16 @@ inline std::vector<OracleFace> oracle_faces(const std::vector<const Polyhedron*>
       of.drop = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;
       out.push_back(std::move(of));
     }
+  return out;
+}
+
+inline std::vector<OracleFace> oracle_faces(const std::vector<const Polyhedron*>& bodies, const PicturePlane& pp) {
+  std::vector<OracleFace> out = oracle_faces(bodies);
+  for (OracleFace& of : out) {
+    std::vector<Exact2> pic;
+    for (const Point3& v : of.v) pic.push_back(pp.project(v));
+    of.box = box_of(pic);
+  }
   return out;
 }
 
@@ -150,6 +161,39 @@ inline std::vector<SightHit> sight_hits(const std::vector<OracleFace>& faces, co
   }
   std::sort(hits.begin(), hits.end(), [](const SightHit& a, const SightHit& b) { return a.nearness < b.nearness; });
   return hits;
+}
+
+/// Does the light reach x on face `self`, on the side the viewer sees? -1: unsure (a face in a plane
+/// through the light is in its shadow).
+inline int lit(const std::vector<test::OracleFace>& faces, const test::OracleFace& self, const Camera& cam, const LightPlace& l,
+               const std::array<Rational, 3>& x) {
+  auto f = [](const test::OracleFace& g, const Rational& px, const Rational& py, const Rational& pz) {
+    return Rational(g.a * px + g.b * py + g.c * pz + g.d);
+  };
+  const int viewer = cam.perspective ? sgn(f(self, cam.eye.x(), cam.eye.y(), cam.eye.z()))
+                                     : sgn(self.a * cam.direction.x() + self.b * cam.direction.y() + self.c * cam.direction.z());
+  const int light = l.directional ? sgn(self.a * l.toward.x() + self.b * l.toward.y() + self.c * l.toward.z())
+                                  : sgn(f(self, l.position.x(), l.position.y(), l.position.z()));
+  if (light == 0) return 0;  // the face lies in a plane through the light: in its shadow (documented)
+  if (light != viewer) return 0;
+  std::array<Rational, 3> dir;
+  for (int k = 0; k < 3; ++k) dir[k] = l.directional ? l.toward[k] : l.position[k] - x[k];
+  bool unsure = false;
+  for (const test::OracleFace& g : faces) {
+    if (g.id == self.id) continue;
+    Rational nd = g.a * dir[0] + g.b * dir[1] + g.c * dir[2];
+    if (nd == 0) continue;
+    Rational t = -(g.a * x[0] + g.b * x[1] + g.c * x[2] + g.d) / nd;
+    if (t < 0 || (!l.directional && t > 1)) continue;
+    int in = test::in_face(g, {x[0] + t * dir[0], x[1] + t * dir[1], x[2] + t * dir[2]});
+    if (in < 0) continue;
+    if (t == 0 || in == 0) {
+      unsure = true;
+      continue;
+    }
+    return 0;
+  }
+  return unsure ? -1 : 1;
 }
 
 }  // namespace hlr::test
