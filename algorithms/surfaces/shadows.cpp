@@ -4,14 +4,15 @@
 
 #include <algorithm>
 #include <chrono>
-#include <optional>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include "algorithms/hlr/face_occluders.hpp"
 #include "algorithms/picture/offset_point.hpp"
-#include "algorithms/support/parallel.hpp"
 #include "algorithms/picture/picture_plane.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "algorithms/surfaces/light_cube.hpp"
 
 namespace hlr {
 namespace {
@@ -39,12 +40,13 @@ std::vector<Point3> clipped(const std::vector<Point3>& ring, const Plane& keep) 
 }
 
 // The lit polygons of a face from the light, carried into the viewer's picture (clipped to
-// `keep` first where the viewer sees only part of the light's bodies).
-std::vector<Ring> carried(const std::vector<VisiblePolygon>& lit, const PicturePlane& viewer, const Plane* keep) {
+// `keep` first: the part of the light's bodies the viewer sees, a cube view's pyramid).
+std::vector<Ring> carried(const std::vector<VisiblePolygon>& lit, const PicturePlane& viewer, const std::vector<Plane>& keep) {
   std::vector<Ring> out;
   auto add = [&](const std::vector<Point3>& corners) {
-    const std::vector<Point3> kept = keep ? clipped(corners, *keep) : std::vector<Point3>{};
-    const std::vector<Point3>& ring = keep ? kept : corners;
+    std::vector<Point3> ring = corners;
+    for (const Plane& h : keep)
+      if (!ring.empty()) ring = clipped(ring, h);
     if (ring.empty()) return;
     Ring r;
     for (const Point3& c : ring) r.push_back(viewer.project(c));
@@ -163,7 +165,10 @@ ShadowFace cut_face(const VisibleFace& vf, const std::vector<std::vector<Ring>>&
 
 }  // namespace
 
-Camera light_camera(const std::vector<const Polyhedron*>& bodies, const LightPlace& light) {
+namespace {
+
+// The one view a light needs, if one serves (every body in front of a point light).
+std::optional<Camera> single_light_view(const std::vector<const Polyhedron*>& bodies, const LightPlace& light) {
   if (light.directional) return make_orthographic(light.toward);
   bool first = true;
   std::array<Rational, 3> lo, hi;
@@ -193,7 +198,14 @@ Camera light_camera(const std::vector<const Polyhedron*>& bodies, const LightPla
         if (all && cam.in_front(v) != Sign::Positive) all = false;
     if (all) return cam;
   }
-  throw std::invalid_argument("shadows: a point light among the bodies (every body must lie in front of it, beyond a plane through the light)");
+  return std::nullopt;
+}
+
+}  // namespace
+
+Camera light_camera(const std::vector<const Polyhedron*>& bodies, const LightPlace& light) {
+  if (auto cam = single_light_view(bodies, light)) return *cam;
+  throw std::invalid_argument("shadows: a point light among the bodies (no view from it has every body in front: see light_cube.hpp)");
 }
 
 Shadows shadows(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const VisibleSurfaces& seen,
@@ -203,21 +215,45 @@ Shadows shadows(const std::vector<const Polyhedron*>& bodies, const Camera& came
   Shadows out;
   const ShadowCasters* casters = options.casters;
   const std::vector<const Polyhedron*>& lit_bodies = casters ? casters->bodies : bodies;
-  // Pass 1: what each light sees, lit polygons lifted to exact 3D corners.
-  std::vector<std::map<std::pair<int, int>, const VisibleFace*>> lit_face(lights.size());
-  for (const LightPlace& l : lights) {
-    Camera lc = light_camera(lit_bodies, l);
+  // Pass 1: what each light sees, lit polygons lifted to exact 3D corners; a point light among
+  // the bodies by the six views of a cube around it (light_cube.hpp).
+  auto seen_from = [&](const std::vector<const Polyhedron*>& b, const Camera& lc) {
     LineOptions lo;
     lo.edges = EdgeSelection::All;
     lo.classify_all = true;
     lo.threads = options.threads;
-    LineDrawing d = face_occluders(lit_bodies, lc, lo);
+    LineDrawing d = face_occluders(b, lc, lo);
     SurfaceOptions so;
     so.threads = options.threads;
-    out.from_light.push_back(visible_surfaces(lit_bodies, lc, d, so));
+    return visible_surfaces(b, lc, d, so);
+  };
+  std::vector<std::vector<LightCubeView>> cubes(lights.size());
+  out.cube_views.resize(lights.size());
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    const std::optional<Camera> lc = single_light_view(lit_bodies, lights[i]);
+    out.from_light.push_back(lc ? seen_from(lit_bodies, *lc) : VisibleSurfaces{});
+    if (lc) continue;
+    cubes[i] = light_cube(lit_bodies, lights[i].position);
+    for (const LightCubeView& v : cubes[i]) {
+      std::vector<const Polyhedron*> parts;
+      for (const Polyhedron& p : v.parts) parts.push_back(&p);
+      out.cube_views[i].push_back(seen_from(parts, v.camera));
+    }
   }
-  for (std::size_t i = 0; i < lights.size(); ++i)
-    for (const VisibleFace& f : out.from_light[i].faces) lit_face[i][{f.body, f.face}] = &f;
+  // Per light, per face of the lights' bodies: the faces seen lit (one, or a part per cube view
+  // with the view's pyramid, whose lit polygons count inside it only).
+  using Lit = std::pair<const VisibleFace*, const std::vector<Plane>*>;
+  static const std::vector<Plane> everywhere;
+  std::vector<std::map<std::pair<int, int>, std::vector<Lit>>> lit_face(lights.size());
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    for (const VisibleFace& f : out.from_light[i].faces) lit_face[i][{f.body, f.face}].push_back({&f, &everywhere});
+    for (std::size_t k = 0; k < out.cube_views[i].size(); ++k)
+      for (const VisibleFace& f : out.cube_views[i][k].faces) {
+        const LightCubeView& v = cubes[i][k];
+        const int face = v.face[f.body][f.face];
+        if (face >= 0) lit_face[i][{v.body[f.body], face}].push_back({&f, &v.pyramid});
+      }
+  }
   out.seconds_lights = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // Pass 2: each visible face cut by the lit parts on the side the viewer sees.
   PicturePlane pp(camera);
@@ -228,7 +264,14 @@ Shadows shadows(const std::vector<const Polyhedron*>& bodies, const Camera& came
     std::vector<std::vector<Ring>> lit(lights.size());
     for (std::size_t i = 0; i < lights.size() && key.second >= 0; ++i) {
       auto it = lit_face[i].find(key);
-      if (it != lit_face[i].end() && it->second->front == vf.front) lit[i] = carried(it->second->polygons, pp, casters ? &casters->keep : nullptr);
+      if (it == lit_face[i].end()) continue;
+      for (const auto& [f, pyramid] : it->second)  // the cube views' pieces have disjoint insides: their rings' even-odd union
+        if (f->front == vf.front) {
+          std::vector<Plane> keep = *pyramid;
+          if (casters) keep.push_back(casters->keep);
+          std::vector<Ring> rings = carried(f->polygons, pp, keep);
+          lit[i].insert(lit[i].end(), std::make_move_iterator(rings.begin()), std::make_move_iterator(rings.end()));
+        }
     }
     out.faces[k] = cut_face(vf, lit, pp, bodies[vf.body]->planes()[vf.face]);
   });

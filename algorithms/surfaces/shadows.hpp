@@ -43,6 +43,9 @@ struct ShadowFace {
 struct Shadows {
   std::vector<ShadowFace> faces;                // as the viewer's VisibleSurfaces::faces
   std::vector<VisibleSurfaces> from_light;      // what each light sees (its lit polygons)
+  /// Per light among the bodies: what its six cube views see (light_cube.hpp; their bodies are
+  /// the parts in each pyramid), its from_light entry empty; empty for every other light.
+  std::vector<std::vector<VisibleSurfaces>> cube_views;
   double seconds = 0;
   double seconds_lights = 0;   // pass 1: the views from the lights
   std::size_t whole_faces = 0; // faces each light lights wholly or not at all (no arrangement)
@@ -63,13 +66,15 @@ struct ShadowOptions {
 };
 
 /// Shadows of `lights` (at most 16) on the visible surfaces `seen` of `bodies` from `camera`
-/// (made with SurfaceOptions::lift on). A point light must see every body in front of it (a
-/// plane through the light with the whole scene on one side): std::invalid_argument otherwise.
+/// (made with SurfaceOptions::lift on). A point light that sees every body in front of it (a
+/// plane through the light with the whole scene on one side) has one view; one among the bodies
+/// six (light_cube.hpp); one on or inside a body gives std::invalid_argument.
 Shadows shadows(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const VisibleSurfaces& seen,
                 const std::vector<LightPlace>& lights, const ShadowOptions& options = {});
 
 /// The light's view: orthographic toward a directional light, perspective from a point light
-/// looking at the centre of the scene's box.
+/// looking at the centre of the scene's box (or along an axis); std::invalid_argument for a
+/// point light among the bodies, which no single view serves.
 Camera light_camera(const std::vector<const Polyhedron*>& bodies, const LightPlace& light);
 
 }  // namespace hlr

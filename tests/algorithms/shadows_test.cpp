@@ -209,9 +209,24 @@ TEST(Shadows, TwoLightsAndAPerspectiveView) {
   EXPECT_EQ(masks, (std::set<unsigned>{0, 1, 2, 3}));
 }
 
-TEST(Shadows, PointLightAmongTheBodiesIsRefused) {
-  std::vector<Polyhedron> b{box("0", "0", "0", "2", "2", "2"), box("4", "0", "0", "6", "2", "2")};
+TEST(Shadows, PointLightAmongTheBodiesLightsEveryWay) {
+  // No single view from a lamp between two boxes on the ground has every body in front: the six
+  // views of a cube around it light both boxes' near sides and the ground, and the boxes cast
+  // shadows on the ground both ways. A lamp inside a box is refused.
+  std::vector<Polyhedron> b{ground("0"), box("0", "0", "0", "2", "2", "2"), box("4", "0", "0", "6", "2", "2")};
   EXPECT_THROW(light_camera(ptrs(b), point("3", "1", "1")), std::invalid_argument);
+  const Camera cam = make_perspective(P("3", "-9", "7"), P("3", "1", "0"));
+  Shadows sh;
+  Tally t = check_shadows(b, cam, {point("3", "1", "1")}, 8, 3, &sh);
+  EXPECT_GT(t.lit, 20);
+  EXPECT_GT(t.dark, 20);
+  EXPECT_EQ(sh.cube_views.at(0).size(), 6u);
+  const auto bp = ptrs(b);
+  LineOptions lo;
+  lo.edges = EdgeSelection::All;
+  lo.classify_all = true;
+  const VisibleSurfaces vs = visible_surfaces(bp, cam, face_occluders(bp, cam, lo));
+  EXPECT_THROW(shadows(bp, cam, vs, {point("1", "1", "1")}), std::invalid_argument);
 }
 
 TEST(Shadows, RandomBoxesAndLights) {

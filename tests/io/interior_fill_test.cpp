@@ -1,12 +1,15 @@
 // Filled products with the eye among the bodies (docs/design.md, "Views from inside"): every
-// body is cut by the near plane before the visible surfaces, the priority list and the rasters
-// run, and the near plane's caps are faces. Checked by exact ray casting against the uncut input
-// (support/face_oracle.hpp): along the sight ray through a point, what lies nearer than the near
-// plane is gone; where the ray's point on the near plane lies inside a body, that body's cap is
-// seen; else the nearest face beyond. Seeded random rooms of boxes (walls with a window, floor,
-// a ceiling or none as in a courtyard, furniture that pierces walls and each other), the eye
-// inside at random, close to a wall or not, looking anywhere; random points of every visible
-// polygon, every painted polygon and every raster sample of the four algorithms.
+// body is cut by the near plane before the visible surfaces, the shadows, the priority list and
+// the rasters run, and the near plane's caps are faces. Checked by exact ray casting against the
+// uncut input (support/face_oracle.hpp): along the sight ray through a point, what lies nearer
+// than the near plane is gone; where the ray's point on the near plane lies inside a body, that
+// body's cap is seen; else the nearest face beyond; a shadow region is lit by a light exactly
+// where the segment toward it meets no face of the uncut input. Seeded random rooms of boxes
+// (walls with a window, floor, a ceiling or none as in a courtyard, furniture that pierces walls
+// and each other), the eye inside at random, close to a wall or not, looking anywhere; the sun
+// through the window and a lamp in the room (six views of a cube around it, light_cube.hpp);
+// random points of every visible polygon, every shadow region, every painted polygon and every
+// raster sample of the four algorithms.
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -115,14 +118,18 @@ Room random_room(std::mt19937& rng) {
   auto fine = [&](const Rational& lo, const Rational& hi) -> Rational {
     return lo + (hi - lo) * Rational(std::uniform_int_distribution<int>(1, 96)(rng), 97);
   };
-  std::array<Rational, 3> eye;
-  for (bool ok = false; !ok;) {
-    eye = {fine(Rational(1, 20), W - Rational(1, 20)), fine(Rational(1, 20), D - Rational(1, 20)), fine(Rational(1, 4), H - Rational(1, 4))};
-    if (rng() % 3 == 0) eye[0] = fine(Rational(1, 20), Rational(3, 20));
-    ok = true;
-    for (const auto& b : boxes)
-      if (b[0] <= eye[0] && eye[0] <= b[3] && b[1] <= eye[1] && eye[1] <= b[4] && b[2] <= eye[2] && eye[2] <= b[5]) ok = false;
-  }
+  auto free_point = [&](bool near_wall) {
+    std::array<Rational, 3> p;
+    for (bool ok = false; !ok;) {
+      p = {fine(Rational(1, 20), W - Rational(1, 20)), fine(Rational(1, 20), D - Rational(1, 20)), fine(Rational(1, 4), H - Rational(1, 4))};
+      if (near_wall && rng() % 3 == 0) p[0] = fine(Rational(1, 20), Rational(3, 20));
+      ok = true;
+      for (const auto& b : boxes)
+        if (b[0] <= p[0] && p[0] <= b[3] && b[1] <= p[1] && p[1] <= b[4] && b[2] <= p[2] && p[2] <= b[5]) ok = false;
+    }
+    return p;
+  };
+  const std::array<Rational, 3> eye = free_point(true), lamp = free_point(false);
   std::array<Rational, 3> look;
   do {
     for (auto& c : look) c = Rational(std::uniform_int_distribution<int>(-40, 40)(rng), 10);
@@ -136,7 +143,8 @@ Room random_room(std::mt19937& rng) {
   }
   y << "camera:\n  eye: [" << eye[0] << ", " << eye[1] << ", " << eye[2] << "]\n  target: [" << eye[0] + look[0] << ", " << eye[1] + look[1] << ", "
     << eye[2] + look[2] << "]\n  up: [0, 0, 1]\n  fov: 90\n";
-  y << "lighting:\n  lights:\n    - {type: directional, direction: [3, 1, 2]}\n";  // the sun, through the window
+  y << "lighting:\n  lights:\n    - {type: directional, direction: [3, 1, 2]}\n";                     // the sun, through the window
+  y << "    - {type: point, position: [" << lamp[0] << ", " << lamp[1] << ", " << lamp[2] << "]}\n";  // a lamp in the room
   room.yaml = y.str();
   room.bodies = static_cast<int>(boxes.size());
   return room;
@@ -199,8 +207,9 @@ void check_room(const Room& room, std::mt19937& rng, Counts& n) {
           if (border || last < 0) continue;
           check(*q, named(r, pr.polygons[last].body, pr.polygons[last].face), n.priority);
         }
-    } else if (product == 3) {  // each shadow region: lit by the sun exactly where the ray toward it is free
-      const LightPlace sun = render_light_places(r).at(0);
+    } else if (product == 3) {  // each shadow region: lit by the sun and by the lamp exactly where the ray toward each is free
+      const std::vector<LightPlace> lights = render_light_places(r);
+      ASSERT_EQ(lights.size(), 2u);
       for (const ShadowFace& sf : r.shadows->faces)
         for (const ShadowRegion& reg : sf.regions)
           for (int s = 0; s < 2; ++s) {
@@ -211,14 +220,17 @@ void check_room(const Room& room, std::mt19937& rng, Counts& n) {
               ++n.skipped;
               continue;
             }
-            const int light = want.face < 0 ? 0 : test::lit(faces, faces[want.id], r.camera, sun, want.at);
-            if (light < 0) {
-              ++n.skipped;
-              continue;
+            for (unsigned i = 0; i < 2; ++i) {
+              const int light = want.face < 0 ? 0 : test::lit(faces, faces[want.id], r.camera, lights[i], want.at);
+              if (light < 0) {
+                ++n.skipped;
+                continue;
+              }
+              ++n.shadows;
+              EXPECT_EQ((reg.lights >> i) & 1u, static_cast<unsigned>(light))
+                  << "light " << i << ", a shadow region of body " << want.body << " face " << want.face << "\n"
+                  << room.yaml;
             }
-            ++n.shadows;
-            EXPECT_EQ(reg.lights & 1u, static_cast<unsigned>(light)) << "a shadow region of body " << want.body << " face " << want.face << "\n"
-                                                                     << room.yaml;
           }
     } else {  // the face at every sample centre, all four algorithms
       const RasterScene& rs = rr.scene;
