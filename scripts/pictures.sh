@@ -61,6 +61,8 @@ picture couplingdown_section_sheet.svg render couplingdown.off --views front,sec
 picture linkrods_sheet.png render /usr/share/opencascade/data/step/linkrods.step --views front,top,right,iso --page A3 --landscape --dpi 85
 picture bearing_iso.svg render /usr/share/opencascade/data/iges/bearing.iges --view iso --width 120
 picture interior_lines.svg render data/interior_room.yaml --width 120
+picture interior_lit_lines.svg render data/interior_lit.yaml --width 120
+picture interior_lit.svg render data/interior_lit.yaml --surfaces --shadows --width 120
 picture engine_iso.svg render /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb --view iso --width 120
 ridge=(horizon --expr "0.35*exp(-6*x^2)*(1+sin(9*z+2*x))^2/4 + 0.02*cos(17*x+7*z)" --x -1.5:1.5:241 --z -1:1:61 --angles 25,0 --stroke 0.25 --width 180)
 picture horizon_ridgelines.svg "${ridge[@]}"
