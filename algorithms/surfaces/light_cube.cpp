@@ -63,6 +63,14 @@ Rational clear_half_size(const std::vector<const Polyhedron*>& bodies, const std
   throw std::invalid_argument("shadows: a point light lies on or inside a body (it lights nothing there)");
 }
 
+// The face's plane (Newell's, exact) passes through the light.
+bool holds_light(const std::vector<Point3>& vertices, const Face& face, const Point3& light) {
+  std::vector<const Point3*> corners;
+  for (int v : face) corners.push_back(&vertices[v]);
+  const Plane h = plane_of_polygon(corners.data(), corners.size());
+  return !h.is_degenerate() && h.value(light) == 0;
+}
+
 }  // namespace
 
 std::vector<LightCubeView> light_cube(const std::vector<const Polyhedron*>& bodies, const Point3& light) {
@@ -91,14 +99,25 @@ std::vector<LightCubeView> light_cube(const std::vector<const Polyhedron*>& bodi
         CutSolid c = cut_solid(*bodies[b], beyond);
         if (c.state == CutSolid::State::Removed) continue;
         const int nf = static_cast<int>(bodies[b]->num_faces());
-        std::vector<int> face;
         if (c.state == CutSolid::State::Whole) {
-          v.parts.push_back(*bodies[b]);
-          for (int f = 0; f < nf; ++f) face.push_back(f);
-        } else {
-          v.parts.emplace_back(std::move(c.vertices), std::move(c.faces));
-          for (int q : c.part) face.push_back(q < nf ? q : -1);
+          c.vertices = bodies[b]->vertices();
+          c.faces = bodies[b]->faces();
+          c.part.clear();
+          for (int f = 0; f < nf; ++f) c.part.push_back(f);
         }
+        // A face whose plane holds the light is seen edge-on: it hides nothing from the light
+        // (a ray from the light meets it only within its plane) and is in the light's shadow, so
+        // it is left out of the view (the part may then be open; nothing is seen through the gap).
+        std::vector<Face> kept;
+        std::vector<int> face;
+        for (std::size_t f = 0; f < c.faces.size(); ++f) {
+          const Face& fc = c.faces[f];
+          if (holds_light(c.vertices, fc, light)) continue;
+          kept.push_back(fc);
+          face.push_back(c.part[f] < nf ? c.part[f] : -1);
+        }
+        if (kept.empty()) continue;
+        v.parts.emplace_back(std::move(c.vertices), std::move(kept));
         v.body.push_back(static_cast<int>(b));
         v.face.push_back(std::move(face));
       }

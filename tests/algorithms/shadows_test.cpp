@@ -16,6 +16,7 @@
 #include <string>
 
 #include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/surfaces/light_cube.hpp"
 #include "support/face_oracle.hpp"
 #include "support/numbers.hpp"
 
@@ -227,6 +228,26 @@ TEST(Shadows, PointLightAmongTheBodiesLightsEveryWay) {
   lo.classify_all = true;
   const VisibleSurfaces vs = visible_surfaces(bp, cam, face_occluders(bp, cam, lo));
   EXPECT_THROW(shadows(bp, cam, vs, {point("1", "1", "1")}), std::invalid_argument);
+}
+
+TEST(Shadows, ALampInThePlaneOfAFaceLeavesThatFaceOutOfItsViews) {
+  // The lamp at y = 1 lies in the plane of the first box's face y = 1 (and z = 0 of the ground's):
+  // those faces are edge-on from it, hide nothing from it and are in its shadow, so no cube view
+  // holds them (with them, a view from the lamp once lifted a region through a face's horizon).
+  std::vector<Polyhedron> b{ground("0"), box("0", "-1", "0", "2", "1", "2"), box("4", "0", "0", "6", "2", "2")};
+  const Point3 lamp = P("3", "1", "1");
+  int faces = 0;
+  for (const LightCubeView& v : light_cube(ptrs(b), lamp))
+    for (std::size_t k = 0; k < v.parts.size(); ++k)
+      for (std::size_t f = 0; f < v.parts[k].num_faces(); ++f) {
+        ++faces;
+        EXPECT_NE(v.parts[k].planes()[f].value(lamp), 0) << "body " << v.body[k] << " face " << v.face[k][f];
+      }
+  EXPECT_GT(faces, 12);
+  const Camera cam = make_perspective(P("3", "-9", "7"), P("3", "1", "0"));
+  Tally t = check_shadows(b, cam, {point("3", "1", "1")}, 8, 5);
+  EXPECT_GT(t.lit, 20);
+  EXPECT_GT(t.dark, 20);
 }
 
 TEST(Shadows, RandomBoxesAndLights) {

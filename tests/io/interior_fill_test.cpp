@@ -118,18 +118,25 @@ Room random_room(std::mt19937& rng) {
   auto fine = [&](const Rational& lo, const Rational& hi) -> Rational {
     return lo + (hi - lo) * Rational(std::uniform_int_distribution<int>(1, 96)(rng), 97);
   };
-  auto free_point = [&](bool near_wall) {
+  // near_wall: a third of the time within 0.15 of the wall x = 0; in_plane: half of the time one
+  // coordinate on a box's face plane (a lamp in the plane of a wall's face: edge-on from it).
+  auto free_point = [&](bool near_wall, bool in_plane) {
     std::array<Rational, 3> p;
     for (bool ok = false; !ok;) {
       p = {fine(Rational(1, 20), W - Rational(1, 20)), fine(Rational(1, 20), D - Rational(1, 20)), fine(Rational(1, 4), H - Rational(1, 4))};
       if (near_wall && rng() % 3 == 0) p[0] = fine(Rational(1, 20), Rational(3, 20));
+      if (in_plane && rng() % 2 == 0) {
+        const auto& b = boxes[rng() % boxes.size()];
+        const int k = static_cast<int>(rng() % 3);
+        p[k] = b[k + 3 * (rng() % 2)];
+      }
       ok = true;
       for (const auto& b : boxes)
         if (b[0] <= p[0] && p[0] <= b[3] && b[1] <= p[1] && p[1] <= b[4] && b[2] <= p[2] && p[2] <= b[5]) ok = false;
     }
     return p;
   };
-  const std::array<Rational, 3> eye = free_point(true), lamp = free_point(false);
+  const std::array<Rational, 3> eye = free_point(true, false), lamp = free_point(false, true);
   std::array<Rational, 3> look;
   do {
     for (auto& c : look) c = Rational(std::uniform_int_distribution<int>(-40, 40)(rng), 10);
