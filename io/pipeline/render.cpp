@@ -21,6 +21,7 @@
 #include "algorithms/surfaces/shadows.hpp"
 #include "algorithms/surfaces/transparency.hpp"
 #include "io/models/model_input.hpp"
+#include "io/pipeline/eye_cut.hpp"
 #include "io/pipeline/polylines.hpp"
 #include "io/pipeline/render_methods.hpp"
 #include "io/pipeline/render_steps.hpp"
@@ -71,63 +72,6 @@ void surface_lines(LineDrawing& d, const std::vector<const SceneBody*>& bodies, 
     kept.push_back(std::move(s));
   }
   d.segments = std::move(kept);
-}
-
-// A perspective view with some vertex on the eye's plane or behind it.
-bool reaches_eye_plane(const std::vector<const Polyhedron*>& polys, const Camera& cam) {
-  if (!cam.perspective) return false;
-  for (const Polyhedron* p : polys)
-    for (const Point3& v : p->vertices())
-      if (cam.in_front(v) != Sign::Positive) return true;
-  return false;
-}
-
-// With a frame: the largest power of two (as a fraction k of the eye-target distance, so the
-// plane (P - E)·f = k·f·f) not beyond half the depth of the nearest point of any face inside the
-// viewing pyramid; 0 when a face inside it reaches the eye's plane. No face lies inside the
-// pyramid nearer than that, so every sight ray of the frame is inside the same bodies at every
-// depth from the eye to there: a near cut anywhere in that range draws the same frame, and a
-// farther one keeps the picture's coordinates (and the exact work on them) small.
-Rational frame_clear_near(const std::vector<const Polyhedron*>& polys, const Camera& cam, const ViewPyramid& pyr) {
-  const Vector3 f = cam.target - cam.eye;
-  const Rational ff = dot(f, f);
-  std::optional<Rational> least;  // the least (P - E)·f over the faces' parts in the pyramid
-  auto consider = [&](const Point3& q) {
-    const Rational d = dot(q - cam.eye, f);
-    if (!least || d < *least) least = d;
-  };
-  for (const Polyhedron* p : polys) {
-    // Per vertex: inside every side (its depth then counts as it is), else its face is clipped.
-    std::vector<char> inside(p->num_vertices());
-    for (std::size_t v = 0; v < inside.size(); ++v) {
-      bool in = true;
-      for (const Plane& side : pyr.sides) in = in && side_of_plane(side, p->vertices()[v]) != Sign::Negative;
-      if ((inside[v] = in)) consider(p->vertices()[v]);
-    }
-    for (const Face& face : p->faces()) {
-      bool all = true;
-      for (int v : face) all = all && inside[v];
-      if (all) continue;
-      std::vector<Point3> ring;
-      for (int v : face) ring.push_back(p->vertices()[v]);
-      for (const Plane& side : pyr.sides) {  // Sutherland-Hodgman, keeping side >= 0
-        std::vector<Point3> out;
-        for (std::size_t i = 0; i < ring.size(); ++i) {
-          const Point3 &a = ring[i], &b = ring[(i + 1) % ring.size()];
-          const Rational va = side.value(a), vb = side.value(b);
-          if (va >= 0) out.push_back(a);
-          if ((va > 0 && vb < 0) || (va < 0 && vb > 0)) out.push_back(a + Rational(va / (va - vb)) * (b - a));
-        }
-        ring = std::move(out);
-        if (ring.empty()) break;
-      }
-      for (const Point3& q : ring) consider(q);
-    }
-  }
-  if (!least || *least <= 0) return 0;
-  Rational k(1);
-  while (k * ff * 2 > *least) k /= 2;  // k·f·f <= least / 2
-  return k;
 }
 
 void eye_plane_notes(const RenderResult& r, std::vector<std::string>& notes) {
@@ -534,38 +478,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     for (SceneBody* b : editable) polys.push_back(&b->body);
   }
   // Filled products with the eye among the bodies: every body cut by the near plane.
-  std::optional<Plane> eye_cut;
-  if ((o.surfaces || o.shadows || o.cut_at_near || !m.draws_lines()) && reaches_eye_plane(polys, r.camera)) {
-    // With a frame, as far from the eye as changes nothing in the frame (frame_clear_near).
-    const Rational clear = r.pyramid ? frame_clear_near(polys, r.camera, *r.pyramid) : Rational(0);
-    const Rational k = std::max(o.near, clear);
-    const Plane n = near_plane(r.camera, k);
-    eye_cut = Plane(-n.a(), -n.b(), -n.c(), -n.d());  // keeps n >= 0: what lies in front of it
-    r.eye_cut = eye_cut;
-    repairs.push_back("the eye lies among the bodies: every body is cut by the near plane at " + to_string(k) + " of the way to the target (" +
-                      (k > o.near ? "no face in the frame lies nearer" : "--near") + ") and what lies inside a body there is filled by its cap");
-  }
-  if (eye_cut) {
-    std::shared_ptr<RenderResult::WholeBodies> whole;
-    std::vector<const SceneBody*> before(editable.begin(), editable.end());
-    if (o.shadows) {  // the lights see the bodies whole
-      whole = std::make_shared<RenderResult::WholeBodies>();
-      for (const SceneBody* b : editable) whole->bodies.push_back(b->body);
-    }
-    std::vector<std::vector<int>> parent;
-    cut_near(*eye_cut, editable, r.names, whole ? &parent : nullptr);
-    if (editable.empty()) throw std::invalid_argument("every body lies behind the near plane: nothing is left to draw");
-    if (whole) {
-      for (const Polyhedron& p : whole->bodies) whole->casters.bodies.push_back(&p);
-      for (const SceneBody* b : editable)
-        whole->casters.body.push_back(static_cast<int>(std::find(before.begin(), before.end(), b) - before.begin()));
-      whole->casters.face = std::move(parent);
-      whole->casters.keep = *eye_cut;
-      r.whole = whole;
-    }
-    polys.clear();
-    for (SceneBody* b : editable) polys.push_back(&b->body);
-  }
+  if (o.surfaces || o.shadows || o.cut_at_near || !m.draws_lines()) cut_at_eye(r, o.near, o.shadows, editable, polys, repairs);
   r.bodies.assign(editable.begin(), editable.end());
   if (m.flags & kChecksSolids)
     for (const Polyhedron* p : polys) p->report();  // the method's checks belong to loading
@@ -596,7 +509,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     const SceneBody& b = *r.bodies[e.body()];
     throw RenderBodyError(e.body(), b.name, b.source, e.reason());
   }
-  if (sectioned || eye_cut) mark_cut_lines(r.drawing, r.bodies);
+  if (sectioned || r.eye_cut) mark_cut_lines(r.drawing, r.bodies);
   surface_lines(r.drawing, r.bodies, o);
   if (above) add_overhead(r, std::move(*above), (*planes)[0], o);
   if (!o.polylines.empty()) add_polylines(r, o.polylines, o);
