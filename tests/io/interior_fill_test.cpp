@@ -86,9 +86,43 @@ std::optional<Exact2> inside_point(const std::vector<Exact2>& outer, const std::
   return q;
 }
 
+// The faces a transparency region shows, back to front from the nearest opaque one: the faces
+// beyond the near plane, then the caps of the bodies the near plane's point lies in. Empty with
+// `unsure` where the ray grazes a border, meets two faces at one depth or lies in two bodies there.
+std::vector<std::pair<int, int>> expected_stack(const std::vector<test::OracleFace>& faces, const std::vector<char>& glass, const Camera& cam,
+                                                const PicturePlane& pp, const Plane& cut, const Exact2& q, bool& unsure) {
+  const test::SightRay ray = test::sight_ray(cam, pp, q);
+  const Rational nd = cut.a() * ray.dir[0] + cut.b() * ray.dir[1] + cut.c() * ray.dir[2];
+  const Rational tn = -(cut.a() * ray.base[0] + cut.b() * ray.base[1] + cut.c() * ray.base[2] + cut.d()) / nd;
+  std::vector<std::pair<int, int>> want;
+  std::vector<int> crossings(glass.size());
+  unsure = false;
+  const std::vector<test::SightHit> hits = test::sight_hits(faces, cam, pp, q);
+  for (std::size_t i = 0; i < hits.size(); ++i) {  // far to near
+    const test::SightHit& h = hits[i];
+    const Rational t = -h.nearness;
+    unsure = unsure || t == tn || h.in == 0 || (i && h.nearness == hits[i - 1].nearness);
+    if (t < tn) continue;
+    const int b = faces[h.id].body;
+    ++crossings[b];
+    if (!glass[b]) want.clear();
+    want.push_back({b, faces[h.id].face});
+  }
+  int inside = 0;
+  for (std::size_t b = 0; b < glass.size(); ++b) {
+    if (crossings[b] % 2 == 0) continue;
+    ++inside;
+    if (!glass[b]) want.clear();
+    want.push_back({static_cast<int>(b), -1});
+  }
+  unsure = unsure || inside > 1;
+  return want;
+}
+
 struct Room {
   std::string yaml;
   int bodies = 0;
+  std::vector<char> glass;  // per body: see-through
 };
 
 // A room of boxes on a quarter grid, the eye inside it (not in a body) with a 90-degree lens.
@@ -108,11 +142,15 @@ Room random_room(std::mt19937& rng) {
   box(W, -t, z1, W + t, D + t, H);
   box(W, -t, z0, W + t, s0, z1);
   box(W, s1, z0, W + t, D + t, z1);
-  if (rng() % 2) box(-t, -t, H, W + t, D + t, H + t);  // a ceiling (else a courtyard)
+  box(W + t / 4, s0, z0, W + t / 2, s1, z1);  // the pane: glass touching the opening on four sides
+  room.glass.assign(boxes.size(), 0);
+  room.glass.back() = 1;
+  if (rng() % 2) box(-t, -t, H, W + t, D + t, H + t), room.glass.push_back(0);  // a ceiling (else a courtyard)
   const int furniture = 1 + static_cast<int>(rng() % 3);
-  for (int k = 0; k < furniture; ++k) {  // may pierce a wall and each other
+  for (int k = 0; k < furniture; ++k) {  // may pierce a wall and each other; a third of them glass
     const Rational x0 = quarter(-1, 4 * 7 - 4), y0 = quarter(-1, 4 * 5 - 4), z = quarter(0, 2);
     box(x0, y0, z, x0 + quarter(2, 8), y0 + quarter(2, 8), z + quarter(2, 6));
+    room.glass.push_back(rng() % 3 == 0);
   }
   // The eye: inside the room, in no body; a third of the time within 0.05 to 0.15 of a wall.
   auto fine = [&](const Rational& lo, const Rational& hi) -> Rational {
@@ -147,6 +185,7 @@ Room random_room(std::mt19937& rng) {
     const auto& b = boxes[k];
     y << "  - name: b" << k << "\n    box: {min: [" << b[0] << ", " << b[1] << ", " << b[2] << "], max: [" << b[3] << ", " << b[4] << ", " << b[5]
       << "]}\n";
+    if (room.glass[k]) y << "    material: {colour: [0.3, 0.5, 0.9], transparency: 0.6}\n";
   }
   y << "camera:\n  eye: [" << eye[0] << ", " << eye[1] << ", " << eye[2] << "]\n  target: [" << eye[0] + look[0] << ", " << eye[1] + look[1] << ", "
     << eye[2] + look[2] << "]\n  up: [0, 0, 1]\n  fov: 90\n";
@@ -158,7 +197,7 @@ Room random_room(std::mt19937& rng) {
 }
 
 struct Counts {
-  long surfaces = 0, caps = 0, priority = 0, raster = 0, shadows = 0, skipped = 0;
+  long surfaces = 0, transparency = 0, caps = 0, priority = 0, raster = 0, shadows = 0, skipped = 0;
 };
 
 void check_room(const Room& room, std::mt19937& rng, Counts& n) {
@@ -198,6 +237,27 @@ void check_room(const Room& room, std::mt19937& rng, Counts& n) {
         for (const VisiblePolygon& p : vf.polygons)
           for (int s = 0; s < 3; ++s)
             if (auto q = inside_point(p.outer_2d, p.holes_2d, rng)) check(*q, named(r, vf.body, vf.face), n.surfaces);
+      if (!r.transparent)  // none only when no glass is seen
+        for (const VisibleFace& vf : r.surfaces->faces) EXPECT_FALSE(room.glass[named(r, vf.body, vf.face).body]) << room.yaml;
+      if (r.transparent)
+        for (const TransparentRegion& reg : r.transparent->regions)
+          for (int s = 0; s < 2; ++s) {
+            auto q = inside_point(reg.polygon.outer_2d, reg.polygon.holes_2d, rng);
+            if (!q) continue;
+            bool unsure = false;
+            const auto want = expected_stack(faces, room.glass, r.camera, pp, *r.eye_cut, *q, unsure);
+            if (unsure) {
+              ++n.skipped;
+              continue;
+            }
+            std::vector<std::pair<int, int>> got;
+            for (auto [b, f] : reg.faces) {
+              const Seen g = named(r, b, f);
+              got.push_back({g.body, g.face});
+            }
+            ++n.transparency;
+            EXPECT_EQ(got, want) << "a transparency region\n" << room.yaml;
+          }
     } else if (product == 1) {  // the last polygon painted over a point
       const PriorityResult& pr = *r.priority;
       for (int k : pr.order)
@@ -255,14 +315,15 @@ TEST(InteriorFill, EveryFilledProductAgreesWithRayCastingFromInside) {
   std::mt19937 rng(20261203);
   Counts n;
   for (int scene = 0; scene < 10; ++scene) check_room(random_room(rng), rng, n);
-  std::cout << "samples: surfaces " << n.surfaces << ", priority " << n.priority << ", raster " << n.raster << ", shadows " << n.shadows << ", caps "
-            << n.caps << ", skipped " << n.skipped << "\n";
+  std::cout << "samples: surfaces " << n.surfaces << ", transparency " << n.transparency << ", priority " << n.priority << ", raster " << n.raster
+            << ", shadows " << n.shadows << ", caps " << n.caps << ", skipped " << n.skipped << "\n";
   EXPECT_GT(n.surfaces, 400);
+  EXPECT_GT(n.transparency, 200);
   EXPECT_GT(n.priority, 350);
   EXPECT_GT(n.raster, 4 * 10 * 300);
   EXPECT_GT(n.shadows, 400);
   EXPECT_GT(n.caps, 0) << "some samples see a wall's inside on the near plane";
-  EXPECT_LT(n.skipped * 20, n.surfaces + n.priority + n.raster + n.shadows);
+  EXPECT_LT(n.skipped * 20, n.surfaces + n.transparency + n.priority + n.raster + n.shadows);
 }
 
 TEST(InteriorFill, TheRoomsFrameIsTheRastersPicture) {
