@@ -44,6 +44,7 @@
 #include <map>
 #include <sstream>
 
+#include "io/models/model_module.hpp"
 #include "io/readers/input_error.hpp"
 
 namespace hlr {
@@ -54,12 +55,6 @@ constexpr double kPi = 3.14159265358979323846;
 // Faces whose normals along a shared edge differ by less than this are tangent (BRepLib::
 // EncodeRegularity): CAD files store tangency to about their modelling tolerance.
 constexpr double kTangentRadians = 1e-3;
-
-std::string lower_extension(const std::string& path) {
-  std::string e = std::filesystem::path(path).extension().string();
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return e;
-}
 
 struct NamedShape {
   std::string name;
@@ -290,12 +285,7 @@ std::vector<std::pair<int, int>> tangent_faces(const TopoDS_Shape& body, const T
 
 }  // namespace
 
-bool is_cad_file(const std::string& path) {
-  const std::string e = lower_extension(path);
-  return e == ".step" || e == ".stp" || e == ".iges" || e == ".igs";
-}
-
-Model read_cad_file(const std::string& path, const TessellationOptions& options) {
+Model models::read_cad(const std::string& path, const TessellationOptions& options) {
   if (!std::filesystem::exists(path)) throw InputError(path, 0, "cannot open file");
   if (!(options.deflection >= 0) || !(options.angle_degrees > 0 && options.angle_degrees < 180))
     throw std::invalid_argument("the tessellation's deflection must be >= 0 mm and its angle in (0, 180) degrees");

@@ -17,6 +17,7 @@ bool is_cad_file(const std::string& path);
 /// product or entity name, else the file's stem and a number); faces that form no solid are
 /// sewn into shells, each a body. Coordinates in millimetres (Open CASCADE converts the file's
 /// unit). Throws InputError: missing or unreadable file, no shape in it.
+/// Read in the model module (model_module.hpp), loaded on first use.
 Model read_cad_file(const std::string& path, const TessellationOptions& options);
 
 }  // namespace hlr

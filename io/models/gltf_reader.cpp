@@ -10,17 +10,12 @@
 #include <map>
 
 #include "io/models/mesh_assembly.hpp"
+#include "io/models/model_module.hpp"
 #include "io/readers/input_error.hpp"
 
 namespace hlr {
 
 namespace {
-
-std::string lower_extension(const std::string& path) {
-  std::string e = std::filesystem::path(path).extension().string();
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return e;
-}
 
 // Images are not decoded: a drawing uses the base colour only.
 bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) { return true; }
@@ -207,12 +202,7 @@ struct Reader {
 
 }  // namespace
 
-bool is_gltf_file(const std::string& path) {
-  const std::string e = lower_extension(path);
-  return e == ".gltf" || e == ".glb";
-}
-
-Model read_gltf_file(const std::string& path) {
+Model models::read_gltf(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, "cannot open file");
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skip_image, nullptr);

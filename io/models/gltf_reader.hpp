@@ -18,6 +18,7 @@ bool is_gltf_file(const std::string& path);
 /// lines are left out with a note). Coordinates in metres, Y up, as glTF defines them. Throws
 /// InputError: unreadable file, an index out of range, a node that is its own ancestor,
 /// compressed or sparse data this reader does not decode.
+/// Read in the model module (model_module.hpp), loaded on first use.
 Model read_gltf_file(const std::string& path);
 
 }  // namespace hlr

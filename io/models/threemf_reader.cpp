@@ -9,6 +9,7 @@
 #include <map>
 
 #include "io/models/mesh_assembly.hpp"
+#include "io/models/model_module.hpp"
 #include "io/readers/input_error.hpp"
 
 namespace hlr {
@@ -199,13 +200,7 @@ std::string unit_name(DWORD u, std::vector<std::string>& notes) {
 
 }  // namespace
 
-bool is_3mf_file(const std::string& path) {
-  std::string e = std::filesystem::path(path).extension().string();
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return e == ".3mf";
-}
-
-Model read_3mf_file(const std::string& path) {
+Model models::read_3mf(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, "cannot open file");
   Model out;
   out.z_up = true;

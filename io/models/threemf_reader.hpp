@@ -15,6 +15,7 @@ bool is_3mf_file(const std::string& path);
 /// Reads a 3MF file's build. lib3mf reads coordinates and transforms as 32-bit floats (the
 /// precision 3MF producers write); those floats are taken exactly. Throws InputError:
 /// unreadable file, a build with no triangles.
+/// Read in the model module (model_module.hpp), loaded on first use.
 Model read_3mf_file(const std::string& path);
 
 }  // namespace hlr
