@@ -9,7 +9,9 @@
 namespace hlr::cli {
 
 void add_output_options(CLI::App* cmd, OutputOptions& a, OutputFlags& f, bool sheets) {
-  cmd->add_option("-o", f.output, "Output file (default: standard output); the extension picks the format (.svg .pdf .png .dxf .json)");
+  cmd->add_option("-o", f.output, "Output file (default: standard output); the extension picks the format (.svg .pdf .png .dxf .json)")
+      ->each([&f](const std::string& o) { f.outputs.push_back(o); })
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   cmd->add_option("--format", a.format, "svg, pdf, png, dxf or json (default: from the output file's extension, else svg)")
       ->check(CLI::IsMember({"svg", "pdf", "png", "dxf", "json"}));
   if (sheets)
@@ -35,7 +37,8 @@ void add_output_options(CLI::App* cmd, OutputOptions& a, OutputFlags& f, bool sh
                   "iso (default: one wide width for every visible edge, ISO 128) or kinds (outlines 0.5, other visible edges 0.35)")
       ->check(CLI::IsMember({"iso", "kinds"}));
   cmd->add_option("--weights", a.weights, "Line widths per kind in mm, e.g. silhouette=0.7,crease=0.35,hidden=0.18");
-  cmd->add_option("--layers", a.layers, "Layers to write: visible, through, hidden, visible-silhouette, through-edge, hidden-crease, ... or their numbers");
+  cmd->add_option("--layers", a.layers,
+                  "Layers to write: visible, through, hidden, visible-silhouette, through-edge, hidden-crease, ... or their numbers");
   cmd->add_option("--pens", a.pens,
                   "Layer numbers by pen, stable whatever --layers selects: e.g. visible=1,hidden=2,tone=3 (a key is a layer, "
                   "its kind or visible/hidden/through; the most particular wins; every layer needs a pen)");
@@ -49,6 +52,9 @@ void add_output_options(CLI::App* cmd, OutputOptions& a, OutputFlags& f, bool sh
 
 std::string check_output_args(const OutputOptions& a, const OutputFlags& f, bool sheet) {
   check_output_options(a);
+  if (f.outputs.size() > 1)
+    throw std::invalid_argument("-o is given " + std::to_string(f.outputs.size()) +
+                                " times: one output, or in hlr render one -o for each --view (a batch of drawings)");
   const std::string format =
       output_format(a.format, f.output, {{".svg", "svg"}, {".pdf", "pdf"}, {".png", "png"}, {".dxf", "dxf"}, {".json", "json"}}, "svg");
   if (format == "json" && sheet) throw std::invalid_argument("--views makes a sheet: write svg, pdf, png or dxf (JSON is one view)");

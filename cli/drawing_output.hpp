@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "io/output/output.hpp"
 
@@ -12,7 +13,8 @@ namespace hlr::cli {
 
 /// What a command's output options hold besides the library's OutputOptions.
 struct OutputFlags {
-  std::string output;
+  std::string output;                // the last -o
+  std::vector<std::string> outputs;  // every -o, in order (hlr render's batch of drawings pairs them with --view)
   bool quiet = false, progress = false;
 };
 

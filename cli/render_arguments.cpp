@@ -32,7 +32,9 @@ void add_render_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   add_output_options(cmd, *a, *a, true);
   cmd->add_option("--view", a->view,
                   "Orthographic view: front, back, top, bottom, left, right, iso, dimetric, or a direction X,Y,Z from the scene "
-                  "toward the viewer (default 0,0,1 = front)");
+                  "toward the viewer (default 0,0,1 = front); repeated with one -o each, a batch of drawings from one load")
+      ->each([a](const std::string& v) { a->each_view.push_back(v); })
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   cmd->add_option("--views", a->views,
                   "A sheet of standard views at one scale, e.g. front,top,right,iso, and section views section:NAME "
                   "(--section-view)");

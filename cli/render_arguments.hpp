@@ -17,8 +17,9 @@ namespace hlr::cli {
 struct RenderArgs : RenderRequest, OutputFlags {
   std::vector<std::string> inputs;
   bool timings = false;
-  std::string tile;                // "I/N"
-  std::vector<std::string> lines;  // polyline files
+  std::string tile;                    // "I/N"
+  std::vector<std::string> lines;      // polyline files
+  std::vector<std::string> each_view;  // every --view, in order: more than one is a batch of drawings
 };
 
 /// Adds every option of `hlr render` (inputs, output options, views, methods, sections, ...) to `cmd`.

@@ -5,11 +5,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <set>
 
@@ -67,73 +69,115 @@ std::vector<std::string> tile_args() {
   return out;
 }
 
-int run_render(const RenderArgs& a, const MergeInput* merge = nullptr) {
-  const ThreadLimit limit(a.threads);  // every parallel stage, sorts included
+void print_timings(const std::vector<RenderResult>& results, double load, double solve, double output) {
+  std::size_t tris = 0;
+  for (const SceneBody* b : results[0].bodies) tris += b->body.num_faces();
+  const DrawingStats& st = results[0].drawing.stats;
+  FaceRouteStats fs = st.faces.value_or(FaceRouteStats{});
+  std::cerr << std::fixed;
+  std::cerr.precision(3);
+  std::cerr << "timings: faces " << tris << ", load " << load << " s, setup " << st.setup_seconds << " s, intersections " << st.intersections_seconds
+            << " s, visibility " << st.visibility_seconds << " s, solve total " << solve << " s, output " << output << " s, segments "
+            << results[0].drawing.segments.size() << ", comparisons " << fs.comparisons << " (identical " << fs.comparisons_identical
+            << ", exact fallback " << fs.comparisons_exact << ")"
+            << "\n";
+  if (const auto& sf = results[0].surfaces)
+    std::cerr << "timings: surfaces " << sf->stats.seconds << " s, visible pieces " << sf->stats.segments << ", arrangement edges " << sf->stats.edges
+              << ", cells " << sf->stats.cycles << ", crossings " << sf->stats.crossings << ", polygons " << sf->stats.polygons << ", fills "
+              << sf->stats.fills << ", exact sign tests " << sf->stats.exact_tests << " (clean-up " << sf->stats.seconds_clean << " s, points "
+              << sf->stats.seconds_points << " s, arrangement " << sf->stats.seconds_arrangement << " s, triangles " << sf->stats.seconds_triangles
+              << " s, probes " << sf->stats.seconds_probe << " s, regions " << sf->stats.seconds_regions << " s)\n";
+  if (const auto& sh = results[0].shadows)
+    std::cerr << "timings: shadows " << sh->seconds << " s (views from the lights " << sh->seconds_lights << " s), lights " << sh->from_light.size()
+              << ", faces " << sh->faces.size() << " (" << sh->whole_faces << " lit wholly or not at all)\n";
+  if (const auto& pr = results[0].priority)
+    std::cerr << "timings: priority list " << results[0].priority_seconds << " s, polygons " << pr->initial << ", painted " << pr->order.size()
+              << ", pairs " << pr->pairs << ", swaps " << pr->swaps << ", cycles " << pr->cycles << ", cuts " << pr->splits << " (along outlines "
+              << pr->outline_splits << ")\n";
+}
+
+// The drawings of one command: one (a view or a sheet), or a batch, one per --view with its -o.
+std::vector<RenderArgs> drawings_of(const RenderArgs& a) {
+  if (a.each_view.size() <= 1) {
+    RenderArgs one = a;
+    one.outputs.clear();
+    if (a.outputs.size() > 1) one.outputs = a.outputs;  // refused by check_output_args
+    return {one};
+  }
+  if (!a.views.empty() || !a.eye.empty()) throw std::invalid_argument("a batch of --view drawings takes no --views or --eye");
+  if (!a.tile.empty()) throw std::invalid_argument("--tile takes one view, not a batch of --view drawings");
+  if (a.outputs.size() != a.each_view.size())
+    throw std::invalid_argument("a batch of drawings needs one -o for each --view, in the same order (" + std::to_string(a.each_view.size()) +
+                                " views, " + std::to_string(a.outputs.size()) + " outputs)");
+  std::set<std::string> seen;
+  std::vector<RenderArgs> out;
+  for (std::size_t i = 0; i < a.each_view.size(); ++i) {
+    if (!seen.insert(a.outputs[i]).second) throw std::invalid_argument("-o " + a.outputs[i] + " is given twice: each drawing needs its own file");
+    RenderArgs one = a;
+    one.view = a.each_view[i], one.output = a.outputs[i];
+    one.each_view = {one.view}, one.outputs.clear();
+    out.push_back(std::move(one));
+  }
+  return out;
+}
+
+int run_render(const RenderArgs& all, const MergeInput* merge = nullptr) {
+  const ThreadLimit limit(all.threads);  // every parallel stage, sorts included
   std::optional<RenderOptions::Tile> tile;
-  if (!a.tile.empty()) tile = parse_tile(a.tile);
-  check_request(a, tile.has_value());
-  const std::string format = tile ? "tile" : check_output_args(a, a, !a.views.empty());  // before the long work
-  ProgressLine progress_line("render", a.progress, a.quiet);
+  if (!all.tile.empty()) tile = parse_tile(all.tile);
+  const std::vector<RenderArgs> drawings = drawings_of(all);
+  std::vector<std::string> formats;
+  for (const RenderArgs& a : drawings) {  // before the long work
+    check_request(a, tile.has_value());
+    formats.push_back(tile ? "tile" : check_output_args(a, a, !a.views.empty()));
+  }
+  ProgressLine progress_line("render", all.progress, all.quiet);
   using Clock = std::chrono::steady_clock;
+  auto sec = [](auto d) { return std::chrono::duration<double>(d).count(); };
   auto t_start = Clock::now();
   progress("loading");
-  std::vector<Scene> scenes;
-  const long stdin_uses = std::count(a.inputs.begin(), a.inputs.end(), "-") + std::count(a.lines.begin(), a.lines.end(), "-");
+  std::vector<Scene> scenes;  // loaded once for every drawing
+  const long stdin_uses = std::count(all.inputs.begin(), all.inputs.end(), "-") + std::count(all.lines.begin(), all.lines.end(), "-");
   if (stdin_uses > 1) throw std::invalid_argument("standard input ('-') can be read once: give it to one input or one --lines");
-  for (const auto& in : a.inputs) scenes.push_back(load_request_input(a, in));
+  for (const auto& in : all.inputs) scenes.push_back(load_request_input(all, in));
   RenderExtras extras;
   extras.tile = tile;
   extras.segments_only = merge != nullptr;
-  for (const std::string& f : a.lines)  // read once: one file may be standard input
+  for (const std::string& f : all.lines)  // read once: one file may be standard input
     for (Polyline3& l : read_polylines(f)) extras.polylines.push_back(std::move(l));
-  auto t_loaded = Clock::now();
-  RenderedViews views;
-  try {
-    views = render_request(std::move(scenes), a, format, extras);
-  } catch (const RenderBodyError& e) {
-    std::cerr << "hlr render: " << e.what() << "\n";
-    return 1;
+  const double load = sec(Clock::now() - t_start);
+  // Every drawing is made before any file is written: a failure leaves no file of the batch.
+  std::vector<PartText> texts(drawings.size());
+  std::set<std::string> noted;
+  std::vector<std::array<double, 2>> times;
+  std::vector<std::unique_ptr<RenderedViews>> kept;  // the texts refer to them until written
+  for (std::size_t d = 0; d < drawings.size(); ++d) {
+    const RenderArgs& a = drawings[d];
+    if (drawings.size() > 1) progress("drawing " + std::to_string(d + 1) + " of " + std::to_string(drawings.size()) + ", " + a.output);
+    auto t_begin = Clock::now();
+    kept.push_back(std::make_unique<RenderedViews>());
+    RenderedViews& views = *kept.back();
+    try {
+      views = render_request(d + 1 < drawings.size() ? scenes : std::move(scenes), a, formats[d], extras);
+    } catch (const RenderBodyError& e) {
+      std::cerr << "hlr render: " << e.what() << "\n";
+      return 1;
+    }
+    std::vector<RenderResult>& results = views.results;
+    for (const std::string& note : results[0].notes)
+      if (noted.insert(note).second) std::cerr << "hlr render: note: " << note << "\n";
+    if (merge) {
+      progress("joining the tiles");
+      merge_tiles(results[0].drawing, merge->tiles, merge->paths, a.threads);
+    }
+    auto t_solved = Clock::now();
+    if (tile) texts[d].add(tile_text(results[0].drawing, tile->index, tile->count, tile_args()));
+    else texts[d] = request_text(views, a, formats[d], merge ? "merge" : "render");
+    times.push_back({sec(t_solved - t_begin), sec(Clock::now() - t_solved)});
   }
-  std::vector<RenderResult>& results = views.results;
-  for (const std::string& note : results[0].notes) std::cerr << "hlr render: note: " << note << "\n";
-  if (merge) {
-    progress("joining the tiles");
-    merge_tiles(results[0].drawing, merge->tiles, merge->paths, a.threads);
-  }
-  auto t_solved = Clock::now();
-  PartText text;
-  if (tile) text.add(tile_text(results[0].drawing, tile->index, tile->count, tile_args()));
-  else text = request_text(views, a, format, merge ? "merge" : "render");
-  write_output(a.output, text);
-  if (a.timings) {
-    auto t_end = Clock::now();
-    auto sec = [](auto d) { return std::chrono::duration<double>(d).count(); };
-    std::size_t tris = 0;
-    for (const SceneBody* b : results[0].bodies) tris += b->body.num_faces();
-    const DrawingStats& st = results[0].drawing.stats;
-    FaceRouteStats fs = st.faces.value_or(FaceRouteStats{});
-    std::cerr << std::fixed;
-    std::cerr.precision(3);
-    std::cerr << "timings: faces " << tris << ", load " << sec(t_loaded - t_start) << " s, setup " << st.setup_seconds
-              << " s, intersections " << st.intersections_seconds << " s, visibility " << st.visibility_seconds
-              << " s, solve total " << sec(t_solved - t_loaded) << " s, output " << sec(t_end - t_solved) << " s, segments "
-              << results[0].drawing.segments.size() << ", comparisons " << fs.comparisons << " (identical "
-              << fs.comparisons_identical << ", exact fallback " << fs.comparisons_exact << ")"
-              << "\n";
-    if (const auto& sf = results[0].surfaces)
-      std::cerr << "timings: surfaces " << sf->stats.seconds << " s, visible pieces " << sf->stats.segments << ", arrangement edges "
-                << sf->stats.edges << ", cells " << sf->stats.cycles << ", crossings " << sf->stats.crossings << ", polygons "
-                << sf->stats.polygons << ", fills " << sf->stats.fills << ", exact sign tests " << sf->stats.exact_tests << " (clean-up " << sf->stats.seconds_clean
-                << " s, points " << sf->stats.seconds_points << " s, arrangement " << sf->stats.seconds_arrangement << " s, triangles " << sf->stats.seconds_triangles << " s, probes "
-                << sf->stats.seconds_probe << " s, regions " << sf->stats.seconds_regions << " s)\n";
-    if (const auto& sh = results[0].shadows)
-      std::cerr << "timings: shadows " << sh->seconds << " s (views from the lights " << sh->seconds_lights << " s), lights "
-                << sh->from_light.size() << ", faces " << sh->faces.size() << " (" << sh->whole_faces << " lit wholly or not at all)\n";
-    if (const auto& pr = results[0].priority)
-      std::cerr << "timings: priority list " << results[0].priority_seconds << " s, polygons " << pr->initial << ", painted "
-                << pr->order.size() << ", pairs " << pr->pairs << ", swaps " << pr->swaps << ", cycles " << pr->cycles << ", cuts "
-                << pr->splits << " (along outlines " << pr->outline_splits << ")\n";
-  }
+  for (std::size_t d = 0; d < drawings.size(); ++d) write_output(drawings[d].output, texts[d]);
+  if (all.timings)
+    for (std::size_t d = 0; d < drawings.size(); ++d) print_timings(kept[d]->results, d == 0 ? load : 0.0, times[d][0], times[d][1]);
   exit_without_teardown(0);
   return 0;
 }
