@@ -108,7 +108,7 @@ std::vector<RenderArgs> drawings_of(const RenderArgs& a) {
   if (!a.tile.empty()) throw std::invalid_argument("--tile takes one view, not a batch of --view drawings");
   if (a.outputs.size() != a.each_view.size())
     throw std::invalid_argument("a batch of drawings needs one -o for each --view, in the same order (" + std::to_string(a.each_view.size()) +
-                                " views, " + std::to_string(a.outputs.size()) + " outputs)");
+                                " --view, " + std::to_string(a.outputs.size()) + " -o)");
   std::set<std::string> seen;
   std::vector<RenderArgs> out;
   for (std::size_t i = 0; i < a.each_view.size(); ++i) {

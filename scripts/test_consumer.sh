@@ -12,6 +12,13 @@ cp -r "$ROOT/examples/consumer" "$WORK/src"
 cmake -S "$WORK/src" -B "$WORK/build" -DCMAKE_PREFIX_PATH="$WORK/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$WORK/build" -j "$(nproc 2>/dev/null || echo 2)" >/dev/null
 "$WORK/build/render_cube"
+# The installed hlr reads models through the installed model module (LIBDIR/exact-hlr).
+step=/usr/share/opencascade/data/step/screw.step
+if [ -e "$step" ]; then
+  LD_DEBUG=files "$WORK/prefix/bin/hlr" render "$step" --view iso -o "$WORK/screw.svg" 2> "$WORK/loaded.txt"
+  grep -q "file=$WORK/prefix/.*/exact-hlr/libhlr_models.so" "$WORK/loaded.txt" || { echo "consumer: the installed hlr did not load the installed model module" >&2; exit 1; }
+  echo "consumer: installed model module read $step"
+fi
 # The Python package that cmake --install put under the prefix (HLR_PYTHON_INSTALL_DIR).
 site="$(sed -n 's/^HLR_PYTHON_INSTALL_DIR:PATH=//p' "$BUILD/CMakeCache.txt")"
 if [ -n "$site" ]; then

@@ -26,4 +26,16 @@ HLR_BIN="$WORK/venv/bin/hlr" HLR_EXPECT_INSTALLED=1 HLR_DATA_DIR="$ROOT/data" \
 "$PY" -m venv --system-site-packages "$WORK/venv2"
 (cd "$ROOT" && "$WORK/venv2/bin/pip" install --no-index --quiet --config-settings build-dir="$BUILD" .)
 "$WORK/venv2/bin/python" -c "import exact_hlr; exact_hlr.render(([[0,0,0],[1,0,0],[0,1,0],[0,0,1]], [[0,2,1],[0,1,3],[0,3,2],[1,2,3]]), view='iso').svg()"
+# Models are read by the model module the wheel holds beside _core: from Python, and from the
+# environment's hlr program.
+step=/usr/share/opencascade/data/step/screw.step
+if [ -e "$step" ]; then
+  LD_DEBUG=files "$WORK/venv/bin/python" -c "import exact_hlr; assert len(exact_hlr.render('$step', view='iso')) > 0" 2> "$WORK/py_loaded.txt"
+  LD_DEBUG=files "$WORK/venv/bin/hlr" render "$step" --view iso -o "$WORK/screw.svg" 2> "$WORK/hlr_loaded.txt"
+  for f in py_loaded hlr_loaded; do
+    grep -q "file=$WORK/venv/lib/python3[^ ]*/site-packages/exact_hlr/libhlr_models.so" "$WORK/$f.txt" \
+      || { echo "python package: $f: the wheel's model module was not the one loaded" >&2; exit 1; }
+  done
+  echo "python package: the wheel's model module reads STEP"
+fi
 "$WORK/venv2/bin/python" -c "import exact_hlr, sys; assert exact_hlr.__file__.startswith(sys.prefix); print('python package: pip install . OK,', exact_hlr.__version__)"

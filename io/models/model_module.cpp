@@ -79,7 +79,7 @@ std::string lower_extension(const std::string& path) {
 std::vector<std::string> model_module_candidates() {
   const std::string name = "libhlr_models.so";
   std::vector<std::string> out;
-  if (const char* env = std::getenv("HLR_MODELS_MODULE"); env && *env) out.emplace_back(env);
+  if (const char* env = std::getenv("HLR_MODELS_MODULE"); env && *env) return {env};  // that one alone
   const fs::path here = own_folder();
   if (!here.empty()) {
     out.push_back((here / name).string());

@@ -38,9 +38,9 @@ std::string lower_extension(const std::string& path);
 /// (bad file, or no module found: the message names the places looked at).
 Model read_with_module(ModelFormat format, const std::string& path, const TessellationOptions& tessellation = {});
 
-/// Where the loader looks for libhlr_models.so, in order: $HLR_MODELS_MODULE; the folder of the
-/// program or library holding this code, its ../LIBDIR/exact-hlr and a wheel's
-/// ../lib/python3.*/site-packages/exact_hlr; the build tree; the install prefix's
+/// Where the loader looks for libhlr_models.so: $HLR_MODELS_MODULE alone when set; else, in
+/// order, the folder of the program or library holding this code, its ../LIBDIR/exact-hlr and a
+/// wheel's ../lib/python3.*/site-packages/exact_hlr; the build tree; the install prefix's
 /// LIBDIR/exact-hlr.
 std::vector<std::string> model_module_candidates();
 
