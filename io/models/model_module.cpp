@@ -22,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 using ReadFunction = void (*)(ModelReadCall*);
-using AbiFunction = int (*)();
+using AbiFunction = long (*)();
 
 // The folder of the program or shared library this code is linked into.
 fs::path own_folder() {
@@ -55,7 +55,7 @@ Module load_module() {
     }
     const auto abi = reinterpret_cast<AbiFunction>(dlsym(handle, "hlr_models_abi"));
     const auto read = reinterpret_cast<ReadFunction>(dlsym(handle, "hlr_models_read"));
-    if (!abi || !read || abi() != kModelModuleAbi) {
+    if (!abi || !read || abi() != model_module_abi()) {
       tried += "\n  " + path + " (from another build of exact-hlr)";
       dlclose(handle);
       continue;

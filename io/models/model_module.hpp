@@ -31,6 +31,10 @@ struct ModelReadCall {
   int line = 0;
 };
 
+/// What both sides compile in and compare: the ABI number and the records' sizes, so a module
+/// whose Model differs in layout is refused even where the number was not changed.
+constexpr long model_module_abi() { return kModelModuleAbi * 1000000L + static_cast<long>(sizeof(ModelReadCall) * 1000 + sizeof(ModelBody)); }
+
 /// The lower-case extension of a path, with its dot (".step").
 std::string lower_extension(const std::string& path);
 
@@ -56,6 +60,6 @@ Model read_3mf(const std::string& path);
 
 extern "C" {
 /// The module's entry points: its ABI number, and one read.
-int hlr_models_abi();
+long hlr_models_abi();
 void hlr_models_read(hlr::ModelReadCall* call);
 }

@@ -6,7 +6,7 @@
 #include "io/models/model_module.hpp"
 #include "io/readers/input_error.hpp"
 
-extern "C" __attribute__((visibility("default"))) int hlr_models_abi() { return hlr::kModelModuleAbi; }
+extern "C" __attribute__((visibility("default"))) long hlr_models_abi() { return hlr::model_module_abi(); }
 
 extern "C" __attribute__((visibility("default"))) void hlr_models_read(hlr::ModelReadCall* call) {
   using hlr::ModelFormat;
