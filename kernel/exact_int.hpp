@@ -20,6 +20,7 @@
 #include <cstdint>
 
 #include "kernel/int128.hpp"
+#include "kernel/wide_int.hpp"
 
 namespace hlr {
 
@@ -33,6 +34,13 @@ inline constexpr int kFastCoordinateBits = 29;
 /// < 2^83) and Roberts' 128-bit interval (p, q, w < 2^62 checked on the way).
 inline constexpr int kWideCoordinateBits = 40;
 inline constexpr Int128 kWideCoordinateLimit = static_cast<Int128>(1) << kWideCoordinateBits;
+/// Scaled coordinates below 2^150 (the Wide policy: a common denominator of any size, such as
+/// 10^26 for ten significant digits with noise near 1e-17, 10^37 for numpy's %.18e, or 2^106
+/// for a double's): cross products < 2^(2·150+3) = 2^303 in 5 limbs; plane values
+/// < 2^(3·150+7) = 2^457, a triangle's six volumes summed over fewer than 2^31 triangles
+/// < 2^485, and a normal dotted with a cross product of differences (the eye on a face's
+/// edges) < 3·2^303·2^303 < 2^608, all in 10 limbs; products of two plane values in 20.
+inline constexpr int kWideIntegerBits = 150;
 /// Common denominators are kept below 2^62 so that L fits std::uint64_t with a bit to spare.
 inline constexpr int kDenominatorBits = 62;
 
@@ -92,6 +100,34 @@ struct Fast40 {
   static int compare(const V& a, const V& b, const V& c, const V& d) { return compare_products(a, b, c, d); }
   static mpz_class z(const V& v) { return to_mpz(v); }
   static mpz_class zc(C v) { return to_mpz(v); }
+};
+
+/// Number policy for scaled coordinates below 2^150: fixed-width integers of 5 limbs
+/// (coordinates, cross products) and 10 limbs (plane values), no allocation (wide_int.hpp).
+struct Wide {
+  using C = WideInt<5>;
+  using V = WideInt<10>;
+  static constexpr int kBits = bounds::kWideIntegerBits;
+  static V mul(const C& a, const C& b) { return V::product(a, b); }
+  template <int N>
+  static int sign(const WideInt<N>& v) {
+    return v.sign();
+  }
+  template <int N>
+  static double dbl(const WideInt<N>& v) {
+    return v.to_double();
+  }
+  static double cdbl(const C& v) { return v.to_double(); }
+  /// As Big::ratio, on a read-only GMP view of the limbs.
+  static double ratio(const V& n, const V& d) {
+    mpz_t a, b;
+    long en = 0, ed = 0;
+    const double mn = mpz_get_d_2exp(&en, n.view(a)), md = mpz_get_d_2exp(&ed, d.view(b));
+    return std::ldexp(mn / md, static_cast<int>(std::clamp<long>(en - ed, -2000, 2000)));
+  }
+  static int compare(const V& a, const V& b, const V& c, const V& d) { return V::compare_products(a, b, c, d); }
+  static mpz_class z(const V& v) { return v.to_mpz(); }
+  static mpz_class zc(const C& v) { return v.to_mpz(); }
 };
 
 /// Number policy without bounds: GMP integers.

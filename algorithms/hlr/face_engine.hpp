@@ -1,7 +1,7 @@
 // The per-face engine behind face_occluders() (course notes "Visibility semantics", sections
 // 26-28 for the inequalities): one class template over the number policy P (exact_int.hpp),
 // its members defined by concern in files of their own and instantiated there for Fast,
-// Fast40 and Big:
+// Fast40, Wide and Big:
 //   face_engine_bodies.cpp         triangles, facing, closed solids, eye inside, orientation
 //   face_engine_occluders.cpp      sight prisms of the front triangles, closed sides, grid
 //   face_engine_edges.cpp          which edges are drawn (boundary, silhouette, crease)
@@ -14,13 +14,14 @@
 #include <functional>
 #include <optional>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
-#include "algorithms/solids/body_topology.hpp"
-#include "algorithms/model/camera.hpp"
-#include "algorithms/solids/crease_angle.hpp"
 #include "algorithms/hlr/face_occluders.hpp"
+#include "algorithms/model/camera.hpp"
+#include "algorithms/solids/body_topology.hpp"
+#include "algorithms/solids/crease_angle.hpp"
 #include "algorithms/support/screen_grid.hpp"
 #include "kernel/exact_int.hpp"
 #include "kernel/polyhedron.hpp"
@@ -133,7 +134,17 @@ class Engine {
   void candidates(const Box& seg, Work& wk) const;
   void solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed char& whole) const;
   void solve_into(Segment& s, const std::array<int, 2>& gv, Work& wk, PieceList& out) const;
-  void test_integer(const Occluder<P>& o, const Vec<P>& X0, const Vec<P>& X1, Work& wk) const;
+  void test_integer(int oi, const std::array<int, 2>& gv, Work& wk) const;
+  /// Multi-limb numbers (Wide, Big): the doubles of every vertex and occluder plane, in front
+  /// of the exact plane values (filtered_sign's bound; exact_int.hpp).
+  static constexpr bool kFiltered = std::is_same_v<P, Big> || std::is_same_v<P, Wide>;
+  struct PlaneDoubles {
+    double m[4][3];
+    double c[4];
+    bool through_vertices;  // the face plane (k = 0) holds the triangle's vertices
+  };
+  void filter_doubles();
+  static int filtered_sign(const double* m, double c, const std::array<double, 3>& X);
   bool end_on_hides(const Occluder<P>& o, int on_side) const;
   void merge(Work& wk, std::vector<std::pair<Rational, Rational>>& out) const;
   /// A segment with rational ends (scaled like the points) and their doubles for the filter.
@@ -175,6 +186,8 @@ class Engine {
   ScreenGrid grid_;
   double margin_ = 0;
   std::vector<std::array<double, 3>> vproj_;
+  std::vector<std::array<double, 3>> Xd_;  // kFiltered: every vertex's doubles (X_)
+  std::vector<PlaneDoubles> occd_;         // kFiltered: every occluder's doubles (occ_)
   std::vector<char> vfront_;
   std::vector<char> vertex_closed_;
   std::vector<CrossLine> cross_;  // intersection lines, found before the occluders are built

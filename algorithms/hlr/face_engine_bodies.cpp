@@ -457,6 +457,7 @@ void Engine<P>::flip(Tri& t) {
 
 template class Engine<Fast>;
 template class Engine<Fast40>;
+template class Engine<Wide>;
 template class Engine<Big>;
 
 }  // namespace hlr::face_route

@@ -232,6 +232,7 @@ void Engine<P>::continue_creases(int b, std::vector<signed char>& kinds, std::ve
 
 template class Engine<Fast>;
 template class Engine<Fast40>;
+template class Engine<Wide>;
 template class Engine<Big>;
 
 }  // namespace hlr::face_route

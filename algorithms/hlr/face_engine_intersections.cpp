@@ -311,6 +311,7 @@ const Point3& Engine<P>::world(int g) const {
 
 template class Engine<Fast>;
 template class Engine<Fast40>;
+template class Engine<Wide>;
 template class Engine<Big>;
 
 }  // namespace hlr::face_route

@@ -344,6 +344,7 @@ void Engine<P>::side_plane(int p, int q, Vec<P>& m, V& c) const {
 
 template class Engine<Fast>;
 template class Engine<Fast40>;
+template class Engine<Wide>;
 template class Engine<Big>;
 
 }  // namespace hlr::face_route

@@ -26,6 +26,11 @@ void common_integers(const std::array<Rational, 3>& q, std::array<mpz_class, 3>&
 
 void set_z(mpz_ptr r, const Int128& v) { set_mpz(r, v); }
 void set_z(mpz_ptr r, const mpz_class& v) { mpz_set(r, v.get_mpz_t()); }
+template <int N>
+void set_z(mpz_ptr r, const WideInt<N>& v) {
+  mpz_t t;
+  mpz_set(r, v.view(t));
+}
 
 // r += m·x for the policies' coefficient types (`tmp`: scratch).
 void addmul(mpz_ptr r, std::int64_t m, mpz_srcptr x, mpz_ptr) {
@@ -37,6 +42,11 @@ void addmul(mpz_ptr r, const Int128& m, mpz_srcptr x, mpz_ptr tmp) {
   mpz_addmul(r, tmp, x);
 }
 void addmul(mpz_ptr r, const mpz_class& m, mpz_srcptr x, mpz_ptr) { mpz_addmul(r, m.get_mpz_t(), x); }
+template <int N>
+void addmul(mpz_ptr r, const WideInt<N>& m, mpz_srcptr x, mpz_ptr) {
+  mpz_t t;
+  mpz_addmul(r, m.view(t), x);
+}
 
 }  // namespace
 
@@ -73,6 +83,7 @@ std::vector<PieceList> Engine<P>::visibility(const std::vector<std::vector<Drawn
     for (const DrawnEdge& e : drawn[b]) res.stats.self_hidden += e.self_hidden;
   }
   const std::size_t edges = first.back(), n = edges + crossing.size();
+  filter_doubles();
   ParallelLoop loop(opt_.threads);
   std::vector<PieceList> out(n);
   std::vector<Work> work(loop.workers());
@@ -115,6 +126,8 @@ void Engine<P>::release_arrays() {
   std::vector<char>().swap(vfront_);
   std::vector<char>().swap(vertex_closed_);
   std::vector<Vec<P>>().swap(X_);
+  std::vector<std::array<double, 3>>().swap(Xd_);
+  std::vector<PlaneDoubles>().swap(occd_);
 }
 
 // One segment's pieces into `out`: a one-piece list when it is wholly visible or hidden (a
@@ -210,7 +223,7 @@ void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed
   std::vector<std::pair<Rational, Rational>> hidden;
   if (gv[0] >= 0) {
     wk.spans.clear();
-    for (int i : wk.cand) test_integer(occ_[i], X_[gv[0]], X_[gv[1]], wk);
+    for (int i : wk.cand) test_integer(i, gv, wk);
     merge(wk, hidden);
   } else {
     RationalEnds ends;
@@ -243,16 +256,39 @@ void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed
 }
 
 // Hidden interval of the segment X0 -> X1 by one occluder, integer values.
+// With multi-limb numbers, each inequality's sign at an end is known without arithmetic where the
+// end is a vertex of its plane (0; the face plane holds the triangle's three vertices, a side
+// plane its edge's two), else tried on doubles (filtered_sign). When both signs are known the
+// exact plane values are needed only for a crossing strictly inside the segment; any other
+// case takes the same branch as the exact test below.
 template <class P>
-void Engine<P>::test_integer(const Occluder<P>& o, const Vec<P>& X0, const Vec<P>& X1, Work& wk) const {
+void Engine<P>::test_integer(int oi, const std::array<int, 2>& gv, Work& wk) const {
   ++wk.pairs;
+  const Occluder<P>& o = occ_[oi];
+  const Vec<P>& X0 = X_[gv[0]];
+  const Vec<P>& X1 = X_[gv[1]];
   bool has_lo = false, has_hi = false;
   Frac<P> lo{V(0), V(1), 0.0}, hi{V(1), V(1), 1.0};
   int on_side = 0;  // bit k: the segment lies in side plane k (closed)
   for (int k = 0; k < 4; ++k) {
-    V f0 = dot<P>(o.m[k], X0) - o.c[k];
-    V f1 = dot<P>(o.m[k], X1) - o.c[k];
-    int s0 = P::sign(f0), s1 = P::sign(f1);
+    V f0, f1;
+    int s0 = 0, s1 = 0;
+    bool exact = true;
+    if constexpr (kFiltered) {
+      const PlaneDoubles& pd = occd_[oi];
+      auto known = [&](int e, int& sg) {
+        const int g = gv[e];
+        const bool on = k == 0 ? pd.through_vertices && (g == o.v[0] || g == o.v[1] || g == o.v[2]) : g == o.v[k - 1] || g == o.v[k % 3];
+        sg = on ? 0 : filtered_sign(pd.m[k], pd.c[k], Xd_[g]);
+        return on || sg != 0;
+      };
+      exact = !(known(0, s0) && known(1, s1)) || (s0 != 0 && s1 != 0 && (s0 > 0) != (s1 > 0));
+    }
+    if (exact) {
+      f0 = dot<P>(o.m[k], X0) - o.c[k];
+      f1 = dot<P>(o.m[k], X1) - o.c[k];
+      s0 = P::sign(f0), s1 = P::sign(f1);
+    }
     if (s0 > 0 && s1 > 0) continue;
     if (s0 <= 0 && s1 <= 0) {
       if (o.closed[k] && s0 == 0 && s1 == 0) {
@@ -264,13 +300,19 @@ void Engine<P>::test_integer(const Occluder<P>& o, const Vec<P>& X0, const Vec<P
     // Ends at the segment's own end points (t = 0 or 1: an occluder sharing a vertex with
     // the edge) are written canonically, so they compare as identical without arithmetic.
     if (s0 > 0) {  // upper bound t < f0 / (f0 - f1)
-      V d = f0 - f1;
-      Frac<P> r = s1 == 0 ? Frac<P>{V(1), V(1), 1.0} : Frac<P>{f0, d, P::ratio(f0, d)};
+      Frac<P> r{V(1), V(1), 1.0};
+      if (s1 != 0) {
+        V d = f0 - f1;
+        r = Frac<P>{f0, d, P::ratio(f0, d)};
+      }
       if (!has_hi || compare(r, hi, wk.c) < 0) hi = r, has_hi = true;
     } else {  // lower bound t > -f0 / (f1 - f0)
-      V d = f1 - f0;
-      V nn = -f0;
-      Frac<P> r = s0 == 0 ? Frac<P>{V(0), V(1), 0.0} : Frac<P>{nn, d, P::ratio(nn, d)};
+      Frac<P> r{V(0), V(1), 0.0};
+      if (s0 != 0) {
+        V d = f1 - f0;
+        V nn = -f0;
+        r = Frac<P>{nn, d, P::ratio(nn, d)};
+      }
       if (!has_lo || compare(r, lo, wk.c) > 0) lo = r, has_lo = true;
     }
   }
@@ -311,16 +353,46 @@ void Engine<P>::merge(Work& wk, std::vector<std::pair<Rational, Rational>>& out)
 // when the rational is, and otherwise normal above 2^-1000 (so no product of an integer and a
 // coordinate underflows). S_d not finite (a value beyond the double range): no decision.
 template <class P>
-int Engine<P>::filtered_sign(const Occluder<P>& o, int k, const std::array<double, 3>& X) {
-  double s = -P::dbl(o.c[k]), mag = std::fabs(s);
+int Engine<P>::filtered_sign(const double* m, double c, const std::array<double, 3>& X) {
+  double s = -c, mag = std::fabs(s);
   for (int j = 0; j < 3; ++j) {
-    const double t = P::cdbl(o.m[k][j]) * X[j];
+    const double t = m[j] * X[j];
     s += t;
     mag += std::fabs(t);
   }
   if (!std::isfinite(mag)) return 0;
   const double bound = 2e-15 * mag + 1e-300;
   return s > bound ? 1 : (s < -bound ? -1 : 0);
+}
+
+template <class P>
+int Engine<P>::filtered_sign(const Occluder<P>& o, int k, const std::array<double, 3>& X) {
+  const double m[3] = {P::cdbl(o.m[k][0]), P::cdbl(o.m[k][1]), P::cdbl(o.m[k][2])};
+  return filtered_sign(m, P::dbl(o.c[k]), X);
+}
+
+// The doubles of every vertex and occluder plane (kFiltered), on all cores. Integers convert
+// to 0 exactly when they are 0 and are otherwise at least 1; one beyond the double range
+// becomes infinite, which filtered_sign leaves to the exact test.
+template <class P>
+void Engine<P>::filter_doubles() {
+  if constexpr (kFiltered) {
+    const ParallelLoop loop(opt_.threads);
+    Xd_.resize(X_.size());
+    loop.for_each(X_.size(), 4096, [&](std::size_t i) {
+      for (int j = 0; j < 3; ++j) Xd_[i][j] = P::cdbl(X_[i][j]);
+    });
+    occd_.resize(occ_.size());
+    loop.for_each(occ_.size(), 1024, [&](std::size_t i) {
+      const Occluder<P>& o = occ_[i];
+      for (int k = 0; k < 4; ++k) {
+        for (int j = 0; j < 3; ++j) occd_[i].m[k][j] = P::cdbl(o.m[k][j]);
+        occd_[i].c[k] = P::dbl(o.c[k]);
+      }
+      // make_occluder: the face plane moved to the eye for a back face of a solid
+      occd_[i].through_vertices = !(facing_[o.body][o.face] < 0 && solid_[o.body]);
+    });
+  }
 }
 
 // The same on rational end points (intersection lines), values m·X - c. A filter on doubles
@@ -376,6 +448,7 @@ void Engine<P>::test_rational(const Occluder<P>& o, const RationalEnds& e,
 
 template class Engine<Fast>;
 template class Engine<Fast40>;
+template class Engine<Wide>;
 template class Engine<Big>;
 
 }  // namespace hlr::face_route

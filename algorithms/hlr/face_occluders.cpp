@@ -1,5 +1,6 @@
 // Per-face occluders (see face_occluders.hpp): the scene scaled to integers under the
-// narrowest number policy whose bound holds (exact_int.hpp), then the engine (face_engine.hpp).
+// narrowest number policy whose bound holds (exact_int.hpp: 64-bit, 128-bit, fixed-width
+// multi-limb, then GMP), then the engine (face_engine.hpp).
 #include "algorithms/hlr/face_occluders.hpp"
 
 #include <algorithm>
@@ -99,6 +100,76 @@ bool scale_fast(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
   return true;
 }
 
+// Wide: the common denominator of any size (GMP), then every coordinate (and the eye) scaled
+// on all cores and kept when below 2^Wide::kBits; the view direction by its own denominator.
+// False when a value is not below it (then GMP integers take the scene).
+bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam, std::vector<Vec<Wide>>& pts, Vec<Wide>& view, Rational& scale,
+                unsigned threads) {
+  const ParallelLoop loop(threads);
+  constexpr std::size_t kChunk = 4096;  // vertices
+  const auto fits = [](const mpz_class& v) { return mpz_sizeinbase(v.get_mpz_t(), 2) <= std::size_t(Wide::kBits); };
+  mpz_class L = 1;
+  std::size_t total = 0;
+  for (const Polyhedron* p : bodies) {  // the least common multiple per chunk, then of those
+    const std::vector<Point3>& vs = p->vertices();
+    total += vs.size();
+    std::vector<mpz_class> part((vs.size() + kChunk - 1) / kChunk, 1);
+    loop.for_each(part.size(), 1, [&](std::size_t c) {
+      mpz_ptr l = part[c].get_mpz_t();
+      for (std::size_t i = c * kChunk, e = std::min(vs.size(), i + kChunk); i < e; ++i)
+        for (int k = 0; k < 3; ++k)
+          if (!mpz_divisible_p(l, vs[i][k].get_den_mpz_t())) mpz_lcm(l, l, vs[i][k].get_den_mpz_t());
+    });
+    for (const mpz_class& d : part) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), d.get_mpz_t());
+    if (!fits(L)) return false;
+  }
+  if (cam.perspective)
+    for (int k = 0; k < 3; ++k) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), cam.eye[k].get_den_mpz_t());
+  if (!fits(L)) return false;
+  // q·L, exact (q's denominator divides L), into `out` when below the bound.
+  auto scaled = [&](const Rational& q, mpz_class& t, Wide::C& out) {
+    mpz_divexact(t.get_mpz_t(), L.get_mpz_t(), q.get_den_mpz_t());
+    t *= q.get_num();
+    if (!fits(t)) return false;
+    out = Wide::C(t.get_mpz_t());
+    return true;
+  };
+  pts.clear();
+  reserve_touched(pts, total, loop);
+  pts.resize(total);
+  std::size_t at = 0;
+  for (const Polyhedron* p : bodies) {
+    const std::vector<Point3>& vs = p->vertices();
+    std::vector<char> ok((vs.size() + kChunk - 1) / kChunk, 1);
+    loop.for_each(ok.size(), 1, [&](std::size_t c) {
+      mpz_class t;
+      for (std::size_t i = c * kChunk, e = std::min(vs.size(), i + kChunk); i < e && ok[c]; ++i)
+        for (int k = 0; k < 3 && ok[c]; ++k) ok[c] = scaled(vs[i][k], t, pts[at + i][k]);
+    });
+    if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
+    at += vs.size();
+  }
+  mpz_class t;
+  if (cam.perspective) {
+    for (int k = 0; k < 3; ++k)
+      if (!scaled(cam.eye[k], t, view[k])) return false;
+  } else {
+    mpz_class Ld = 1, g = 0, s[3];
+    for (int k = 0; k < 3; ++k) mpz_lcm(Ld.get_mpz_t(), Ld.get_mpz_t(), cam.direction[k].get_den_mpz_t());
+    for (int k = 0; k < 3; ++k) {
+      s[k] = cam.direction[k].get_num() * (Ld / cam.direction[k].get_den());
+      mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), s[k].get_mpz_t());
+    }
+    for (int k = 0; k < 3; ++k) {
+      if (g != 0) mpz_divexact(s[k].get_mpz_t(), s[k].get_mpz_t(), g.get_mpz_t());
+      if (!fits(s[k])) return false;
+      view[k] = Wide::C(s[k].get_mpz_t());
+    }
+  }
+  scale = Rational(L);
+  return true;
+}
+
 void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, std::vector<Vec<Big>>& pts,
                Vec<Big>& view, Rational& scale) {
   mpz_class L = 1;
@@ -137,6 +208,13 @@ LineDrawing face_occluders(const std::vector<const Polyhedron*>& bodies, const C
     Rational scale;
     if (scale_fast<Fast40>(bodies, camera, Fast40::kBits, pts, view, scale, opt.threads))
       return face_route::Engine<Fast40>(bodies, camera, opt, hooks, std::move(pts), view, scale).run();
+  }
+  {
+    std::vector<Vec<Wide>> pts;
+    Vec<Wide> view{};
+    Rational scale;
+    if (scale_wide(bodies, camera, pts, view, scale, opt.threads))
+      return face_route::Engine<Wide>(bodies, camera, opt, hooks, std::move(pts), view, scale).run();
   }
   std::vector<Vec<Big>> pts;
   Vec<Big> view;

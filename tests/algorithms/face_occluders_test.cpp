@@ -83,12 +83,13 @@ TEST(FaceOccluders, CubeAlong110HidesOnlyTheBackVerticalEdge) {
 }
 
 // The same with coordinates of ten decimal places (scaled integers above 2^29): the 128-bit
-// coordinate path, same exact answer; with a denominator beyond 64 bits: the GMP path.
+// coordinate path, same exact answer; with a denominator beyond 64 bits: the fixed-width
+// multi-limb path; beyond 2^150: the GMP path.
 TEST(FaceOccluders, WiderNumberPathsGiveTheSameAnswer) {
-  for (const char* hi : {"2.0000000001", "2.00000000000000000001"}) {
+  for (const char* hi : {"2.0000000001", "2.00000000000000000001", "2.0000000000000000000000000000000000000000000000001"}) {
     Polyhedron cube = make_box(P("0", "0", "0"), P(hi, hi, "2"));
     LineDrawing r = run({&cube}, make_orthographic(Vector3(1, 1, 0)));
-    EXPECT_EQ(r.stats.faces->integer_path, std::string(hi).size() < 14) << hi;
+    EXPECT_EQ(r.stats.faces->integer_path, std::string(hi).size() < 30) << hi;
     for (const Segment& s : r.segments) EXPECT_EQ(pieces(s), s.v0 == 0 && s.v1 == 4 ? "0 h 1" : "0 v 1") << hi;
     Polyhedron rod = box("-1", "-1", "1/2", "3", "-1/2", "1");
     LineDrawing q = run({&cube, &rod}, make_orthographic(Vector3(0, -1, 0)));
@@ -128,7 +129,7 @@ TEST(FaceOccluders, CubeWithCubicHoleShowsWhatIsBelowTheHole) {
 }
 
 // A torus seen along its axis: the rod below shows through the hole and outside, not under the
-// ring. Coordinates are doubles' exact values (denominators 2^52): the GMP path runs.
+// ring. Coordinates are doubles' exact values (denominators 2^52): the multi-limb path runs.
 TEST(FaceOccluders, TorusSeenThroughItsHole) {
   const int N = 24, M = 12;
   std::vector<Point3> vs;
@@ -148,7 +149,7 @@ TEST(FaceOccluders, TorusSeenThroughItsHole) {
   Polyhedron torus(vs, fs);
   Polyhedron rod = box("-2", "-1/20", "-1", "2", "1/20", "-9/10");
   LineDrawing r = run({&torus, &rod}, make_orthographic(Vector3(0, 0, 1)));
-  EXPECT_FALSE(r.stats.faces->integer_path);
+  EXPECT_TRUE(r.stats.faces->integer_path);
   const Segment& top = edge(r, 1, 4, 5);  // x from -2 to 2 at y = -1/20, z = -9/10
   auto t_of = [](double x) { return rational_from_double((x + 2) / 4); };
   EXPECT_TRUE(visible_at(top, t_of(0)));      // through the hole
@@ -350,11 +351,11 @@ TEST(FaceOccluders, SilhouetteKinds) {
 }
 
 // Intersection lines and their visibility are the same on the 64-bit path (integer segment
-// construction, filtered then integer hidden intervals), the 128-bit path and the GMP path:
-// random soups of triangles on a coarse lattice (k/4: shared vertices, coplanar and touching
-// triangles, edges through edges), the same soup with one far, tiny extra body whose
-// coordinates force the wider path (ten decimal places: 128-bit; 2^-70: GMP). Views along the
-// axes, diagonals and a perspective eye among the triangles.
+// construction, filtered then integer hidden intervals), the 128-bit path, the multi-limb path
+// and the GMP path: random soups of triangles on a coarse lattice (k/4: shared vertices,
+// coplanar and touching triangles, edges through edges), the same soup with one far, tiny extra
+// body whose coordinates force the wider path (ten decimal places: 128-bit; 2^-70: multi-limb;
+// 2^-200: GMP). Views along the axes, diagonals and a perspective eye among the triangles.
 TEST(FaceOccluders, IntersectionLinesEqualOnEveryNumberPath) {
   std::mt19937 rng(20261130);
   std::uniform_int_distribution<int> coord(0, 8);
@@ -377,13 +378,14 @@ TEST(FaceOccluders, IntersectionLinesEqualOnEveryNumberPath) {
                          Point3(Rational(-40), Rational(-40) + e, Rational(-40))},
                         {{0, 1, 2}});
     };
-    Polyhedron wide = far("0.0000000001"), big = far("1/1180591620717411303424");  // 2^-70
+    Polyhedron wide = far("0.0000000001"), limbs = far("1/1180591620717411303424"),    // 2^-70
+        big = far("1/1606938044258990275541962092341162602522202993782792835301376");  // 2^-200
     for (const Camera& cam : views) {
       LineDrawing fast = run({&soup}, cam);
       ASSERT_TRUE(fast.stats.faces->integer_path);
-      for (const Polyhedron* extra : {&wide, &big}) {
+      for (const Polyhedron* extra : {&wide, &limbs, &big}) {
         LineDrawing other = run({&soup, extra}, cam);
-        EXPECT_EQ(other.stats.faces->integer_path, extra == &wide);
+        EXPECT_EQ(other.stats.faces->integer_path, extra != &big);
         std::vector<const Segment*> a, b;
         for (const Segment& s : fast.segments)
           if (s.kind == Segment::Kind::Intersection) a.push_back(&s);

@@ -1,10 +1,14 @@
 // The fixed-width exact paths at their bounds (kernel/exact_int.hpp): the same scene
 // just inside and just outside each bound gives exactly the same drawing (every path exact),
 // and the split-parameter filter never decides on values beyond the double range.
+#include "kernel/exact_int.hpp"
+
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <random>
+
 #include "algorithms/hlr/face_occluders.hpp"
-#include "kernel/exact_int.hpp"
 
 using namespace hlr;
 
@@ -39,16 +43,79 @@ Rational pow2(int e) {
 }  // namespace
 
 // Coordinates reach about 7k: k = 2^26 stays below 2^29 (the 64-bit path), 2^27 and 2^37 are in
-// the 128-bit path, 2^38 just inside its 2^40, 2^40 and beyond on GMP.
+// the 128-bit path, 2^38 just inside its 2^40, 2^40 to 2^136 in the multi-limb path (2^136
+// just inside its 2^150), 2^137 and beyond on GMP.
 TEST(ExactInt, EachPathAtItsBoundGivesTheSameDrawing) {
   const std::string unit = scene_at(1);
   ASSERT_NE(unit.find(" h "), std::string::npos);  // something is hidden
   ASSERT_NE(unit.find(" v "), std::string::npos);
-  for (int e : {25, 26, 27, 28, 36, 37, 38, 39, 40, 41, 70, 300})
+  for (int e : {25, 26, 27, 28, 36, 37, 38, 39, 40, 41, 70, 127, 128, 135, 136, 137, 138, 300})
     EXPECT_EQ(scene_at(pow2(e)), unit) << "scaled by 2^" << e;
   // Small scales: denominators instead of large numerators.
-  EXPECT_EQ(scene_at(1 / pow2(40)), unit);
+  for (int e : {40, 100, 136, 140}) EXPECT_EQ(scene_at(1 / pow2(e)), unit) << "scaled by 2^-" << e;
   EXPECT_EQ(scene_at(Rational(1, 3)), unit);
+  // Mixed: ten digits with noise near 1e-17 (an exporter's %.10g): the multi-limb path.
+  EXPECT_EQ(scene_at(Rational(mpz_class("1000000000000000000000000037"), mpz_class("100000000000000000000000000"))), scene_at(1));
+}
+
+namespace {
+
+// A random WideInt<4> value of 0-4 limbs (often small, often equal to another) and its mpz.
+mpz_class random_value(std::mt19937_64& rng, int max_limbs) {
+  mpz_class v = 0;
+  const int limbs = static_cast<int>(rng() % static_cast<unsigned>(max_limbs + 1));
+  for (int k = 0; k < limbs; ++k) {
+    v <<= 64;
+    const std::uint64_t w = rng() % 4 == 0 ? ~std::uint64_t(0) : rng();  // all-ones limbs carry
+    v += mpz_class(static_cast<unsigned long>(w));
+  }
+  if (rng() % 2) v = -v;
+  return v;
+}
+
+}  // namespace
+
+// The fixed-width integers against GMP: sums, differences, products, negation, equality, the
+// order of products and the doubles, on random values of every size up to the width
+// (carries across all limbs, equal magnitudes, zero); a result beyond the width throws.
+TEST(ExactInt, WideIntegersAgreeWithGmp) {
+  using W4 = WideInt<4>;
+  using W8 = WideInt<8>;
+  std::mt19937_64 rng(20261204);
+  for (int i = 0; i < 20000; ++i) {
+    const mpz_class a = random_value(rng, 3), b = rng() % 8 == 0 ? a : (rng() % 8 == 0 ? mpz_class(-a) : random_value(rng, 3));
+    const W4 wa(a.get_mpz_t()), wb(b.get_mpz_t());
+    ASSERT_EQ(wa.to_mpz(), a);
+    EXPECT_EQ((wa + wb).to_mpz(), a + b) << a << " + " << b;
+    EXPECT_EQ((wa - wb).to_mpz(), a - b) << a << " - " << b;
+    EXPECT_EQ((-wa).to_mpz(), -a);
+    W4 acc = wa;
+    acc += wb;
+    EXPECT_EQ(acc.to_mpz(), a + b);
+    acc = wa;
+    acc += acc;
+    EXPECT_EQ(acc.to_mpz(), a + a);
+    EXPECT_EQ(wa == wb, a == b);
+    EXPECT_EQ(wa.sign(), sgn(a));
+    EXPECT_EQ(wa.to_double(), a.get_d());
+    const mpz_class c = random_value(rng, 2), d = random_value(rng, 2);
+    const W4 wc(c.get_mpz_t()), wd(d.get_mpz_t());
+    const W8 pab = W8::product(wa, wb), pcd = W8::product(wc, wd);
+    EXPECT_EQ(pab.to_mpz(), a * b);
+    const int want = cmp(a * b, c * d);
+    EXPECT_EQ(W4::compare_products(wa, wb, wc, wd), (want > 0) - (want < 0));
+    EXPECT_EQ(W8::compare_products(pab, W8(1), pcd, W8(1)), (want > 0) - (want < 0));
+    EXPECT_EQ(W4::compare_products(wa, wb, wa, wb), 0);
+  }
+  mpz_class top = 1;
+  top <<= 255;
+  const W4 t(top.get_mpz_t());
+  EXPECT_THROW(t + t, std::logic_error);
+  EXPECT_THROW(t * W4(2), std::logic_error);
+  EXPECT_EQ((t - t).sign(), 0);
+  mpz_class five_limbs = 1;
+  five_limbs <<= 256;
+  EXPECT_THROW(W4(five_limbs.get_mpz_t()), std::logic_error);
 }
 
 // GMP ratios beyond the double range: 3·10^400 / 10^300 against 10^101. Dividing the doubles

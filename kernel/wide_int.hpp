@@ -1,0 +1,162 @@
+// A signed integer of at most N 64-bit limbs kept in place (docs/design.md, "Number paths"):
+// GMP's own limb routines (mpn) on a fixed array, so that the exact values of scenes whose
+// coordinates need more than 128 bits after scaling (ten-digit decimals with 1e-17 noise,
+// %.17g, float32 and float64 files) cost no allocation. Sign and magnitude as in mpz: `size_`
+// is the number of used limbs, negative for a negative value, and the top used limb is never
+// 0. The policy that uses it (exact_int.hpp, Wide) proves that no value reaches N limbs; a
+// result that would is a logic error and throws, never wraps.
+#pragma once
+
+#include <gmp.h>
+#include <gmpxx.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+
+namespace hlr {
+
+template <int N>
+class WideInt {
+ public:
+  static constexpr int kLimbs = N;
+
+  WideInt() = default;
+  WideInt(long v) {  // NOLINT(google-explicit-constructor): integer constants like V(0), V(1)
+    if (v == 0) return;
+    limb_[0] = v < 0 ? 0UL - static_cast<unsigned long>(v) : static_cast<unsigned long>(v);
+    size_ = v < 0 ? -1 : 1;
+  }
+  WideInt(int v) : WideInt(static_cast<long>(v)) {}  // NOLINT(google-explicit-constructor)
+  /// From a GMP integer of at most N limbs.
+  explicit WideInt(mpz_srcptr z) {
+    const int n = std::abs(z->_mp_size);
+    check(n);
+    std::memcpy(limb_, z->_mp_d, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
+    size_ = z->_mp_size;
+  }
+  /// From a narrower (or equal) width.
+  template <int M>
+  explicit WideInt(const WideInt<M>& o) {
+    const int n = std::abs(o.size_);
+    check(n);
+    std::memcpy(limb_, o.limb_, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
+    size_ = o.size_;
+  }
+
+  int sign() const { return (size_ > 0) - (size_ < 0); }
+  /// A read-only GMP view of the value (valid while this object lives, unchanged).
+  mpz_srcptr view(mpz_t scratch) const { return mpz_roinit_n(scratch, limb_, size_); }
+  mpz_class to_mpz() const {
+    mpz_t t;
+    return mpz_class(view(t));
+  }
+  /// mpz_get_d's double (truncated: within 2^-52 relative; infinite beyond the range).
+  double to_double() const {
+    mpz_t t;
+    return mpz_get_d(view(t));
+  }
+
+  friend WideInt operator-(WideInt a) {
+    a.size_ = -a.size_;
+    return a;
+  }
+  friend WideInt operator+(const WideInt& a, const WideInt& b) {
+    WideInt r;
+    r.add(a.limb_, a.size_, b.limb_, b.size_);
+    return r;
+  }
+  friend WideInt operator-(const WideInt& a, const WideInt& b) {
+    WideInt r;
+    r.add(a.limb_, a.size_, b.limb_, -b.size_);
+    return r;
+  }
+  WideInt& operator+=(const WideInt& b) {
+    const WideInt a = *this;
+    add(a.limb_, a.size_, b.limb_, b.size_);
+    return *this;
+  }
+  friend WideInt operator*(const WideInt& a, const WideInt& b) { return product(a, b); }
+  /// a·b into this width (a and b of any widths whose product fits).
+  template <int A, int B>
+  static WideInt product(const WideInt<A>& a, const WideInt<B>& b) {
+    WideInt r;
+    if (a.size_ == 0 || b.size_ == 0) return r;
+    const int an = std::abs(a.size_), bn = std::abs(b.size_);
+    mp_limb_t t[A + B];
+    if (an >= bn) mpn_mul(t, a.limb_, an, b.limb_, bn);
+    else mpn_mul(t, b.limb_, bn, a.limb_, an);
+    int n = an + bn;
+    if (t[n - 1] == 0) --n;
+    r.check(n);
+    std::memcpy(r.limb_, t, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
+    r.size_ = (a.size_ < 0) != (b.size_ < 0) ? -n : n;
+    return r;
+  }
+  friend bool operator==(const WideInt& a, const WideInt& b) {
+    return a.size_ == b.size_ && (a.size_ == 0 || mpn_cmp(a.limb_, b.limb_, std::abs(a.size_)) == 0);
+  }
+  friend bool operator!=(const WideInt& a, const WideInt& b) { return !(a == b); }
+
+  /// Sign of a·b - c·d, exactly.
+  static int compare_products(const WideInt& a, const WideInt& b, const WideInt& c, const WideInt& d) {
+    const int l = a.sign() * b.sign(), r = c.sign() * d.sign();
+    if (l != r || l == 0) return l > r ? 1 : (l < r ? -1 : 0);
+    const WideInt<2 *N> p = WideInt<2 * N>::product(a, b), q = WideInt<2 * N>::product(c, d);
+    const int m = compare_magnitudes(p.limb_, std::abs(p.size_), q.limb_, std::abs(q.size_));
+    return l > 0 ? m : -m;
+  }
+
+ private:
+  template <int M>
+  friend class WideInt;
+
+  static void check(int n) {
+    if (n > N) throw std::logic_error("WideInt: a value exceeds its proven bound");
+  }
+  static int compare_magnitudes(const mp_limb_t* a, int an, const mp_limb_t* b, int bn) {
+    if (an != bn) return an < bn ? -1 : 1;
+    if (an == 0) return 0;
+    const int c = mpn_cmp(a, b, an);
+    return (c > 0) - (c < 0);
+  }
+  // *this = a + b (signed sizes); a and b may not be this object's limbs.
+  void add(const mp_limb_t* a, int as, const mp_limb_t* b, int bs) {
+    if (bs == 0) return set(a, as);
+    if (as == 0) return set(b, bs);
+    int an = std::abs(as), bn = std::abs(bs);
+    if ((as < 0) == (bs < 0)) {
+      if (an < bn) std::swap(a, b), std::swap(an, bn), std::swap(as, bs);
+      mp_limb_t t[N + 1];
+      t[an] = mpn_add(t, a, an, b, bn);
+      const int n = an + (t[an] != 0);
+      check(n);
+      std::memcpy(limb_, t, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
+      size_ = as < 0 ? -n : n;
+      return;
+    }
+    const int c = compare_magnitudes(a, an, b, bn);
+    if (c == 0) {
+      size_ = 0;
+      return;
+    }
+    if (c < 0) std::swap(a, b), std::swap(an, bn), std::swap(as, bs);
+    mp_limb_t t[N];
+    mpn_sub(t, a, an, b, bn);
+    int n = an;
+    while (n > 0 && t[n - 1] == 0) --n;
+    std::memcpy(limb_, t, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
+    size_ = as < 0 ? -n : n;
+  }
+  void set(const mp_limb_t* p, int s) {
+    const int n = std::abs(s);
+    check(n);
+    std::memmove(limb_, p, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
+    size_ = s;
+  }
+
+  int size_ = 0;
+  mp_limb_t limb_[N] = {};
+};
+
+}  // namespace hlr
