@@ -21,7 +21,13 @@ class WideInt {
  public:
   static constexpr int kLimbs = N;
 
-  WideInt() = default;
+  WideInt() = default;  // 0; limbs beyond |size_| are never read, nor copied
+  WideInt(const WideInt& o) : size_(o.size_) { copy_limbs(o.limb_, std::abs(size_)); }
+  WideInt& operator=(const WideInt& o) {
+    size_ = o.size_;
+    copy_limbs(o.limb_, std::abs(size_));
+    return *this;
+  }
   WideInt(long v) {  // NOLINT(google-explicit-constructor): integer constants like V(0), V(1)
     if (v == 0) return;
     limb_[0] = v < 0 ? 0UL - static_cast<unsigned long>(v) : static_cast<unsigned long>(v);
@@ -61,7 +67,7 @@ class WideInt {
     a.size_ = -a.size_;
     return a;
   }
-  friend WideInt operator+(const WideInt& a, const WideInt& b) {
+  friend WideInt operator+(const WideInt& a, const WideInt& b) {  // r is fresh: no aliasing
     WideInt r;
     r.add(a.limb_, a.size_, b.limb_, b.size_);
     return r;
@@ -73,6 +79,7 @@ class WideInt {
   }
   WideInt& operator+=(const WideInt& b) {
     const WideInt a = *this;
+    if (&b == this) return *this = a + a;
     add(a.limb_, a.size_, b.limb_, b.size_);
     return *this;
   }
@@ -83,13 +90,20 @@ class WideInt {
     WideInt r;
     if (a.size_ == 0 || b.size_ == 0) return r;
     const int an = std::abs(a.size_), bn = std::abs(b.size_);
-    mp_limb_t t[A + B];
-    if (an >= bn) mpn_mul(t, a.limb_, an, b.limb_, bn);
-    else mpn_mul(t, b.limb_, bn, a.limb_, an);
+    if (an > A || bn > B) __builtin_unreachable();  // sizes never exceed the widths
     int n = an + bn;
-    if (t[n - 1] == 0) --n;
-    r.check(n);
-    std::memcpy(r.limb_, t, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
+    if (n <= N) {  // straight into the result
+      if (an >= bn) mpn_mul(r.limb_, a.limb_, an, b.limb_, bn);
+      else mpn_mul(r.limb_, b.limb_, bn, a.limb_, an);
+      if (r.limb_[n - 1] == 0) --n;
+    } else {
+      mp_limb_t t[A + B];
+      if (an >= bn) mpn_mul(t, a.limb_, an, b.limb_, bn);
+      else mpn_mul(t, b.limb_, bn, a.limb_, an);
+      if (t[n - 1] == 0) --n;
+      check(n);
+      std::memcpy(r.limb_, t, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
+    }
     r.size_ = (a.size_ < 0) != (b.size_ < 0) ? -n : n;
     return r;
   }
@@ -111,6 +125,7 @@ class WideInt {
   template <int M>
   friend class WideInt;
 
+  void copy_limbs(const mp_limb_t* p, int n) { std::memcpy(limb_, p, sizeof(mp_limb_t) * static_cast<std::size_t>(n)); }
   static void check(int n) {
     if (n > N) throw std::logic_error("WideInt: a value exceeds its proven bound");
   }
@@ -120,13 +135,20 @@ class WideInt {
     const int c = mpn_cmp(a, b, an);
     return (c > 0) - (c < 0);
   }
-  // *this = a + b (signed sizes); a and b may not be this object's limbs.
+  // *this = a + b (signed sizes); a and b must not be this object's limbs (mpn_add and mpn_sub
+  // allow the result to coincide with the first operand only, and the operands may swap).
   void add(const mp_limb_t* a, int as, const mp_limb_t* b, int bs) {
     if (bs == 0) return set(a, as);
     if (as == 0) return set(b, bs);
     int an = std::abs(as), bn = std::abs(bs);
     if ((as < 0) == (bs < 0)) {
       if (an < bn) std::swap(a, b), std::swap(an, bn), std::swap(as, bs);
+      if (an < N) {  // room for the carry
+        limb_[an] = mpn_add(limb_, a, an, b, bn);
+        const int n = an + (limb_[an] != 0);
+        size_ = as < 0 ? -n : n;
+        return;
+      }
       mp_limb_t t[N + 1];
       t[an] = mpn_add(t, a, an, b, bn);
       const int n = an + (t[an] != 0);
@@ -141,11 +163,9 @@ class WideInt {
       return;
     }
     if (c < 0) std::swap(a, b), std::swap(an, bn), std::swap(as, bs);
-    mp_limb_t t[N];
-    mpn_sub(t, a, an, b, bn);
+    mpn_sub(limb_, a, an, b, bn);
     int n = an;
-    while (n > 0 && t[n - 1] == 0) --n;
-    std::memcpy(limb_, t, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
+    while (n > 0 && limb_[n - 1] == 0) --n;
     size_ = as < 0 ? -n : n;
   }
   void set(const mp_limb_t* p, int s) {
@@ -156,7 +176,7 @@ class WideInt {
   }
 
   int size_ = 0;
-  mp_limb_t limb_[N] = {};
+  mp_limb_t limb_[N];
 };
 
 }  // namespace hlr

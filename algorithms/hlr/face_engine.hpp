@@ -56,6 +56,20 @@ struct DrawnEdge {
 /// An intersection line: the two bodies, the two faces, the exact ends.
 using CrossLine = std::tuple<int, int, int, int, Point3, Point3>;
 
+/// The same for the multi-limb policies (Wide, Big), kept small: the planes' doubles only
+/// (each within 2^-52 of the exact value, for filtered_sign), and what makes each exact plane
+/// again when a test needs it (Engine::exact_plane): the oriented vertices, whether the face
+/// plane holds them (else it was moved to the eye) and which side planes were turned.
+struct LazyOccluder {
+  double m[4][3];
+  double c[4];
+  bool closed[4] = {false, false, false, false};
+  bool through_vertices = true;  // constraint 0's plane holds the triangle (not moved to the eye)
+  std::uint8_t turned = 0;       // bit k: side plane k was negated to face the third vertex
+  int body, face;
+  std::array<int, 3> v;
+};
+
 /// An occluder's screen box (float for memory, rounded outward) and its nearest depth.
 struct Box {
   float x0, y0, x1, y1;
@@ -79,6 +93,11 @@ class Engine {
  public:
   using C = typename P::C;
   using V = typename P::V;
+  /// Multi-limb numbers (Wide, Big): the doubles of every vertex and occluder plane, in front
+  /// of the exact plane values (filtered_sign's bound; exact_int.hpp); exact planes made when
+  /// a test needs them.
+  static constexpr bool kFiltered = std::is_same_v<P, Big> || std::is_same_v<P, Wide>;
+  using Occ = std::conditional_t<kFiltered, LazyOccluder, Occluder<P>>;
 
   Engine(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const LineOptions& opt, const FaceRouteHooks& hooks,
          std::vector<Vec<P>> pts, Vec<P> view, Rational scale);
@@ -106,8 +125,8 @@ class Engine {
   void build_occluders();
   std::function<bool(const Tri&)> near_segments(const std::vector<std::vector<DrawnEdge>>& drawn, ScreenGrid& grid,
                                                 std::vector<ScreenRect>& rects) const;
-  void make_occluder(const Tri& t0, std::uint8_t closed, Occluder<P>& o, Box& bx) const;
-  bool closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs) const;
+  void make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& bx) const;
+  bool closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs, std::optional<Vec<P>>& n) const;
   void side_plane(int p, int q, Vec<P>& m, V& c) const;
   // face_engine_edges.cpp
   std::vector<DrawnEdge> collect_edges(int b) const;
@@ -135,17 +154,10 @@ class Engine {
   void solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed char& whole) const;
   void solve_into(Segment& s, const std::array<int, 2>& gv, Work& wk, PieceList& out) const;
   void test_integer(int oi, const std::array<int, 2>& gv, Work& wk) const;
-  /// Multi-limb numbers (Wide, Big): the doubles of every vertex and occluder plane, in front
-  /// of the exact plane values (filtered_sign's bound; exact_int.hpp).
-  static constexpr bool kFiltered = std::is_same_v<P, Big> || std::is_same_v<P, Wide>;
-  struct PlaneDoubles {
-    double m[4][3];
-    double c[4];
-    bool through_vertices;  // the face plane (k = 0) holds the triangle's vertices
-  };
+  void exact_plane(const Occ& o, int k, Vec<P>& m, V& c) const;
   void filter_doubles();
   static int filtered_sign(const double* m, double c, const std::array<double, 3>& X);
-  bool end_on_hides(const Occluder<P>& o, int on_side) const;
+  bool end_on_hides(const Occ& o, int on_side) const;
   void merge(Work& wk, std::vector<std::pair<Rational, Rational>>& out) const;
   /// A segment with rational ends (scaled like the points) and their doubles for the filter.
   struct RationalEnds {
@@ -154,9 +166,8 @@ class Engine {
     std::array<double, 3> Ad, Bd;
     bool filter = true;  // the doubles are fit for filtered_sign
   };
-  static int filtered_sign(const Occluder<P>& o, int k, const std::array<double, 3>& X);
-  void test_rational(const Occluder<P>& o, const RationalEnds& e, std::vector<std::pair<Rational, Rational>>& out,
-                     Work& wk) const;
+  static int filtered_sign(const Occ& o, int k, const std::array<double, 3>& X);
+  void test_rational(const Occ& o, const RationalEnds& e, std::vector<std::pair<Rational, Rational>>& out, Work& wk) const;
 
   const std::vector<const Polyhedron*>& bodies_;
   const Camera& cam_;
@@ -180,14 +191,13 @@ class Engine {
   std::vector<Tri> tris_;
   std::vector<int> sel_;               // the triangles that become occluders
   std::vector<std::uint8_t> closed_;   // their closed sides (bit k + 1: side k)
-  std::vector<Occluder<P>> occ_;
+  std::vector<Occ> occ_;
   std::size_t hiding_ = 0;  // triangles that hide (occ_ without a tile's restriction)
   std::vector<Box> boxes_;
   ScreenGrid grid_;
   double margin_ = 0;
   std::vector<std::array<double, 3>> vproj_;
   std::vector<std::array<double, 3>> Xd_;  // kFiltered: every vertex's doubles (X_)
-  std::vector<PlaneDoubles> occd_;         // kFiltered: every occluder's doubles (occ_)
   std::vector<char> vfront_;
   std::vector<char> vertex_closed_;
   std::vector<CrossLine> cross_;  // intersection lines, found before the occluders are built

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 
 #include "algorithms/hlr/face_engine.hpp"
 #include "algorithms/support/parallel.hpp"
@@ -201,6 +202,7 @@ void Engine<P>::select_occluders(const std::vector<std::vector<DrawnEdge>>& draw
     Tri t = tris_[sel_[i]];
     const int fs = facing_[t.body][t.face];
     if (fs < 0) flip(t);  // as make_occluder turns it
+    std::optional<Vec<P>> n;  // the triangle's normal, made once for its sides
     for (int k = 0; k < 3; ++k) {
       if (!t.edge[k]) continue;  // a diagonal: make_occluder closes it
       Vec<P> m;
@@ -212,7 +214,7 @@ void Engine<P>::select_occluders(const std::vector<std::vector<DrawnEdge>>& draw
           c = -c;
         }
       }
-      if (closed_side(t, k, m, c, fs)) closed_[i] |= static_cast<std::uint8_t>(1u << (k + 1));
+      if (closed_side(t, k, m, c, fs, n)) closed_[i] |= static_cast<std::uint8_t>(1u << (k + 1));
     }
   });
 }
@@ -261,7 +263,7 @@ void Engine<P>::build_occluders() {
 }
 
 template <class P>
-void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occluder<P>& o, Box& bx) const {
+void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& bx) const {
   const int b = t0.body;
   const int fs = facing_[b][t0.face];
   Tri t = t0;
@@ -269,24 +271,44 @@ void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occluder<P>& o
   o.body = b;
   o.face = t.face;
   o.v = t.v;
-  Vec<P> n = normal(t);
   // Constraint 0: strictly behind the plane: -n·(X - a) > 0. A back face of a convex solid
   // whose surface holds the eye hides its whole forward cone from the eye instead (in front
   // of the face too: those points are inside the solid), so the plane moves to the eye:
   // -n·(X - E) > 0. Exact for convex solids (docs/design.md); others are refused.
-  o.m[0] = neg<P>(n);
-  o.c[0] = fs < 0 && solid_[b] ? dot<P>(o.m[0], view_) : dot<P>(o.m[0], X_[t.v[0]]);
+  const bool to_eye = fs < 0 && solid_[b];
+  const Vec<P> n = normal(t);
+  // Each side plane is turned to hold the third vertex on its positive side. For side k the
+  // value at the third vertex r is det(D, q - p, r - p) = D·n (orthographic, D the view
+  // direction), or det(p - E, q - E, r - E) = (p - E)·n = (a - E)·n for any vertex a
+  // (perspective): the same sign for the three sides, computed once.
+  const bool turn = P::sign(cam_.perspective ? dot<P>(n, sub<P>(X_[t.v[0]], view_)) : dot<P>(n, view_)) < 0;
+  Vec<P> m0 = neg<P>(n);
+  V c0 = to_eye ? dot<P>(m0, view_) : dot<P>(m0, X_[t.v[0]]);
+  if constexpr (kFiltered) {
+    o.through_vertices = !to_eye;
+    o.turned = 0;
+    for (int j = 0; j < 3; ++j) o.m[0][j] = P::cdbl(m0[j]);
+    o.c[0] = P::dbl(c0);
+  } else {
+    o.m[0] = std::move(m0);
+    o.c[0] = std::move(c0);
+  }
   for (int k = 0; k < 3; ++k) {
-    int r = t.v[(k + 2) % 3];
     Vec<P> m;
     V c;
     side_plane(t.v[k], t.v[(k + 1) % 3], m, c);
-    if (P::sign(dot<P>(m, X_[r]) - c) < 0) {
+    if (turn) {
       m = neg<P>(m);
       c = -c;
     }
-    o.m[k + 1] = m;
-    o.c[k + 1] = c;
+    if constexpr (kFiltered) {
+      if (turn) o.turned |= static_cast<std::uint8_t>(1u << (k + 1));
+      for (int j = 0; j < 3; ++j) o.m[k + 1][j] = P::cdbl(m[j]);
+      o.c[k + 1] = P::dbl(c);
+    } else {
+      o.m[k + 1] = m;
+      o.c[k + 1] = c;
+    }
     o.closed[k + 1] = !t.edge[k] || (closed >> (k + 1) & 1) != 0;
   }
   const Point3* pts[3];
@@ -307,7 +329,7 @@ void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occluder<P>& o
 
 // Is the sight ray just behind the polygon edge under side k inside the body (closed side)?
 template <class P>
-bool Engine<P>::closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs) const {
+bool Engine<P>::closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs, std::optional<Vec<P>>& n) const {
   int g = -1, third = -1;
   if (!neighbour(t, k, g, third)) return false;
   const int b = t.body;
@@ -316,8 +338,8 @@ bool Engine<P>::closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, in
     // the ray just behind the edge when the wedge holds it; a back face (an occluder only when
     // the eye is on the surface; `t` is turned, its normal points inward) when the wedge holds
     // the ray just beyond the edge, toward the eye: the mirror rule.
-    Vec<P> n = normal(t);
-    int w = P::sign(dot<P>(n, sub<P>(X_[third], X_[t.v[0]])));
+    if (!n) n = normal(t);
+    int w = P::sign(dot<P>(*n, sub<P>(X_[third], X_[t.v[0]])));
     if (fs > 0) {
       if (w > 0) return true;            // reflex edge: the wedge holds the ray
       return facing_[b][g] > 0;          // convex or flat: both faces toward the viewer
@@ -327,6 +349,28 @@ bool Engine<P>::closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, in
   }
   // Open surface: the neighbour continues on the other side of the edge in the projection.
   return P::sign(dot<P>(m, X_[third]) - c) < 0;
+}
+
+// Constraint k of a lazy occluder, exact, as make_occluder made it: the face plane (turned
+// toward the viewer, through the triangle or moved to the eye), or side plane k, turned where
+// make_occluder turned it.
+template <class P>
+void Engine<P>::exact_plane(const Occ& o, int k, Vec<P>& m, V& c) const {
+  if constexpr (kFiltered) {
+    if (k == 0) {
+      m = neg<P>(cross<P>(sub<P>(X_[o.v[1]], X_[o.v[0]]), sub<P>(X_[o.v[2]], X_[o.v[0]])));
+      c = o.through_vertices ? dot<P>(m, X_[o.v[0]]) : dot<P>(m, view_);
+      return;
+    }
+    side_plane(o.v[k - 1], o.v[k % 3], m, c);
+    if (o.turned >> k & 1) {
+      m = neg<P>(m);
+      c = -c;
+    }
+  } else {
+    m = o.m[k];
+    c = o.c[k];
+  }
 }
 
 // The plane through vertices p and q containing the view direction (orthographic) or the eye

@@ -64,7 +64,7 @@ struct alignas(128) Engine<P>::Work {  // its own cache lines: workers update th
 // common vertex (an edge seen end-on): hidden only where the ray just behind that vertex is
 // inside (vertex_rules). `on_side`: bit k set when the segment lies in closed side plane k.
 template <class P>
-bool Engine<P>::end_on_hides(const Occluder<P>& o, int on_side) const {
+bool Engine<P>::end_on_hides(const Occ& o, int on_side) const {
   if (on_side == 6) return vertex_closed_[o.v[1]];
   if (on_side == 12) return vertex_closed_[o.v[2]];
   if (on_side == 10) return vertex_closed_[o.v[0]];
@@ -118,7 +118,7 @@ std::vector<PieceList> Engine<P>::visibility(const std::vector<std::vector<Drawn
 // Everything visibility needed, freed (the engine is done once visibility has run).
 template <class P>
 void Engine<P>::release_arrays() {
-  std::vector<Occluder<P>>().swap(occ_);
+  std::vector<Occ>().swap(occ_);
   std::vector<Box>().swap(boxes_);
   grid_ = ScreenGrid();
   std::vector<Tri>().swap(tris_);
@@ -127,7 +127,6 @@ void Engine<P>::release_arrays() {
   std::vector<char>().swap(vertex_closed_);
   std::vector<Vec<P>>().swap(X_);
   std::vector<std::array<double, 3>>().swap(Xd_);
-  std::vector<PlaneDoubles>().swap(occd_);
 }
 
 // One segment's pieces into `out`: a one-piece list when it is wholly visible or hidden (a
@@ -264,7 +263,7 @@ void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed
 template <class P>
 void Engine<P>::test_integer(int oi, const std::array<int, 2>& gv, Work& wk) const {
   ++wk.pairs;
-  const Occluder<P>& o = occ_[oi];
+  const Occ& o = occ_[oi];
   const Vec<P>& X0 = X_[gv[0]];
   const Vec<P>& X1 = X_[gv[1]];
   bool has_lo = false, has_hi = false;
@@ -275,18 +274,25 @@ void Engine<P>::test_integer(int oi, const std::array<int, 2>& gv, Work& wk) con
     int s0 = 0, s1 = 0;
     bool exact = true;
     if constexpr (kFiltered) {
-      const PlaneDoubles& pd = occd_[oi];
       auto known = [&](int e, int& sg) {
         const int g = gv[e];
-        const bool on = k == 0 ? pd.through_vertices && (g == o.v[0] || g == o.v[1] || g == o.v[2]) : g == o.v[k - 1] || g == o.v[k % 3];
-        sg = on ? 0 : filtered_sign(pd.m[k], pd.c[k], Xd_[g]);
+        const bool on = k == 0 ? o.through_vertices && (g == o.v[0] || g == o.v[1] || g == o.v[2]) : g == o.v[k - 1] || g == o.v[k % 3];
+        sg = on ? 0 : filtered_sign(o.m[k], o.c[k], Xd_[g]);
         return on || sg != 0;
       };
       exact = !(known(0, s0) && known(1, s1)) || (s0 != 0 && s1 != 0 && (s0 > 0) != (s1 > 0));
     }
     if (exact) {
-      f0 = dot<P>(o.m[k], X0) - o.c[k];
-      f1 = dot<P>(o.m[k], X1) - o.c[k];
+      if constexpr (kFiltered) {
+        Vec<P> m;
+        V c;
+        exact_plane(o, k, m, c);
+        f0 = dot<P>(m, X0) - c;
+        f1 = dot<P>(m, X1) - c;
+      } else {
+        f0 = dot<P>(o.m[k], X0) - o.c[k];
+        f1 = dot<P>(o.m[k], X1) - o.c[k];
+      }
       s0 = P::sign(f0), s1 = P::sign(f1);
     }
     if (s0 > 0 && s1 > 0) continue;
@@ -366,14 +372,18 @@ int Engine<P>::filtered_sign(const double* m, double c, const std::array<double,
 }
 
 template <class P>
-int Engine<P>::filtered_sign(const Occluder<P>& o, int k, const std::array<double, 3>& X) {
-  const double m[3] = {P::cdbl(o.m[k][0]), P::cdbl(o.m[k][1]), P::cdbl(o.m[k][2])};
-  return filtered_sign(m, P::dbl(o.c[k]), X);
+int Engine<P>::filtered_sign(const Occ& o, int k, const std::array<double, 3>& X) {
+  if constexpr (kFiltered) {
+    return filtered_sign(o.m[k], o.c[k], X);
+  } else {
+    const double m[3] = {P::cdbl(o.m[k][0]), P::cdbl(o.m[k][1]), P::cdbl(o.m[k][2])};
+    return filtered_sign(m, P::dbl(o.c[k]), X);
+  }
 }
 
-// The doubles of every vertex and occluder plane (kFiltered), on all cores. Integers convert
-// to 0 exactly when they are 0 and are otherwise at least 1; one beyond the double range
-// becomes infinite, which filtered_sign leaves to the exact test.
+// The doubles of every vertex (kFiltered; the occluders' are made with them), on all cores.
+// Integers convert to 0 exactly when they are 0 and are otherwise at least 1; one beyond the
+// double range becomes infinite, which filtered_sign leaves to the exact test.
 template <class P>
 void Engine<P>::filter_doubles() {
   if constexpr (kFiltered) {
@@ -381,16 +391,6 @@ void Engine<P>::filter_doubles() {
     Xd_.resize(X_.size());
     loop.for_each(X_.size(), 4096, [&](std::size_t i) {
       for (int j = 0; j < 3; ++j) Xd_[i][j] = P::cdbl(X_[i][j]);
-    });
-    occd_.resize(occ_.size());
-    loop.for_each(occ_.size(), 1024, [&](std::size_t i) {
-      const Occluder<P>& o = occ_[i];
-      for (int k = 0; k < 4; ++k) {
-        for (int j = 0; j < 3; ++j) occd_[i].m[k][j] = P::cdbl(o.m[k][j]);
-        occd_[i].c[k] = P::dbl(o.c[k]);
-      }
-      // make_occluder: the face plane moved to the eye for a back face of a solid
-      occd_[i].through_vertices = !(facing_[o.body][o.face] < 0 && solid_[o.body]);
     });
   }
 }
@@ -400,8 +400,7 @@ void Engine<P>::filter_doubles() {
 // of the segment (the exact loop would return at k too: the result does not depend on the
 // order of k). The rest is decided on the exact values.
 template <class P>
-void Engine<P>::test_rational(const Occluder<P>& o, const RationalEnds& e,
-                              std::vector<std::pair<Rational, Rational>>& out, Work& wk) const {
+void Engine<P>::test_rational(const Occ& o, const RationalEnds& e, std::vector<std::pair<Rational, Rational>>& out, Work& wk) const {
   ++wk.pairs;
   for (int k = 0; e.filter && k < 4; ++k)
     if (filtered_sign(o, k, e.Ad) < 0 && filtered_sign(o, k, e.Bd) < 0) return;
@@ -413,14 +412,17 @@ void Engine<P>::test_rational(const Occluder<P>& o, const RationalEnds& e,
   std::optional<Rational> lo, hi;
   int on_side = 0;
   for (int k = 0; k < 4; ++k) {
-    set_z(c.get_mpz_t(), o.c[k]);
+    Vec<P> m;
+    V ck;
+    exact_plane(o, k, m, ck);
+    set_z(c.get_mpz_t(), ck);
     mpz_mul(F0.get_mpz_t(), c.get_mpz_t(), e.da.get_mpz_t());
     mpz_mul(F1.get_mpz_t(), c.get_mpz_t(), e.db.get_mpz_t());
     mpz_neg(F0.get_mpz_t(), F0.get_mpz_t());
     mpz_neg(F1.get_mpz_t(), F1.get_mpz_t());
     for (int j = 0; j < 3; ++j) {
-      addmul(F0.get_mpz_t(), o.m[k][j], e.a[j].get_mpz_t(), wk.z[3].get_mpz_t());
-      addmul(F1.get_mpz_t(), o.m[k][j], e.b[j].get_mpz_t(), wk.z[3].get_mpz_t());
+      addmul(F0.get_mpz_t(), m[j], e.a[j].get_mpz_t(), wk.z[3].get_mpz_t());
+      addmul(F1.get_mpz_t(), m[j], e.b[j].get_mpz_t(), wk.z[3].get_mpz_t());
     }
     int s0 = sgn(F0), s1 = sgn(F1);
     if (s0 > 0 && s1 > 0) continue;
