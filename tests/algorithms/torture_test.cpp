@@ -149,13 +149,10 @@ std::string describe(unsigned seed, const Camera& c) {
                                                          : ", view " + to_string(c.direction));
 }
 
-}  // namespace
-
 // Perspective with the eye among the bodies (walk-through views), and orthographic views along
-// axes and edges: five boxes (some thin slabs) and a tetrahedron.
-TEST(Torture, EyeAmongTheBodies) {
-  const long n = env_long("HLR_TORTURE_SCENES", 200);
-  const unsigned seed0 = static_cast<unsigned>(env_long("HLR_TORTURE_SEED", 12));
+// axes and edges: five boxes (some thin slabs) and a tetrahedron; with `far_box`, also a box
+// 2^-70 wide far from the others, whose coordinates put the whole scene on the multi-limb path.
+void eye_among_the_bodies(long n, unsigned seed0, bool far_box) {
   Result res;
   for (long i = 0; i < n; ++i) {
     unsigned seed = seed0 * 100003u + static_cast<unsigned>(i);
@@ -163,6 +160,11 @@ TEST(Torture, EyeAmongTheBodies) {
     std::vector<Polyhedron> bodies;
     for (int k = 0; k < 5; ++k) bodies.push_back(g.box());
     bodies.push_back(g.tetra());
+    if (far_box) {
+      Rational e = 1;
+      mpq_div_2exp(e.get_mpq_t(), e.get_mpq_t(), 70);
+      bodies.push_back(make_box(Point3(-40, -40, -40), Point3(Rational(-40) + e, Rational(-40) + e, Rational(-40) + e)));
+    }
     std::vector<std::vector<OraclePlane>> planes;
     for (const auto& b : bodies) planes.push_back(oracle_planes(b));
     Camera cam;
@@ -216,6 +218,18 @@ TEST(Torture, EyeAmongTheBodies) {
   EXPECT_EQ(res.roberts.disagreements, 0);
   EXPECT_EQ(res.route_mismatches, 0);
   EXPECT_GT(res.faces.hidden_samples, res.faces.samples / 10);
+}
+
+}  // namespace
+
+TEST(Torture, EyeAmongTheBodies) {
+  eye_among_the_bodies(env_long("HLR_TORTURE_SCENES", 200), static_cast<unsigned>(env_long("HLR_TORTURE_SEED", 12)), false);
+}
+
+// The same scenes on the multi-limb path (its filters: signs known from the vertices on a plane
+// or from doubles, exact planes remade on demand).
+TEST(Torture, EyeAmongTheBodiesOnTheMultiLimbPath) {
+  eye_among_the_bodies(env_long("HLR_TORTURE_SCENES", 200) / 2, static_cast<unsigned>(env_long("HLR_TORTURE_SEED", 12)), true);
 }
 
 // Every scene the torture suite (or a report) found wrong once, as a named file in
