@@ -358,7 +358,7 @@ template <class P>
 void Engine<P>::exact_plane(const Occ& o, int k, Vec<P>& m, V& c) const {
   if constexpr (kFiltered) {
     if (k == 0) {
-      m = neg<P>(cross<P>(sub<P>(X_[o.v[1]], X_[o.v[0]]), sub<P>(X_[o.v[2]], X_[o.v[0]])));
+      m = neg<P>(normal(Tri{o.body, o.face, o.v, {true, true, true}}));
       c = o.through_vertices ? dot<P>(m, X_[o.v[0]]) : dot<P>(m, view_);
       return;
     }
