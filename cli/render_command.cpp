@@ -143,6 +143,7 @@ int run_render(const RenderArgs& all, const MergeInput* merge = nullptr) {
   RenderExtras extras;
   extras.tile = tile;
   extras.segments_only = merge != nullptr;
+  if (drawings.size() > 1) extras.share = std::make_shared<ViewShare>();
   for (const std::string& f : all.lines)  // read once: one file may be standard input
     for (Polyline3& l : read_polylines(f)) extras.polylines.push_back(std::move(l));
   const double load = sec(Clock::now() - t_start);

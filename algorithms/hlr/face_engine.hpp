@@ -12,6 +12,7 @@
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <tuple>
 #include <type_traits>
@@ -88,6 +89,32 @@ struct FrontBox {
 FrontBox front_box(const Camera& cam, const Point3* const* pts, const std::array<double, 3>* const* proj,
                    const bool* front, int n);
 
+/// The engine's work that no view changes (FaceRouteShare): filled by the first view, read by
+/// the next ones of the same bodies. Triangles, normals and facing vertices are after every
+/// inside-out solid or component was turned.
+template <class P>
+struct Prepared {
+  std::vector<Vec<P>> X;  // every vertex scaled to integers
+  Rational scale;
+  bool done = false;  // every body below is prepared
+  std::vector<BodyTopology> topo;
+  std::vector<std::vector<char>> degenerate;
+  std::vector<std::vector<Vec<P>>> face_normal;
+  std::vector<std::vector<int>> facing_at;  // per face: the vertex its facing is measured at
+  std::vector<Tri> tris;
+  std::vector<int> first_tri;  // per body
+  std::vector<bool> solid;
+  std::vector<int> flipped;
+  std::vector<BodyNote> notes;  // per body in order: turned components, not a solid
+  // Per body, per edge: the feature class of an edge between two live faces (feature_kind;
+  // -1: none), and the edges a crease line goes on along, under the angles of `crease`.
+  std::optional<Rational> crease;
+  std::vector<std::vector<signed char>> feature;
+  std::vector<std::optional<std::vector<int>>> continued;
+  std::optional<std::vector<CrossLine>> cross;  // the intersection lines
+  std::size_t intersection_pairs = 0;
+};
+
 template <class P>
 class Engine {
  public:
@@ -99,8 +126,10 @@ class Engine {
   static constexpr bool kFiltered = std::is_same_v<P, Big> || std::is_same_v<P, Wide>;
   using Occ = std::conditional_t<kFiltered, LazyOccluder, Occluder<P>>;
 
+  /// `prep`: the scaled points and scale, and the rest when a view before prepared the bodies;
+  /// `keep`: other views will read it (nothing of it is freed).
   Engine(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const LineOptions& opt, const FaceRouteHooks& hooks,
-         std::vector<Vec<P>> pts, Vec<P> view, Rational scale);
+         std::shared_ptr<Prepared<P>> prep, Vec<P> view, bool keep);
   LineDrawing run();
 
  private:
@@ -109,11 +138,16 @@ class Engine {
   // face_engine_bodies.cpp
   void offsets();
   Vec<P> normal(const Tri& t) const;
-  void prepare_body(int b, LineDrawing& res);
+  void prepare_body(int b);
+  void view_body(int b, LineDrawing& res);
+  std::vector<signed char> features(int b) const;
+  std::vector<int> continued_edges(int b, std::vector<char>& line) const;
+  const std::vector<signed char>& feature_classes(int b);
+  const std::vector<int>* continued_lines(int b, std::vector<char>& line);
   int triangulate_body(int b);
   int volume_sign(const std::vector<int>& ids) const;
   int parity(const Vec<P>& x, const std::vector<int>& ids) const;
-  bool orient_components(int b, int first, LineDrawing& res);
+  bool orient_components(int b, int first);
   bool eye_inside(int first) const;
   bool eye_on_surface(int first) const;
   static void flip(Tri& t);
@@ -129,12 +163,12 @@ class Engine {
   bool closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs, std::optional<Vec<P>>& n) const;
   void side_plane(int p, int q, Vec<P>& m, V& c) const;
   // face_engine_edges.cpp
-  std::vector<DrawnEdge> collect_edges(int b) const;
+  std::vector<DrawnEdge> collect_edges(int b);
   Segment edge_segment(int b, const DrawnEdge& e) const;
   bool opposite_in_projection(int u, int v, int x, int y) const;
   LineKind feature_kind(int b, const EdgeUse& a, const EdgeUse& c) const;
   bool crease(int b, const EdgeUse& a, const EdgeUse& c, const CreaseAngle& angle) const;
-  void continue_creases(int b, std::vector<signed char>& kinds, std::vector<signed char>& hidden, std::vector<char>& line) const;
+  void continue_creases(int b, std::vector<signed char>& kinds, std::vector<signed char>& hidden, std::vector<char>& line);
   bool continues(int b, const BodyEdge& e) const;
   // face_engine_intersections.cpp
   void find_intersections(LineDrawing& res);
@@ -173,22 +207,24 @@ class Engine {
   const Camera& cam_;
   const LineOptions& opt_;
   const FaceRouteHooks& hooks_;
-  std::vector<Vec<P>> X_;
+  std::shared_ptr<Prepared<P>> prep_;
+  bool keep_;  // prep_ is shared with other views: nothing of it is freed
+  std::vector<Vec<P>>& X_;
   Vec<P> view_;  // orthographic direction, or the eye (scaled like the points)
-  Rational scale_;
+  Rational& scale_;
   Projector proj_;
   CreaseAngle crease_;
   CreaseAngle continued_;  // half the crease angle: how far a crease line continues
 
   std::vector<int> voff_;
-  std::vector<bool> solid_;
+  std::vector<bool>& solid_;
   std::vector<char> eye_on_;  // perspective: the eye lies on this solid's surface
-  std::vector<int> flipped_;
+  std::vector<int>& flipped_;
   std::vector<std::vector<int>> facing_;
-  std::vector<BodyTopology> topo_;
-  std::vector<std::vector<char>> degenerate_;
-  std::vector<std::vector<Vec<P>>> face_normal_;
-  std::vector<Tri> tris_;
+  std::vector<BodyTopology>& topo_;
+  std::vector<std::vector<char>>& degenerate_;
+  std::vector<std::vector<Vec<P>>>& face_normal_;
+  std::vector<Tri>& tris_;
   std::vector<int> sel_;               // the triangles that become occluders
   std::vector<std::uint8_t> closed_;   // their closed sides (bit k + 1: side k)
   std::vector<Occ> occ_;

@@ -29,17 +29,25 @@ DrawingFrame frame_of(const std::vector<const Polyhedron*>& bodies) {
 
 template <class P>
 Engine<P>::Engine(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const LineOptions& opt, const FaceRouteHooks& hooks,
-                  std::vector<Vec<P>> pts, Vec<P> view, Rational scale)
+                  std::shared_ptr<Prepared<P>> prep, Vec<P> view, bool keep)
     : bodies_(bodies),
       cam_(cam),
       opt_(opt),
       hooks_(hooks),
-      X_(std::move(pts)),
+      prep_(std::move(prep)),
+      keep_(keep),
+      X_(prep_->X),
       view_(std::move(view)),
-      scale_(std::move(scale)),
+      scale_(prep_->scale),
       proj_(cam, frame_of(bodies)),
       crease_(opt.crease_degrees),
-      continued_(opt.crease_degrees / 2) {}
+      continued_(opt.crease_degrees / 2),
+      solid_(prep_->solid),
+      flipped_(prep_->flipped),
+      topo_(prep_->topo),
+      degenerate_(prep_->degenerate),
+      face_normal_(prep_->face_normal),
+      tris_(prep_->tris) {}
 
 template <class P>
 LineDrawing Engine<P>::run() {
@@ -50,7 +58,12 @@ LineDrawing Engine<P>::run() {
   using Clock = std::chrono::steady_clock;
   auto t0 = Clock::now();
   offsets();
-  for (std::size_t b = 0; b < bodies_.size(); ++b) prepare_body(static_cast<int>(b), res);
+  // The view-independent work once (or from a view before), then this view's facing and checks.
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    if (!prep_->done) prepare_body(static_cast<int>(b));
+    view_body(static_cast<int>(b), res);
+  }
+  prep_->done = true;
   if (hooks_.facing_only) {
     res.stats.setup_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     return res;
@@ -68,12 +81,19 @@ LineDrawing Engine<P>::run() {
   project_vertices();
   const bool early = cam_.perspective || total * 8 >= tris_.size();  // near_segments() would not apply
   auto free_topology = [&] {
+    if (keep_) return;
     std::vector<BodyTopology>().swap(topo_);
     std::vector<std::vector<Vec<P>>>().swap(face_normal_);
   };
   if (early) select_occluders(drawn), free_topology();
   const auto ti0 = Clock::now();
-  if (opt_.intersections) find_intersections(res);
+  if (opt_.intersections && prep_->cross) {  // found by a view before
+    cross_ = *prep_->cross;
+    res.stats.faces->intersection_pairs = prep_->intersection_pairs;
+  } else if (opt_.intersections) {
+    find_intersections(res);
+    if (keep_) prep_->cross = cross_, prep_->intersection_pairs = res.stats.faces->intersection_pairs;
+  }
   const std::size_t n_crossing = cross_.size();
   for (const auto& x : hooks_.extra_lines) cross_.emplace_back(x.body, x.body, x.face, x.face, x.a, x.b);
   const auto ti1 = Clock::now();
@@ -122,12 +142,24 @@ void Engine<P>::offsets() {
     voff_.push_back(o);
     o += static_cast<int>(p->num_vertices());
   }
-  solid_.assign(bodies_.size(), false);
   eye_on_.assign(bodies_.size(), 0);
-  degenerate_.resize(bodies_.size());
-  face_normal_.resize(bodies_.size());
   facing_.resize(bodies_.size());
-  topo_.resize(bodies_.size());
+  if (prep_->done) return;
+  // Anything a view left half made (it failed) is made again.
+  Prepared<P>& p = *prep_;
+  p.solid.assign(bodies_.size(), false);
+  p.degenerate.assign(bodies_.size(), {});
+  p.face_normal.assign(bodies_.size(), {});
+  p.facing_at.assign(bodies_.size(), {});
+  p.topo.assign(bodies_.size(), {});
+  p.tris.clear();
+  p.first_tri.assign(bodies_.size(), 0);
+  p.flipped.clear();
+  p.notes.clear();
+  p.crease.reset();
+  p.feature.clear();
+  p.continued.clear();
+  p.cross.reset();
 }
 
 template <class P>
@@ -144,13 +176,13 @@ int Engine<P>::triangulate_body(int b) {
   const auto& faces = p.faces();
   BodyTopology& topo = topo_[b];
   const std::vector<int>& fo = topo.face_offset;
-  std::vector<int>& facing = facing_[b];
-  facing.assign(faces.size(), 0);
+  std::vector<int>& facing_at = prep_->facing_at[b];
+  facing_at.assign(faces.size(), -1);
   degenerate_[b].assign(faces.size(), 0);
   face_normal_[b].resize(faces.size());
   const int first_tri = static_cast<int>(tris_.size());
-  // Triangles' normals and facing on all cores (integer arithmetic on the shared coordinates;
-  // each face writes its own slots), then the triangles listed in face order.
+  // Triangles' normals on all cores (integer arithmetic on the shared coordinates; each face
+  // writes its own slots), then the triangles listed in face order.
   ParallelLoop(opt_.threads).for_each(faces.size(), 4096, [&](std::size_t f) {
     const Face& face = faces[f];
     if (face.size() != 3) return;  // after the triangulation below
@@ -160,7 +192,7 @@ int Engine<P>::triangulate_body(int b) {
       degenerate_[b][f] = 1;  // zero area: neither occludes nor faces
       return;
     }
-    facing[f] = facing_sign<P>(n, X_[probe.v[0]], view_, cam_.perspective);
+    facing_at[f] = probe.v[0];
     face_normal_[b][f] = std::move(n);
   });
   const ParallelLoop loop(opt_.threads);
@@ -221,7 +253,7 @@ int Engine<P>::triangulate_body(int b) {
     }
     if (face.size() == 3) continue;  // normal and facing above
     face_normal_[b][f] = normal(tris_.back());
-    facing[f] = facing_sign<P>(face_normal_[b][f], X_[tris_.back().v[0]], view_, cam_.perspective);
+    facing_at[f] = tris_.back().v[0];
   }
   return first_tri;
 }
@@ -276,10 +308,13 @@ int Engine<P>::volume_sign(const std::vector<int>& ids) const {
   }
 }
 
+// The view-independent part of body b: topology, triangles and normals, whether it is a
+// closed solid (a note when not), inside-out components and solids turned (with notes).
 template <class P>
-void Engine<P>::prepare_body(int b, LineDrawing& res) {
+void Engine<P>::prepare_body(int b) {
   topo_[b] = body_topology(bodies_[b]->faces(), bodies_[b]->num_vertices(), opt_.threads);
   const int first_tri = triangulate_body(b);
+  prep_->first_tri[b] = first_tri;
   // A closed solid: every edge in exactly two faces, traversed in opposite directions.
   const ParallelLoop loop(opt_.threads);
   PerWorker<char> open(loop, 0);
@@ -297,7 +332,7 @@ void Engine<P>::prepare_body(int b, LineDrawing& res) {
   std::iota(ids.begin(), ids.end(), first_tri);
   // Orientation per component first (an inside-out one is turned, with a note); then the sign
   // of the whole.
-  const bool components_ok = closed && !ids.empty() && orient_components(b, first_tri, res);
+  const bool components_ok = closed && !ids.empty() && orient_components(b, first_tri);
   int vsign = components_ok ? volume_sign(ids) : 0;
   solid_[b] = closed && vsign != 0;
   if (!solid_[b]) {
@@ -310,23 +345,38 @@ void Engine<P>::prepare_body(int b, LineDrawing& res) {
                                    : "is not consistently oriented (edge " + std::to_string(e.u) + "-" + std::to_string(e.v) + ")";
         break;
       }
-    res.notes.push_back({b, why + ": drawn as a surface (hidden where a sight ray crosses it)"});
+    prep_->notes.push_back({b, why + ": drawn as a surface (hidden where a sight ray crosses it)"});
   }
+  if (solid_[b] && vsign < 0) {  // inside out: turn it
+    for (std::size_t i = first_tri; i < tris_.size(); ++i) flip(tris_[i]);
+    for (auto& n : face_normal_[b]) n = neg<P>(n);
+    flipped_.push_back(b);
+  }
+}
+
+// This view's part of body b: each face's facing (from the turned normals), the eye inside or
+// on a solid, the notes.
+template <class P>
+void Engine<P>::view_body(int b, LineDrawing& res) {
+  std::vector<int>& facing = facing_[b];
+  const std::vector<int>& at = prep_->facing_at[b];
+  facing.assign(at.size(), 0);
+  ParallelLoop(opt_.threads).for_each(at.size(), 4096, [&](std::size_t f) {
+    if (at[f] >= 0) facing[f] = facing_sign<P>(face_normal_[b][f], X_[at[f]], view_, cam_.perspective);
+  });
+  for (const BodyNote& n : prep_->notes)
+    if (n.body == b) res.notes.push_back(n);
+  const int first_tri = prep_->first_tri[b];
   if (solid_[b] && cam_.perspective && eye_inside(first_tri))
     throw BodyError(b, "contains the eye " + to_string(cam_.eye) + ": an eye inside a solid sees nothing");
   // The eye on the surface: a sight segment may end inside the solid without leaving it through
   // a front face, so the back faces hide too (their forward cones from the eye, see occluders).
+  // (Turning a triangle turns its normal too: the test reads the same.)
   if (solid_[b] && cam_.perspective) eye_on_[b] = eye_on_surface(first_tri);
   if (eye_on_[b] && !convexity(*bodies_[b]).convex())
     throw BodyError(b, "holds the eye " + to_string(cam_.eye) +
                            " on its surface and is not convex: move the eye off the surface (by any amount)");
-  if (solid_[b] && vsign < 0) {  // inside out: turn it
-    for (std::size_t i = first_tri; i < tris_.size(); ++i) flip(tris_[i]);
-    for (int& s : facing_[b]) s = -s;
-    for (auto& n : face_normal_[b]) n = neg<P>(n);
-    flipped_.push_back(b);
-  }
-  res.facing.emplace_back(facing_[b].begin(), facing_[b].end());
+  res.facing.emplace_back(facing.begin(), facing.end());
   res.back_faces_unseen.resize(b + 1, 0);
   res.back_faces_unseen[b] = solid_[b] && !eye_on_[b];
 }
@@ -372,7 +422,7 @@ bool Engine<P>::eye_inside(int first) const {
 // They are turned (triangles, facing, normals) with a note. Returns false when some component
 // has zero volume.
 template <class P>
-bool Engine<P>::orient_components(int b, int first, LineDrawing& res) {
+bool Engine<P>::orient_components(int b, int first) {
   const std::size_t nf = bodies_[b]->faces().size();
   // Faces joined across edges, on all cores: each set's root is its smallest face.
   const ParallelLoop loop(opt_.threads);
@@ -420,12 +470,11 @@ bool Engine<P>::orient_components(int b, int first, LineDrawing& res) {
     int lowest = static_cast<int>(nf);
     for (std::size_t f = 0; f < nf; ++f)
       if (find(static_cast<int>(f)) == r) {
-        facing_[b][f] = -facing_[b][f];
         face_normal_[b][f] = neg<P>(face_normal_[b][f]);
         lowest = std::min(lowest, static_cast<int>(f));
       }
-    res.notes.push_back({b, "has an inside-out component (the one with face " + std::to_string(lowest) +
-                                ": negative volume, not inside another component): drawn turned outward"});
+    prep_->notes.push_back({b, "has an inside-out component (the one with face " + std::to_string(lowest) +
+                                   ": negative volume, not inside another component): drawn turned outward"});
   }
   return true;
 }

@@ -10,14 +10,20 @@ namespace hlr::face_route {
 
 // ---- drawn edges
 template <class P>
-std::vector<DrawnEdge> Engine<P>::collect_edges(int b) const {
+std::vector<DrawnEdge> Engine<P>::collect_edges(int b) {
   const auto& facing = facing_[b];
   const RawVector<BodyEdge>& edges = topo_[b].edges;
+  const bool classing = opt_.edges == EdgeSelection::Feature || opt_.classify_all;
+  // Shared with other views: every edge's feature class once, for all of them.
+  const std::vector<signed char>* feature = keep_ && classing ? &feature_classes(b) : nullptr;
+  const auto feature_of = [&](std::size_t i, const EdgeUse& a, const EdgeUse& c) {
+    return feature ? static_cast<LineKind>((*feature)[i]) : feature_kind(b, a, c);
+  };
   // Each edge classified on every core (-1: not drawn), then the drawn ones appended in order.
   std::vector<signed char> kinds(edges.size()), hidden(edges.size());
   // Per edge: a line whatever the view (a boundary, a crease, a cut, a non-manifold edge), the
   // ends of crease lines are found by.
-  const bool continuing = opt_.continue_creases && (opt_.edges == EdgeSelection::Feature || opt_.classify_all);
+  const bool continuing = opt_.continue_creases && classing;
   std::vector<char> line(continuing ? edges.size() : 0);
   ParallelLoop(opt_.threads).for_each(edges.size(), 4096, [&](std::size_t i) {
     const BodyEdge& e = edges[i];
@@ -58,11 +64,11 @@ std::vector<DrawnEdge> Engine<P>::collect_edges(int b) const {
           kind = LineKind::Silhouette;
       }
       if (continuing) {
-        const LineKind f = feature_kind(b, a, c);
+        const LineKind f = feature_of(i, a, c);
         line[i] = f == LineKind::Crease;
         if (kind == LineKind::Edge) kind = f;
-      } else if (kind == LineKind::Edge && (opt_.edges == EdgeSelection::Feature || opt_.classify_all)) {
-        kind = feature_kind(b, a, c);
+      } else if (kind == LineKind::Edge && classing) {
+        kind = feature_of(i, a, c);
       }
     } else if (n_live == 1) {
       kind = LineKind::Boundary;
@@ -118,6 +124,35 @@ bool Engine<P>::opposite_in_projection(int u, int v, int x, int y) const {
   V c;
   side_plane(u, v, m, c);
   return P::sign(dot<P>(m, X_[x]) - c) * P::sign(dot<P>(m, X_[y]) - c) < 0;
+}
+
+// Body b's feature class of every edge between two live faces (else -1), as collect_edges
+// reads them (an edge inside one face of the model, or on a cap, is not read).
+template <class P>
+std::vector<signed char> Engine<P>::features(int b) const {
+  const RawVector<BodyEdge>& edges = topo_[b].edges;
+  std::vector<signed char> out(edges.size(), -1);
+  ParallelLoop(opt_.threads).for_each(edges.size(), 4096, [&](std::size_t i) {
+    const BodyEdge& e = edges[i];
+    int live[2], n_live = 0;
+    for (std::size_t k = 0; k < e.uses.size(); ++k)
+      if (!degenerate_[b][e.uses[k].face] && n_live++ < 2) live[n_live - 1] = static_cast<int>(k);
+    if (n_live == 2) out[i] = static_cast<signed char>(feature_kind(b, e.uses[live[0]], e.uses[live[1]]));
+  });
+  return out;
+}
+
+// The feature classes of body b, made once for every view that shares the engine's work.
+template <class P>
+const std::vector<signed char>& Engine<P>::feature_classes(int b) {
+  Prepared<P>& p = *prep_;
+  if (!p.crease || *p.crease != opt_.crease_degrees) {
+    p.crease = opt_.crease_degrees;
+    p.feature.assign(bodies_.size(), {});
+    p.continued.assign(bodies_.size(), {});
+  }
+  if (p.feature[b].empty() && !topo_[b].edges.empty()) p.feature[b] = features(b);
+  return p.feature[b];
 }
 
 // A non-silhouette edge between two faces: a crease, a tangent edge or nothing (Edge), by the
@@ -176,16 +211,33 @@ bool Engine<P>::continues(int b, const BodyEdge& e) const {
 // angle falls under the crease angle near the tangent point. Exact (rational dot products);
 // independent of the view.
 template <class P>
-void Engine<P>::continue_creases(int b, std::vector<signed char>& kinds, std::vector<signed char>& hidden, std::vector<char>& line) const {
+void Engine<P>::continue_creases(int b, std::vector<signed char>& kinds, std::vector<signed char>& hidden, std::vector<char>& line) {
+  const RawVector<BodyEdge>& edges = topo_[b].edges;
+  std::vector<int> mine;
+  const std::vector<int>* added = keep_ ? continued_lines(b, line) : nullptr;
+  if (!added) mine = continued_edges(b, line), added = &mine;
+  for (int best : *added)
+    if (kinds[best] < 0 || kinds[best] == static_cast<signed char>(LineKind::Edge)) {
+      kinds[best] = static_cast<signed char>(LineKind::Crease);
+      const EdgeUse &a = edges[best].uses[0], &c = edges[best].uses[1];
+      hidden[best] = solid_[b] && facing_[b][a.face] < 0 && facing_[b][c.face] < 0;
+    }
+}
+
+// The edges of body b a crease line goes on along (see continue_creases), in the order they
+// are found (`line`, the lines whatever the view, gets them). Independent of the view.
+template <class P>
+std::vector<int> Engine<P>::continued_edges(int b, std::vector<char>& line) const {
   const RawVector<BodyEdge>& edges = topo_[b].edges;
   const std::vector<Point3>& pts = bodies_[b]->vertices();
+  std::vector<int> added;
   std::vector<int> degree(pts.size());
   for (std::size_t i = 0; i < edges.size(); ++i)
     if (line[i]) ++degree[edges[i].u], ++degree[edges[i].v];
   std::vector<int> ends;
   for (std::size_t v = 0; v < degree.size(); ++v)
     if (degree[v] == 1) ends.push_back(static_cast<int>(v));
-  if (ends.empty()) return;
+  if (ends.empty()) return added;
   // Each vertex's edges (compressed rows).
   std::vector<int> first(pts.size() + 1), at(2 * edges.size());
   for (const BodyEdge& e : edges) ++first[e.u + 1], ++first[e.v + 1];
@@ -216,18 +268,26 @@ void Engine<P>::continue_creases(int b, std::vector<signed char>& kinds, std::ve
       }
       if (best < 0 || tie) break;
       line[best] = 1;
+      added.push_back(best);
       const int w = other(best, v);
       ++degree[v], ++degree[w];
-      if (kinds[best] < 0 || kinds[best] == static_cast<signed char>(LineKind::Edge)) {
-        kinds[best] = static_cast<signed char>(LineKind::Crease);
-        const EdgeUse &a = edges[best].uses[0], &c = edges[best].uses[1];
-        hidden[best] = solid_[b] && facing_[b][a.face] < 0 && facing_[b][c.face] < 0;
-      }
       if (degree[w] != 1) break;  // it met another line
       came = best;
       v = w;
     }
   }
+  return added;
+}
+
+// The continued edges of body b, found once for every view that shares the engine's work
+// (null: not shared under these options).
+template <class P>
+const std::vector<int>* Engine<P>::continued_lines(int b, std::vector<char>& line) {
+  Prepared<P>& p = *prep_;
+  if (!p.crease || *p.crease != opt_.crease_degrees) return nullptr;  // feature_classes sets it
+  if (p.feature[b].size() != topo_[b].edges.size()) return nullptr;
+  if (!p.continued[b]) p.continued[b] = continued_edges(b, line);
+  return &*p.continued[b];
 }
 
 template class Engine<Fast>;

@@ -121,12 +121,13 @@ void Engine<P>::release_arrays() {
   std::vector<Occ>().swap(occ_);
   std::vector<Box>().swap(boxes_);
   grid_ = ScreenGrid();
-  std::vector<Tri>().swap(tris_);
   std::vector<std::array<double, 3>>().swap(vproj_);
   std::vector<char>().swap(vfront_);
   std::vector<char>().swap(vertex_closed_);
-  std::vector<Vec<P>>().swap(X_);
   std::vector<std::array<double, 3>>().swap(Xd_);
+  if (keep_) return;  // the shared work stays for the next view
+  std::vector<Tri>().swap(tris_);
+  std::vector<Vec<P>>().swap(X_);
 }
 
 // One segment's pieces into `out`: a one-piece list when it is wholly visible or hidden (a

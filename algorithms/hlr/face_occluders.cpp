@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include "algorithms/hlr/face_engine.hpp"
 #include "algorithms/support/parallel.hpp"
@@ -13,6 +14,48 @@
 
 namespace hlr {
 namespace {
+
+// The orthographic view direction as integers: its own common denominator, then divided by
+// the components' greatest common divisor. False when a component reaches `bits` bits.
+template <class P>
+bool direction_fast(const Camera& cam, int bits, Vec<P>& view) {
+  const Rational* d[3] = {&cam.direction[0], &cam.direction[1], &cam.direction[2]};
+  std::uint64_t Ld = 1;
+  if (!common_denominator(d, 3, std::uint64_t(1) << bounds::kDenominatorBits, Ld)) return false;
+  Int128 s[3];
+  for (int k = 0; k < 3; ++k)
+    if (!scaled_integer(*d[k], Ld, Int128(1) << 62, s[k])) return false;
+  Int128 g = gcd128(gcd128(s[0], s[1]), s[2]);
+  for (int k = 0; k < 3; ++k) {
+    s[k] /= g;
+    if (abs128(s[k]) >= (Int128(1) << bits)) return false;
+    view[k] = static_cast<typename P::C>(s[k]);
+  }
+  return true;
+}
+
+// The same in GMP integers (`reduce`: divided by the greatest common divisor).
+void direction_gmp(const Camera& cam, mpz_class (&s)[3], bool reduce) {
+  mpz_class Ld = 1, g = 0;
+  for (int k = 0; k < 3; ++k) mpz_lcm(Ld.get_mpz_t(), Ld.get_mpz_t(), cam.direction[k].get_den_mpz_t());
+  for (int k = 0; k < 3; ++k) {
+    s[k] = cam.direction[k].get_num() * (Ld / cam.direction[k].get_den());
+    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), s[k].get_mpz_t());
+  }
+  for (int k = 0; k < 3 && reduce; ++k)
+    if (g != 0) mpz_divexact(s[k].get_mpz_t(), s[k].get_mpz_t(), g.get_mpz_t());
+}
+
+// The multi-limb path's: false when a component is not below its bound.
+bool direction_wide(const Camera& cam, Vec<Wide>& view) {
+  mpz_class s[3];
+  direction_gmp(cam, s, true);
+  for (int k = 0; k < 3; ++k) {
+    if (mpz_sizeinbase(s[k].get_mpz_t(), 2) > std::size_t(Wide::kBits)) return false;
+    view[k] = Wide::C(s[k].get_mpz_t());
+  }
+  return true;
+}
 
 // Scale every coordinate (and the eye) by a common denominator; the view direction by its own.
 // False when a scaled value reaches `bits` bits (then a wider policy takes the scene).
@@ -82,19 +125,8 @@ bool scale_fast(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
       if (!scaled_integer(cam.eye[k], L, kLimit, s)) return false;
       view[k] = static_cast<typename P::C>(s);
     }
-  } else {
-    const Rational* d[3] = {&cam.direction[0], &cam.direction[1], &cam.direction[2]};
-    std::uint64_t Ld = 1;
-    if (!common_denominator(d, 3, std::uint64_t(1) << bounds::kDenominatorBits, Ld)) return false;
-    Int128 s[3];
-    for (int k = 0; k < 3; ++k)
-      if (!scaled_integer(*d[k], Ld, Int128(1) << 62, s[k])) return false;
-    Int128 g = gcd128(gcd128(s[0], s[1]), s[2]);
-    for (int k = 0; k < 3; ++k) {
-      s[k] /= g;
-      if (abs128(s[k]) >= kLimit) return false;
-      view[k] = static_cast<typename P::C>(s[k]);
-    }
+  } else if (!direction_fast<P>(cam, bits, view)) {
+    return false;
   }
   scale = Rational(static_cast<unsigned long>(L));
   return true;
@@ -153,18 +185,8 @@ bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
   if (cam.perspective) {
     for (int k = 0; k < 3; ++k)
       if (!scaled(cam.eye[k], t, view[k])) return false;
-  } else {
-    mpz_class Ld = 1, g = 0, s[3];
-    for (int k = 0; k < 3; ++k) mpz_lcm(Ld.get_mpz_t(), Ld.get_mpz_t(), cam.direction[k].get_den_mpz_t());
-    for (int k = 0; k < 3; ++k) {
-      s[k] = cam.direction[k].get_num() * (Ld / cam.direction[k].get_den());
-      mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), s[k].get_mpz_t());
-    }
-    for (int k = 0; k < 3; ++k) {
-      if (g != 0) mpz_divexact(s[k].get_mpz_t(), s[k].get_mpz_t(), g.get_mpz_t());
-      if (!fits(s[k])) return false;
-      view[k] = Wide::C(s[k].get_mpz_t());
-    }
+  } else if (!direction_wide(cam, view)) {
+    return false;
   }
   scale = Rational(L);
   return true;
@@ -185,42 +207,94 @@ void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, 
   if (cam.perspective) {
     view = {sc(cam.eye[0]), sc(cam.eye[1]), sc(cam.eye[2])};
   } else {
-    mpz_class Ld = 1;
-    for (int k = 0; k < 3; ++k) mpz_lcm(Ld.get_mpz_t(), Ld.get_mpz_t(), cam.direction[k].get_den_mpz_t());
-    for (int k = 0; k < 3; ++k) view[k] = cam.direction[k].get_num() * (Ld / cam.direction[k].get_den());
+    mpz_class s[3];
+    direction_gmp(cam, s, false);
+    for (int k = 0; k < 3; ++k) view[k] = s[k];
   }
   scale = Rational(L);
+}
+
+// An engine on the scaled points, sharing its view-independent work through `share` when given.
+template <class P>
+LineDrawing run_engine(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineOptions& opt, const FaceRouteHooks& hooks,
+                       std::vector<Vec<P>> pts, Vec<P> view, Rational scale, FaceRouteShare* share, int policy) {
+  auto prep = std::make_shared<face_route::Prepared<P>>();
+  prep->X = std::move(pts);
+  prep->scale = std::move(scale);
+  if (share) share->bodies = bodies, share->policy = policy, share->prepared = prep;
+  return face_route::Engine<P>(bodies, camera, opt, hooks, std::move(prep), std::move(view), share != nullptr).run();
+}
+
+// A further orthographic view of the shared bodies on the policy they were prepared on; none
+// when its view direction does not fit that policy.
+template <class P>
+std::optional<LineDrawing> run_again(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineOptions& opt,
+                                     const FaceRouteHooks& hooks, FaceRouteShare& share) {
+  Vec<P> view{};
+  bool fits = true;
+  if constexpr (std::is_same_v<P, Big>) {
+    mpz_class s[3];
+    direction_gmp(camera, s, false);
+    for (int k = 0; k < 3; ++k) view[k] = s[k];
+  } else if constexpr (std::is_same_v<P, Wide>) {
+    fits = direction_wide(camera, view);
+  } else {
+    fits = direction_fast<P>(camera, P::kBits, view);
+  }
+  if (!fits) return std::nullopt;
+  auto prep = std::static_pointer_cast<face_route::Prepared<P>>(share.prepared);
+  return face_route::Engine<P>(bodies, camera, opt, hooks, std::move(prep), std::move(view), true).run();
 }
 
 }  // namespace
 
 LineDrawing face_occluders(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineOptions& opt, const FaceRouteHooks& hooks) {
+  // Shared work: orthographic views only (a perspective view's scale takes in its eye).
+  FaceRouteShare* share = hooks.share && !camera.perspective ? hooks.share.get() : nullptr;
+  if (share && share->prepared && share->bodies == bodies) {
+    std::optional<LineDrawing> again;
+    switch (share->policy) {
+      case 0:
+        again = run_again<Fast>(bodies, camera, opt, hooks, *share);
+        break;
+      case 1:
+        again = run_again<Fast40>(bodies, camera, opt, hooks, *share);
+        break;
+      case 2:
+        again = run_again<Wide>(bodies, camera, opt, hooks, *share);
+        break;
+      default:
+        again = run_again<Big>(bodies, camera, opt, hooks, *share);
+        break;
+    }
+    if (again) return std::move(*again);
+  }
   {
     std::vector<Vec<Fast>> pts;
     Vec<Fast> view{};
     Rational scale;
     if (scale_fast<Fast>(bodies, camera, Fast::kBits, pts, view, scale, opt.threads))
-      return face_route::Engine<Fast>(bodies, camera, opt, hooks, std::move(pts), view, scale).run();
+      return run_engine<Fast>(bodies, camera, opt, hooks, std::move(pts), view, std::move(scale), share, 0);
   }
   {
     std::vector<Vec<Fast40>> pts;
     Vec<Fast40> view{};
     Rational scale;
     if (scale_fast<Fast40>(bodies, camera, Fast40::kBits, pts, view, scale, opt.threads))
-      return face_route::Engine<Fast40>(bodies, camera, opt, hooks, std::move(pts), view, scale).run();
+      return run_engine<Fast40>(bodies, camera, opt, hooks, std::move(pts), view, std::move(scale), share, 1);
   }
   {
     std::vector<Vec<Wide>> pts;
     Vec<Wide> view{};
     Rational scale;
     if (scale_wide(bodies, camera, pts, view, scale, opt.threads))
-      return face_route::Engine<Wide>(bodies, camera, opt, hooks, std::move(pts), view, scale).run();
+      return run_engine<Wide>(bodies, camera, opt, hooks, std::move(pts), view, std::move(scale), share, 2);
   }
   std::vector<Vec<Big>> pts;
   Vec<Big> view;
   Rational scale;
   scale_big(bodies, camera, pts, view, scale);
-  return face_route::Engine<Big>(bodies, camera, opt, hooks, std::move(pts), view, scale).run();
+  return run_engine<Big>(bodies, camera, opt, hooks, std::move(pts), std::move(view), std::move(scale), share, 3);
 }
 
 }  // namespace hlr

@@ -27,6 +27,7 @@
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "algorithms/model/camera.hpp"
@@ -35,6 +36,18 @@
 #include "kernel/polyhedron.hpp"
 
 namespace hlr {
+
+/// The work of the per-face route that no view changes, kept for the next view of the same
+/// bodies (a sheet, a batch of views; docs/design.md, "Views that share their work"): the
+/// scaled coordinates, triangles, normals, topology, which bodies are solids (and turned),
+/// the feature lines' classes and the intersection lines. Give one object to every
+/// orthographic view of the same, unchanged bodies; a view of other bodies, or a perspective
+/// one, neither reads nor keeps it. Empty until the first view fills it.
+struct FaceRouteShare {
+  std::vector<const Polyhedron*> bodies;  // the bodies the work belongs to
+  int policy = -1;                        // the number policy (exact_int.hpp) it was done on
+  std::shared_ptr<void> prepared;         // face_route::Prepared<policy>
+};
 
 /// What callers other than a plain drawing ask of the per-face route (see-through lines,
 /// tiles, the raster's facing); a plain drawing leaves them empty.
@@ -76,6 +89,8 @@ struct FaceRouteHooks {
   /// Only the extra lines: no edge of the bodies is drawn (and no intersection line when
   /// LineOptions::intersections is off), so only the occluders near the extra lines are built.
   bool extra_only = false;
+  /// The view-independent work shared with other views of the same bodies (null: none).
+  std::shared_ptr<FaceRouteShare> share;
 };
 
 /// Runs the per-face hidden-line computation. Bodies may be closed solids (closed, manifold,

@@ -421,12 +421,24 @@ void repair_body(SceneBody& b, DrawingBody& name, std::vector<std::string>& repa
   }
 }
 
+// Whether a render uses RenderOptions::share: its views change no body and draw lines.
+bool shares_views(const std::vector<Scene>& scenes, const RenderOptions& o) {
+  if (!o.share || !o.section.empty() || !o.cutaway.empty() || o.section_view || o.view_depth || o.tile || o.segments_only || o.facing_only ||
+      o.cut_at_near || o.surfaces || o.shadows || !method_entry(o.method).draws_lines())
+    return false;
+  for (const Scene& s : scenes)
+    if (is_scene_file(s.file) && (!s.section.empty() || !s.cutaway.empty())) return false;
+  return true;
+}
+
 }  // namespace
 
 RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   if (!(o.near > 0)) throw std::invalid_argument("--near must be positive (a fraction of the distance from the eye to the target)");
   RenderResult r;
-  auto owned = std::make_shared<std::vector<Scene>>(std::move(scenes));
+  const bool sharing = shares_views(o.share && o.share->scenes ? *o.share->scenes : scenes, o);
+  const bool shared = sharing && o.share->scenes;  // repaired by a view before
+  auto owned = shared ? o.share->scenes : std::make_shared<std::vector<Scene>>(std::move(scenes));
   r.scenes = owned;
   std::vector<const Polyhedron*> polys;
   const View* scene_view = nullptr;
@@ -435,18 +447,27 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   const std::vector<Plane>* planes = o.section.empty() ? nullptr : &o.section;
   std::vector<Plane> with_view_plane;  // a section view's plane and the section's
   const std::vector<Plane>* away = o.cutaway.empty() ? nullptr : &o.cutaway;
+  if (shared) r.names = o.share->names, repairs = o.share->repairs;
   for (Scene& s : *owned) {
     if (!scene_view && is_scene_file(s.file)) scene_view = &s.view;
     if (!planes && is_scene_file(s.file) && !s.section.empty()) planes = &s.section;
     if (!away && is_scene_file(s.file) && !s.cutaway.empty()) away = &s.cutaway;
-    for (const std::string& n : s.notes) repairs.push_back(s.file + ": " + n);
+    if (!shared)
+      for (const std::string& n : s.notes) repairs.push_back(s.file + ": " + n);
     for (SceneBody& b : s.bodies) {
-      DrawingBody name{b.name, b.source};
-      repair_body(b, name, repairs);
+      if (!shared) {
+        DrawingBody name{b.name, b.source};
+        repair_body(b, name, repairs);
+        r.names.push_back(std::move(name));
+      }
       editable.push_back(&b);
       polys.push_back(&b.body);
-      r.names.push_back(std::move(name));
     }
+  }
+  if (sharing && !shared) {
+    o.share->scenes = owned;
+    o.share->names = r.names;
+    o.share->repairs = repairs;
   }
   if (o.section_view) {
     if (planes) with_view_plane = *planes;
@@ -486,6 +507,10 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     throw std::invalid_argument("tiles take line drawings of the per-face route (not --method roberts, --surfaces, --shadows, --clip or --lines)");
   FaceRouteHooks hooks;
   hooks.facing_only = o.facing_only;
+  if (sharing) {
+    if (!o.share->faces) o.share->faces = std::make_shared<FaceRouteShare>();
+    hooks.share = o.share->faces;
+  }
   if (sectioned) section_hooks(r.bodies, hooks);
   for (const SceneBody* b : r.bodies) hooks.surfaces.push_back(b->surfaces.empty() ? nullptr : &b->surfaces);
   std::optional<TileCut> cut;

@@ -48,6 +48,21 @@ struct NamedSection {
   std::string standard;
 };
 
+struct FaceRouteShare;  // algorithms/hlr/face_occluders.hpp
+
+/// What one view of a set does for the next (the views of a sheet, a batch of drawings of one
+/// input; docs/design.md, "Views that share their work"): the scenes repaired once, and the
+/// per-face route's work that no orthographic view changes. Give one object to every render of
+/// the same input scenes: a render that can use it ignores the scenes it is given after the
+/// first; one that cuts the bodies (a section, a cut-away, the eye's near plane), fills faces
+/// or draws tiles neither reads nor fills it.
+struct ViewShare {
+  std::shared_ptr<std::vector<Scene>> scenes;  // repaired (null until a render fills it)
+  std::vector<DrawingBody> names;
+  std::vector<std::string> repairs;
+  std::shared_ptr<FaceRouteShare> faces;
+};
+
 /// How tangent edges (where two surfaces of a CAD model meet tangentially) are drawn: Thin, a
 /// narrow line of their own (layer "tangent", ISO 128); None, left out; Visible, as sharp edges.
 enum class TangentEdges { Thin, None, Visible };
@@ -116,6 +131,8 @@ struct RenderOptions {
   /// Cut every body by the near plane when some body reaches the eye's plane, as filled
   /// products do (the raster pipeline's prepare stage).
   bool cut_at_near = false;
+  /// The work shared with the other views of the same input (null: none).
+  std::shared_ptr<ViewShare> share;
 };
 
 struct RenderResult {

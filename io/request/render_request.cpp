@@ -158,6 +158,8 @@ RenderedViews render_request(std::vector<Scene> scenes, const RenderRequest& r, 
   out.names = sheet_views(r);
   const std::size_t n_views = std::max<std::size_t>(1, out.names.size());
   out.results.resize(n_views);
+  std::shared_ptr<ViewShare> share = extras.share;
+  if (!share && n_views > 1) share = std::make_shared<ViewShare>();
   for (std::size_t i = 0; i < n_views; ++i) {
     RenderRequest one = r;
     if (!out.names.empty()) one.view = out.names[i];
@@ -176,6 +178,7 @@ RenderedViews render_request(std::vector<Scene> scenes, const RenderRequest& r, 
     options.tile = extras.tile;
     options.polylines = extras.polylines;
     options.segments_only = extras.segments_only;
+    options.share = share;
     progress(out.names.empty() ? "hidden lines" : "hidden lines, view " + out.names[i]);
     out.results[i] = render(i + 1 < n_views ? scenes : std::move(scenes), options);
   }

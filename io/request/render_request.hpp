@@ -4,6 +4,7 @@
 // fill a RenderRequest and call these, so both draw the same thing from the same options.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,9 @@ struct RenderExtras {
   std::optional<RenderOptions::Tile> tile;
   std::vector<Polyline3> polylines;
   bool segments_only = false;
+  /// The work shared by every drawing of the same input (a batch); a sheet's views share
+  /// theirs in any case.
+  std::shared_ptr<ViewShare> share;
 };
 
 /// The renders of a request: one, or one per view of the sheet (`names` then label them).
