@@ -57,6 +57,31 @@ bool direction_wide(const Camera& cam, Vec<Wide>& view) {
   return true;
 }
 
+// Every vertex of every body scaled on all cores into `pts` (body after body), one coordinate at
+// a time by `scaler()`'s function (made per chunk of vertices: it may keep scratch numbers),
+// which returns false for a value that does not fit. False when one does not.
+template <class P, class Scaler>
+bool scale_vertices(const std::vector<const Polyhedron*>& bodies, std::size_t total, const ParallelLoop& loop, std::vector<Vec<P>>& pts,
+                    const Scaler& scaler) {
+  constexpr std::size_t kChunk = 4096;  // vertices
+  pts.clear();
+  reserve_touched(pts, total, loop);
+  pts.resize(total);
+  std::size_t at = 0;
+  for (const Polyhedron* p : bodies) {
+    const std::vector<Point3>& vs = p->vertices();
+    std::vector<char> ok((vs.size() + kChunk - 1) / kChunk, 1);
+    loop.for_each(ok.size(), 1, [&](std::size_t c) {
+      auto one = scaler();
+      for (std::size_t i = c * kChunk, e = std::min(vs.size(), i + kChunk); i < e && ok[c]; ++i)
+        for (int k = 0; k < 3 && ok[c]; ++k) ok[c] = one(vs[i][k], pts[at + i][k]);
+    });
+    if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
+    at += vs.size();
+  }
+  return true;
+}
+
 // Scale every coordinate (and the eye) by a common denominator; the view direction by its own.
 // False when a scaled value reaches `bits` bits (then a wider policy takes the scene).
 template <class P>
@@ -96,29 +121,15 @@ bool scale_fast(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
     std::uint64_t Le = 1;
     if (!common_denominator(eye, 3, kDenLimit, Le) || !combine(Le)) return false;
   }
-  // Every vertex scaled on all cores.
-  pts.clear();
-  reserve_touched(pts, total, loop);
-  pts.resize(total);
-  std::size_t at = 0;
-  for (const Polyhedron* p : bodies) {
-    const std::vector<Point3>& vs = p->vertices();
-    const std::size_t chunks = (vs.size() + kChunk - 1) / kChunk;
-    std::vector<char> fits(chunks, 1);
-    loop.for_each(chunks, 1, [&](std::size_t c) {
-      for (std::size_t i = c * kChunk, e = std::min(vs.size(), i + kChunk); i < e && fits[c]; ++i)
-        for (int k = 0; k < 3; ++k) {
-          Int128 s;
-          if (!scaled_integer(vs[i][k], L, kLimit, s)) {
-            fits[c] = 0;
-            break;
-          }
-          pts[at + i][k] = static_cast<typename P::C>(s);
-        }
-    });
-    if (std::find(fits.begin(), fits.end(), 0) != fits.end()) return false;
-    at += vs.size();
-  }
+  const auto scaler = [&] {
+    return [&](const Rational& q, typename P::C& out) {
+      Int128 s;
+      if (!scaled_integer(q, L, kLimit, s)) return false;
+      out = static_cast<typename P::C>(s);
+      return true;
+    };
+  };
+  if (!scale_vertices<P>(bodies, total, loop, pts, scaler)) return false;
   if (cam.perspective) {
     for (int k = 0; k < 3; ++k) {
       Int128 s;
@@ -166,21 +177,8 @@ bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
     out = Wide::C(t.get_mpz_t());
     return true;
   };
-  pts.clear();
-  reserve_touched(pts, total, loop);
-  pts.resize(total);
-  std::size_t at = 0;
-  for (const Polyhedron* p : bodies) {
-    const std::vector<Point3>& vs = p->vertices();
-    std::vector<char> ok((vs.size() + kChunk - 1) / kChunk, 1);
-    loop.for_each(ok.size(), 1, [&](std::size_t c) {
-      mpz_class t;
-      for (std::size_t i = c * kChunk, e = std::min(vs.size(), i + kChunk); i < e && ok[c]; ++i)
-        for (int k = 0; k < 3 && ok[c]; ++k) ok[c] = scaled(vs[i][k], t, pts[at + i][k]);
-    });
-    if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
-    at += vs.size();
-  }
+  const auto scaler = [&] { return [&, t = mpz_class()](const Rational& q, Wide::C& out) mutable { return scaled(q, t, out); }; };
+  if (!scale_vertices<Wide>(bodies, total, loop, pts, scaler)) return false;
   mpz_class t;
   if (cam.perspective) {
     for (int k = 0; k < 3; ++k)

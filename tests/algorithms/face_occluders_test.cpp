@@ -14,6 +14,7 @@
 #include "algorithms/solids/crease_angle.hpp"
 #include "io/readers/mesh_reader.hpp"
 #include "support/numbers.hpp"
+#include "support/torus.hpp"
 
 using namespace hlr;
 
@@ -131,22 +132,7 @@ TEST(FaceOccluders, CubeWithCubicHoleShowsWhatIsBelowTheHole) {
 // A torus seen along its axis: the rod below shows through the hole and outside, not under the
 // ring. Coordinates are doubles' exact values (denominators 2^52): the multi-limb path runs.
 TEST(FaceOccluders, TorusSeenThroughItsHole) {
-  const int N = 24, M = 12;
-  std::vector<Point3> vs;
-  std::vector<Face> fs;
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < M; ++j) {
-      double u = 2 * M_PI * i / N, w = 2 * M_PI * j / M;
-      vs.emplace_back(rational_from_double((1 + 0.4 * std::cos(w)) * std::cos(u)), rational_from_double((1 + 0.4 * std::cos(w)) * std::sin(u)),
-                      rational_from_double(0.4 * std::sin(w)));
-    }
-  auto at = [&](int i, int j) { return (i % N) * M + (j % M); };
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < M; ++j) {
-      fs.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      fs.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  Polyhedron torus(vs, fs);
+  const Polyhedron torus = test::torus_mesh(24, 12, 1, 0.4, [](double x) { return rational_from_double(x); });
   Polyhedron rod = box("-2", "-1/20", "-1", "2", "1/20", "-9/10");
   LineDrawing r = run({&torus, &rod}, make_orthographic(Vector3(0, 0, 1)));
   EXPECT_TRUE(r.stats.faces->integer_path);

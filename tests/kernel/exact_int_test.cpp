@@ -10,6 +10,7 @@
 #include <random>
 
 #include "algorithms/hlr/face_occluders.hpp"
+#include "support/torus.hpp"
 
 using namespace hlr;
 
@@ -147,26 +148,11 @@ namespace {
 // every coordinate times k; drawn orthographic along two directions and in perspective from an
 // eye in the hole and one 1/2048 below the box's bottom face, all edges with intersection lines.
 std::string curved_at(const Rational& k) {
-  const int N = 24, M = 12;
-  std::vector<Point3> vs;
-  std::vector<Face> fs;
-  auto r = [&](double x) -> Rational {
+  const Polyhedron torus = test::torus_mesh(24, 12, 3, 1, [&](double x) -> Rational {
     Rational q(static_cast<long>(std::lround(x * 1024)), 1024);
     q.canonicalize();
     return q * k;
-  };
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < M; ++j) {
-      const double u = 2 * M_PI * i / N, w = 2 * M_PI * j / M;
-      vs.emplace_back(r((3 + std::cos(w)) * std::cos(u)), r((3 + std::cos(w)) * std::sin(u)), r(std::sin(w)));
-    }
-  auto at = [&](int i, int j) { return (i % N) * M + (j % M); };
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < M; ++j) {
-      fs.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      fs.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  Polyhedron torus(vs, fs);
+  });
   Polyhedron box = make_box(Point3(Rational(5, 2) * k, Rational(-1, 2) * k, Rational(-2) * k), Point3(Rational(7, 2) * k, Rational(1, 2) * k, 2 * k));
   LineOptions o;
   o.edges = EdgeSelection::All;
