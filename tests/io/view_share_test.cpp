@@ -10,6 +10,7 @@
 // between views (the crease angle, every edge classified or not).
 #include <gtest/gtest.h>
 
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -99,16 +100,25 @@ std::string first_difference(const std::string& a, const std::string& b) {
   }
 }
 
+// The drawing's text, or the error a view gives (an eye inside a solid).
+std::string drawn(const std::vector<Scene>& scenes, const RenderOptions& o) {
+  try {
+    return text(render(scenes, o));
+  } catch (const std::exception& e) {
+    return std::string("error: ") + e.what();
+  }
+}
+
 // Each view alone, then all of them through one share: the same texts. Returns the number
 // policy the shared work was done on (exact_int.hpp: 0 64-bit, 1 128-bit, 2 multi-limb, 3 GMP).
 int check_alike(const std::vector<Scene>& scenes, const std::vector<RenderOptions>& options, const std::string& what) {
   auto share = std::make_shared<ViewShare>();
   for (std::size_t i = 0; i < options.size(); ++i) {
     SCOPED_TRACE(what + ", view " + std::to_string(i));
-    const std::string alone = text(render(scenes, options[i]));
+    const std::string alone = drawn(scenes, options[i]);
     RenderOptions o = options[i];
     o.share = share;
-    const std::string together = text(render(scenes, o));
+    const std::string together = drawn(scenes, o);
     EXPECT_EQ(first_difference(together, alone), "");
   }
   EXPECT_TRUE(share->scenes && share->faces && share->faces->prepared) << what << ": no view shared its work";
@@ -135,6 +145,55 @@ TEST(ViewShare, EveryViewDrawsAsItDoesAlone) {
     RenderOptions all;
     all.lines.edges = EdgeSelection::All;
     EXPECT_EQ(check_alike(scenes, each_view(all), "every edge at scale " + k.get_str()), policy);
+  }
+}
+
+// Random boxes and tetrahedra on a small integer grid (touching, coplanar, nested and
+// interpenetrating often), some turned inside out or left open, seen along axes, edges and
+// general directions and from eyes among them.
+TEST(ViewShare, RandomScenesDrawAsAlone) {
+  std::mt19937 rng(20261204);
+  auto coord = [&](int hi) { return Rational(static_cast<long>(rng() % (hi + 1))); };
+  for (int scene = 0; scene < 40; ++scene) {
+    Scene s;
+    s.file = "(test)";
+    const int n = 2 + static_cast<int>(rng() % 4);
+    for (int b = 0; b < n; ++b) {
+      const auto make = [&]() -> Polyhedron {
+        if (rng() % 2) {
+          const Point3 lo(coord(3), coord(3), coord(3));
+          return make_box(lo, Point3(lo.x() + 1 + coord(2), lo.y() + 1 + coord(2), lo.z() + 1 + coord(2)));
+        }
+        std::vector<Point3> v;
+        do {
+          v = {Point3(coord(4), coord(4), coord(4)), Point3(coord(4), coord(4), coord(4)), Point3(coord(4), coord(4), coord(4)),
+               Point3(coord(4), coord(4), coord(4))};
+        } while (dot(v[1] - v[0], cross(v[2] - v[0], v[3] - v[0])) == 0);
+        if (dot(v[1] - v[0], cross(v[2] - v[0], v[3] - v[0])) > 0) std::swap(v[1], v[2]);
+        return Polyhedron(v, {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}});
+      };
+      Polyhedron p = make();
+      const unsigned kind = rng() % 6;
+      if (kind == 0) p = turned(p);
+      if (kind == 1) p = Polyhedron(p.vertices(), std::vector<Face>(p.faces().begin() + 1, p.faces().end()));
+      s.bodies.push_back(SceneBody{"b" + std::to_string(b), "(test)", p, identity_transform(), {}, {}});
+    }
+    std::vector<RenderOptions> options;
+    for (int v = 0; v < 5; ++v) {
+      RenderOptions o;
+      if (rng() % 2) o.lines.edges = EdgeSelection::All;
+      if (v == 2) {
+        auto third = [&] { return Rational(static_cast<long>(rng() % 16), 3); };
+        o.view.eye = Point3(third(), third(), third());
+        o.view.target = Point3(2, 2, 2);
+      } else {
+        static const int dirs[][3] = {{0, 0, 1}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {-1, 2, 3}, {2, -3, 1}, {0, 1, -1}};
+        const auto& d = dirs[rng() % 7];
+        o.view.direction = Vector3(d[0], d[1], d[2]);
+      }
+      options.push_back(o);
+    }
+    check_alike({s}, options, "random scene " + std::to_string(scene));
   }
 }
 
