@@ -1,18 +1,30 @@
-// Lines that coincide on the page drawn once (see coincident_lines.hpp). A uniform grid of the
-// kept segments' boxes finds the candidates; for a segment pq and a kept segment ab nearly
-// parallel to it, the part of pq covered is where the foot of its point falls on ab and its
-// distance to ab's line is at most the tolerance (the distance is linear along pq).
+// Lines that coincide on the page drawn once (see coincident_lines.hpp; docs/design.md, "Lines
+// that coincide on the page"). Strokes are taken in priority order; for a segment pq and a
+// kept segment ab nearly parallel to it, the part of pq covered is where the foot of its point
+// falls on ab and its distance to ab's line is at most the tolerance (the distance is linear
+// along pq). The kept segments are found in a grid of cells a few tolerances wide and of
+// direction classes: a segment looks only at the kept segments in the cells near it whose
+// direction lies within the angle of its own, so a drawing denser than the pen costs about the
+// same per segment as a sparse one.
 #include "algorithms/plot/coincident_lines.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <unordered_map>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
 #include <utility>
 
 namespace hlr {
 namespace {
 
 constexpr double kMaxSin = 0.0523;  // 3 degrees
+// The direction classes: a pseudo-angle of the direction modulo a half turn, cut in kBins
+// classes; a segment looks at the classes of the directions within kReach of its own (the 3
+// degrees and a margin for rounding).
+constexpr int kBins = 64;
+const double kReachCos = std::cos(3.2 * M_PI / 180), kReachSin = std::sin(3.2 * M_PI / 180);
 
 bool takes_part(LineKind k) {
   return !is_tone(k) && k != LineKind::Hatch && k != LineKind::SectionLine && k != LineKind::SectionMark && k != LineKind::Overhead;
@@ -31,32 +43,107 @@ struct Seg {
   Point2 a, b;
 };
 
-class Grid {
+double length(const Point2& a, const Point2& b) { return std::hypot(b[0] - a[0], b[1] - a[1]); }
+
+// A stroke's segments (a closed stroke's last one runs back to its first point).
+std::size_t segment_count(const Stroke& s) {
+  const std::size_t n = s.points.size();
+  return n < 2 ? 0 : n - 1 + (s.closed && n > 2 ? 1 : 0);
+}
+Seg segment(const Stroke& s, std::size_t i) { return {s.points[i], s.points[(i + 1) % s.points.size()]}; }
+
+// The direction class of (dx, dy): the pseudo-angle 1 - dx / (|dx| + dy) of the direction
+// turned into the upper half plane grows with the angle from 0 to 2 over a half turn.
+int direction_class(double dx, double dy) {
+  if (dy < 0 || (dy == 0 && dx < 0)) dx = -dx, dy = -dy;
+  const double p = 1 - dx / (std::fabs(dx) + dy);
+  return std::clamp(static_cast<int>(p * (kBins / 2)), 0, kBins - 1);
+}
+
+// Whether the covers' direction test can be trusted to the class of a direction: its squared
+// length neither underflows nor overflows.
+bool sound_direction(double len2) { return len2 >= 1e-200 && len2 <= 1e200; }
+
+// The kept segments by cell and direction class. A segment is entered, piece by piece (no
+// piece longer than a cell), in the cells its pieces' boxes meet; a look pads the boxes by the
+// reach.
+class KeptGrid {
  public:
-  explicit Grid(double cell) : cell_(cell) {}
-  template <class F>
-  void visit(const Point2& a, const Point2& b, double pad, F&& f) const {
-    const long x0 = key(std::min(a[0], b[0]) - pad), x1 = key(std::max(a[0], b[0]) + pad);
-    const long y0 = key(std::min(a[1], b[1]) - pad), y1 = key(std::max(a[1], b[1]) + pad);
-    for (long x = x0; x <= x1; ++x)
-      for (long y = y0; y <= y1; ++y) {
-        auto it = cells_.find(pack(x, y));
-        if (it != cells_.end())
-          for (std::size_t i : it->second) f(i);
-      }
+  KeptGrid(const std::array<double, 4>& box, double min_cell, std::size_t segments) : x0_(box[0]), y0_(box[1]) {
+    const double w = box[2] - box[0], h = box[3] - box[1], n = static_cast<double>(segments + 1);
+    cell_ = std::max({min_cell, std::sqrt(w * h / n), std::max(w, h) / n});
+    for (;;) {
+      nx_ = static_cast<std::size_t>(std::min(w / cell_, 1e9)) + 1, ny_ = static_cast<std::size_t>(std::min(h / cell_, 1e9)) + 1;
+      if (nx_ * ny_ * kBins <= 2 * segments + (1u << 20) || !(cell_ < INFINITY)) break;
+      cell_ *= 1.25;
+    }
+    heads_.assign(nx_ * ny_ * kBins, kNone);
   }
-  void add(const Point2& a, const Point2& b, double pad, std::size_t id) {
-    const long x0 = key(std::min(a[0], b[0]) - pad), x1 = key(std::max(a[0], b[0]) + pad);
-    const long y0 = key(std::min(a[1], b[1]) - pad), y1 = key(std::max(a[1], b[1]) + pad);
-    for (long x = x0; x <= x1; ++x)
-      for (long y = y0; y <= y1; ++y) cells_[pack(x, y)].push_back(id);
+
+  void add(const Seg& s, std::uint32_t id) {
+    const double dx = s.b[0] - s.a[0], dy = s.b[1] - s.a[1], len2 = dx * dx + dy * dy;
+    if (!(len2 > 0)) return;  // covers nothing
+    const bool sound = sound_direction(len2);
+    const int c = sound ? direction_class(dx, dy) : 0;
+    cells(s, 0, [&](std::size_t cell) {
+      for (int k = sound ? c : 0; k <= (sound ? c : kBins - 1); ++k) {
+        std::uint32_t& head = heads_[cell * kBins + k];
+        entries_.push_back({id, head});
+        head = static_cast<std::uint32_t>(entries_.size() - 1);
+      }
+    });
+    if (entries_.size() >= kNone) throw std::length_error("merge of coincident lines: too many segments");
+  }
+
+  // f(id) for every kept segment in a cell within `reach` of s whose direction class lies
+  // within the reach angle of s's (some more than once).
+  template <class F>
+  void visit(const Seg& s, double reach, F&& f) const {
+    const double dx = s.b[0] - s.a[0], dy = s.b[1] - s.a[1], len2 = dx * dx + dy * dy;
+    if (!(len2 > 0)) return;  // covered by nothing
+    int first = 0, last = kBins - 1;
+    if (sound_direction(len2)) {
+      first = direction_class(dx * kReachCos + dy * kReachSin, dy * kReachCos - dx * kReachSin);
+      last = direction_class(dx * kReachCos - dy * kReachSin, dy * kReachCos + dx * kReachSin);
+    }
+    cells(s, reach, [&](std::size_t cell) {
+      for (int k = first;; k = (k + 1) % kBins) {
+        for (std::uint32_t e = heads_[cell * kBins + k]; e != kNone; e = entries_[e].next) f(entries_[e].id);
+        if (k == last) break;
+      }
+    });
   }
 
  private:
-  long key(double v) const { return static_cast<long>(std::floor(v / cell_)); }
-  static long long pack(long x, long y) { return (static_cast<long long>(x) << 32) ^ static_cast<long long>(static_cast<std::uint32_t>(y)); }
-  double cell_;
-  std::unordered_map<long long, std::vector<std::size_t>> cells_;
+  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  struct Entry {
+    std::uint32_t id, next;
+  };
+  template <class F>
+  void cells(const Seg& s, double pad, F&& f) const {
+    const Point2 &a = s.a, &b = s.b;
+    const double len = length(a, b);
+    const std::size_t parts = len > cell_ ? static_cast<std::size_t>(std::min(std::ceil(len / cell_), 1e9)) : 1;
+    for (std::size_t k = 0; k < parts; ++k) {
+      const double t0 = static_cast<double>(k) / static_cast<double>(parts), t1 = static_cast<double>(k + 1) / static_cast<double>(parts);
+      const double px = a[0] + t0 * (b[0] - a[0]), py = a[1] + t0 * (b[1] - a[1]);
+      const double qx = a[0] + t1 * (b[0] - a[0]), qy = a[1] + t1 * (b[1] - a[1]);
+      const std::size_t x0 = key(std::min(px, qx) - pad, x0_, nx_), x1 = key(std::max(px, qx) + pad, x0_, nx_);
+      const std::size_t y0 = key(std::min(py, qy) - pad, y0_, ny_), y1 = key(std::max(py, qy) + pad, y0_, ny_);
+      for (std::size_t x = x0; x <= x1; ++x)
+        for (std::size_t y = y0; y <= y1; ++y) f(x * ny_ + y);
+    }
+  }
+  std::size_t key(double v, double origin, std::size_t n) const {
+    const double c = std::floor((v - origin) / cell_);
+    if (!(c > 0)) return 0;  // also NaN
+    return c >= static_cast<double>(n - 1) ? n - 1 : static_cast<std::size_t>(c);
+  }
+
+  double x0_, y0_, cell_ = 1;
+  std::size_t nx_ = 1, ny_ = 1;
+  std::vector<std::uint32_t> heads_;  // per cell and class: its last entry
+  std::vector<Entry> entries_;
 };
 
 // The parameter interval of pq within `tol` of ab, alongside it and nearly parallel (empty:
@@ -89,99 +176,142 @@ std::pair<double, double> covered(const Point2& p, const Point2& q, const Seg& s
   return {lo, hi};
 }
 
+// The covered runs of one segment: the union of the covers; a run shorter than the tolerance
+// inside the segment is a touch (lines that cross at a small angle), not a line drawn twice.
+std::vector<std::pair<double, double>> runs_of(std::vector<std::pair<double, double>>& covers, double len, double tol) {
+  std::sort(covers.begin(), covers.end());
+  std::vector<std::pair<double, double>> runs;
+  for (const auto& c : covers)
+    if (!runs.empty() && c.first <= runs.back().second + 1e-12) runs.back().second = std::max(runs.back().second, c.second);
+    else runs.push_back(c);
+  std::vector<std::pair<double, double>> kept;
+  for (const auto& r : runs)
+    if (!((r.second - r.first) * len < tol && r.first > 0 && r.second < 1)) kept.push_back(r);
+  return kept;
+}
+
+// The merge, stroke by stroke in priority order; what a stroke keeps is kept for the strokes
+// after it.
+class Merge {
+ public:
+  // The reach: a margin of half the tolerance over it for the covers' rounding (and 1e-12 of the
+  // drawing's size, for a tolerance far below it).
+  Merge(const std::array<double, 4>& box, std::size_t segments, double tol)
+      : tol_(tol),
+        reach_(1.5 * tol + 1e-12 * std::max({std::fabs(box[0]), std::fabs(box[1]), std::fabs(box[2]), std::fabs(box[3])})),
+        grid_(box, 2 * reach_, segments) {}
+
+  // The strokes s leaves drawn, s itself when nothing covers it.
+  std::vector<Stroke> stroke(Stroke&& s) {
+    const std::size_t n = segment_count(s);
+    std::vector<std::vector<std::pair<double, double>>> covers(n);
+    bool touched = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Seg g = segment(s, i);
+      const std::array<double, 4> near{std::min(g.a[0], g.b[0]) - reach_, std::min(g.a[1], g.b[1]) - reach_, std::max(g.a[0], g.b[0]) + reach_,
+                                       std::max(g.a[1], g.b[1]) + reach_};
+      ++look_;
+      grid_.visit(g, reach_, [&](std::uint32_t k) {
+        const Seg& e = kept_[k];
+        // A cover needs a point of g within the tolerance of e: their boxes meet, padded.
+        if (std::max(e.a[0], e.b[0]) < near[0] || std::min(e.a[0], e.b[0]) > near[2] || std::max(e.a[1], e.b[1]) < near[1] ||
+            std::min(e.a[1], e.b[1]) > near[3] || looked_[k] == look_)
+          return;
+        looked_[k] = look_;
+        auto c = covered(g.a, g.b, e, tol_);
+        if (c.second > c.first) covers[i].push_back(c);
+      });
+      if (!covers[i].empty()) covers[i] = runs_of(covers[i], length(g.a, g.b), tol_);
+      touched = touched || !covers[i].empty();
+    }
+    std::vector<Stroke> out;
+    if (!touched) out.push_back(std::move(s));
+    else out = split(s, covers);
+    for (const Stroke& o : out)  // what is drawn is kept for the strokes after it
+      for (std::size_t i = 0; i < segment_count(o); ++i) {
+        kept_.push_back(segment(o, i));
+        looked_.push_back(0);
+        grid_.add(kept_.back(), static_cast<std::uint32_t>(kept_.size() - 1));
+      }
+    return out;
+  }
+  const CoincidentStats& stats() const { return st_; }
+
+ private:
+  // The parts of s outside the covered runs, as strokes; parts shorter than the tolerance go.
+  std::vector<Stroke> split(const Stroke& s, const std::vector<std::vector<std::pair<double, double>>>& covers) {
+    std::vector<Stroke> out;
+    Stroke cur;
+    auto flush = [&] {
+      double len = 0;
+      for (std::size_t i = 1; i < cur.points.size(); ++i) len += length(cur.points[i - 1], cur.points[i]);
+      if (cur.points.size() >= 2 && len >= tol_) out.push_back(std::move(cur));
+      else if (cur.points.size() >= 2) ++st_.pieces_removed, st_.length_removed += len;
+      cur = Stroke{};
+    };
+    for (std::size_t i = 0; i < covers.size(); ++i) {
+      const Seg g = segment(s, i);
+      const Point2 &p = g.a, &q = g.b;
+      const double len = length(p, q);
+      auto point = [&](double t) { return Point2{p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])}; };
+      auto keep_part = [&](double t0, double t1) {
+        if (cur.points.empty() || cur.points.back() != point(t0)) {
+          flush();
+          cur.points.push_back(point(t0));
+        }
+        cur.points.push_back(point(t1));
+      };
+      double at = 0;
+      for (const auto& [c0, c1] : covers[i]) {
+        if (c1 <= at) continue;
+        if (c0 > at) keep_part(at, c0);
+        st_.length_removed += (c1 - std::max(c0, at)) * len;
+        ++st_.pieces_removed;
+        at = c1;
+        flush();
+      }
+      if (at < 1) keep_part(at, 1);
+    }
+    flush();
+    return out;
+  }
+
+  double tol_, reach_;
+  KeptGrid grid_;
+  std::vector<Seg> kept_;
+  std::vector<std::uint32_t> looked_;  // per kept segment: the last look that covered with it
+  std::uint32_t look_ = 0;
+  CoincidentStats st_;
+};
+
 }  // namespace
 
 CoincidentStats merge_coincident_lines(Plot& plot, double tol) {
-  CoincidentStats st;
-  if (!(tol > 0) || !std::isfinite(tol)) return st;
+  if (!(tol > 0) || !std::isfinite(tol)) return {};
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < plot.layers.size(); ++i)
     if (takes_part(plot.layers[i].kind)) order.push_back(i);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(plot.layers[a]) < rank(plot.layers[b]); });
-  const double extent = std::max(plot.bounds[2] - plot.bounds[0], plot.bounds[3] - plot.bounds[1]);
-  Grid grid(std::max(8 * tol, extent / 4096));
-  std::vector<Seg> kept;
-  for (std::size_t li : order) {
-    PlotLayer& layer = plot.layers[li];
-    std::vector<Stroke> out;
-    for (const Stroke& s : layer.strokes) {
-      std::vector<Point2> pts = s.points;
-      if (s.closed && pts.size() > 2) pts.push_back(pts.front());
-      const std::size_t first_out = out.size();
-      std::vector<std::vector<std::pair<double, double>>> covers(pts.size() > 1 ? pts.size() - 1 : 0);
-      bool touched = false;
-      for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-        const Point2 &p = pts[i], &q = pts[i + 1];
-        const double len = std::hypot(q[0] - p[0], q[1] - p[1]);
-        grid.visit(p, q, tol, [&](std::size_t k) {
-          auto c = covered(p, q, kept[k], tol);
-          if (c.second > c.first) covers[i].push_back(c);
-        });
-        // The covered runs: the union of the covers; a run shorter than the tolerance inside
-        // the segment is a touch (lines that cross at a small angle), not a line drawn twice.
-        std::sort(covers[i].begin(), covers[i].end());
-        std::vector<std::pair<double, double>> runs;
-        for (const auto& c : covers[i])
-          if (!runs.empty() && c.first <= runs.back().second + 1e-12) runs.back().second = std::max(runs.back().second, c.second);
-          else runs.push_back(c);
-        std::vector<std::pair<double, double>> kept_runs;
-        for (const auto& r : runs)
-          if (!((r.second - r.first) * len < tol && r.first > 0 && r.second < 1)) kept_runs.push_back(r);
-        covers[i] = std::move(kept_runs);
-        touched = touched || !covers[i].empty();
-      }
-      if (!touched) {
-        out.push_back(s);
-      } else {
-        Stroke cur;
-        auto flush = [&] {
-          double len = 0;
-          for (std::size_t i = 1; i < cur.points.size(); ++i)
-            len += std::hypot(cur.points[i][0] - cur.points[i - 1][0], cur.points[i][1] - cur.points[i - 1][1]);
-          if (cur.points.size() >= 2 && len >= tol) out.push_back(std::move(cur));
-          else if (cur.points.size() >= 2) ++st.pieces_removed, st.length_removed += len;
-          cur = Stroke{};
-        };
-        for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-          const Point2 &p = pts[i], &q = pts[i + 1];
-          const double len = std::hypot(q[0] - p[0], q[1] - p[1]);
-          auto point = [&](double t) { return Point2{p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])}; };
-          auto keep_part = [&](double t0, double t1) {
-            if (cur.points.empty() || cur.points.back() != point(t0)) {
-              flush();
-              cur.points.push_back(point(t0));
-            }
-            cur.points.push_back(point(t1));
-          };
-          double at = 0;
-          for (const auto& [c0, c1] : covers[i]) {
-            if (c1 <= at) continue;
-            if (c0 > at) keep_part(at, c0);
-            st.length_removed += (c1 - std::max(c0, at)) * len;
-            ++st.pieces_removed;
-            at = c1;
-            flush();
-          }
-          if (at < 1) keep_part(at, 1);
-        }
-        flush();
-      }
-      for (std::size_t o = first_out; o < out.size(); ++o) {  // what is drawn is kept for the strokes after it
-        std::vector<Point2> q = out[o].points;
-        if (out[o].closed && q.size() > 2) q.push_back(q.front());
-        for (std::size_t k = 0; k + 1 < q.size(); ++k) {
-          kept.push_back({q[k], q[k + 1]});
-          grid.add(q[k], q[k + 1], tol, kept.size() - 1);
-        }
-      }
+  std::array<double, 4> box{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  std::size_t segments = 0;
+  for (std::size_t li : order)
+    for (const Stroke& s : plot.layers[li].strokes) {
+      segments += segment_count(s);
+      for (const Point2& p : s.points) box = {std::min(box[0], p[0]), std::min(box[1], p[1]), std::max(box[2], p[0]), std::max(box[3], p[1])};
     }
-    layer.strokes = std::move(out);
+  if (!(box[0] <= box[2] && box[1] <= box[3])) box = {0, 0, 0, 0};
+  Merge merge(box, segments, tol);
+  for (std::size_t li : order) {
+    std::vector<Stroke> out;
+    for (Stroke& s : plot.layers[li].strokes)
+      for (Stroke& o : merge.stroke(std::move(s))) out.push_back(std::move(o));
+    plot.layers[li].strokes = std::move(out);
   }
   std::vector<PlotLayer> layers;
   for (PlotLayer& l : plot.layers)
     if (!l.strokes.empty()) layers.push_back(std::move(l));
   plot.layers = std::move(layers);
-  return st;
+  return merge.stats();
 }
 
 }  // namespace hlr
