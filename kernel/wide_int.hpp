@@ -93,13 +93,11 @@ class WideInt {
     if (an > A || bn > B) __builtin_unreachable();  // sizes never exceed the widths
     int n = an + bn;
     if (n <= N) {  // straight into the result
-      if (an >= bn) mpn_mul(r.limb_, a.limb_, an, b.limb_, bn);
-      else mpn_mul(r.limb_, b.limb_, bn, a.limb_, an);
+      multiply(r.limb_, a.limb_, an, b.limb_, bn);
       if (r.limb_[n - 1] == 0) --n;
     } else {
       mp_limb_t t[A + B];
-      if (an >= bn) mpn_mul(t, a.limb_, an, b.limb_, bn);
-      else mpn_mul(t, b.limb_, bn, a.limb_, an);
+      multiply(t, a.limb_, an, b.limb_, bn);
       if (t[n - 1] == 0) --n;
       check(n);
       std::memcpy(r.limb_, t, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
@@ -125,6 +123,27 @@ class WideInt {
   template <int M>
   friend class WideInt;
 
+  // r[0, an + bn) = a·b (an, bn >= 1; r apart from both). Up to 3 limbs a side, schoolbook
+  // rows of 64 x 64 -> 128-bit products in line (mpn_mul's call and dispatch cost more than
+  // the work at these sizes); beyond, mpn_mul.
+  static void multiply(mp_limb_t* r, const mp_limb_t* a, int an, const mp_limb_t* b, int bn) {
+    static_assert(sizeof(mp_limb_t) == 8, "64-bit limbs");
+    if (an > 3 || bn > 3) {
+      if (an >= bn) mpn_mul(r, a, an, b, bn);
+      else mpn_mul(r, b, bn, a, an);
+      return;
+    }
+    using U = unsigned __int128;
+    for (int j = 0; j < bn; ++j) {
+      mp_limb_t carry = 0;
+      for (int i = 0; i < an; ++i) {  // at most (2^64 - 1)^2 + 2 (2^64 - 1) = 2^128 - 1: no overflow
+        const U t = static_cast<U>(a[i]) * b[j] + (j == 0 ? 0 : r[i + j]) + carry;
+        r[i + j] = static_cast<mp_limb_t>(t);
+        carry = static_cast<mp_limb_t>(t >> 64);
+      }
+      r[an + j] = carry;
+    }
+  }
   void copy_limbs(const mp_limb_t* p, int n) { std::memcpy(limb_, p, sizeof(mp_limb_t) * static_cast<std::size_t>(n)); }
   static void check(int n) {
     if (n > N) throw std::logic_error("WideInt: a value exceeds its proven bound");

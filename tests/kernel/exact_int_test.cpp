@@ -108,6 +108,9 @@ TEST(ExactInt, WideIntegersAgreeWithGmp) {
     EXPECT_EQ(W4::compare_products(wa, wb, wc, wd), (want > 0) - (want < 0));
     EXPECT_EQ(W8::compare_products(pab, W8(1), pcd, W8(1)), (want > 0) - (want < 0));
     EXPECT_EQ(W4::compare_products(wa, wb, wa, wb), 0);
+    // Products in line (up to 3 limbs a side) and by mpn_mul (4 limbs).
+    const mpz_class e = random_value(rng, 4), f = random_value(rng, 4);
+    EXPECT_EQ(W8::product(W4(e.get_mpz_t()), W4(f.get_mpz_t())).to_mpz(), e * f) << e << " * " << f;
   }
   mpz_class top = 1;
   top <<= 255;
