@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <utility>
 
 namespace hlr {
@@ -89,7 +90,11 @@ std::vector<HatchLine> clip_lines(const std::vector<Point3>& pts, const std::vec
   const double q = std::ldexp(1.0, std::ilogb(size) - 30);
   std::vector<HatchLine> exact;
   exact.reserve(lines.size());
-  for (const ApproxLine& a : lines) exact.push_back(HatchLine{snap(a.a, plane, q), snap(a.b, plane, q), {}});
+  for (const ApproxLine& a : lines) {
+    for (double v : {a.a[0], a.a[1], a.a[2], a.b[0], a.b[1], a.b[2]})
+      if (!std::isfinite(v)) throw std::domain_error("hatching: a hatch line's end is not a finite point of the region's plane");
+    exact.push_back(HatchLine{snap(a.a, plane, q), snap(a.b, plane, q), {}});
+  }
   return clip_exact_lines(pts, boundary, plane, std::move(exact));
 }
 

@@ -433,11 +433,13 @@ bool shares_views(const std::vector<Scene>& scenes, const RenderOptions& o) {
 
 }  // namespace
 
+bool reads_shared_scenes(const RenderOptions& o) { return o.share && o.share->scenes && shares_views(*o.share->scenes, o); }
+
 RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
   if (!(o.near > 0)) throw std::invalid_argument("--near must be positive (a fraction of the distance from the eye to the target)");
   RenderResult r;
-  const bool sharing = shares_views(o.share && o.share->scenes ? *o.share->scenes : scenes, o);
-  const bool shared = sharing && o.share->scenes;  // repaired by a view before
+  const bool shared = reads_shared_scenes(o);  // repaired by a view before
+  const bool sharing = shared || shares_views(scenes, o);
   auto owned = shared ? o.share->scenes : std::make_shared<std::vector<Scene>>(std::move(scenes));
   r.scenes = owned;
   std::vector<const Polyhedron*> polys;

@@ -203,6 +203,10 @@ class RenderBodyError : public std::runtime_error {
 /// Throws RenderBodyError, std::invalid_argument (bad view or options).
 RenderResult render(std::vector<Scene> scenes, const RenderOptions& options = {});
 
+/// Whether render(scenes, options) would draw options.share's scenes, repaired by a view
+/// before, and not look at the scenes it is given (they need not be copied for it).
+bool reads_shared_scenes(const RenderOptions& options);
+
 /// The shaded regions of a surfaces render in the 2D stage's drawing coordinates (the same
 /// projector as the lines), one fill per region of one colour (a priority render: one fill per
 /// polygon of the list, in the order painted); also widens the plot's bounds.

@@ -61,6 +61,14 @@ std::function<std::array<double, 3>(double, double)> lifter(const Projector& pro
   };
 }
 
+// Whether the view sees plane h edge-on, exactly: the orthographic direction lies in it, or the
+// eye does. Such a cap covers no area of the page (and a page point lifted onto its plane would
+// be at infinity).
+bool seen_edge_on(const Plane& h, const Camera& cam) {
+  if (cam.perspective) return h.value(cam.eye) == 0;
+  return h.a() * cam.direction.x() + h.b() * cam.direction.y() + h.c() * cam.direction.z() == 0;
+}
+
 // The parts of a hatch line inside its cap as extra lines of the per-face pass, in chunks of
 // about 1/32 of the cap's size at dyadic parameters (short lines meet few occluders' boxes; their
 // ends keep small denominators), each with the part of it inside the cap (its own parameters).
@@ -269,6 +277,7 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
     for (const auto& [plane, faces] : caps) {
       const std::vector<std::array<int, 2>> border = cap_border(body.body, faces);
       const Plane& h = body.body.planes()[faces[0]];
+      if (seen_edge_on(h, r.camera)) continue;  // no area on the page, nothing to hatch
       std::array<double, 4> box = {INFINITY, INFINITY, -INFINITY, -INFINITY};
       double lo3[3] = {INFINITY, INFINITY, INFINITY}, hi3[3] = {-INFINITY, -INFINITY, -INFINITY};
       for (const auto& e : border) {

@@ -180,7 +180,9 @@ RenderedViews render_request(std::vector<Scene> scenes, const RenderRequest& r, 
     options.segments_only = extras.segments_only;
     options.share = share;
     progress(out.names.empty() ? "hidden lines" : "hidden lines, view " + out.names[i]);
-    out.results[i] = render(i + 1 < n_views ? scenes : std::move(scenes), options);
+    // A view that draws the share's scenes needs no copy of them.
+    if (reads_shared_scenes(options)) out.results[i] = render({}, options);
+    else out.results[i] = render(i + 1 < n_views ? scenes : std::move(scenes), options);
   }
   return out;
 }

@@ -13,6 +13,7 @@
 #include "algorithms/picture/picture_plane.hpp"
 #include "algorithms/sections/section_cut.hpp"
 #include "io/pipeline/render.hpp"
+#include "io/pipeline/section.hpp"
 #include "io/readers/mesh_reader.hpp"
 #include "support/numbers.hpp"
 
@@ -158,6 +159,38 @@ TEST(SectionRender, ABodyThatTakesNoCutStaysWhole) {
   int crossing = 0;
   for (const Segment& s : r.drawing.segments) crossing += s.kind == Segment::Kind::Intersection;
   EXPECT_GE(crossing, 4);
+}
+
+// A cap seen edge-on (the view's direction in its plane, or the eye in it) shows no area: it
+// takes no hatch, and no page point is lifted onto it (the lift divides by the view's
+// component along the cap's normal). Views along each axis plane and the eye in the plane, for
+// caps of each axis and an oblique one; a view just off the plane hatches.
+TEST(SectionRender, CapsSeenEdgeOnTakeNoHatch) {
+  const std::vector<Box> boxes = {{{0, 0, 0}, {4, 4, 4}, true}};
+  const std::vector<std::pair<Plane, std::vector<Vector3>>> cases = {{Plane(1, 0, 0, -2), {Vector3(0, 1, 0), Vector3(0, 0, 1), Vector3(0, 3, -2)}},
+                                                                     {Plane(0, 1, 0, -2), {Vector3(1, 0, 0), Vector3(0, 0, -1), Vector3(5, 0, 1)}},
+                                                                     {Plane(0, 0, 1, -2), {Vector3(1, 0, 0), Vector3(0, 1, 0), Vector3(-1, 7, 0)}},
+                                                                     {Plane(1, 1, 0, -4), {Vector3(1, -1, 0), Vector3(0, 0, 1), Vector3(2, -2, 3)}}};
+  for (const auto& [plane, along] : cases) {
+    for (const Vector3& v : along) {
+      RenderOptions o;
+      o.section = {plane};
+      o.view.direction = v;
+      const RenderResult r = render({scene_of(boxes)}, o);
+      EXPECT_TRUE(cap_hatching(r, 10, 0.35, 1).segments.empty()) << plane.a() << " " << plane.b() << " " << plane.c() << " seen along " << v;
+    }
+    RenderOptions persp;  // the eye in the cap's plane, outside the box
+    persp.section = {plane};
+    const Point3 eye = plane.c() != 0 ? P(9, 11, 2) : (plane.b() != 0 && plane.a() == 0 ? P(9, 2, 13) : (plane.b() != 0 ? P(-3, 7, 5) : P(2, 9, 13)));
+    ASSERT_EQ(plane.value(eye), 0);
+    persp.view.eye = eye;
+    persp.view.target = P(2, 2, 2);
+    EXPECT_TRUE(cap_hatching(render({scene_of(boxes)}, persp), 10, 0.35, 1).segments.empty()) << "eye " << eye;
+  }
+  RenderOptions off;  // just off the plane x = 2: the cap shows, thin, and is hatched
+  off.section = {Plane(1, 0, 0, -2)};
+  off.view.direction = Vector3(Rational(1, 20), Rational(1), Rational(0));
+  EXPECT_FALSE(cap_hatching(render({scene_of(boxes)}, off), 10, 0.35, 1).segments.empty());
 }
 
 TEST(SectionRender, RemovingEveryBodyIsAnError) {
