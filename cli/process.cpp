@@ -17,6 +17,7 @@
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -144,6 +145,22 @@ void use_number_pool() {
   const char* mode = std::getenv("HLR_MALLOC");
   if (mode && std::strcmp(mode, "system") == 0) return;
   gmp_pool::install(true);
+#endif
+}
+
+void report_arithmetic_faults() {
+#ifndef HLR_SANITIZED  // the sanitizers report a fault with its stack themselves
+  struct sigaction action {};
+  action.sa_handler = [](int) {
+    static const char message[] =
+        "hlr: internal error: an arithmetic fault (a number that is not finite reached an exact conversion, or a division by "
+        "zero); no file was written. Please report it with the command line.\n";
+    const ssize_t written = write(STDERR_FILENO, message, sizeof(message) - 1);
+    (void)written;
+    _exit(1);
+  };
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGFPE, &action, nullptr);
 #endif
 }
 

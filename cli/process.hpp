@@ -17,6 +17,12 @@ void use_huge_pages(char** argv);
 /// HLR_MALLOC=system or a sanitizer build. Call first thing, before any thread starts.
 void use_number_pool();
 
+/// Turns an arithmetic fault (SIGFPE: GMP's answer to a conversion of a number that is not
+/// finite, or an integer division by zero) into a message and exit code 1 instead of a crash
+/// (not in sanitizer builds, which report it with its stack). The outputs are written whole or
+/// not at all, so none is left half-written.
+void report_arithmetic_faults();
+
 /// Ends the process with `code` once the output is written: flushes the standard streams and
 /// exits without destroying what is still allocated (freeing a 1M-triangle model piece by piece
 /// took 0.2 s after the SVG was on disk). Sanitizer builds return normally instead, so that the
