@@ -15,15 +15,15 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
-#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <iostream>
+#include <iterator>
 #include <string>
 
 #include "kernel/gmp_pool.hpp"
