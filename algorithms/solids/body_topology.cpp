@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <new>
+#include <stdexcept>
 
 #include "algorithms/support/parallel.hpp"
 #include "algorithms/support/parallel_scan.hpp"
@@ -18,6 +19,7 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
   // The large arrays' pages are touched on all cores before one thread fills them in order.
   t.face_offset = parallel_offsets<int>(faces.size(), [&](std::size_t f) { return faces[f].size(); }, loop);
   const std::vector<int>& fo = t.face_offset;
+  if (fo.back() >= (1 << 30)) throw std::length_error("body topology: more than 2^30 face corners in one body");
   t.slot_third.resize(fo.back());  // fresh pages: written (and so touched) on all cores
   t.slot_edge.resize(fo.back());
   loop.for_each(t.slot_edge.size(), 1 << 16, [&](std::size_t i) { t.slot_third[i] = t.slot_edge[i] = -1; });
@@ -68,7 +70,9 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
     edge.u = static_cast<int>(uses[first[e]].key >> 32);
     edge.v = static_cast<int>(uses[first[e]].key & 0xffffffffu);
     for (std::uint32_t j = first[e]; j < first[e + 1]; ++j) {
-      edge.uses.push_back({uses[j].face, uses[j].slot, uses[j].forward});
+      EdgeUse use;
+      use.face = uses[j].face, use.slot = uses[j].slot, use.forward = uses[j].forward;
+      edge.uses.push_back(use);
       t.slot_edge[uses[j].slot] = static_cast<int>(e);
     }
   });

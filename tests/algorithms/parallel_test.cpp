@@ -96,6 +96,9 @@ TEST(Parallel, BodyTopologyEqualsTheMapOfEdgeUsesOnAnyThreadCount) {
     auto fin = std::find_if(t.edges.begin(), t.edges.end(), [&](const BodyEdge& x) { return x.u == id(1, 1) && x.v == id(2, 2); });
     ASSERT_NE(fin, t.edges.end());
     EXPECT_EQ(fin->uses.size(), 3u) << "the fin's edge has three uses";
+    const BodyEdge copy = *fin;  // a copy keeps the uses beyond the two in place
+    ASSERT_EQ(copy.uses.size(), 3u);
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(copy.uses[k].slot, fin->uses[k].slot);
   }
   EXPECT_EQ(edge_of_slot[0], edge_of_slot[1]);
   EXPECT_EQ(edge_of_slot[0], edge_of_slot[2]);
