@@ -96,7 +96,15 @@ template <class P>
 struct Prepared {
   std::vector<Vec<P>> X;  // every vertex scaled to integers
   Rational scale;
-  bool done = false;  // every body below is prepared
+  /// Big only (else empty): per vertex, whether it lies on the scene's grid (a common
+  /// denominator G of most vertices, below 2^62), and then its coordinates times G, each below
+  /// 2^61; X = small·(scale / G). A face with only such corners takes its normal from these
+  /// (a positive multiple of the one from X), which a cut's few far finer points (a section
+  /// through a curved mesh) would otherwise make as long as their common denominator.
+  std::vector<char> on_grid;
+  std::vector<std::array<std::int64_t, 3>> small;
+  std::uint64_t grid = 1;  // G
+  bool done = false;       // every body below is prepared
   std::vector<BodyTopology> topo;
   std::vector<std::vector<char>> degenerate;
   std::vector<std::vector<Vec<P>>> face_normal;
@@ -138,6 +146,8 @@ class Engine {
   // face_engine_bodies.cpp
   void offsets();
   Vec<P> normal(const Tri& t) const;
+  bool on_grid(const Tri& t) const;
+  int volume_filter(const std::vector<int>& ids) const;
   void prepare_body(int b);
   void view_body(int b, LineDrawing& res);
   std::vector<signed char> features(int b) const;
@@ -189,6 +199,9 @@ class Engine {
   void solve_into(Segment& s, const std::array<int, 2>& gv, Work& wk, PieceList& out) const;
   void test_integer(int oi, const std::array<int, 2>& gv, Work& wk) const;
   void exact_plane(const Occ& o, int k, Vec<P>& m, V& c) const;
+  void filter_shift();
+  void grid_view();
+  void plane_doubles(const Vec<P>& m, const V& c, double* dm, double& dc) const;
   void filter_doubles();
   static int filtered_sign(const double* m, double c, const std::array<double, 3>& X);
   bool end_on_hides(const Occ& o, int on_side) const;
@@ -233,7 +246,12 @@ class Engine {
   ScreenGrid grid_;
   double margin_ = 0;
   std::vector<std::array<double, 3>> vproj_;
-  std::vector<std::array<double, 3>> Xd_;  // kFiltered: every vertex's doubles (X_)
+  std::vector<std::array<double, 3>> Xd_;  // kFiltered: every vertex's doubles (X_ · 2^-sigma_)
+  long sigma_ = 0;                         // Big: every |X| and the eye below 2^sigma_ (filter_shift)
+  // Big with a grid (Prepared::on_grid): scale / G, and the eye's coordinates times G when it
+  // lies on the grid (perspective), for side planes through grid vertices (grid_view).
+  mpz_class grid_factor_;
+  std::optional<std::array<std::int64_t, 3>> eye_small_;
   std::vector<char> vfront_;
   std::vector<char> vertex_closed_;
   std::vector<CrossLine> cross_;  // intersection lines, found before the occluders are built

@@ -3,16 +3,18 @@
 // solids turned, an eye inside a solid refused.
 #include <algorithm>
 #include <atomic>
-#include <numeric>
 #include <chrono>
+#include <cmath>
+#include <numeric>
 
-#include "algorithms/solids/convexity.hpp"
 #include "algorithms/hlr/face_engine.hpp"
-#include "algorithms/solids/face_triangles.hpp"
 #include "algorithms/model/facing.hpp"
+#include "algorithms/solids/convexity.hpp"
+#include "algorithms/solids/face_triangles.hpp"
 #include "algorithms/support/parallel.hpp"
 #include "algorithms/support/parallel_scan.hpp"
 #include "algorithms/support/union_find.hpp"
+#include "kernel/error_bounds.hpp"
 
 namespace hlr::face_route {
 namespace {
@@ -58,6 +60,7 @@ LineDrawing Engine<P>::run() {
   using Clock = std::chrono::steady_clock;
   auto t0 = Clock::now();
   offsets();
+  grid_view();
   // The view-independent work once (or from a view before), then this view's facing and checks.
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     if (!prep_->done) prepare_body(static_cast<int>(b));
@@ -79,6 +82,7 @@ LineDrawing Engine<P>::run() {
   }
   vertex_rules();
   project_vertices();
+  if constexpr (std::is_same_v<P, Big>) filter_shift(), filter_doubles();  // the intersections' filter reads them
   const bool early = cam_.perspective || total * 8 >= tris_.size();  // near_segments() would not apply
   auto free_topology = [&] {
     if (keep_) return;
@@ -163,7 +167,46 @@ void Engine<P>::offsets() {
 }
 
 template <class P>
+void Engine<P>::grid_view() {
+  if constexpr (std::is_same_v<P, Big>) {
+    if (prep_->on_grid.empty()) return;
+    const mpz_class G(static_cast<unsigned long>(prep_->grid));
+    mpz_divexact(grid_factor_.get_mpz_t(), scale_.get_num_mpz_t(), G.get_mpz_t());  // scale is an integer, G divides it
+    eye_small_.reset();
+    if (!cam_.perspective) return;
+    std::array<std::int64_t, 3> e;
+    for (int k = 0; k < 3; ++k) {
+      const Rational& q = cam_.eye[k];
+      if (!mpz_fits_ulong_p(q.get_den_mpz_t()) || prep_->grid % mpz_get_ui(q.get_den_mpz_t()) != 0) return;  // off the grid
+      Int128 v;
+      if (!scaled_integer(q, prep_->grid, Int128(1) << 61, v)) return;
+      e[k] = static_cast<std::int64_t>(v);
+    }
+    eye_small_ = e;
+  }
+}
+
+template <class P>
+bool Engine<P>::on_grid(const Tri& t) const {
+  const std::vector<char>& g = prep_->on_grid;
+  return !g.empty() && g[t.v[0]] && g[t.v[1]] && g[t.v[2]];
+}
+
+// The normal (B - A) x (C - A), or a positive multiple of it: on the grid's small integers
+// when every corner is on it (Prepared::small: differences below 2^62, each product below
+// 2^124, each component below 2^125, exact in 128 bits).
+template <class P>
 Vec<P> Engine<P>::normal(const Tri& t) const {
+  if constexpr (std::is_same_v<P, Big>) {
+    if (on_grid(t)) {
+      const auto& a = prep_->small[t.v[0]];
+      const auto& b = prep_->small[t.v[1]];
+      const auto& c = prep_->small[t.v[2]];
+      Int128 u[3], w[3];
+      for (int k = 0; k < 3; ++k) u[k] = Int128(b[k]) - a[k], w[k] = Int128(c[k]) - a[k];
+      return {to_mpz(u[1] * w[2] - u[2] * w[1]), to_mpz(u[2] * w[0] - u[0] * w[2]), to_mpz(u[0] * w[1] - u[1] * w[0])};
+    }
+  }
   return cross<P>(sub<P>(X_[t.v[1]], X_[t.v[0]]), sub<P>(X_[t.v[2]], X_[t.v[0]]));
 }
 
@@ -263,6 +306,8 @@ int Engine<P>::triangulate_body(int b) {
 // third word.
 template <class P>
 int Engine<P>::volume_sign(const std::vector<int>& ids) const {
+  if constexpr (kFiltered)
+    if (const int s = volume_filter(ids)) return s;
   const ParallelLoop loop(opt_.threads);
   if constexpr (std::is_same_v<P, Fast40>) {
     // Each term fits in Int128, their sum may not: high·2^128 + low, a carry counted on each
@@ -306,6 +351,54 @@ int Engine<P>::volume_sign(const std::vector<int>& ids) const {
     for (const V& x : part) volume6 += x;
     return P::sign(volume6);
   }
+}
+
+// The same sign from doubles of the input's rational vertices (the scaled ones are a positive
+// multiple), 0 when the bound does not decide it. Each coordinate is within 2u of its double
+// (u = 2^-53; mpq_get_d truncates), each term x0 (y1 z2 - z1 y2) + ... takes 9 more roundings
+// and the sum of N terms on W workers N + W more: with k = N + W + 64 every monomial carries a
+// factor (1 + t), |t| <= gamma_k = k u / (1 - k u), so the computed sum is within gamma_k M
+// of the exact one, M the sum of the monomials' absolute values, itself computed within the
+// same factor; 4 k u M-hat covers both for k u <= 1/4. Coordinates beyond [2^-250, 2^250]
+// (a product could leave the normal doubles) are left to the exact sum.
+template <class P>
+int Engine<P>::volume_filter(const std::vector<int>& ids) const {
+  if (ids.empty()) return 0;
+  const int b = tris_[ids[0]].body;
+  const std::vector<Point3>& vs = bodies_[b]->vertices();
+  const int vo = voff_[b];
+  const ParallelLoop loop(opt_.threads);
+  std::vector<std::array<double, 3>> d(vs.size());
+  PerWorker<char> wild(loop, 0);
+  loop.run(vs.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      for (int k = 0; k < 3; ++k) {
+        const double x = vs[i][k].get_d(), a = std::fabs(x);
+        d[i][k] = x;
+        if (x != 0 && !(a >= 0x1p-250 && a <= 0x1p250)) wild[w] = 1;
+      }
+  });
+  for (unsigned w = 0; w < wild.size(); ++w)
+    if (wild[w]) return 0;
+  std::vector<std::array<double, 2>> part(loop.workers(), {0.0, 0.0});  // sum, sum of |monomials|
+  loop.run(ids.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
+    double sum = part[w][0], mag = part[w][1];
+    for (std::size_t i = begin; i < end; ++i) {
+      const Tri& t = tris_[ids[i]];
+      const auto &x = d[t.v[0] - vo], &y = d[t.v[1] - vo], &z = d[t.v[2] - vo];
+      sum += x[0] * (y[1] * z[2] - y[2] * z[1]) + x[1] * (y[2] * z[0] - y[0] * z[2]) + x[2] * (y[0] * z[1] - y[1] * z[0]);
+      mag += std::fabs(x[0]) * (std::fabs(y[1] * z[2]) + std::fabs(y[2] * z[1])) +
+             std::fabs(x[1]) * (std::fabs(y[2] * z[0]) + std::fabs(y[0] * z[2])) +
+             std::fabs(x[2]) * (std::fabs(y[0] * z[1]) + std::fabs(y[1] * z[0]));
+    }
+    part[w] = {sum, mag};
+  });
+  double sum = 0, mag = 0;
+  for (const auto& p : part) sum += p[0], mag += p[1];
+  const double k = static_cast<double>(ids.size()) + 64 + loop.workers();
+  if (!(k * kUnitRoundoff <= 0.25) || !std::isfinite(sum) || !std::isfinite(mag)) return 0;
+  const double bound = 4 * k * kUnitRoundoff * mag;
+  return sum > bound ? 1 : sum < -bound ? -1 : 0;
 }
 
 // The view-independent part of body b: topology, triangles and normals, whether it is a

@@ -272,15 +272,31 @@ bool Engine<P>::extent_on_plane(const Tri& t, const Tri& o, int axis, double out
   for (int k = 0; k < 3; ++k) s[k] = dot<P>(n, sub<P>(X_[t.v[k]], X_[o.v[0]]));
   out[0] = INFINITY;
   out[1] = -INFINITY;
+  // Big: the coordinates as the filter's doubles (X·2^-sigma_, filter_doubles: any scale
+  // keeps the test) and the parameter from mantissas and exponents (Big::ratio, within 4 ulps).
+  auto coordinate = [&](int g) {
+    if constexpr (std::is_same_v<P, Big>) {
+      return Xd_[g][axis];
+    } else {
+      return P::dbl(X_[g][axis]);
+    }
+  };
   for (int k = 0; k < 3; ++k) {
-    double a = P::dbl(X_[t.v[k]][axis]);
+    double a = coordinate(t.v[k]);
+    if (std::isnan(a)) return false;
     scale = std::max(scale, std::fabs(a));
     int j = (k + 1) % 3;
     int sk = P::sign(s[k]), sj = P::sign(s[j]);
     if (sk == 0) out[0] = std::min(out[0], a), out[1] = std::max(out[1], a);
     if (sk * sj < 0) {
-      double u = P::dbl(s[k]) / (P::dbl(s[k]) - P::dbl(s[j]));
-      double b = P::dbl(X_[t.v[j]][axis]);
+      double u = 0;
+      if constexpr (std::is_same_v<P, Big>) {
+        u = P::ratio(s[k], V(s[k] - s[j]));
+      } else {
+        u = P::dbl(s[k]) / (P::dbl(s[k]) - P::dbl(s[j]));
+      }
+      double b = coordinate(t.v[j]);
+      if (std::isnan(b) || !std::isfinite(u)) return false;
       double c = a + u * (b - a);
       out[0] = std::min(out[0], c);
       out[1] = std::max(out[1], c);

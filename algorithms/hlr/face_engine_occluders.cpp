@@ -222,6 +222,7 @@ void Engine<P>::select_occluders(const std::vector<std::vector<DrawnEdge>>& draw
 // The selected triangles' occluders and boxes, and the grid over the boxes.
 template <class P>
 void Engine<P>::build_occluders() {
+  filter_shift();
   const ParallelLoop loop(opt_.threads);
   std::vector<Box> boxes;
   reserve_touched(occ_, sel_.size(), loop);  // pages touched on all cores, then built on all cores
@@ -287,8 +288,7 @@ void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& b
   if constexpr (kFiltered) {
     o.through_vertices = !to_eye;
     o.turned = 0;
-    for (int j = 0; j < 3; ++j) o.m[0][j] = P::cdbl(m0[j]);
-    o.c[0] = P::dbl(c0);
+    plane_doubles(m0, c0, o.m[0], o.c[0]);
   } else {
     o.m[0] = std::move(m0);
     o.c[0] = std::move(c0);
@@ -303,8 +303,7 @@ void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& b
     }
     if constexpr (kFiltered) {
       if (turn) o.turned |= static_cast<std::uint8_t>(1u << (k + 1));
-      for (int j = 0; j < 3; ++j) o.m[k + 1][j] = P::cdbl(m[j]);
-      o.c[k + 1] = P::dbl(c);
+      plane_doubles(m, c, o.m[k + 1], o.c[k + 1]);
     } else {
       o.m[k + 1] = m;
       o.c[k + 1] = c;
@@ -375,8 +374,33 @@ void Engine<P>::exact_plane(const Occ& o, int k, Vec<P>& m, V& c) const {
 
 // The plane through vertices p and q containing the view direction (orthographic) or the eye
 // (perspective), as m·X - c = 0; its orientation is the caller's to fix.
+//
+// Big, p and q on the grid (and the eye, in perspective): the same plane divided by
+// scale / G (orthographic) or its square (perspective), from the grid's small integers:
+// m = D x (q - p) or (p - E) x (q - E) on them, c = (scale / G)·(m·p) or (m·E).
 template <class P>
 void Engine<P>::side_plane(int p, int q, Vec<P>& m, V& c) const {
+  if constexpr (std::is_same_v<P, Big>) {
+    const std::vector<char>& g = prep_->on_grid;
+    if (!g.empty() && g[p] && g[q] && (!cam_.perspective || eye_small_)) {
+      const auto &a = prep_->small[p], &b = prep_->small[q];
+      if (cam_.perspective) {
+        const auto& e = *eye_small_;
+        Int128 u[3], w[3];
+        for (int k = 0; k < 3; ++k) u[k] = Int128(a[k]) - e[k], w[k] = Int128(b[k]) - e[k];
+        m = {to_mpz(u[1] * w[2] - u[2] * w[1]), to_mpz(u[2] * w[0] - u[0] * w[2]), to_mpz(u[0] * w[1] - u[1] * w[0])};
+      } else {
+        Vec<P> d;
+        for (int k = 0; k < 3; ++k) mpz_set_si(d[k].get_mpz_t(), static_cast<long>(b[k] - a[k]));  // below 2^62
+        m = cross<P>(view_, d);
+      }
+      const auto& base = cam_.perspective ? *eye_small_ : a;
+      Vec<P> o;
+      for (int k = 0; k < 3; ++k) mpz_set_si(o[k].get_mpz_t(), static_cast<long>(base[k]));
+      c = dot<P>(m, o) * grid_factor_;
+      return;
+    }
+  }
   if (cam_.perspective) {
     m = cross<P>(sub<P>(X_[p], view_), sub<P>(X_[q], view_));
     c = dot<P>(m, view_);

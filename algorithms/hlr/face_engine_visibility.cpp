@@ -231,8 +231,16 @@ void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed
     for (int k = 0; k < 3; ++k) {
       A[k] = s.from()[k] * scale_;
       B[k] = s.to()[k] * scale_;
-      ends.Ad[k] = A[k].get_d();
-      ends.Bd[k] = B[k].get_d();
+      if constexpr (std::is_same_v<P, Big>) {  // the vertices' scale for the filter (filter_doubles)
+        Rational a, b;
+        mpq_div_2exp(a.get_mpq_t(), A[k].get_mpq_t(), static_cast<mp_bitcnt_t>(sigma_));
+        mpq_div_2exp(b.get_mpq_t(), B[k].get_mpq_t(), static_cast<mp_bitcnt_t>(sigma_));
+        ends.Ad[k] = a.get_d();
+        ends.Bd[k] = b.get_d();
+      } else {
+        ends.Ad[k] = A[k].get_d();
+        ends.Bd[k] = B[k].get_d();
+      }
       for (double v : {ends.Ad[k], ends.Bd[k]})  // normal or exactly zero (see filtered_sign)
         if (!std::isfinite(v) || (v != 0 && std::fabs(v) < 0x1p-1000)) ends.filter = false;
       if ((ends.Ad[k] == 0) != (sgn(A[k]) == 0) || (ends.Bd[k] == 0) != (sgn(B[k]) == 0)) ends.filter = false;
@@ -385,14 +393,71 @@ int Engine<P>::filtered_sign(const Occ& o, int k, const std::array<double, 3>& X
 // The doubles of every vertex (kFiltered; the occluders' are made with them), on all cores.
 // Integers convert to 0 exactly when they are 0 and are otherwise at least 1; one beyond the
 // double range becomes infinite, which filtered_sign leaves to the exact test.
+// Big: X·2^-sigma_ instead (below 1 in magnitude), mantissa and exponent apart so that no
+// integer overflows the doubles; one below 2^-1000 (not 0) becomes NaN, which filtered_sign
+// leaves to the exact test.
 template <class P>
 void Engine<P>::filter_doubles() {
   if constexpr (kFiltered) {
+    if (!Xd_.empty() || X_.empty()) return;  // made before the intersection lines (Big)
     const ParallelLoop loop(opt_.threads);
     Xd_.resize(X_.size());
     loop.for_each(X_.size(), 4096, [&](std::size_t i) {
-      for (int j = 0; j < 3; ++j) Xd_[i][j] = P::cdbl(X_[i][j]);
+      for (int j = 0; j < 3; ++j) {
+        if constexpr (std::is_same_v<P, Big>) {
+          long e = 0;
+          const double m = mpz_get_d_2exp(&e, X_[i][j].get_mpz_t());
+          double x = 0;
+          if (m != 0) {
+            x = std::ldexp(m, static_cast<int>(std::max<long>(e - sigma_, -4000)));
+            if (!(std::fabs(x) >= 0x1p-1000)) x = NAN;
+          }
+          Xd_[i][j] = x;
+        } else {
+          Xd_[i][j] = P::cdbl(X_[i][j]);
+        }
+      }
     });
+  }
+}
+
+// Big: sigma_, the bit length of the largest coordinate (of the vertices and the eye).
+template <class P>
+void Engine<P>::filter_shift() {
+  if constexpr (std::is_same_v<P, Big>) {
+    if (sigma_ > 0) return;  // made before the intersection lines
+    std::size_t bits = 0;
+    for (const Vec<P>& x : X_)
+      for (int j = 0; j < 3; ++j) bits = std::max(bits, mpz_sizeinbase(x[j].get_mpz_t(), 2));
+    if (cam_.perspective)
+      for (int j = 0; j < 3; ++j) bits = std::max(bits, mpz_sizeinbase(view_[j].get_mpz_t(), 2));
+    sigma_ = static_cast<long>(bits);
+  }
+}
+
+// An occluder's plane m·X - c as the filter's doubles. Big: m·2^-e and c·2^-(e + sigma_), e
+// the bit length of m's largest component, so that with X·2^-sigma_ the value is
+// (m·X - c)·2^-(e + sigma_) (the same sign) and every term is below 4 in magnitude. An input
+// converts within 2u when normal; one that falls below the normal doubles is within 2^-1022,
+// and with |X·2^-sigma_| < 1 each such term errs by less than 2^-1020, far under
+// filtered_sign's floor. Wide: the values themselves (below 2^450).
+template <class P>
+void Engine<P>::plane_doubles(const Vec<P>& m, const V& c, double* dm, double& dc) const {
+  if constexpr (std::is_same_v<P, Big>) {
+    std::size_t bits = 0;
+    for (int j = 0; j < 3; ++j)
+      if (sgn(m[j]) != 0) bits = std::max(bits, mpz_sizeinbase(m[j].get_mpz_t(), 2));
+    const long e = static_cast<long>(bits);
+    auto scaled = [](const mpz_class& v, long shift) {
+      long x = 0;
+      const double d = mpz_get_d_2exp(&x, v.get_mpz_t());
+      return d == 0 ? 0.0 : std::ldexp(d, static_cast<int>(std::max<long>(x - shift, -4000)));
+    };
+    for (int j = 0; j < 3; ++j) dm[j] = scaled(m[j], e);
+    dc = scaled(c, e + sigma_);
+  } else {
+    for (int j = 0; j < 3; ++j) dm[j] = P::cdbl(m[j]);
+    dc = P::dbl(c);
   }
 }
 

@@ -7,6 +7,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <unordered_map>
 
 #include "algorithms/hlr/face_engine.hpp"
 #include "algorithms/support/parallel.hpp"
@@ -190,18 +191,91 @@ bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
   return true;
 }
 
-void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, std::vector<Vec<Big>>& pts,
-               Vec<Big>& view, Rational& scale) {
-  mpz_class L = 1;
-  auto acc = [&](const Rational& q) { mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), q.get_den_mpz_t()); };
+// Big's grid (face_engine.hpp, Prepared::on_grid): the denominators below 2^62 that most
+// vertices have (each vertex's: of its three coordinates), joined while their least common
+// multiple G stays below 2^62; a vertex is on the grid when its denominator divides G and
+// its coordinates times G are below 2^61.
+struct BigGrid {
+  std::vector<char> on;
+  std::vector<std::array<std::int64_t, 3>> small;
+  std::uint64_t G = 1;
+};
+
+std::uint64_t vertex_denominator(const Point3& v) {
+  std::uint64_t d = 1;
+  for (int k = 0; k < 3; ++k) {
+    const mpz_class& q = v[k].get_den();
+    if (!mpz_fits_ulong_p(q.get_mpz_t())) return 0;
+    const std::uint64_t e = mpz_get_ui(q.get_mpz_t()), g = std::gcd(d, e);
+    if (d / g > (std::uint64_t(1) << 62) / e) return 0;
+    d = d / g * e;
+  }
+  return d;
+}
+
+BigGrid big_grid(const std::vector<const Polyhedron*>& bodies, std::size_t total) {
+  BigGrid grid;
+  std::vector<std::uint64_t> den;
+  den.reserve(total);
+  std::unordered_map<std::uint64_t, std::size_t> count;
   for (const Polyhedron* p : bodies)
+    for (const Point3& v : p->vertices()) {
+      den.push_back(vertex_denominator(v));
+      if (den.back()) ++count[den.back()];
+    }
+  std::vector<std::pair<std::size_t, std::uint64_t>> by_count;
+  for (const auto& [d, n] : count) by_count.emplace_back(n, d);
+  std::sort(by_count.begin(), by_count.end(), std::greater<>());
+  for (const auto& [n, d] : by_count) {
+    const std::uint64_t g = std::gcd(grid.G, d);
+    if (grid.G / g <= ((std::uint64_t(1) << 62) - 1) / d) grid.G = grid.G / g * d;
+  }
+  grid.on.assign(total, 0);
+  grid.small.assign(total, {0, 0, 0});
+  const Int128 limit = Int128(1) << 61;
+  std::size_t i = 0;
+  for (const Polyhedron* p : bodies)
+    for (const Point3& v : p->vertices()) {
+      const std::size_t at = i++;
+      if (!den[at] || grid.G % den[at] != 0) continue;
+      bool fits = true;
+      for (int k = 0; k < 3 && fits; ++k) {
+        Int128 s;
+        fits = scaled_integer(v[k], grid.G, limit, s);
+        if (fits) grid.small[at][k] = static_cast<std::int64_t>(s);
+      }
+      grid.on[at] = fits;
+    }
+  return grid;
+}
+
+void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, std::vector<Vec<Big>>& pts, Vec<Big>& view, Rational& scale,
+               BigGrid& grid) {
+  mpz_class L = 1;
+  std::size_t total = 0;
+  auto acc = [&](const Rational& q) { mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), q.get_den_mpz_t()); };
+  for (const Polyhedron* p : bodies) {
+    total += p->num_vertices();
     for (const Point3& v : p->vertices())
       for (int k = 0; k < 3; ++k) acc(v[k]);
+  }
   if (cam.perspective)
     for (int k = 0; k < 3; ++k) acc(cam.eye[k]);
+  grid = big_grid(bodies, total);
+  const mpz_class K = L / mpz_class(static_cast<unsigned long>(grid.G));  // G divides L
   auto sc = [&](const Rational& q) { return mpz_class(q.get_num() * (L / q.get_den())); };
+  std::size_t i = 0;
   for (const Polyhedron* p : bodies)
-    for (const Point3& v : p->vertices()) pts.push_back({sc(v[0]), sc(v[1]), sc(v[2])});
+    for (const Point3& v : p->vertices()) {
+      const std::size_t at = i++;
+      if (grid.on[at]) {
+        Vec<Big> x;
+        for (int k = 0; k < 3; ++k) mpz_mul_si(x[k].get_mpz_t(), K.get_mpz_t(), static_cast<long>(grid.small[at][k]));
+        pts.push_back(std::move(x));
+      } else {
+        pts.push_back({sc(v[0]), sc(v[1]), sc(v[2])});
+      }
+    }
   if (cam.perspective) {
     view = {sc(cam.eye[0]), sc(cam.eye[1]), sc(cam.eye[2])};
   } else {
@@ -215,10 +289,13 @@ void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, 
 // An engine on the scaled points, sharing its view-independent work through `share` when given.
 template <class P>
 LineDrawing run_engine(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineOptions& opt, const FaceRouteHooks& hooks,
-                       std::vector<Vec<P>> pts, Vec<P> view, Rational scale, FaceRouteShare* share, int policy) {
+                       std::vector<Vec<P>> pts, Vec<P> view, Rational scale, FaceRouteShare* share, int policy, BigGrid grid = {}) {
   auto prep = std::make_shared<face_route::Prepared<P>>();
   prep->X = std::move(pts);
   prep->scale = std::move(scale);
+  prep->on_grid = std::move(grid.on);
+  prep->small = std::move(grid.small);
+  prep->grid = grid.G;
   if (share) share->bodies = bodies, share->policy = policy, share->prepared = prep;
   return face_route::Engine<P>(bodies, camera, opt, hooks, std::move(prep), std::move(view), share != nullptr).run();
 }
@@ -291,8 +368,9 @@ LineDrawing face_occluders(const std::vector<const Polyhedron*>& bodies, const C
   std::vector<Vec<Big>> pts;
   Vec<Big> view;
   Rational scale;
-  scale_big(bodies, camera, pts, view, scale);
-  return run_engine<Big>(bodies, camera, opt, hooks, std::move(pts), std::move(view), std::move(scale), share, 3);
+  BigGrid grid;
+  scale_big(bodies, camera, pts, view, scale, grid);
+  return run_engine<Big>(bodies, camera, opt, hooks, std::move(pts), std::move(view), std::move(scale), share, 3, std::move(grid));
 }
 
 }  // namespace hlr

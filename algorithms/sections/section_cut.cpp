@@ -13,6 +13,8 @@
 #include <unordered_map>
 
 #include "algorithms/solids/face_triangles.hpp"
+#include "algorithms/support/parallel.hpp"
+#include "kernel/predicates.hpp"
 #include "kernel/simple_polygon.hpp"
 
 namespace hlr {
@@ -20,18 +22,51 @@ namespace {
 
 std::uint64_t edge_key(int u, int v) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) | static_cast<std::uint32_t>(v); }
 
-// Closed and oriented: every directed edge once, and its reverse there too.
-bool closed_oriented(const std::vector<Face>& faces) {
-  std::vector<std::uint64_t> keys;
+// The directed edges of `faces` (vertices below nv) grouped by their lower vertex, in linear
+// time: whether one occurs twice, and those whose reverse does not occur (each occurrence),
+// sorted.
+struct EdgeCensus {
+  bool duplicate = false;
+  std::vector<std::array<int, 2>> unpaired;
+  bool any = false;  // some face has an edge
+};
+
+EdgeCensus edge_census(const std::vector<Face>& faces, std::size_t nv) {
+  EdgeCensus c;
+  std::vector<int> start(nv + 1, 0);
   for (const Face& f : faces)
-    for (std::size_t k = 0; k < f.size(); ++k) keys.push_back(edge_key(f[k], f[(k + 1) % f.size()]));
-  std::sort(keys.begin(), keys.end());
-  for (std::size_t k = 0; k < keys.size(); ++k) {
-    if (k + 1 < keys.size() && keys[k] == keys[k + 1]) return false;
-    const std::uint64_t rev = (keys[k] << 32) | (keys[k] >> 32);
-    if (!std::binary_search(keys.begin(), keys.end(), rev)) return false;
+    for (std::size_t k = 0; k < f.size(); ++k) ++start[std::min(f[k], f[(k + 1) % f.size()]) + 1];
+  for (std::size_t i = 0; i < nv; ++i) start[i + 1] += start[i];
+  c.any = start[nv] > 0;
+  std::vector<std::uint32_t> other(start[nv]);  // the higher vertex, times 2, plus 1 when the edge runs downward
+  std::vector<int> at(start.begin(), start.end() - 1);
+  for (const Face& f : faces)
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      const int u = f[k], v = f[(k + 1) % f.size()];
+      other[at[std::min(u, v)]++] = static_cast<std::uint32_t>(std::max(u, v)) * 2 + (u > v);
+    }
+  for (std::size_t lo = 0; lo < nv; ++lo) {
+    auto b = other.begin() + start[lo], e = other.begin() + start[lo + 1];
+    std::sort(b, e);
+    for (auto i = b; i != e;) {
+      const std::uint32_t hi = *i / 2;
+      int up = 0, down = 0;
+      for (; i != e && *i / 2 == hi; ++i) (*i & 1 ? down : up) += 1;
+      if (up > 1 || down > 1) c.duplicate = true;
+      if (hi == lo) continue;  // an edge from a vertex to itself is its own reverse
+      const int l = static_cast<int>(lo), h = static_cast<int>(hi);
+      for (int k = 0; k < up && down == 0; ++k) c.unpaired.push_back({l, h});
+      for (int k = 0; k < down && up == 0; ++k) c.unpaired.push_back({h, l});
+    }
   }
-  return !keys.empty();
+  std::sort(c.unpaired.begin(), c.unpaired.end());
+  return c;
+}
+
+// Closed and oriented: every directed edge once, and its reverse there too.
+bool closed_oriented(const std::vector<Face>& faces, std::size_t nv) {
+  const EdgeCensus c = edge_census(faces, nv);
+  return c.any && !c.duplicate && c.unpaired.empty();
 }
 
 struct Work {
@@ -43,7 +78,7 @@ struct Work {
 class PlaneCut {
  public:
   PlaneCut(Work& w, const Plane& h) : w_(w), h_(h), sign_(w.v.size()) {
-    for (std::size_t i = 0; i < w.v.size(); ++i) sign_[i] = static_cast<signed char>(sgn(h.value(w.v[i])));
+    ParallelLoop().for_each(w.v.size(), 4096, [&](std::size_t i) { sign_[i] = static_cast<signed char>(side_of_plane(h, w.v[i])); });
   }
 
   // Which side the body is on: -1 all kept (nothing above), 1 all removed (nothing below), 0 cut.
@@ -58,15 +93,8 @@ class PlaneCut {
   void run(Work& out, std::vector<std::array<int, 2>>& rim, bool& off_plane_rim) {
     for (std::size_t fi = 0; fi < w_.f.size(); ++fi) keep_face(static_cast<int>(fi), out);
     // Directed edges whose twin is not kept: the cap's rim, reversed.
-    std::vector<std::uint64_t> keys;
-    for (const Face& f : out.f)
-      for (std::size_t k = 0; k < f.size(); ++k) keys.push_back(edge_key(f[k], f[(k + 1) % f.size()]));
-    std::sort(keys.begin(), keys.end());
     off_plane_rim = false;
-    for (std::uint64_t key : keys) {
-      const std::uint64_t rev = (key << 32) | (key >> 32);
-      if (std::binary_search(keys.begin(), keys.end(), rev)) continue;
-      const int u = static_cast<int>(key >> 32), v = static_cast<int>(key & 0xffffffffu);
+    for (const auto& [u, v] : edge_census(out.f, w_.v.size()).unpaired) {
       if (on_plane(u) && on_plane(v)) rim.push_back({v, u});
       else off_plane_rim = true;
     }
@@ -169,7 +197,7 @@ CutSolid cut_solid(const Polyhedron& body, const std::vector<Plane>& planes) {
   const int nf = static_cast<int>(body.num_faces());
   Work w{body.vertices(), body.faces(), {}, std::vector<int>(nf, -1)};
   for (int f = 0; f < nf; ++f) w.part.push_back(f);
-  out.open = !closed_oriented(w.f);
+  out.open = !closed_oriented(w.f, w.v.size());
   bool cut = false;
   for (std::size_t k = 0; k < planes.size(); ++k) {
     PlaneCut pc(w, planes[k]);

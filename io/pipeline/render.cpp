@@ -513,7 +513,11 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     if (!o.share->faces) o.share->faces = std::make_shared<FaceRouteShare>();
     hooks.share = o.share->faces;
   }
-  if (sectioned) section_hooks(r.bodies, hooks);
+  if (sectioned) {
+    section_hooks(r.bodies, hooks);
+    // The caps' hatching draws in the same bodies from the same direction: it reads this work.
+    if (!hooks.share && !r.camera.perspective) r.section_share = hooks.share = std::make_shared<FaceRouteShare>();
+  }
   for (const SceneBody* b : r.bodies) hooks.surfaces.push_back(b->surfaces.empty() ? nullptr : &b->surfaces);
   std::optional<TileCut> cut;
   if (o.tile) {

@@ -308,6 +308,7 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
   lo.threads = threads;
   hooks.see_through = see_through_bodies(r);
   hooks.extra_only = true;
+  hooks.share = r.section_share;  // the drawing's prepared bodies, when it left them
   LineDrawing all = face_occluders(polys, r.camera, lo, hooks);
   std::size_t k = 0;
   for (Segment& s : all.segments) {

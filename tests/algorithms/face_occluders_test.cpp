@@ -488,3 +488,43 @@ TEST(FaceOccluders, VolumeSumCarriesPastInt128OnTheWidePath) {
   EXPECT_TRUE(r.notes.empty());
   EXPECT_EQ(r.segments.size(), 128u * 12u);  // every edge of every copy
 }
+
+// The volume's sign on the multi-limb and GMP paths comes from doubles with a proven bound
+// (Engine::volume_filter) or, when the bound does not decide, from the exact sum. A closed
+// pillow of zero thickness (a convex 120-gon on a tilted plane, its top a fan from one corner,
+// its bottom a fan from another, vertices far from the origin in sevenths that do not round
+// exactly) has volume 0 exactly while the doubles' sum is not 0: only a bound that holds
+// leaves it to the exact sum, which calls the body a surface. A small box as far away has a
+// volume far below its monomials: the filter cannot decide, the exact sum finds a solid (no
+// note). Each with an extra far, tiny body that puts the scene on the multi-limb path (2^-70)
+// and on GMP integers (2^-200).
+TEST(FaceOccluders, VolumeSignOfFarFlatAndSmallBodiesOnTheWiderPaths) {
+  const Rational far(1000003);
+  auto at = [&](const Rational& x, const Rational& y) { return Point3(far + x, far + y, far + x / 3 + y / 5); };
+  const int n = 120;
+  std::vector<Point3> vs;
+  std::vector<Face> fs;
+  for (int i = 0; i < n; ++i) vs.push_back(at(Rational(i, 7), Rational(i * i, 49)));  // on a parabola: convex
+  for (int i = 1; i + 1 < n; ++i) fs.push_back({0, i, i + 1});
+  for (int i = 0; i + 2 < n; ++i) fs.push_back({n - 1, i + 1, i});
+  const Polyhedron pillow(vs, fs);
+  const Polyhedron small = make_box(at(Rational(1, 7), Rational(2, 7)), at(Rational(3, 7), Rational(5, 7)) + Vector3(0, 0, Rational(1, 7)));
+  auto tiny = [](const char* eps) {
+    const Rational e = Q(eps);
+    return Polyhedron({Point3(Rational(-40), Rational(-40), Rational(-40)), Point3(Rational(-40) + e, Rational(-40), Rational(-40)),
+                       Point3(Rational(-40), Rational(-40) + e, Rational(-40))},
+                      {{0, 1, 2}});
+  };
+  const Polyhedron limbs = tiny("1/1180591620717411303424"), big = tiny("1/1606938044258990275541962092341162602522202993782792835301376");
+  for (const Polyhedron* extra : {&limbs, &big}) {
+    LineDrawing r = run({&pillow, &small, extra}, make_orthographic(Vector3(1, 2, 3)));
+    EXPECT_EQ(r.stats.faces->integer_path, extra == &limbs);
+    std::set<int> zero_volume;
+    for (const auto& n : r.notes)
+      if (n.text.find("zero volume") != std::string::npos) zero_volume.insert(n.body);
+    EXPECT_EQ(zero_volume, std::set<int>{0}) << (extra == &big ? "GMP" : "multi-limb");
+    bool small_noted = false;
+    for (const auto& n : r.notes) small_noted = small_noted || n.body == 1;
+    EXPECT_FALSE(small_noted);
+  }
+}

@@ -81,6 +81,7 @@ bool eye_ok(const std::vector<std::vector<OraclePlane>>& bodies, const Point3& e
 struct Result {
   Tally faces, roberts;
   long scenes = 0, route_mismatches = 0;
+  long gmp_scenes = 0;  // the per-face route ran on GMP integers
 };
 
 // The pieces of every edge of both routes must be the same.
@@ -113,6 +114,7 @@ void run_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, Result&
   LineDrawing f = face_occluders(ptrs, cam, opt);
   RobertsResult r = roberts(ptrs, cam, opt);
   ++res.scenes;
+  res.gmp_scenes += !f.stats.faces->integer_path;
   long before = res.faces.disagreements;
   sample_check(f, planes, cam, res.faces, ("faces, " + what).c_str());
   sample_check(r, planes, cam, res.roberts, ("roberts, " + what).c_str());
@@ -150,9 +152,12 @@ std::string describe(unsigned seed, const Camera& c) {
 }
 
 // Perspective with the eye among the bodies (walk-through views), and orthographic views along
-// axes and edges: five boxes (some thin slabs) and a tetrahedron; with `far_box`, also a box
-// 2^-70 wide far from the others, whose coordinates put the whole scene on the multi-limb path.
-void eye_among_the_bodies(long n, unsigned seed0, bool far_box) {
+// axes and edges: five boxes (some thin slabs) and a tetrahedron; with `far_bits`, also a box
+// 2^-far_bits wide far from the others, whose coordinates put the whole scene on the
+// multi-limb path (70) or on GMP integers (200), where the other bodies stay on the grid of
+// small denominators (face_engine.hpp, Prepared::on_grid) and the far box does not; with
+// `eye_off_grid`, half of the free eyes moved by 2^-90 (off that grid).
+void eye_among_the_bodies(long n, unsigned seed0, int far_bits, bool eye_off_grid = false) {
   Result res;
   for (long i = 0; i < n; ++i) {
     unsigned seed = seed0 * 100003u + static_cast<unsigned>(i);
@@ -160,9 +165,9 @@ void eye_among_the_bodies(long n, unsigned seed0, bool far_box) {
     std::vector<Polyhedron> bodies;
     for (int k = 0; k < 5; ++k) bodies.push_back(g.box());
     bodies.push_back(g.tetra());
-    if (far_box) {
+    if (far_bits) {
       Rational e = 1;
-      mpq_div_2exp(e.get_mpq_t(), e.get_mpq_t(), 70);
+      mpq_div_2exp(e.get_mpq_t(), e.get_mpq_t(), static_cast<mp_bitcnt_t>(far_bits));
       bodies.push_back(make_box(Point3(-40, -40, -40), Point3(Rational(-40) + e, Rational(-40) + e, Rational(-40) + e)));
     }
     std::vector<std::vector<OraclePlane>> planes;
@@ -201,6 +206,10 @@ void eye_among_the_bodies(long n, unsigned seed0, bool far_box) {
           Rational c[3] = {eye.x(), eye.y(), eye.z()};
           c[k] = bodies[b].vertices()[g.uniform(0, 1) ? 0 : 7][k];
           eye = Point3(c[0], c[1], c[2]);
+        } else if (eye_off_grid && kind == 0) {
+          Rational e = 1;
+          mpq_div_2exp(e.get_mpq_t(), e.get_mpq_t(), 90);
+          eye = Point3(eye.x() + e, eye.y(), eye.z());
         }
         if (eye_ok(planes, eye, false)) break;
       }
@@ -218,18 +227,26 @@ void eye_among_the_bodies(long n, unsigned seed0, bool far_box) {
   EXPECT_EQ(res.roberts.disagreements, 0);
   EXPECT_EQ(res.route_mismatches, 0);
   EXPECT_GT(res.faces.hidden_samples, res.faces.samples / 10);
+  EXPECT_EQ(res.gmp_scenes, far_bits > 150 ? res.scenes : 0);
 }
 
 }  // namespace
 
 TEST(Torture, EyeAmongTheBodies) {
-  eye_among_the_bodies(env_long("HLR_TORTURE_SCENES", 200), static_cast<unsigned>(env_long("HLR_TORTURE_SEED", 12)), false);
+  eye_among_the_bodies(env_long("HLR_TORTURE_SCENES", 200), static_cast<unsigned>(env_long("HLR_TORTURE_SEED", 12)), 0);
 }
 
 // The same scenes on the multi-limb path (its filters: signs known from the vertices on a plane
 // or from doubles, exact planes remade on demand).
 TEST(Torture, EyeAmongTheBodiesOnTheMultiLimbPath) {
-  eye_among_the_bodies(env_long("HLR_TORTURE_SCENES", 200) / 2, static_cast<unsigned>(env_long("HLR_TORTURE_SEED", 12)), true);
+  eye_among_the_bodies(env_long("HLR_TORTURE_SCENES", 200) / 2, static_cast<unsigned>(env_long("HLR_TORTURE_SEED", 12)), 70);
+}
+
+// And on GMP integers, most vertices on the grid of small denominators: their normals and
+// side planes from the grid's small integers, the filters on doubles scaled by a power of two
+// (face_engine.hpp); the eye on the grid or, for half of the free eyes, just off it.
+TEST(Torture, EyeAmongTheBodiesOnGmpWithAGrid) {
+  eye_among_the_bodies(env_long("HLR_TORTURE_SCENES", 200) / 2, static_cast<unsigned>(env_long("HLR_TORTURE_SEED", 12)) + 1, 200, true);
 }
 
 // Every scene the torture suite (or a report) found wrong once, as a named file in
