@@ -125,6 +125,13 @@ const std::vector<Plane>& Polyhedron::planes() const {
   return planes_;
 }
 
+Plane Polyhedron::face_plane(std::size_t f) const {
+  if (planes_done_) return planes_[f];
+  std::vector<const Point3*> pts;
+  for (int v : faces_[f]) pts.push_back(&vertices_[v]);
+  return primitive_plane_of_polygon(pts.data(), pts.size());
+}
+
 const MeshReport& Polyhedron::report() const {
   if (!report_) {
     report_ = std::make_shared<MeshReport>(check_mesh(vertices_, faces_, planes()));

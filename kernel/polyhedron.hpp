@@ -61,6 +61,8 @@ class Polyhedron {
   /// listed counter-clockwise seen from outside gets an outward normal). Degenerate (zero
   /// normal) for zero-area faces. Scaled to primitive integer coefficients (primitive_plane).
   const std::vector<Plane>& planes() const;
+  /// The plane of face f alone, as planes()[f] (from there when they are made).
+  Plane face_plane(std::size_t f) const;
   /// Computes the planes (once) with `loop(n, body)` calling body(i) for every i < n, e.g. on
   /// all cores (algorithms/support/parallel.hpp: plane_all_faces); planes() then returns them.
   void compute_planes(const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop) const;

@@ -182,6 +182,15 @@ bool Engine<P>::crease(int b, const EdgeUse& a, const EdgeUse& c, const CreaseAn
     long x[3] = {na[0], na[1], na[2]}, y[3] = {nc[0], nc[1], nc[2]};
     return angle.exceeds(x, y);
   } else {
+    if constexpr (std::is_same_v<P, Big>) {  // normals from the grid's small integers: in machine words
+      bool words = true;
+      for (int k = 0; k < 3; ++k) words = words && mpz_fits_slong_p(na[k].get_mpz_t()) && mpz_fits_slong_p(nc[k].get_mpz_t());
+      if (words) {
+        long x[3], y[3];
+        for (int k = 0; k < 3; ++k) x[k] = mpz_get_si(na[k].get_mpz_t()), y[k] = mpz_get_si(nc[k].get_mpz_t());
+        return angle.exceeds(x, y);
+      }
+    }
     mpz_class x[3] = {P::zc(na[0]), P::zc(na[1]), P::zc(na[2])}, y[3] = {P::zc(nc[0]), P::zc(nc[1]), P::zc(nc[2])};
     return angle.exceeds(x, y);
   }

@@ -64,6 +64,26 @@ void Engine<P>::find_intersections(LineDrawing& res) {
     }
     return b;
   };
+  // Each pair takes its two normals once. Big: those of the triangles off the grid (a cut's
+  // points: multi-limb products) are made once for all pairs when they are few.
+  std::vector<int> slot;
+  std::vector<Vec<P>> kept_normal;
+  if constexpr (std::is_same_v<P, Big>) {
+    if (!prep_->on_grid.empty()) {
+      std::size_t off = 0;
+      for (std::size_t i = 0; i < n; ++i) off += !on_grid(tris_[i]);
+      if (off * 16 <= n) {
+        slot.assign(n, -1);
+        for (std::size_t i = 0; i < n; ++i)
+          if (!on_grid(tris_[i])) slot[i] = static_cast<int>(kept_normal.size()), kept_normal.push_back(normal(tris_[i]));
+      }
+    }
+  }
+  const auto normal_of = [&](std::uint32_t i, Vec<P>& made) -> const Vec<P>& {
+    if (!slot.empty() && slot[i] >= 0) return kept_normal[slot[i]];
+    made = normal(tris_[i]);
+    return made;
+  };
   const auto judge = [&](std::uint32_t ta, std::uint32_t tc) {
     const Tri &x = tris_[ta], &y = tris_[tc];
     if (x.body == y.body) {
@@ -72,7 +92,11 @@ void Engine<P>::find_intersections(LineDrawing& res) {
         for (int w : y.v) shared = shared || u == w;
       if (shared || x.face == y.face) return PairVerdict::Skip;
     }
-    return straddles(x, y) && straddles(y, x) && may_meet(x, y) ? PairVerdict::Keep : PairVerdict::Reject;
+    Vec<P> mx, my;
+    const Vec<P>& nx = normal_of(ta, mx);
+    if (!straddles(x, nx, y)) return PairVerdict::Reject;
+    const Vec<P>& ny = normal_of(tc, my);
+    return straddles(y, ny, x) && may_meet(x, nx, y, ny) ? PairVerdict::Keep : PairVerdict::Reject;
   };
   // The boxes in floats rounded outward (half the memory; boxes only grow, so no pair is lost),
   // in doubles when some coordinate lies beyond the floats' range.
@@ -247,11 +271,10 @@ std::optional<std::pair<Point3, Point3>> Engine<P>::segment(const Tri& x, const 
 // of opposite signs) is within 4 ulps in doubles, each point within 8 ulps of the largest
 // coordinate; intervals farther apart than that are disjoint. Otherwise: exact.
 template <class P>
-bool Engine<P>::may_meet(const Tri& x, const Tri& y) const {
+bool Engine<P>::may_meet(const Tri& x, const Vec<P>& nx, const Tri& y, const Vec<P>& ny) const {
   double ax[2], ay[2];
   int axis = 0;
   {
-    Vec<P> nx = normal(x), ny = normal(y);
     double u[3] = {P::dbl(nx[1]) * P::dbl(ny[2]) - P::dbl(nx[2]) * P::dbl(ny[1]),
                    P::dbl(nx[2]) * P::dbl(ny[0]) - P::dbl(nx[0]) * P::dbl(ny[2]),
                    P::dbl(nx[0]) * P::dbl(ny[1]) - P::dbl(nx[1]) * P::dbl(ny[0])};
@@ -259,15 +282,15 @@ bool Engine<P>::may_meet(const Tri& x, const Tri& y) const {
       if (std::fabs(u[k]) > std::fabs(u[axis])) axis = k;
   }
   double scale = 0;
-  if (!extent_on_plane(x, y, axis, ax, scale) || !extent_on_plane(y, x, axis, ay, scale)) return true;
+  if (!extent_on_plane(x, y, ny, axis, ax, scale) || !extent_on_plane(y, x, nx, axis, ay, scale)) return true;
   double err = bounds::kExtentUlps * std::numeric_limits<double>::epsilon() * scale;
   return !(ax[1] + err < ay[0] - err || ay[1] + err < ax[0] - err);
 }
 
-// Extent along `axis` of the part of t on the plane of o, in doubles; false if undecidable.
+// Extent along `axis` of the part of t on the plane of o (normal n), in doubles; false if
+// undecidable.
 template <class P>
-bool Engine<P>::extent_on_plane(const Tri& t, const Tri& o, int axis, double out[2], double& scale) const {
-  Vec<P> n = normal(o);
+bool Engine<P>::extent_on_plane(const Tri& t, const Tri& o, const Vec<P>& n, int axis, double out[2], double& scale) const {
   V s[3];
   for (int k = 0; k < 3; ++k) s[k] = dot<P>(n, sub<P>(X_[t.v[k]], X_[o.v[0]]));
   out[0] = INFINITY;
@@ -305,10 +328,10 @@ bool Engine<P>::extent_on_plane(const Tri& t, const Tri& o, int axis, double out
   return std::isfinite(out[0]) && std::isfinite(out[1]) && std::isfinite(scale);
 }
 
-// Triangle y has vertices strictly on both sides of x's plane, or on it (not all on it).
+// Triangle y has vertices strictly on both sides of x's plane (normal n), or on it (not all
+// on it).
 template <class P>
-bool Engine<P>::straddles(const Tri& x, const Tri& y) const {
-  Vec<P> n = normal(x);
+bool Engine<P>::straddles(const Tri& x, const Vec<P>& n, const Tri& y) const {
   int pos = 0, neg_ = 0;
   for (int v : y.v) {
     int s = P::sign(dot<P>(n, sub<P>(X_[v], X_[x.v[0]])));
