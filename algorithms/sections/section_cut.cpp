@@ -271,7 +271,7 @@ struct Joiner {
   void join_seams(const Plane& h) {
     std::vector<int> on;  // the vertices in the plane, in lexicographic order (id's order)
     for (const auto& [p, i] : id)
-      if (h.value(p) == 0) on.push_back(i);
+      if (side_of_plane(h, p) == Sign::Zero) on.push_back(i);
     if (on.empty()) return;
     std::vector<char> in_plane(out.vertices.size(), 0);
     for (int i : on) in_plane[i] = 1;
@@ -285,9 +285,8 @@ struct Joiner {
         const bool up = lex(u, v);
         auto lo = std::upper_bound(on.begin(), on.end(), up ? u : v, lex), hi = std::lower_bound(on.begin(), on.end(), up ? v : u, lex);
         std::vector<int> inner;
-        const Vector3 d = out.vertices[v] - out.vertices[u];
-        for (auto it = lo; it < hi; ++it)
-          if (cross(d, out.vertices[*it] - out.vertices[u]).is_zero()) inner.push_back(*it);
+        for (auto it = lo; it < hi; ++it)  // (filtered: most candidates are off the line)
+          if (collinear(out.vertices[u], out.vertices[v], out.vertices[*it])) inner.push_back(*it);
         if (!up) std::reverse(inner.begin(), inner.end());
         for (int w : inner) g.push_back(w);
       }
