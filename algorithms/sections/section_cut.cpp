@@ -254,8 +254,22 @@ std::vector<Point3> keep_below(const std::vector<Point3>& poly, const Plane& h) 
 
 // Faces as corner lists joined into one mesh: equal points are one vertex, and a vertex lying
 // inside an edge that runs in one of the planes is put into that edge (the pieces' seams).
+// A point's hash from its coordinates' canonical numerators and denominators (equal points
+// have equal limbs).
+struct PointHash {
+  std::size_t operator()(const Point3& p) const {
+    std::size_t h = 0;
+    auto mix = [&](const mpz_class& z) {
+      const std::size_t low = mpz_size(z.get_mpz_t()) ? static_cast<std::size_t>(mpz_getlimbn(z.get_mpz_t(), 0)) : 0;
+      h ^= (low + static_cast<std::size_t>(mpz_sgn(z.get_mpz_t()) + 1) * 0x9e3779b97f4a7c15ull) + (h << 6) + (h >> 2);
+    };
+    for (int k = 0; k < 3; ++k) mix(p[k].get_num()), mix(p[k].get_den());
+    return h;
+  }
+};
+
 struct Joiner {
-  std::map<Point3, int> id;
+  std::unordered_map<Point3, int, PointHash> id;
   CutSolid out;
   void add(const std::vector<Point3>& corners, int part, int cap) {
     Face f;
@@ -269,13 +283,14 @@ struct Joiner {
     out.cap.push_back(cap);
   }
   void join_seams(const Plane& h) {
-    std::vector<int> on;  // the vertices in the plane, in lexicographic order (id's order)
-    for (const auto& [p, i] : id)
-      if (side_of_plane(h, p) == Sign::Zero) on.push_back(i);
+    std::vector<int> on;  // the vertices in the plane, in lexicographic order
+    for (std::size_t i = 0; i < out.vertices.size(); ++i)
+      if (side_of_plane(h, out.vertices[i]) == Sign::Zero) on.push_back(static_cast<int>(i));
     if (on.empty()) return;
     std::vector<char> in_plane(out.vertices.size(), 0);
     for (int i : on) in_plane[i] = 1;
     auto lex = [&](int a, int b) { return out.vertices[a] < out.vertices[b]; };
+    std::sort(on.begin(), on.end(), lex);
     for (Face& f : out.faces) {
       Face g;
       for (std::size_t k = 0; k < f.size(); ++k) {
