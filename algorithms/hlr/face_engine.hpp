@@ -186,7 +186,7 @@ class Engine {
   bool pair_may_cross(std::uint32_t ta, std::uint32_t tc) const;
   bool may_meet(const Tri& x, const Vec<P>& nx, const Tri& y, const Vec<P>& ny) const;
   bool extent_on_plane(const Tri& t, const Tri& o, const Vec<P>& no, int axis, double out[2], double& scale) const;
-  bool straddles(const Tri& x, const Vec<P>& nx, const Tri& y) const;
+  bool straddles(const Tri& x, const Vec<P>* nx, const Tri& y) const;
   std::optional<std::pair<Point3, Point3>> segment(const Tri& x, const Tri& y) const;
   const Point3& world(int g) const;
   // face_engine_visibility.cpp

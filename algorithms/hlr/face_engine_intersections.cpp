@@ -8,15 +8,17 @@
 #include <tuple>
 
 #include "algorithms/hlr/face_engine.hpp"
-#include "algorithms/support/uninitialised.hpp"
 #include "algorithms/hlr/intersection_broad_phase.hpp"
 #include "algorithms/hlr/intersection_lines.hpp"
 #include "algorithms/support/parallel.hpp"
+#include "algorithms/support/uninitialised.hpp"
+#include "kernel/predicates.hpp"
 
 namespace hlr::face_route {
 namespace {
 
 using Line = CrossLine;  // bodies, faces, ends
+const std::vector<int> kNoParts;
 
 // Pieces of one face pair's line cut by face diagonals: joined where they meet end to end.
 void join_collinear(std::vector<Line>& v) {
@@ -91,12 +93,20 @@ void Engine<P>::find_intersections(LineDrawing& res) {
       for (int u : x.v)
         for (int w : y.v) shared = shared || u == w;
       if (shared || x.face == y.face) return PairVerdict::Skip;
+      // Two faces of one part of the user's face (a section split it) or of one cap lie in one
+      // plane: no line.
+      const auto& part = static_cast<std::size_t>(x.body) < hooks_.face_part.size() ? hooks_.face_part[x.body] : kNoParts;
+      if (!part.empty() && part[x.face] == part[y.face]) return PairVerdict::Skip;
     }
     Vec<P> mx, my;
+    if constexpr (std::is_same_v<P, Big>) {  // the sides from the points (straddles): normals only when both straddle
+      if (!straddles(x, nullptr, y) || !straddles(y, nullptr, x)) return PairVerdict::Reject;
+      return may_meet(x, normal_of(ta, mx), y, normal_of(tc, my)) ? PairVerdict::Keep : PairVerdict::Reject;
+    }
     const Vec<P>& nx = normal_of(ta, mx);
-    if (!straddles(x, nx, y)) return PairVerdict::Reject;
+    if (!straddles(x, &nx, y)) return PairVerdict::Reject;
     const Vec<P>& ny = normal_of(tc, my);
-    return straddles(y, ny, x) && may_meet(x, nx, y, ny) ? PairVerdict::Keep : PairVerdict::Reject;
+    return straddles(y, &ny, x) && may_meet(x, nx, y, ny) ? PairVerdict::Keep : PairVerdict::Reject;
   };
   // The boxes in floats rounded outward (half the memory; boxes only grow, so no pair is lost),
   // in doubles when some coordinate lies beyond the floats' range.
@@ -328,13 +338,18 @@ bool Engine<P>::extent_on_plane(const Tri& t, const Tri& o, const Vec<P>& n, int
   return std::isfinite(out[0]) && std::isfinite(out[1]) && std::isfinite(scale);
 }
 
-// Triangle y has vertices strictly on both sides of x's plane (normal n), or on it (not all
-// on it).
+// Triangle y has vertices strictly on both sides of x's plane (normal *n; Big: from the
+// points, n unused), or on it (not all on it).
 template <class P>
-bool Engine<P>::straddles(const Tri& x, const Vec<P>& n, const Tri& y) const {
+bool Engine<P>::straddles(const Tri& x, const Vec<P>* n, const Tri& y) const {
   int pos = 0, neg_ = 0;
   for (int v : y.v) {
-    int s = P::sign(dot<P>(n, sub<P>(X_[v], X_[x.v[0]])));
+    int s = 0;
+    if constexpr (std::is_same_v<P, Big>) {  // the kernel's filtered orientation on the points themselves (the same sign)
+      s = static_cast<int>(orientation(world(x.v[0]), world(x.v[1]), world(x.v[2]), world(v)));
+    } else {
+      s = P::sign(dot<P>(*n, sub<P>(X_[v], X_[x.v[0]])));
+    }
     pos += s > 0;
     neg_ += s < 0;
   }

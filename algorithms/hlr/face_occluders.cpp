@@ -191,10 +191,10 @@ bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
   return true;
 }
 
-// Big's grid (face_engine.hpp, Prepared::on_grid): the denominators below 2^62 that most
-// vertices have (each vertex's: of its three coordinates), joined while their least common
-// multiple G stays below 2^62; a vertex is on the grid when its denominator divides G and
-// its coordinates times G are below 2^61.
+// Big's grid (face_engine.hpp, Prepared::on_grid): the denominators below 2^62 that many
+// vertices have (each vertex's: of its three coordinates; at least one vertex in 64), most
+// frequent first, joined while their least common multiple G stays below 2^62; a vertex is on
+// the grid when its denominator divides G and its coordinates times G are below 2^61.
 struct BigGrid {
   std::vector<char> on;
   std::vector<std::array<std::int64_t, 3>> small;
@@ -227,6 +227,7 @@ BigGrid big_grid(const std::vector<const Polyhedron*>& bodies, std::size_t total
   for (const auto& [d, n] : count) by_count.emplace_back(n, d);
   std::sort(by_count.begin(), by_count.end(), std::greater<>());
   for (const auto& [n, d] : by_count) {
+    if (n * 64 < total) break;  // a rare denominator (a cut point's) would only make every small integer larger
     const std::uint64_t g = std::gcd(grid.G, d);
     if (grid.G / g <= ((std::uint64_t(1) << 62) - 1) / d) grid.G = grid.G / g * d;
   }
