@@ -144,19 +144,13 @@ bool scale_fast(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
   return true;
 }
 
-// Wide: the common denominator of any size (GMP), then every coordinate (and the eye) scaled
-// on all cores and kept when below 2^Wide::kBits; the view direction by its own denominator.
-// False when a value is not below it (then GMP integers take the scene).
-bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam, std::vector<Vec<Wide>>& pts, Vec<Wide>& view, Rational& scale,
-                unsigned threads) {
-  const ParallelLoop loop(threads);
+// The common denominator of every coordinate and the eye in GMP integers: per chunk of
+// vertices on all cores, then of those. Stops once it passes `stop_bits` bits (0: never).
+mpz_class gmp_common_denominator(const std::vector<const Polyhedron*>& bodies, const Camera& cam, const ParallelLoop& loop, int stop_bits) {
   constexpr std::size_t kChunk = 4096;  // vertices
-  const auto fits = [](const mpz_class& v) { return mpz_sizeinbase(v.get_mpz_t(), 2) <= std::size_t(Wide::kBits); };
   mpz_class L = 1;
-  std::size_t total = 0;
-  for (const Polyhedron* p : bodies) {  // the least common multiple per chunk, then of those
+  for (const Polyhedron* p : bodies) {
     const std::vector<Point3>& vs = p->vertices();
-    total += vs.size();
     std::vector<mpz_class> part((vs.size() + kChunk - 1) / kChunk, 1);
     loop.for_each(part.size(), 1, [&](std::size_t c) {
       mpz_ptr l = part[c].get_mpz_t();
@@ -165,10 +159,23 @@ bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
           if (!mpz_divisible_p(l, vs[i][k].get_den_mpz_t())) mpz_lcm(l, l, vs[i][k].get_den_mpz_t());
     });
     for (const mpz_class& d : part) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), d.get_mpz_t());
-    if (!fits(L)) return false;
+    if (stop_bits > 0 && mpz_sizeinbase(L.get_mpz_t(), 2) > std::size_t(stop_bits)) return L;
   }
   if (cam.perspective)
     for (int k = 0; k < 3; ++k) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), cam.eye[k].get_den_mpz_t());
+  return L;
+}
+
+// Wide: the common denominator of any size (GMP), then every coordinate (and the eye) scaled
+// on all cores and kept when below 2^Wide::kBits; the view direction by its own denominator.
+// False when a value is not below it (then GMP integers take the scene).
+bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam, std::vector<Vec<Wide>>& pts, Vec<Wide>& view, Rational& scale,
+                unsigned threads) {
+  const ParallelLoop loop(threads);
+  const auto fits = [](const mpz_class& v) { return mpz_sizeinbase(v.get_mpz_t(), 2) <= std::size_t(Wide::kBits); };
+  std::size_t total = 0;
+  for (const Polyhedron* p : bodies) total += p->num_vertices();
+  const mpz_class L = gmp_common_denominator(bodies, cam, loop, Wide::kBits);
   if (!fits(L)) return false;
   // q·L, exact (q's denominator divides L), into `out` when below the bound.
   auto scaled = [&](const Rational& q, mpz_class& t, Wide::C& out) {
@@ -213,16 +220,18 @@ std::uint64_t vertex_denominator(const Point3& v) {
   return d;
 }
 
-BigGrid big_grid(const std::vector<const Polyhedron*>& bodies, std::size_t total) {
+BigGrid big_grid(const std::vector<const Polyhedron*>& bodies, std::size_t total, const ParallelLoop& loop) {
   BigGrid grid;
-  std::vector<std::uint64_t> den;
-  den.reserve(total);
+  std::vector<std::uint64_t> den(total);
+  std::size_t at = 0;
+  for (const Polyhedron* p : bodies) {
+    const std::vector<Point3>& vs = p->vertices();
+    loop.for_each(vs.size(), 4096, [&](std::size_t i) { den[at + i] = vertex_denominator(vs[i]); });
+    at += vs.size();
+  }
   std::unordered_map<std::uint64_t, std::size_t> count;
-  for (const Polyhedron* p : bodies)
-    for (const Point3& v : p->vertices()) {
-      den.push_back(vertex_denominator(v));
-      if (den.back()) ++count[den.back()];
-    }
+  for (std::uint64_t d : den)
+    if (d) ++count[d];
   std::vector<std::pair<std::size_t, std::uint64_t>> by_count;
   for (const auto& [d, n] : count) by_count.emplace_back(n, d);
   std::sort(by_count.begin(), by_count.end(), std::greater<>());
@@ -251,18 +260,12 @@ BigGrid big_grid(const std::vector<const Polyhedron*>& bodies, std::size_t total
 }
 
 void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, std::vector<Vec<Big>>& pts, Vec<Big>& view, Rational& scale,
-               BigGrid& grid) {
-  mpz_class L = 1;
+               BigGrid& grid, unsigned threads) {
   std::size_t total = 0;
-  auto acc = [&](const Rational& q) { mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), q.get_den_mpz_t()); };
-  for (const Polyhedron* p : bodies) {
-    total += p->num_vertices();
-    for (const Point3& v : p->vertices())
-      for (int k = 0; k < 3; ++k) acc(v[k]);
-  }
-  if (cam.perspective)
-    for (int k = 0; k < 3; ++k) acc(cam.eye[k]);
-  grid = big_grid(bodies, total);
+  for (const Polyhedron* p : bodies) total += p->num_vertices();
+  const ParallelLoop loop(threads);
+  const mpz_class L = gmp_common_denominator(bodies, cam, loop, 0);
+  grid = big_grid(bodies, total, loop);
   const mpz_class K = L / mpz_class(static_cast<unsigned long>(grid.G));  // G divides L
   auto sc = [&](const Rational& q) { return mpz_class(q.get_num() * (L / q.get_den())); };
   std::size_t i = 0;
@@ -370,7 +373,7 @@ LineDrawing face_occluders(const std::vector<const Polyhedron*>& bodies, const C
   Vec<Big> view;
   Rational scale;
   BigGrid grid;
-  scale_big(bodies, camera, pts, view, scale, grid);
+  scale_big(bodies, camera, pts, view, scale, grid, opt.threads);
   return run_engine<Big>(bodies, camera, opt, hooks, std::move(pts), std::move(view), std::move(scale), share, 3, std::move(grid));
 }
 
