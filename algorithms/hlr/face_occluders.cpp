@@ -268,18 +268,20 @@ void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, 
   grid = big_grid(bodies, total, loop);
   const mpz_class K = L / mpz_class(static_cast<unsigned long>(grid.G));  // G divides L
   auto sc = [&](const Rational& q) { return mpz_class(q.get_num() * (L / q.get_den())); };
-  std::size_t i = 0;
-  for (const Polyhedron* p : bodies)
-    for (const Point3& v : p->vertices()) {
-      const std::size_t at = i++;
+  pts.resize(total);
+  std::size_t first = 0;
+  for (const Polyhedron* p : bodies) {  // on all cores, each vertex into its own slot
+    const std::vector<Point3>& vs = p->vertices();
+    loop.for_each(vs.size(), 4096, [&](std::size_t i) {
+      const std::size_t at = first + i;
       if (grid.on[at]) {
-        Vec<Big> x;
-        for (int k = 0; k < 3; ++k) mpz_mul_si(x[k].get_mpz_t(), K.get_mpz_t(), static_cast<long>(grid.small[at][k]));
-        pts.push_back(std::move(x));
+        for (int k = 0; k < 3; ++k) mpz_mul_si(pts[at][k].get_mpz_t(), K.get_mpz_t(), static_cast<long>(grid.small[at][k]));
       } else {
-        pts.push_back({sc(v[0]), sc(v[1]), sc(v[2])});
+        for (int k = 0; k < 3; ++k) pts[at][k] = sc(vs[i][k]);
       }
-    }
+    });
+    first += vs.size();
+  }
   if (cam.perspective) {
     view = {sc(cam.eye[0]), sc(cam.eye[1]), sc(cam.eye[2])};
   } else {

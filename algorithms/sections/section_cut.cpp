@@ -184,7 +184,7 @@ void compact(CutSolid& c) {
   std::vector<Point3> kept;
   for (Face& f : c.faces)
     for (int& x : f) {
-      if (id[x] < 0) id[x] = static_cast<int>(kept.size()), kept.push_back(c.vertices[x]);
+      if (id[x] < 0) id[x] = static_cast<int>(kept.size()), kept.push_back(std::move(c.vertices[x]));  // each moved once
       x = id[x];
     }
   c.vertices = std::move(kept);

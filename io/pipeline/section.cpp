@@ -8,6 +8,7 @@
 
 #include "algorithms/hatching/hatch.hpp"
 #include "algorithms/sections/section_cut.hpp"
+#include "algorithms/support/parallel.hpp"
 #include "io/pipeline/render_steps.hpp"
 
 namespace hlr {
@@ -158,7 +159,9 @@ void cut_bodies(const std::vector<Plane>& planes, const std::vector<Plane>& away
         input_face.push_back(part < input_faces ? n.output_face(part) : static_cast<int>(n.input_faces(input_faces)) + part - input_faces);
       n.input_face = std::move(input_face);
       n.numbered = n.input_faces(input_faces) + planes.size() + away.size();
-      b.body = Polyhedron(std::move(c.vertices), std::move(c.faces));
+      const ParallelLoop loop;  // (the points' lowest terms checked on all cores)
+      b.body = Polyhedron(std::move(c.vertices), std::move(c.faces),
+                          [&](std::size_t n, const std::function<void(std::size_t)>& body) { loop.for_each(n, 4096, body); });
       b.surfaces = renumbered_surfaces(b.surfaces, c.part);
       b.section_part = std::move(c.part);
       b.section_cap = std::move(c.cap);
