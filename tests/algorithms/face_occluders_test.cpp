@@ -366,12 +366,20 @@ TEST(FaceOccluders, IntersectionLinesEqualOnEveryNumberPath) {
     };
     Polyhedron wide = far("0.0000000001"), limbs = far("1/1180591620717411303424"),    // 2^-70
         big = far("1/1606938044258990275541962092341162602522202993782792835301376");  // 2^-200
+    // GMP integers with the soup off the grid: 4,000 far points (in no face) in 3^-38 steps
+    // make 3^38 the grid (the soup's quarters are too rare to join it), the 2^-200 triangle
+    // puts the scene on GMP integers: the soup's pairs take the doubles' orientation filter
+    // and the exact fallback on the scaled points.
+    std::vector<Point3> far_pts = big.vertices();
+    const Rational step(mpz_class(1), mpz_class("1350851717672992089"));  // 3^-38
+    for (int j = 1; j <= 4000; ++j) far_pts.push_back(Point3(Rational(-60) + step * j, Rational(-60), Rational(-60)));
+    Polyhedron off_grid(far_pts, {{0, 1, 2}});
     for (const Camera& cam : views) {
       LineDrawing fast = run({&soup}, cam);
       ASSERT_TRUE(fast.stats.faces->integer_path);
-      for (const Polyhedron* extra : {&wide, &limbs, &big}) {
+      for (const Polyhedron* extra : {&wide, &limbs, &big, &off_grid}) {
         LineDrawing other = run({&soup, extra}, cam);
-        EXPECT_EQ(other.stats.faces->integer_path, extra != &big);
+        EXPECT_EQ(other.stats.faces->integer_path, extra != &big && extra != &off_grid);
         std::vector<const Segment*> a, b;
         for (const Segment& s : fast.segments)
           if (s.kind == Segment::Kind::Intersection) a.push_back(&s);
