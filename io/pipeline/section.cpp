@@ -279,7 +279,8 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
     if (style.pattern == HatchStyle::Pattern::Cross) angles.push_back(angle + 90);
     for (const auto& [plane, faces] : caps) {
       const std::vector<std::array<int, 2>> border = cap_border(body.body, faces);
-      const Plane h = body.body.face_plane(faces[0]);  // (not every face's plane: a cut mesh has many)
+      // (this face's plane alone: a cut mesh has many faces)
+      const Plane h = body.body.face_plane(faces[0]);
       if (seen_edge_on(h, r.camera)) continue;  // no area on the page, nothing to hatch
       std::array<double, 4> box = {INFINITY, INFINITY, -INFINITY, -INFINITY};
       double lo3[3] = {INFINITY, INFINITY, INFINITY}, hi3[3] = {-INFINITY, -INFINITY, -INFINITY};
