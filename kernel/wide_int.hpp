@@ -10,9 +10,12 @@
 #include <gmp.h>
 #include <gmpxx.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+
+#include "kernel/int128.hpp"
 
 namespace hlr {
 
@@ -34,6 +37,15 @@ class WideInt {
     size_ = v < 0 ? -1 : 1;
   }
   WideInt(int v) : WideInt(static_cast<long>(v)) {}  // NOLINT(google-explicit-constructor)
+  /// From a 128-bit integer (N >= 2).
+  explicit WideInt(Int128 v) {
+    static_assert(N >= 2, "two limbs");
+    const UInt128 u = v < 0 ? 0 - static_cast<UInt128>(v) : static_cast<UInt128>(v);
+    limb_[0] = static_cast<mp_limb_t>(u);
+    limb_[1] = static_cast<mp_limb_t>(u >> 64);
+    const int n = limb_[1] != 0 ? 2 : (limb_[0] != 0 ? 1 : 0);
+    size_ = v < 0 ? -n : n;
+  }
   /// From a GMP integer of at most N limbs.
   explicit WideInt(mpz_srcptr z) {
     const int n = std::abs(z->_mp_size);
@@ -51,16 +63,32 @@ class WideInt {
   }
 
   int sign() const { return (size_ > 0) - (size_ < 0); }
+  /// The value as a 128-bit integer; |value| must be below 2^127.
+  Int128 to_int128() const {
+    const int n = std::abs(size_);
+    if (n > 2 || (n == 2 && (limb_[1] >> 63) != 0)) throw std::logic_error("WideInt: not a 128-bit value");
+    const UInt128 u = n == 0 ? 0 : (n == 1 ? limb_[0] : (static_cast<UInt128>(limb_[1]) << 64) | limb_[0]);
+    return size_ < 0 ? -static_cast<Int128>(u) : static_cast<Int128>(u);
+  }
+  /// The bit length of |value| (0 for 0).
+  int bits() const {
+    const int n = std::abs(size_);
+    return n == 0 ? 0 : 64 * n - __builtin_clzl(limb_[n - 1]);
+  }
   /// A read-only GMP view of the value (valid while this object lives, unchanged).
   mpz_srcptr view(mpz_t scratch) const { return mpz_roinit_n(scratch, limb_, size_); }
   mpz_class to_mpz() const {
     mpz_t t;
     return mpz_class(view(t));
   }
-  /// mpz_get_d's double (truncated: within 2^-52 relative; infinite beyond the range).
+  /// The double of the top two limbs (rounded once) times a power of two: the limbs below
+  /// weigh under 2^-64 of the value, so within 2^-52 relative; infinite beyond the range.
   double to_double() const {
-    mpz_t t;
-    return mpz_get_d(view(t));
+    const int n = std::abs(size_);
+    if (n == 0) return 0;
+    const double top = n == 1 ? static_cast<double>(limb_[0]) : static_cast<double>((static_cast<UInt128>(limb_[n - 1]) << 64) | limb_[n - 2]);
+    const double r = n > 2 ? std::ldexp(top, 64 * (n - 2)) : top;
+    return size_ < 0 ? -r : r;
   }
 
   friend WideInt operator-(WideInt a) {
@@ -133,7 +161,7 @@ class WideInt {
       else mpn_mul(r, b, bn, a, an);
       return;
     }
-    using U = unsigned __int128;
+    using U = UInt128;
     for (int j = 0; j < bn; ++j) {
       mp_limb_t carry = 0;
       for (int i = 0; i < an; ++i) {  // at most (2^64 - 1)^2 + 2 (2^64 - 1) = 2^128 - 1: no overflow

@@ -89,6 +89,94 @@ struct FrontBox {
 FrontBox front_box(const Camera& cam, const Point3* const* pts, const std::array<double, 3>* const* proj,
                    const bool* front, int n);
 
+/// Sign of det(q - p, r - p, s - p), the side of s against the plane of p, q, r (n·(s - p),
+/// n = (q - p) x (r - p)), from doubles of the points each within 2u of the exact value
+/// (relative; NaN: unknown), or 2 when they cannot tell (face_engine_occluders.cpp).
+int orient_filter(const std::array<double, 3>& p, const std::array<double, 3>& q, const std::array<double, 3>& r, const std::array<double, 3>& s);
+
+/// One body's face normals. Compact (the multi-limb path with a grid): a normal below 2^126
+/// in magnitude (a face on the grid) as three 128-bit integers, any other in a second array
+/// that its first integer's mark points into; a third of the memory of five-limb numbers.
+/// Otherwise every normal in the policy's own numbers.
+template <class P>
+class FaceNormals {
+ public:
+  void reset(std::size_t faces, bool compact) {
+    compact_ = compact;
+    full_.clear();
+    small_.clear();
+    wide_.clear();
+    if (compact) small_.resize(faces);
+    else full_.resize(faces);
+  }
+  std::size_t size() const { return compact_ ? small_.size() : full_.size(); }
+  Vec<P> get(std::size_t f) const {
+    if (!compact_) return full_[f];
+    const std::array<Int128, 3>& s = small_[f];
+    if (s[0] == kMark) return wide_[static_cast<std::size_t>(s[1])];
+    return {of(s[0]), of(s[1]), of(s[2])};
+  }
+  /// Doubles of the normal, each within 2^-52 of the exact value (relative). Not for Big.
+  std::array<double, 3> approx(std::size_t f) const {
+    if (compact_) {
+      const std::array<Int128, 3>& s = small_[f];
+      if (s[0] != kMark) return {static_cast<double>(s[0]), static_cast<double>(s[1]), static_cast<double>(s[2])};
+      return doubles(wide_[static_cast<std::size_t>(s[1])]);
+    }
+    return doubles(full_[f]);
+  }
+  /// On all cores for distinct faces. False when compact and n does not fit (then put_wide).
+  bool put(std::size_t f, Vec<P> n) {
+    if (!compact_) {
+      full_[f] = std::move(n);
+      return true;
+    }
+    if constexpr (std::is_same_v<P, Wide>) {
+      for (int k = 0; k < 3; ++k)
+        if (n[k].bits() > 126) return false;
+      for (int k = 0; k < 3; ++k) small_[f][k] = n[k].to_int128();
+    }
+    return true;
+  }
+  /// One caller at a time.
+  void put_wide(std::size_t f, Vec<P> n) {
+    small_[f] = {kMark, static_cast<Int128>(wide_.size()), 0};
+    wide_.push_back(std::move(n));
+  }
+  void negate(std::size_t f) {
+    if (!compact_) {
+      full_[f] = neg<P>(full_[f]);
+    } else if (small_[f][0] == kMark) {
+      Vec<P>& w = wide_[static_cast<std::size_t>(small_[f][1])];
+      w = neg<P>(w);
+    } else {
+      for (Int128& v : small_[f]) v = -v;
+    }
+  }
+
+ private:
+  using C = typename P::C;
+  static C of(Int128 v) {
+    if constexpr (std::is_same_v<P, Big>) {
+      return to_mpz(v);
+    } else {
+      return static_cast<C>(v);
+    }
+  }
+  static std::array<double, 3> doubles(const Vec<P>& n) {
+    if constexpr (std::is_same_v<P, Wide>) {
+      return {n[0].to_double(), n[1].to_double(), n[2].to_double()};
+    } else {
+      return {static_cast<double>(n[0]), static_cast<double>(n[1]), static_cast<double>(n[2])};
+    }
+  }
+  static constexpr Int128 kMark = -(Int128(1) << 126) - 1;  // below every kept value
+  bool compact_ = false;
+  std::vector<Vec<P>> full_;
+  std::vector<std::array<Int128, 3>> small_;
+  std::vector<Vec<P>> wide_;
+};
+
 /// The engine's work that no view changes (FaceRouteShare): filled by the first view, read by
 /// the next ones of the same bodies. Triangles, normals and facing vertices are after every
 /// inside-out solid or component was turned.
@@ -96,18 +184,19 @@ template <class P>
 struct Prepared {
   std::vector<Vec<P>> X;  // every vertex scaled to integers
   Rational scale;
-  /// Big only (else empty): per vertex, whether it lies on the scene's grid (a common
-  /// denominator G of most vertices, below 2^62), and then its coordinates times G, each below
-  /// 2^61; X = small·(scale / G). A face with only such corners takes its normal from these
-  /// (a positive multiple of the one from X), which a cut's few far finer points (a section
-  /// through a curved mesh) would otherwise make as long as their common denominator.
+  /// Wide and Big only (else empty): per vertex, whether it lies on the scene's grid (a
+  /// common denominator G of most vertices, below 2^62), and then its coordinates times G,
+  /// each below 2^61; X = small·(scale / G). A face with only such corners takes its normal
+  /// from these (a positive multiple of the one from X), which a few far finer points (a
+  /// cut's split points, an exporter's near-zero noise) would otherwise make as long as their
+  /// common denominator.
   std::vector<char> on_grid;
   std::vector<std::array<std::int64_t, 3>> small;
   std::uint64_t grid = 1;  // G
   bool done = false;       // every body below is prepared
   std::vector<BodyTopology> topo;
   std::vector<std::vector<char>> degenerate;
-  std::vector<std::vector<Vec<P>>> face_normal;
+  std::vector<FaceNormals<P>> face_normal;
   std::vector<std::vector<int>> facing_at;  // per face: the vertex its facing is measured at
   std::vector<Tri> tris;
   std::vector<int> first_tri;  // per body
@@ -161,6 +250,14 @@ class Engine {
   bool eye_inside(int first) const;
   bool eye_on_surface(int first) const;
   static void flip(Tri& t);
+  /// A 128-bit integer as a coordinate (Wide, Big).
+  static C of128(Int128 v) {
+    if constexpr (std::is_same_v<P, Big>) {
+      return to_mpz(v);
+    } else {
+      return C(v);
+    }
+  }
   // face_engine_occluders.cpp
   bool neighbour(const Tri& t, int k, int& face, int& third) const;
   void vertex_rules();
@@ -236,7 +333,7 @@ class Engine {
   std::vector<std::vector<int>> facing_;
   std::vector<BodyTopology>& topo_;
   std::vector<std::vector<char>>& degenerate_;
-  std::vector<std::vector<Vec<P>>>& face_normal_;
+  std::vector<FaceNormals<P>>& face_normal_;
   std::vector<Tri>& tris_;
   std::vector<int> sel_;               // the triangles that become occluders
   std::vector<std::uint8_t> closed_;   // their closed sides (bit k + 1: side k)
@@ -248,10 +345,11 @@ class Engine {
   std::vector<std::array<double, 3>> vproj_;
   std::vector<std::array<double, 3>> Xd_;  // kFiltered: every vertex's doubles (X_ · 2^-sigma_)
   long sigma_ = 0;                         // Big: every |X| and the eye below 2^sigma_ (filter_shift)
-  // Big with a grid (Prepared::on_grid): scale / G, and the eye's coordinates times G when it
-  // lies on the grid (perspective), for side planes through grid vertices (grid_view).
-  mpz_class grid_factor_;
+  // Wide and Big with a grid (Prepared::on_grid): scale / G, and the eye's coordinates times G
+  // when it lies on the grid (perspective), for side planes through grid vertices (grid_view).
+  C grid_factor_{};
   std::optional<std::array<std::int64_t, 3>> eye_small_;
+  std::optional<std::array<Int128, 3>> view_small_;  // orthographic: the direction, each component below 2^62
   std::vector<char> vfront_;
   std::vector<char> vertex_closed_;
   std::vector<CrossLine> cross_;  // intersection lines, found before the occluders are built

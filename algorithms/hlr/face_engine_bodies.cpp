@@ -82,12 +82,12 @@ LineDrawing Engine<P>::run() {
   }
   vertex_rules();
   project_vertices();
-  if constexpr (std::is_same_v<P, Big>) filter_shift(), filter_doubles();  // the intersections' filter reads them
+  if constexpr (kFiltered) filter_shift(), filter_doubles();         // the intersections' filters read them
   const bool early = cam_.perspective || total * 8 >= tris_.size();  // near_segments() would not apply
   auto free_topology = [&] {
     if (keep_) return;
     std::vector<BodyTopology>().swap(topo_);
-    std::vector<std::vector<Vec<P>>>().swap(face_normal_);
+    std::vector<FaceNormals<P>>().swap(face_normal_);
   };
   if (early) select_occluders(drawn), free_topology();
   const auto ti0 = Clock::now();
@@ -168,12 +168,28 @@ void Engine<P>::offsets() {
 
 template <class P>
 void Engine<P>::grid_view() {
-  if constexpr (std::is_same_v<P, Big>) {
+  if constexpr (kFiltered) {
     if (prep_->on_grid.empty()) return;
     const mpz_class G(static_cast<unsigned long>(prep_->grid));
-    mpz_divexact(grid_factor_.get_mpz_t(), scale_.get_num_mpz_t(), G.get_mpz_t());  // scale is an integer, G divides it
+    mpz_class K;
+    mpz_divexact(K.get_mpz_t(), scale_.get_num_mpz_t(), G.get_mpz_t());  // scale is an integer, G divides it
+    if constexpr (std::is_same_v<P, Big>) {
+      grid_factor_ = std::move(K);
+    } else {
+      grid_factor_ = C(K.get_mpz_t());  // below the coordinates' bound: scale is, G >= 1
+    }
     eye_small_.reset();
-    if (!cam_.perspective) return;
+    view_small_.reset();
+    if (!cam_.perspective) {
+      std::array<Int128, 3> d;
+      for (int k = 0; k < 3; ++k) {
+        const mpz_class z = P::zc(view_[k]);
+        if (mpz_sizeinbase(z.get_mpz_t(), 2) > 61) return;
+        d[k] = mpz_get_si(z.get_mpz_t());
+      }
+      view_small_ = d;
+      return;
+    }
     std::array<std::int64_t, 3> e;
     for (int k = 0; k < 3; ++k) {
       const Rational& q = cam_.eye[k];
@@ -197,14 +213,14 @@ bool Engine<P>::on_grid(const Tri& t) const {
 // 2^124, each component below 2^125, exact in 128 bits).
 template <class P>
 Vec<P> Engine<P>::normal(const Tri& t) const {
-  if constexpr (std::is_same_v<P, Big>) {
+  if constexpr (kFiltered) {
     if (on_grid(t)) {
       const auto& a = prep_->small[t.v[0]];
       const auto& b = prep_->small[t.v[1]];
       const auto& c = prep_->small[t.v[2]];
       Int128 u[3], w[3];
       for (int k = 0; k < 3; ++k) u[k] = Int128(b[k]) - a[k], w[k] = Int128(c[k]) - a[k];
-      return {to_mpz(u[1] * w[2] - u[2] * w[1]), to_mpz(u[2] * w[0] - u[0] * w[2]), to_mpz(u[0] * w[1] - u[1] * w[0])};
+      return {of128(u[1] * w[2] - u[2] * w[1]), of128(u[2] * w[0] - u[0] * w[2]), of128(u[0] * w[1] - u[1] * w[0])};
     }
   }
   return cross<P>(sub<P>(X_[t.v[1]], X_[t.v[0]]), sub<P>(X_[t.v[2]], X_[t.v[0]]));
@@ -222,10 +238,18 @@ int Engine<P>::triangulate_body(int b) {
   std::vector<int>& facing_at = prep_->facing_at[b];
   facing_at.assign(faces.size(), -1);
   degenerate_[b].assign(faces.size(), 0);
-  face_normal_[b].resize(faces.size());
+  // Wide with a grid over most vertices (a face off it in about three in eight at most): the
+  // normals kept compact (FaceNormals).
+  std::size_t on = 0;
+  const std::size_t nv = p.num_vertices();
+  if (std::is_same_v<P, Wide> && !prep_->on_grid.empty())
+    for (std::size_t i = 0; i < nv; ++i) on += prep_->on_grid[static_cast<std::size_t>(vo) + i] != 0;
+  face_normal_[b].reset(faces.size(), std::is_same_v<P, Wide> && on > 0 && on * 8 >= nv * 7);
   const int first_tri = static_cast<int>(tris_.size());
   // Triangles' normals on all cores (integer arithmetic on the shared coordinates; each face
-  // writes its own slots), then the triangles listed in face order.
+  // writes its own slots; a compact store's few long normals after), then the triangles
+  // listed in face order.
+  std::vector<char> long_normal(faces.size(), 0);
   ParallelLoop(opt_.threads).for_each(faces.size(), 4096, [&](std::size_t f) {
     const Face& face = faces[f];
     if (face.size() != 3) return;  // after the triangulation below
@@ -236,8 +260,13 @@ int Engine<P>::triangulate_body(int b) {
       return;
     }
     facing_at[f] = probe.v[0];
-    face_normal_[b][f] = std::move(n);
+    if (!face_normal_[b].put(f, std::move(n))) long_normal[f] = 1;
   });
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (long_normal[f]) {
+      const Face& face = faces[f];
+      face_normal_[b].put_wide(f, normal(Tri{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}}));
+    }
   const ParallelLoop loop(opt_.threads);
   PerWorker<char> polygon(loop, 0);  // some face is not a triangle
   loop.run(faces.size(), 16384, [&](unsigned w, std::size_t b0, std::size_t e) {
@@ -295,7 +324,7 @@ int Engine<P>::triangulate_body(int b) {
       tris_.push_back(tri);
     }
     if (face.size() == 3) continue;  // normal and facing above
-    face_normal_[b][f] = normal(tris_.back());
+    if (!face_normal_[b].put(f, normal(tris_.back()))) face_normal_[b].put_wide(f, normal(tris_.back()));
     facing_at[f] = tris_.back().v[0];
   }
   return first_tri;
@@ -442,7 +471,7 @@ void Engine<P>::prepare_body(int b) {
   }
   if (solid_[b] && vsign < 0) {  // inside out: turn it
     for (std::size_t i = first_tri; i < tris_.size(); ++i) flip(tris_[i]);
-    for (auto& n : face_normal_[b]) n = neg<P>(n);
+    for (std::size_t f = 0; f < face_normal_[b].size(); ++f) face_normal_[b].negate(f);
     flipped_.push_back(b);
   }
 }
@@ -455,7 +484,7 @@ void Engine<P>::view_body(int b, LineDrawing& res) {
   const std::vector<int>& at = prep_->facing_at[b];
   facing.assign(at.size(), 0);
   ParallelLoop(opt_.threads).for_each(at.size(), 4096, [&](std::size_t f) {
-    if (at[f] >= 0) facing[f] = facing_sign<P>(face_normal_[b][f], X_[at[f]], view_, cam_.perspective);
+    if (at[f] >= 0) facing[f] = facing_sign<P>(face_normal_[b].get(f), X_[at[f]], view_, cam_.perspective);
   });
   for (const BodyNote& n : prep_->notes)
     if (n.body == b) res.notes.push_back(n);
@@ -563,7 +592,7 @@ bool Engine<P>::orient_components(int b, int first) {
     int lowest = static_cast<int>(nf);
     for (std::size_t f = 0; f < nf; ++f)
       if (find(static_cast<int>(f)) == r) {
-        face_normal_[b][f] = neg<P>(face_normal_[b][f]);
+        face_normal_[b].negate(f);
         lowest = std::min(lowest, static_cast<int>(f));
       }
     prep_->notes.push_back({b, "has an inside-out component (the one with face " + std::to_string(lowest) +

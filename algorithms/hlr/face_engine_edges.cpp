@@ -176,8 +176,15 @@ LineKind Engine<P>::feature_kind(int b, const EdgeUse& a, const EdgeUse& c) cons
 template <class P>
 bool Engine<P>::crease(int b, const EdgeUse& a, const EdgeUse& c, const CreaseAngle& angle) const {
   // Consistently oriented neighbours traverse the edge in opposite directions; otherwise turn one.
-  const Vec<P>& na = face_normal_[b][a.face];
-  Vec<P> nc = a.forward != c.forward ? face_normal_[b][c.face] : neg<P>(face_normal_[b][c.face]);
+  const bool turn = a.forward == c.forward;
+  if constexpr (!std::is_same_v<P, Fast> && !std::is_same_v<P, Big>) {  // the filter on doubles before any GMP number
+    const std::array<double, 3> x = face_normal_[b].approx(a.face), y0 = face_normal_[b].approx(c.face);
+    const double y[3] = {turn ? -y0[0] : y0[0], turn ? -y0[1] : y0[1], turn ? -y0[2] : y0[2]};
+    if (const int f = angle.filter(x.data(), y); f >= 0) return f == 1;
+  }
+  const Vec<P> na = face_normal_[b].get(a.face);
+  Vec<P> nc = face_normal_[b].get(c.face);
+  if (turn) nc = neg<P>(nc);
   if constexpr (std::is_same_v<P, Fast>) {
     long x[3] = {na[0], na[1], na[2]}, y[3] = {nc[0], nc[1], nc[2]};
     return angle.exceeds(x, y);

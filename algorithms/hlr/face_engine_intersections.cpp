@@ -20,26 +20,6 @@ namespace {
 using Line = CrossLine;  // bodies, faces, ends
 const std::vector<int> kNoParts;
 
-// Sign of det(q - p, r - p, s - p) from the doubles of the points (each within 2u of the
-// exact value, relative; NaN: unknown), or 2 when they cannot tell. Each difference errs by
-// at most 3u·(|q| + |p|) (inputs and one rounding), each monomial of three such by 10u times
-// the product M of those magnitudes, the six monomials and their sum by under 16u·ΣM: 64u·ΣM
-// covers it, and 1e-300 the products that underflow (every nonzero input is at least 2^-1000
-// and at most 1, filter_doubles). The determinant is (q - p)·((r - p) x (s - p)), the sign
-// of n·(s - p) for the normal n of p, q, r.
-int orient_filter(const std::array<double, 3>& p, const std::array<double, 3>& q, const std::array<double, 3>& r, const std::array<double, 3>& s) {
-  double a[3], b[3], c[3], ma[3], mb[3], mc[3];
-  for (int k = 0; k < 3; ++k) {
-    a[k] = q[k] - p[k], b[k] = r[k] - p[k], c[k] = s[k] - p[k];
-    ma[k] = std::fabs(q[k]) + std::fabs(p[k]), mb[k] = std::fabs(r[k]) + std::fabs(p[k]), mc[k] = std::fabs(s[k]) + std::fabs(p[k]);
-  }
-  const double det = a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-  const double mag = ma[0] * (mb[1] * mc[2] + mb[2] * mc[1]) + ma[1] * (mb[2] * mc[0] + mb[0] * mc[2]) + ma[2] * (mb[0] * mc[1] + mb[1] * mc[0]);
-  if (!std::isfinite(det) || !std::isfinite(mag)) return 2;
-  const double bound = 64 * kUnitRoundoff * mag + 1e-300;
-  return det > bound ? 1 : det < -bound ? -1 : 2;
-}
-
 // Pieces of one face pair's line cut by face diagonals: joined where they meet end to end.
 void join_collinear(std::vector<Line>& v) {
   std::sort(v.begin(), v.end(), [](const auto& p, const auto& q) {
@@ -119,6 +99,11 @@ void Engine<P>::find_intersections(LineDrawing& res) {
       if (!part.empty() && part[x.face] == part[y.face]) return PairVerdict::Skip;
     }
     Vec<P> mx, my;
+    if constexpr (std::is_same_v<P, Wide>) {  // sides from doubles first: the normals only when a pair stays
+      if (!straddles(x, nullptr, y) || !straddles(y, nullptr, x)) return PairVerdict::Reject;
+      const Vec<P>&nx = normal_of(ta, mx), &ny = normal_of(tc, my);
+      return may_meet(x, nx, y, ny) ? PairVerdict::Keep : PairVerdict::Reject;
+    }
     const Vec<P>& nx = normal_of(ta, mx);
     if (!straddles(x, &nx, y)) return PairVerdict::Reject;
     const Vec<P>& ny = normal_of(tc, my);
@@ -356,13 +341,21 @@ bool Engine<P>::extent_on_plane(const Tri& t, const Tri& o, const Vec<P>& n, int
 
 // Triangle y has vertices strictly on both sides of x's plane (normal *n; Big: from the grid's
 // small integers, or for a cut's points from doubles with a bound, then the scaled points), or
-// on it (not all on it).
+// on it (not all on it). Wide: from doubles with a bound, then exact (normal(x) made when n is
+// null).
 template <class P>
 bool Engine<P>::straddles(const Tri& x, const Vec<P>* n, const Tri& y) const {
   int pos = 0, neg_ = 0;
+  std::optional<Vec<P>> made;
   for (int v : y.v) {
     int s = 0;
-    if constexpr (std::is_same_v<P, Big>) {
+    if constexpr (std::is_same_v<P, Wide>) {
+      s = orient_filter(Xd_[x.v[0]], Xd_[x.v[1]], Xd_[x.v[2]], Xd_[v]);
+      if (s == 2) {
+        if (!n) n = &made.emplace(normal(x));
+        s = P::sign(dot<P>(*n, sub<P>(X_[v], X_[x.v[0]])));
+      }
+    } else if constexpr (std::is_same_v<P, Big>) {
       if (on_grid(x) && prep_->on_grid[v]) {  // *n from the grid's small integers too: the same sign
         const auto &a = prep_->small[x.v[0]], &b = prep_->small[v];
         Vec<P> d;

@@ -13,8 +13,30 @@
 #include "algorithms/hlr/face_engine.hpp"
 #include "algorithms/support/parallel.hpp"
 #include "algorithms/support/parallel_scan.hpp"
+#include "kernel/error_bounds.hpp"
 
 namespace hlr::face_route {
+
+// Sign of det(q - p, r - p, s - p) from the doubles of the points (each within 2u of the
+// exact value, relative; NaN: unknown), or 2 when they cannot tell. Each difference errs by
+// at most 3u·(|q| + |p|) (inputs and one rounding), each monomial of three such by 10u times
+// the product M of those magnitudes, the six monomials and their sum by under 16u·ΣM: 64u·ΣM
+// covers it, and 1e-300 the products that underflow (every nonzero input is at least 2^-1000
+// and at most 1, filter_doubles). The determinant is (q - p)·((r - p) x (s - p)), the sign
+// of n·(s - p) for the normal n of p, q, r. (Wide: the doubles are the integers themselves,
+// nonzero ones at least 1 and below 2^150, so no product overflows or underflows.)
+int orient_filter(const std::array<double, 3>& p, const std::array<double, 3>& q, const std::array<double, 3>& r, const std::array<double, 3>& s) {
+  double a[3], b[3], c[3], ma[3], mb[3], mc[3];
+  for (int k = 0; k < 3; ++k) {
+    a[k] = q[k] - p[k], b[k] = r[k] - p[k], c[k] = s[k] - p[k];
+    ma[k] = std::fabs(q[k]) + std::fabs(p[k]), mb[k] = std::fabs(r[k]) + std::fabs(p[k]), mc[k] = std::fabs(s[k]) + std::fabs(p[k]);
+  }
+  const double det = a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+  const double mag = ma[0] * (mb[1] * mc[2] + mb[2] * mc[1]) + ma[1] * (mb[2] * mc[0] + mb[0] * mc[2]) + ma[2] * (mb[0] * mc[1] + mb[1] * mc[0]);
+  if (!std::isfinite(det) || !std::isfinite(mag)) return 2;
+  const double bound = 64 * kUnitRoundoff * mag + 1e-300;
+  return det > bound ? 1 : det < -bound ? -1 : 2;
+}
 
 FrontBox front_box(const Camera& cam, const Point3* const* pts, const std::array<double, 3>* const* proj,
                    const bool* front, int n) {
@@ -337,8 +359,12 @@ bool Engine<P>::closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, in
     // the ray just behind the edge when the wedge holds it; a back face (an occluder only when
     // the eye is on the surface; `t` is turned, its normal points inward) when the wedge holds
     // the ray just beyond the edge, toward the eye: the mirror rule.
-    if (!n) n = normal(t);
-    int w = P::sign(dot<P>(*n, sub<P>(X_[third], X_[t.v[0]])));
+    int w = 2;
+    if constexpr (std::is_same_v<P, Wide>) w = orient_filter(Xd_[t.v[0]], Xd_[t.v[1]], Xd_[t.v[2]], Xd_[third]);
+    if (w == 2) {
+      if (!n) n = normal(t);
+      w = P::sign(dot<P>(*n, sub<P>(X_[third], X_[t.v[0]])));
+    }
     if (fs > 0) {
       if (w > 0) return true;            // reflex edge: the wedge holds the ray
       return facing_[b][g] > 0;          // convex or flat: both faces toward the viewer
@@ -375,12 +401,13 @@ void Engine<P>::exact_plane(const Occ& o, int k, Vec<P>& m, V& c) const {
 // The plane through vertices p and q containing the view direction (orthographic) or the eye
 // (perspective), as m·X - c = 0; its orientation is the caller's to fix.
 //
-// Big, p and q on the grid (and the eye, in perspective): the same plane divided by
+// Wide and Big, p and q on the grid (and the eye, in perspective): the same plane divided by
 // scale / G (orthographic) or its square (perspective), from the grid's small integers:
-// m = D x (q - p) or (p - E) x (q - E) on them, c = (scale / G)·(m·p) or (m·E).
+// m = D x (q - p) or (p - E) x (q - E) on them, c = (scale / G)·(m·p) or (m·E). (Wide: m
+// below 2^(kBits + 64), m·p below 2^(kBits + 127), times scale / G below 2^(2 kBits + 127).)
 template <class P>
 void Engine<P>::side_plane(int p, int q, Vec<P>& m, V& c) const {
-  if constexpr (std::is_same_v<P, Big>) {
+  if constexpr (kFiltered) {
     const std::vector<char>& g = prep_->on_grid;
     if (!g.empty() && g[p] && g[q] && (!cam_.perspective || eye_small_)) {
       const auto &a = prep_->small[p], &b = prep_->small[q];
@@ -388,16 +415,23 @@ void Engine<P>::side_plane(int p, int q, Vec<P>& m, V& c) const {
         const auto& e = *eye_small_;
         Int128 u[3], w[3];
         for (int k = 0; k < 3; ++k) u[k] = Int128(a[k]) - e[k], w[k] = Int128(b[k]) - e[k];
-        m = {to_mpz(u[1] * w[2] - u[2] * w[1]), to_mpz(u[2] * w[0] - u[0] * w[2]), to_mpz(u[0] * w[1] - u[1] * w[0])};
+        m = {of128(u[1] * w[2] - u[2] * w[1]), of128(u[2] * w[0] - u[0] * w[2]), of128(u[0] * w[1] - u[1] * w[0])};
+      } else if (view_small_) {  // D and q - p below 2^62: products below 2^124
+        const auto& e = *view_small_;
+        Int128 w[3];
+        for (int k = 0; k < 3; ++k) w[k] = Int128(b[k]) - a[k];
+        m = {of128(e[1] * w[2] - e[2] * w[1]), of128(e[2] * w[0] - e[0] * w[2]), of128(e[0] * w[1] - e[1] * w[0])};
       } else {
-        Vec<P> d;
-        for (int k = 0; k < 3; ++k) mpz_set_si(d[k].get_mpz_t(), static_cast<long>(b[k] - a[k]));  // below 2^62
+        const Vec<P> d = {C(static_cast<long>(b[0] - a[0])), C(static_cast<long>(b[1] - a[1])), C(static_cast<long>(b[2] - a[2]))};  // below 2^62
         m = cross<P>(view_, d);
       }
       const auto& base = cam_.perspective ? *eye_small_ : a;
-      Vec<P> o;
-      for (int k = 0; k < 3; ++k) mpz_set_si(o[k].get_mpz_t(), static_cast<long>(base[k]));
-      c = dot<P>(m, o) * grid_factor_;
+      const Vec<P> o = {C(static_cast<long>(base[0])), C(static_cast<long>(base[1])), C(static_cast<long>(base[2]))};
+      if constexpr (std::is_same_v<P, Big>) {
+        c = dot<P>(m, o) * grid_factor_;
+      } else {
+        c = V::product(dot<P>(m, o), grid_factor_);
+      }
       return;
     }
   }

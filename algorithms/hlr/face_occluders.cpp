@@ -166,43 +166,15 @@ mpz_class gmp_common_denominator(const std::vector<const Polyhedron*>& bodies, c
   return L;
 }
 
-// Wide: the common denominator of any size (GMP), then every coordinate (and the eye) scaled
-// on all cores and kept when below 2^Wide::kBits; the view direction by its own denominator.
-// False when a value is not below it (then GMP integers take the scene).
-bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam, std::vector<Vec<Wide>>& pts, Vec<Wide>& view, Rational& scale,
-                unsigned threads) {
-  const ParallelLoop loop(threads);
-  const auto fits = [](const mpz_class& v) { return mpz_sizeinbase(v.get_mpz_t(), 2) <= std::size_t(Wide::kBits); };
-  std::size_t total = 0;
-  for (const Polyhedron* p : bodies) total += p->num_vertices();
-  const mpz_class L = gmp_common_denominator(bodies, cam, loop, Wide::kBits);
-  if (!fits(L)) return false;
-  // q·L, exact (q's denominator divides L), into `out` when below the bound.
-  auto scaled = [&](const Rational& q, mpz_class& t, Wide::C& out) {
-    mpz_divexact(t.get_mpz_t(), L.get_mpz_t(), q.get_den_mpz_t());
-    t *= q.get_num();
-    if (!fits(t)) return false;
-    out = Wide::C(t.get_mpz_t());
-    return true;
-  };
-  const auto scaler = [&] { return [&, t = mpz_class()](const Rational& q, Wide::C& out) mutable { return scaled(q, t, out); }; };
-  if (!scale_vertices<Wide>(bodies, total, loop, pts, scaler)) return false;
-  mpz_class t;
-  if (cam.perspective) {
-    for (int k = 0; k < 3; ++k)
-      if (!scaled(cam.eye[k], t, view[k])) return false;
-  } else if (!direction_wide(cam, view)) {
-    return false;
-  }
-  scale = Rational(L);
-  return true;
-}
-
-// Big's grid (face_engine.hpp, Prepared::on_grid): the denominators below 2^62 that many
-// vertices have (each vertex's: of its three coordinates; at least one vertex in 64), most
-// frequent first, joined while their least common multiple G stays below 2^62; a vertex is on
-// the grid when its denominator divides G and its coordinates times G are below 2^61.
-struct BigGrid {
+// The scene's grid (face_engine.hpp, Prepared::on_grid) for the multi-limb and GMP paths: the
+// denominators below 2^62 that many vertices have (each vertex's: of its three coordinates; at
+// least one vertex in 64), most frequent first, joined while their least common multiple G
+// stays below 2^62; a vertex is on the grid when its denominator divides G and its
+// coordinates times G are below 2^61. `rare`: a rarer denominator joins too while G times the
+// largest coordinate M stays below 2^60, where it takes no vertex off the grid (an exporter's
+// few longer decimals or float32's finer binary fractions on small coordinates); not for the
+// GMP path, whose cut points' denominators would make its small integers long.
+struct SceneGrid {
   std::vector<char> on;
   std::vector<std::array<std::int64_t, 3>> small;
   std::uint64_t G = 1;
@@ -220,52 +192,124 @@ std::uint64_t vertex_denominator(const Point3& v) {
   return d;
 }
 
-BigGrid big_grid(const std::vector<const Polyhedron*>& bodies, std::size_t total, const ParallelLoop& loop) {
-  BigGrid grid;
+SceneGrid scene_grid(const std::vector<const Polyhedron*>& bodies, std::size_t total, const ParallelLoop& loop, bool rare) {
+  SceneGrid grid;
   std::vector<std::uint64_t> den(total);
+  std::vector<const Point3*> vertex(total);
   std::size_t at = 0;
   for (const Polyhedron* p : bodies) {
     const std::vector<Point3>& vs = p->vertices();
-    loop.for_each(vs.size(), 4096, [&](std::size_t i) { den[at + i] = vertex_denominator(vs[i]); });
+    loop.for_each(vs.size(), 4096, [&](std::size_t i) { den[at + i] = vertex_denominator(vs[i]), vertex[at + i] = &vs[i]; });
     at += vs.size();
   }
   std::unordered_map<std::uint64_t, std::size_t> count;
-  for (std::uint64_t d : den)
-    if (d) ++count[d];
+  for (std::size_t i = 0; i < total;) {  // runs of one denominator counted at once
+    std::size_t j = i + 1;
+    while (j < total && den[j] == den[i]) ++j;
+    if (den[i]) count[den[i]] += j - i;
+    i = j;
+  }
   std::vector<std::pair<std::size_t, std::uint64_t>> by_count;
   for (const auto& [d, n] : count) by_count.emplace_back(n, d);
   std::sort(by_count.begin(), by_count.end(), std::greater<>());
+  double M = 0;  // the largest |coordinate|, rounded up
+  if (rare) {
+    PerWorker<double> top(loop, 0.0);
+    loop.run(total, 4096, [&](unsigned w, std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i)
+        for (int k = 0; k < 3; ++k) top[w] = std::max({top[w], std::fabs(vertex[i]->approx(k).lo), std::fabs(vertex[i]->approx(k).hi)});
+    });
+    for (unsigned w = 0; w < top.size(); ++w) M = std::max(M, top[w]);
+  }
   for (const auto& [n, d] : by_count) {
-    if (n * 64 < total) break;  // a rare denominator (a cut point's) would only make every small integer larger
+    const bool many = n * 64 >= total;
+    if (!many && !rare) break;  // a rare denominator (a cut point's) would only make every small integer larger
     const std::uint64_t g = std::gcd(grid.G, d);
-    if (grid.G / g <= ((std::uint64_t(1) << 62) - 1) / d) grid.G = grid.G / g * d;
+    if (grid.G / g > ((std::uint64_t(1) << 62) - 1) / d) continue;
+    const std::uint64_t joined = grid.G / g * d;
+    if (many || static_cast<double>(joined) * M < 0x1p59) grid.G = joined;  // (doubles within 2^-52: 0x1p59 under 2^60)
   }
   grid.on.assign(total, 0);
   grid.small.assign(total, {0, 0, 0});
   const Int128 limit = Int128(1) << 61;
-  std::size_t i = 0;
-  for (const Polyhedron* p : bodies)
-    for (const Point3& v : p->vertices()) {
-      const std::size_t at = i++;
-      if (!den[at] || grid.G % den[at] != 0) continue;
-      bool fits = true;
-      for (int k = 0; k < 3 && fits; ++k) {
-        Int128 s;
-        fits = scaled_integer(v[k], grid.G, limit, s);
-        if (fits) grid.small[at][k] = static_cast<std::int64_t>(s);
-      }
-      grid.on[at] = fits;
+  loop.for_each(total, 4096, [&](std::size_t i) {
+    if (!den[i] || grid.G % den[i] != 0) return;
+    bool fits = true;
+    for (int k = 0; k < 3 && fits; ++k) {
+      Int128 s;
+      fits = scaled_integer((*vertex[i])[k], grid.G, limit, s);
+      if (fits) grid.small[i][k] = static_cast<std::int64_t>(s);
     }
+    grid.on[i] = fits;
+  });
   return grid;
 }
 
+// Wide: the common denominator L of any size (GMP), then every coordinate (and the eye) scaled
+// on all cores and kept when below 2^Wide::kBits: a vertex on the scene's grid as its small
+// integers times L / G in fixed-width limbs, any other through GMP; the view direction by its
+// own denominator. False when a value is not below the bound (then GMP integers take the scene).
+bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam, std::vector<Vec<Wide>>& pts, Vec<Wide>& view, Rational& scale,
+                SceneGrid& grid, unsigned threads) {
+  const ParallelLoop loop(threads);
+  const auto fits = [](const mpz_class& v) { return mpz_sizeinbase(v.get_mpz_t(), 2) <= std::size_t(Wide::kBits); };
+  std::size_t total = 0;
+  for (const Polyhedron* p : bodies) total += p->num_vertices();
+  const mpz_class L = gmp_common_denominator(bodies, cam, loop, Wide::kBits);
+  if (!fits(L)) return false;
+  grid = scene_grid(bodies, total, loop, true);
+  const Wide::C K(mpz_class(L / mpz_class(static_cast<unsigned long>(grid.G))).get_mpz_t());  // G divides L
+  // q·L, exact (q's denominator divides L), into `out` when below the bound.
+  auto scaled = [&](const Rational& q, mpz_class& t, Wide::C& out) {
+    mpz_divexact(t.get_mpz_t(), L.get_mpz_t(), q.get_den_mpz_t());
+    t *= q.get_num();
+    if (!fits(t)) return false;
+    out = Wide::C(t.get_mpz_t());
+    return true;
+  };
+  constexpr std::size_t kChunk = 4096;  // vertices
+  pts.clear();
+  reserve_touched(pts, total, loop);
+  pts.resize(total);
+  std::size_t first = 0;
+  for (const Polyhedron* p : bodies) {
+    const std::vector<Point3>& vs = p->vertices();
+    std::vector<char> ok((vs.size() + kChunk - 1) / kChunk, 1);
+    loop.for_each(ok.size(), 1, [&](std::size_t c) {
+      mpz_class t;
+      for (std::size_t i = c * kChunk, e = std::min(vs.size(), i + kChunk); i < e && ok[c]; ++i) {
+        const std::size_t at = first + i;
+        for (int k = 0; k < 3 && ok[c]; ++k) {
+          if (grid.on[at]) {
+            pts[at][k] = Wide::C::product(K, Wide::C(static_cast<long>(grid.small[at][k])));
+            ok[c] = pts[at][k].bits() <= Wide::kBits;
+          } else {
+            ok[c] = scaled(vs[i][k], t, pts[at][k]);
+          }
+        }
+      }
+    });
+    if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
+    first += vs.size();
+  }
+  mpz_class t;
+  if (cam.perspective) {
+    for (int k = 0; k < 3; ++k)
+      if (!scaled(cam.eye[k], t, view[k])) return false;
+  } else if (!direction_wide(cam, view)) {
+    return false;
+  }
+  scale = Rational(L);
+  return true;
+}
+
 void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, std::vector<Vec<Big>>& pts, Vec<Big>& view, Rational& scale,
-               BigGrid& grid, unsigned threads) {
+               SceneGrid& grid, unsigned threads) {
   std::size_t total = 0;
   for (const Polyhedron* p : bodies) total += p->num_vertices();
   const ParallelLoop loop(threads);
   const mpz_class L = gmp_common_denominator(bodies, cam, loop, 0);
-  grid = big_grid(bodies, total, loop);
+  grid = scene_grid(bodies, total, loop, false);
   const mpz_class K = L / mpz_class(static_cast<unsigned long>(grid.G));  // G divides L
   auto sc = [&](const Rational& q) { return mpz_class(q.get_num() * (L / q.get_den())); };
   pts.resize(total);
@@ -295,7 +339,7 @@ void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, 
 // An engine on the scaled points, sharing its view-independent work through `share` when given.
 template <class P>
 LineDrawing run_engine(const std::vector<const Polyhedron*>& bodies, const Camera& camera, const LineOptions& opt, const FaceRouteHooks& hooks,
-                       std::vector<Vec<P>> pts, Vec<P> view, Rational scale, FaceRouteShare* share, int policy, BigGrid grid = {}) {
+                       std::vector<Vec<P>> pts, Vec<P> view, Rational scale, FaceRouteShare* share, int policy, SceneGrid grid = {}) {
   auto prep = std::make_shared<face_route::Prepared<P>>();
   prep->X = std::move(pts);
   prep->scale = std::move(scale);
@@ -368,13 +412,14 @@ LineDrawing face_occluders(const std::vector<const Polyhedron*>& bodies, const C
     std::vector<Vec<Wide>> pts;
     Vec<Wide> view{};
     Rational scale;
-    if (scale_wide(bodies, camera, pts, view, scale, opt.threads))
-      return run_engine<Wide>(bodies, camera, opt, hooks, std::move(pts), view, std::move(scale), share, 2);
+    SceneGrid grid;
+    if (scale_wide(bodies, camera, pts, view, scale, grid, opt.threads))
+      return run_engine<Wide>(bodies, camera, opt, hooks, std::move(pts), view, std::move(scale), share, 2, std::move(grid));
   }
   std::vector<Vec<Big>> pts;
   Vec<Big> view;
   Rational scale;
-  BigGrid grid;
+  SceneGrid grid;
   scale_big(bodies, camera, pts, view, scale, grid, opt.threads);
   return run_engine<Big>(bodies, camera, opt, hooks, std::move(pts), std::move(view), std::move(scale), share, 3, std::move(grid));
 }

@@ -56,27 +56,19 @@ CreaseAngle::CreaseAngle(const Rational& degrees) : degrees_(degrees) {
 }
 
 bool CreaseAngle::exceeds(const long n1[3], const long n2[3]) const {
-  // Double filter: each input rounds once (relative 2^-53), the dot product, norms, square root
-  // and division add a few roundings more, so the computed cosine is within about 1e-15 of the
-  // exact one (and cos_ within 1e-16 of cos(DEG)); a gap over 1e-9 decides, anything closer
-  // goes to the exact test.
   double a[3], b[3];
   for (int k = 0; k < 3; ++k) a[k] = static_cast<double>(n1[k]), b[k] = static_cast<double>(n2[k]);
-  double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  double l = std::sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
-  double c = d / l;
-  if (std::isfinite(c) && std::fabs(c - cos_) > 1e-9) return c < cos_;
+  if (const int f = filter(a, b); f >= 0) return f == 1;
   mpz_class x[3], y[3];
   for (int k = 0; k < 3; ++k) x[k] = n1[k], y[k] = n2[k];
   return exceeds_exact(x, y);
 }
 
 bool CreaseAngle::exceeds(const mpz_class n1[3], const mpz_class n2[3]) const {
-  // Each normal is brought to doubles by its own power of two (the angle does not change by
-  // it), so that normals of any size (exact cut points make them huge) stay in the filter's
-  // range instead of overflowing to infinity.
+  // Normals of any size (exact cut points make them huge) as doubles with their exponents
+  // kept apart, so that none overflows to infinity; filter() scales each by a power of two.
   double a[3], b[3];
-  auto scaled = [](const mpz_class n[3], double out[3]) {
+  auto doubles = [](const mpz_class n[3], double out[3]) {
     std::size_t bits = 0;
     for (int k = 0; k < 3; ++k) bits = std::max(bits, mpz_sizeinbase(n[k].get_mpz_t(), 2));
     const long shift = static_cast<long>(bits) - 60;
@@ -86,13 +78,34 @@ bool CreaseAngle::exceeds(const mpz_class n1[3], const mpz_class n2[3]) const {
       out[k] = std::ldexp(m, static_cast<int>(e - shift));
     }
   };
-  scaled(n1, a);
-  scaled(n2, b);
-  double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  double l = std::sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
-  double c = d / l;
-  if (std::isfinite(c) && l > 1e-200 && std::fabs(c - cos_) > 1e-9) return c < cos_;
+  doubles(n1, a);
+  doubles(n2, b);
+  if (const int f = filter(a, b); f >= 0) return f == 1;
   return exceeds_exact(n1, n2);
+}
+
+int CreaseAngle::filter(const double n1[3], const double n2[3]) const {
+  // Each normal is scaled by a power of two (exact; the angle does not change by it) so that
+  // its largest component lies in [1, 2): no product below overflows or underflows. Each
+  // input is within 2^-52 (relative), the dot product, norms, square root and division add a
+  // few roundings more, so the computed cosine is within about 1e-15 of the exact one (and
+  // cos_ within 1e-16 of cos(DEG)); a gap over 1e-9 decides, anything closer goes to the exact
+  // test. A component so small against the largest that it underflows only errs by 2^-1074.
+  double a[3], b[3];
+  auto unit = [](const double n[3], double out[3]) {
+    const double big = std::max({std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2])});
+    if (!(big > 0) || !std::isfinite(big)) return false;
+    int e = 0;
+    std::frexp(big, &e);
+    for (int k = 0; k < 3; ++k) out[k] = std::ldexp(n[k], 1 - e);
+    return true;
+  };
+  if (!unit(n1, a) || !unit(n2, b)) return -1;
+  const double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  const double l = std::sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
+  const double c = d / l;
+  if (std::isfinite(c) && std::fabs(c - cos_) > 1e-9) return c < cos_ ? 1 : 0;
+  return -1;
 }
 
 bool CreaseAngle::exceeds_exact(const mpz_class n1[3], const mpz_class n2[3]) const {

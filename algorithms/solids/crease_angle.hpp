@@ -19,6 +19,10 @@ class CreaseAngle {
   /// a threshold of 0: iff the normals are not parallel with the same direction.
   bool exceeds(const mpz_class n1[3], const mpz_class n2[3]) const;
   bool exceeds(const long n1[3], const long n2[3]) const;
+  /// The double filter alone, on doubles of the normals (each component within 2^-52 of the
+  /// exact one, relative; each normal may be scaled by its own positive factor): 1 or 0 when
+  /// it decides, -1 when the exact test must.
+  int filter(const double n1[3], const double n2[3]) const;
 
   const Rational& degrees() const { return degrees_; }
 
