@@ -1,6 +1,7 @@
 // Exact parsing of numbers from text into GMP rationals (see number.hpp).
 #include "kernel/number.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -32,21 +33,22 @@ bool parse_integer(std::string_view s, mpz_class& out) {
   return true;
 }
 
-// Why `text` is not a number, or empty when it is one; fills `out`.
-// Fast path for the common plain decimal ("-0.0378297", "12", "3.5") with at most 18 digits:
-// an integer over a power of ten, reduced by its factors of 2 and 5 (the only common ones), so
-// no general gcd and no string copies. False: not this form, take the general parser.
-bool parse_plain_decimal(std::string_view t, Rational& out) {
+// Fast path for the common decimal forms ("-0.0378297", "12", "3.5", an exporter's
+// "6.123233995736766e-17" or numpy's "1.234567890123456789e-01"): at most 19 digits and an
+// exponent of at most three digits. The value is an integer times a power of ten, reduced by
+// its factors of 2 and 5 (the only ones it can share with a power of ten), so no general gcd
+// and no string copies. False: not this form (the general parser decides, with its messages).
+bool parse_decimal(std::string_view t, Rational& out) {
   std::size_t i = 0;
   bool neg = false;
   if (i < t.size() && (t[i] == '-' || t[i] == '+')) neg = t[i++] == '-';
-  long long n = 0;
+  unsigned long long n = 0;  // at most 19 digits: below 10^19 < 2^64
   int digits = 0, frac = -1;
-  for (; i < t.size(); ++i) {
-    char c = t[i];
+  for (; i < t.size() && t[i] != 'e' && t[i] != 'E'; ++i) {
+    const char c = t[i];
     if (c >= '0' && c <= '9') {
-      if (++digits > 18) return false;
-      n = n * 10 + (c - '0');
+      if (++digits > 19) return false;
+      n = n * 10 + static_cast<unsigned long long>(c - '0');
       if (frac >= 0) ++frac;
     } else if (c == '.' && frac < 0) {
       frac = 0;
@@ -55,21 +57,52 @@ bool parse_plain_decimal(std::string_view t, Rational& out) {
     }
   }
   if (digits == 0) return false;
-  int twos = frac > 0 ? frac : 0, fives = twos;
-  while (twos > 0 && n % 2 == 0 && n != 0) n /= 2, --twos;
-  while (fives > 0 && n % 5 == 0 && n != 0) n /= 5, --fives;
-  if (n == 0) twos = fives = 0;
-  unsigned long long d = 1;
-  for (int k = 0; k < twos; ++k) d *= 2;
-  for (int k = 0; k < fives; ++k) d *= 5;
-  mpz_set_si(out.get_num_mpz_t(), static_cast<long>(neg ? -n : n));
-  mpz_set_ui(out.get_den_mpz_t(), static_cast<unsigned long>(d));
+  long e = 0;
+  if (i < t.size()) {  // an exponent
+    ++i;
+    bool eneg = false;
+    if (i < t.size() && (t[i] == '-' || t[i] == '+')) eneg = t[i++] == '-';
+    int ed = 0;
+    for (; i < t.size(); ++i, ++ed) {
+      if (t[i] < '0' || t[i] > '9' || ed == 3) return false;
+      e = e * 10 + (t[i] - '0');
+    }
+    if (ed == 0) return false;
+    if (eneg) e = -e;
+  }
+  if (n == 0) {
+    out = 0;
+    return true;
+  }
+  const long p = e - (frac > 0 ? frac : 0);  // the value is n·10^p
+  mpz_ptr num = out.get_num_mpz_t(), den = out.get_den_mpz_t();
+  if (p >= 0) {
+    mpz_ui_pow_ui(num, 10, static_cast<unsigned long>(p));
+    mpz_mul_ui(num, num, n);
+    mpz_set_ui(den, 1);
+  } else {
+    long twos = -p, fives = -p;
+    const long z = std::min<long>(__builtin_ctzll(n), twos);
+    n >>= z;
+    twos -= z;
+    while (fives > 0 && n % 5 == 0) n /= 5, --fives;
+    mpz_set_ui(num, n);
+    if (fives <= 27 && twos <= 63 - 2 * fives - fives / 3) {  // 5^fives·2^twos below 2^64
+      unsigned long long d = 1;
+      for (long k = 0; k < fives; ++k) d *= 5;
+      mpz_set_ui(den, d << twos);
+    } else {
+      mpz_ui_pow_ui(den, 5, static_cast<unsigned long>(fives));
+      mpz_mul_2exp(den, den, static_cast<mp_bitcnt_t>(twos));
+    }
+  }
+  if (neg) mpz_neg(num, num);
   return true;
 }
 
 std::string parse_impl(std::string_view text, Rational& out) {
   if (text.empty()) return "empty";
-  if (parse_plain_decimal(text, out)) return {};
+  if (parse_decimal(text, out)) return {};
   {
     std::string low;
     for (char c : text.substr(0, 12)) low += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

@@ -269,6 +269,11 @@ class Engine {
   void make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& bx) const;
   bool closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs, std::optional<Vec<P>>& n) const;
   void side_plane(int p, int q, Vec<P>& m, V& c) const;
+  bool grid_normal(const Tri& t, std::array<Int128, 3>& n) const;
+  bool grid_side(int p, int q, std::array<Int128, 3>& m) const;
+  bool grid_planes(const Tri& t, std::uint8_t closed, Occ& o) const;
+  void grid_doubles(const std::array<Int128, 3>& m, const std::array<std::int64_t, 3>& o, bool turn, double* dm, double& dc) const;
+  void occluder_box(const Tri& t, int fs, Box& bx) const;
   // face_engine_edges.cpp
   std::vector<DrawnEdge> collect_edges(int b);
   Segment edge_segment(int b, const DrawnEdge& e) const;
@@ -348,6 +353,8 @@ class Engine {
   // Wide and Big with a grid (Prepared::on_grid): scale / G, and the eye's coordinates times G
   // when it lies on the grid (perspective), for side planes through grid vertices (grid_view).
   C grid_factor_{};
+  double grid_factor_mant_ = 0;  // grid_factor_ as mantissa (within 2u, truncated) and exponent
+  long grid_factor_exp_ = 0;
   std::optional<std::array<std::int64_t, 3>> eye_small_;
   std::optional<std::array<Int128, 3>> view_small_;  // orthographic: the direction, each component below 2^62
   std::vector<char> vfront_;

@@ -173,6 +173,7 @@ void Engine<P>::grid_view() {
     const mpz_class G(static_cast<unsigned long>(prep_->grid));
     mpz_class K;
     mpz_divexact(K.get_mpz_t(), scale_.get_num_mpz_t(), G.get_mpz_t());  // scale is an integer, G divides it
+    grid_factor_mant_ = mpz_get_d_2exp(&grid_factor_exp_, K.get_mpz_t());
     if constexpr (std::is_same_v<P, Big>) {
       grid_factor_ = std::move(K);
     } else {
@@ -214,16 +215,23 @@ bool Engine<P>::on_grid(const Tri& t) const {
 template <class P>
 Vec<P> Engine<P>::normal(const Tri& t) const {
   if constexpr (kFiltered) {
-    if (on_grid(t)) {
-      const auto& a = prep_->small[t.v[0]];
-      const auto& b = prep_->small[t.v[1]];
-      const auto& c = prep_->small[t.v[2]];
-      Int128 u[3], w[3];
-      for (int k = 0; k < 3; ++k) u[k] = Int128(b[k]) - a[k], w[k] = Int128(c[k]) - a[k];
-      return {of128(u[1] * w[2] - u[2] * w[1]), of128(u[2] * w[0] - u[0] * w[2]), of128(u[0] * w[1] - u[1] * w[0])};
-    }
+    std::array<Int128, 3> n;
+    if (grid_normal(t, n)) return {of128(n[0]), of128(n[1]), of128(n[2])};
   }
   return cross<P>(sub<P>(X_[t.v[1]], X_[t.v[0]]), sub<P>(X_[t.v[2]], X_[t.v[0]]));
+}
+
+// The same from the grid's small integers alone; false when a corner is off the grid.
+template <class P>
+bool Engine<P>::grid_normal(const Tri& t, std::array<Int128, 3>& n) const {
+  if (!on_grid(t)) return false;
+  const auto& a = prep_->small[t.v[0]];
+  const auto& b = prep_->small[t.v[1]];
+  const auto& c = prep_->small[t.v[2]];
+  Int128 u[3], w[3];
+  for (int k = 0; k < 3; ++k) u[k] = Int128(b[k]) - a[k], w[k] = Int128(c[k]) - a[k];
+  n = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  return true;
 }
 
 // Triangles of every face of body b into tris_, face normals, facing and the opposite vertex

@@ -299,6 +299,12 @@ void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& b
   // of the face too: those points are inside the solid), so the plane moves to the eye:
   // -n·(X - E) > 0. Exact for convex solids (docs/design.md); others are refused.
   const bool to_eye = fs < 0 && solid_[b];
+  if constexpr (kFiltered) {
+    if (!to_eye && grid_planes(t, closed, o)) {
+      occluder_box(t, fs, bx);
+      return;
+    }
+  }
   const Vec<P> n = normal(t);
   // Each side plane is turned to hold the third vertex on its positive side. For side k the
   // value at the third vertex r is det(D, q - p, r - p) = D·n (orthographic, D the view
@@ -332,6 +338,42 @@ void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& b
     }
     o.closed[k + 1] = !t.edge[k] || (closed >> (k + 1) & 1) != 0;
   }
+  occluder_box(t, fs, bx);
+}
+
+// A triangle on the grid (and the eye on it, or a small direction): the face plane and side
+// planes' doubles from the grid's small integers (grid_doubles) without their exact values,
+// which exact_plane makes when a test needs them; false when the grid cannot give them.
+template <class P>
+bool Engine<P>::grid_planes(const Tri& t, std::uint8_t closed, Occ& o) const {
+  if constexpr (kFiltered) {
+    std::array<Int128, 3> n, side[3];
+    if (!grid_normal(t, n)) return false;
+    for (int k = 0; k < 3; ++k)
+      if (!grid_side(t.v[k], t.v[(k + 1) % 3], side[k])) return false;
+    // The side planes' value at the third vertex, D·n or (a - E)·n (make_occluder), on the grid.
+    std::array<Int128, 3> toward;
+    const auto& a = prep_->small[t.v[0]];
+    for (int k = 0; k < 3; ++k) toward[k] = cam_.perspective ? Int128(a[k]) - (*eye_small_)[k] : (*view_small_)[k];
+    WideInt<4> d;
+    for (int k = 0; k < 3; ++k) d += WideInt<4>::product(WideInt<4>(n[k]), WideInt<4>(toward[k]));
+    const bool turn = d.sign() < 0;
+    o.through_vertices = true;
+    o.turned = 0;
+    grid_doubles({-n[0], -n[1], -n[2]}, a, false, o.m[0], o.c[0]);
+    for (int k = 0; k < 3; ++k) {
+      grid_doubles(side[k], cam_.perspective ? *eye_small_ : prep_->small[t.v[k]], turn, o.m[k + 1], o.c[k + 1]);
+      if (turn) o.turned |= static_cast<std::uint8_t>(1u << (k + 1));
+      o.closed[k + 1] = !t.edge[k] || (closed >> (k + 1) & 1) != 0;
+    }
+    return true;
+  }
+  return false;
+}
+
+// The occluder's screen box and nearest depth.
+template <class P>
+void Engine<P>::occluder_box(const Tri& t, int fs, Box& bx) const {
   const Point3* pts[3];
   const std::array<double, 3>* proj[3];
   bool front[3];
@@ -345,7 +387,7 @@ void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& b
     bx.dmin = std::min({(*proj[0])[2], (*proj[1])[2], (*proj[2])[2]});
   // A forward cone from the eye (back face of a solid holding the eye) reaches in front of its
   // face: no depth pruning (its projection is still the face's).
-  if (fs < 0 && solid_[b]) bx.dmin = -INFINITY;
+  if (fs < 0 && solid_[t.body]) bx.dmin = -INFINITY;
 }
 
 // Is the sight ray just behind the polygon edge under side k inside the body (closed side)?
@@ -411,16 +453,9 @@ void Engine<P>::side_plane(int p, int q, Vec<P>& m, V& c) const {
     const std::vector<char>& g = prep_->on_grid;
     if (!g.empty() && g[p] && g[q] && (!cam_.perspective || eye_small_)) {
       const auto &a = prep_->small[p], &b = prep_->small[q];
-      if (cam_.perspective) {
-        const auto& e = *eye_small_;
-        Int128 u[3], w[3];
-        for (int k = 0; k < 3; ++k) u[k] = Int128(a[k]) - e[k], w[k] = Int128(b[k]) - e[k];
-        m = {of128(u[1] * w[2] - u[2] * w[1]), of128(u[2] * w[0] - u[0] * w[2]), of128(u[0] * w[1] - u[1] * w[0])};
-      } else if (view_small_) {  // D and q - p below 2^62: products below 2^124
-        const auto& e = *view_small_;
-        Int128 w[3];
-        for (int k = 0; k < 3; ++k) w[k] = Int128(b[k]) - a[k];
-        m = {of128(e[1] * w[2] - e[2] * w[1]), of128(e[2] * w[0] - e[0] * w[2]), of128(e[0] * w[1] - e[1] * w[0])};
+      std::array<Int128, 3> sm;
+      if (grid_side(p, q, sm)) {
+        m = {of128(sm[0]), of128(sm[1]), of128(sm[2])};
       } else {
         const Vec<P> d = {C(static_cast<long>(b[0] - a[0])), C(static_cast<long>(b[1] - a[1])), C(static_cast<long>(b[2] - a[2]))};  // below 2^62
         m = cross<P>(view_, d);
@@ -441,6 +476,49 @@ void Engine<P>::side_plane(int p, int q, Vec<P>& m, V& c) const {
   } else {
     m = cross<P>(view_, sub<P>(X_[q], X_[p]));
     c = dot<P>(m, X_[p]);
+  }
+}
+
+// Side plane (p, q)'s m from the grid's small integers in 128 bits, when p and q are on the grid
+// and so is the eye (perspective: (p - E) x (q - E)) or the direction is small (D x (q - p));
+// every factor below 2^62, each product below 2^124.
+template <class P>
+bool Engine<P>::grid_side(int p, int q, std::array<Int128, 3>& m) const {
+  const std::vector<char>& g = prep_->on_grid;
+  if (g.empty() || !g[p] || !g[q]) return false;
+  const auto &a = prep_->small[p], &b = prep_->small[q];
+  Int128 u[3], w[3];
+  if (cam_.perspective) {
+    if (!eye_small_) return false;
+    const auto& e = *eye_small_;
+    for (int k = 0; k < 3; ++k) u[k] = Int128(a[k]) - e[k], w[k] = Int128(b[k]) - e[k];
+  } else {
+    if (!view_small_) return false;
+    for (int k = 0; k < 3; ++k) u[k] = (*view_small_)[k], w[k] = Int128(b[k]) - a[k];
+  }
+  m = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  return true;
+}
+
+// The filter's doubles (plane_doubles' form) of the plane m·X - c with c = (scale / G)·(m·o),
+// m and o from the grid's small integers (|m| below 2^126, |o| below 2^62), negated when
+// `turn`: m·o exact in limbs, then its double times that of scale / G. c is within 5u of its
+// exact value (the two doubles within 2u and u + 2^-64, their product rounded: below 4.01u);
+// filtered_sign allows it.
+template <class P>
+void Engine<P>::grid_doubles(const std::array<Int128, 3>& m, const std::array<std::int64_t, 3>& o, bool turn, double* dm, double& dc) const {
+  WideInt<4> d;
+  for (int k = 0; k < 3; ++k) d += WideInt<4>::product(WideInt<4>(m[k]), WideInt<4>(static_cast<long>(o[k])));
+  const double sgn = turn ? -1.0 : 1.0;
+  if constexpr (std::is_same_v<P, Big>) {  // m·2^-e, c·2^-(e + sigma_)
+    Int128 top = 0;
+    for (int k = 0; k < 3; ++k) top = std::max(top, abs128(m[k]));
+    const int e = bit_length(top);
+    for (int k = 0; k < 3; ++k) dm[k] = sgn * std::ldexp(static_cast<double>(m[k]), -e);
+    dc = sgn * std::ldexp(grid_factor_mant_ * d.to_double(), static_cast<int>(std::max<long>(grid_factor_exp_ - e - sigma_, -4000)));
+  } else {
+    for (int k = 0; k < 3; ++k) dm[k] = sgn * static_cast<double>(m[k]);
+    dc = sgn * std::ldexp(grid_factor_mant_ * d.to_double(), static_cast<int>(grid_factor_exp_));
   }
 }
 

@@ -242,6 +242,7 @@ SceneGrid scene_grid(const std::vector<const Polyhedron*>& bodies, std::size_t t
     }
     grid.on[i] = fits;
   });
+  if (std::find(grid.on.begin(), grid.on.end(), 1) == grid.on.end()) return {};  // no vertex on it: no grid
   return grid;
 }
 
@@ -280,7 +281,7 @@ bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
       for (std::size_t i = c * kChunk, e = std::min(vs.size(), i + kChunk); i < e && ok[c]; ++i) {
         const std::size_t at = first + i;
         for (int k = 0; k < 3 && ok[c]; ++k) {
-          if (grid.on[at]) {
+          if (!grid.on.empty() && grid.on[at]) {
             pts[at][k] = Wide::C::product(K, Wide::C(static_cast<long>(grid.small[at][k])));
             ok[c] = pts[at][k].bits() <= Wide::kBits;
           } else {
@@ -318,7 +319,7 @@ void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, 
     const std::vector<Point3>& vs = p->vertices();
     loop.for_each(vs.size(), 4096, [&](std::size_t i) {
       const std::size_t at = first + i;
-      if (grid.on[at]) {
+      if (!grid.on.empty() && grid.on[at]) {
         for (int k = 0; k < 3; ++k) mpz_mul_si(pts[at][k].get_mpz_t(), K.get_mpz_t(), static_cast<long>(grid.small[at][k]));
       } else {
         for (int k = 0; k < 3; ++k) pts[at][k] = sc(vs[i][k]);

@@ -33,6 +33,46 @@ TEST(Number, Scientific) {
   EXPECT_EQ(parse_rational("1e0"), Rational(1));
 }
 
+// The forms exporters write (up to 19 digits, a point anywhere, an exponent of up to three
+// digits, signs, leading and trailing zeros) against n·10^p made in GMP and reduced by gcd.
+TEST(Number, ExportersDecimalsAreExact) {
+  const auto q = [](const char* n, const char* d) {
+    Rational r(mpz_class(n, 10), mpz_class(d, 10));
+    r.canonicalize();
+    return r;
+  };
+  EXPECT_EQ(parse_rational("6.123233995736766e-17"), q("6123233995736766", "100000000000000000000000000000000"));
+  EXPECT_EQ(parse_rational("-1.234567890123456789e-01"), q("-1234567890123456789", "10000000000000000000"));
+  EXPECT_EQ(parse_rational("9999999999999999999"), Rational(mpz_class("9999999999999999999")));
+  EXPECT_EQ(parse_rational("-0.0e+000"), Rational(0));
+  std::mt19937_64 rng(20261205);
+  for (int i = 0; i < 20000; ++i) {
+    const int digits = 1 + static_cast<int>(rng() % 19);
+    std::string ds;
+    for (int k = 0; k < digits; ++k) {
+      const bool lead = k == 0 && rng() % 4 != 0;  // mostly no leading zero
+      ds += static_cast<char>(lead ? '1' + rng() % 9 : '0' + rng() % 10);
+    }
+    const int point = static_cast<int>(rng() % (digits + 1));  // digits before the point
+    const long e = rng() % 3 ? static_cast<long>(rng() % 801) - 400 : 0;
+    const bool neg = rng() % 2 != 0;
+    std::string text = (neg ? "-" : (rng() % 8 == 0 ? "+" : "")) + ds.substr(0, point) + "." + ds.substr(point);
+    if (e != 0 || rng() % 4 == 0) text += (rng() % 2 ? "e" : "E") + std::string(e < 0 ? "-" : (rng() % 2 ? "+" : "")) + std::to_string(std::labs(e));
+    mpz_class n(ds, 10), p10;
+    const long p = e - (digits - point);
+    mpz_ui_pow_ui(p10.get_mpz_t(), 10, static_cast<unsigned long>(std::labs(p)));
+    Rational want = p >= 0 ? Rational(n * p10) : Rational(n, p10);
+    want.canonicalize();
+    if (neg) want = -want;
+    const Rational got = parse_rational(text);
+    ASSERT_EQ(got, want) << text;
+    mpz_class g;  // in lowest terms, with a positive denominator
+    mpz_gcd(g.get_mpz_t(), got.get_num_mpz_t(), got.get_den_mpz_t());
+    ASSERT_EQ(g, 1) << text;
+    ASSERT_GT(got.get_den(), 0) << text;
+  }
+}
+
 TEST(Number, BadTokensNameTheToken) {
   for (const char* bad : {"nan", "NaN", "-inf", "inf", "Infinity", "abc", "1/0", "1/-2", "--1", "", "1.2.3",
                           "0x10", "1e", "1e999999", "1e4001", "3/", "/3", "1 2", "e5", "."}) {
