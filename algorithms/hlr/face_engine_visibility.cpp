@@ -361,8 +361,9 @@ void Engine<P>::merge(Work& wk, std::vector<std::pair<Rational, Rational>>& out)
 
 // Sign of m·X - c from doubles, or 0 when the filter cannot tell. Each input is within 2u
 // of its exact value (mpq_get_d and mpz_get_d truncate; Int128 and int64 conversions round),
-// each product adds u and the three additions u each, so the computed value is within
-// (2u + 2u + u + 3u)·S + O(u²) < 9u·S of the exact one, S = Σ|m_j X_j| + |c| (u = 2^-53).
+// c within 5u when made from the grid's small integers (grid_doubles); each product adds u
+// and the three additions u each, so the computed value is within (2u + 2u + u + 3u)·S +
+// O(u²) < 9u·S of the exact one, S = Σ|m_j X_j| + |c| (u = 2^-53; c's term: 5u + 3u).
 // The bound used, 2e-15·S_d, exceeds 18u·S_d, and S_d >= S·(1 - 8u); the floor covers
 // products that underflowed. The caller uses it only on ends whose doubles are zero exactly
 // when the rational is, and otherwise normal above 2^-1000 (so no product of an integer and a
