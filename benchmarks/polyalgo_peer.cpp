@@ -18,15 +18,14 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Vertex.hxx>
-#include <gp_Ax2.hxx>
-#include <gp_Pnt.hxx>
-
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <gp_Ax2.hxx>
+#include <gp_Pnt.hxx>
 #include <iostream>
 #include <map>
 #include <string>
@@ -113,7 +112,7 @@ int main(int argc, char** argv) {
   const TopoDS_Shape visible = extract.VCompound(), hidden = extract.HCompound();
   const TopoDS_Shape outline = extract.OutLineVCompound(), hidden_outline = extract.OutLineHCompound();
   const double hlr = since(t1);
-  std::printf("faces %zu build %.3f s hlr %.3f s visible edges %d hidden edges %d outlines %d/%d\n", ts.size(), build, hlr,
-              count_edges(visible), count_edges(hidden), count_edges(outline), count_edges(hidden_outline));
+  std::printf("faces %zu build %.3f s hlr %.3f s visible edges %d hidden edges %d outlines %d/%d\n", ts.size(), build, hlr, count_edges(visible),
+              count_edges(hidden), count_edges(outline), count_edges(hidden_outline));
   return 0;
 }
