@@ -94,6 +94,16 @@ FrontBox front_box(const Camera& cam, const Point3* const* pts, const std::array
 /// (relative; NaN: unknown), or 2 when they cannot tell (face_engine_occluders.cpp).
 int orient_filter(const std::array<double, 3>& p, const std::array<double, 3>& q, const std::array<double, 3>& r, const std::array<double, 3>& s);
 
+/// A 128-bit integer as a coordinate of policy P (Fast only below 2^63).
+template <class P>
+typename P::C from128(Int128 v) {
+  if constexpr (std::is_same_v<P, Big>) {
+    return to_mpz(v);
+  } else {
+    return static_cast<typename P::C>(v);
+  }
+}
+
 /// One body's face normals. Compact (the multi-limb path with a grid): a normal below 2^126
 /// in magnitude (a face on the grid) as three 128-bit integers, any other in a second array
 /// that its first integer's mark points into; a third of the memory of five-limb numbers.
@@ -114,7 +124,7 @@ class FaceNormals {
     if (!compact_) return full_[f];
     const std::array<Int128, 3>& s = small_[f];
     if (s[0] == kMark) return wide_[static_cast<std::size_t>(s[1])];
-    return {of(s[0]), of(s[1]), of(s[2])};
+    return {from128<P>(s[0]), from128<P>(s[1]), from128<P>(s[2])};
   }
   /// Doubles of the normal, each within 2^-52 of the exact value (relative). Not for Big.
   std::array<double, 3> approx(std::size_t f) const {
@@ -155,21 +165,7 @@ class FaceNormals {
   }
 
  private:
-  using C = typename P::C;
-  static C of(Int128 v) {
-    if constexpr (std::is_same_v<P, Big>) {
-      return to_mpz(v);
-    } else {
-      return static_cast<C>(v);
-    }
-  }
-  static std::array<double, 3> doubles(const Vec<P>& n) {
-    if constexpr (std::is_same_v<P, Wide>) {
-      return {n[0].to_double(), n[1].to_double(), n[2].to_double()};
-    } else {
-      return {static_cast<double>(n[0]), static_cast<double>(n[1]), static_cast<double>(n[2])};
-    }
-  }
+  static std::array<double, 3> doubles(const Vec<P>& n) { return {P::cdbl(n[0]), P::cdbl(n[1]), P::cdbl(n[2])}; }
   static constexpr Int128 kMark = -(Int128(1) << 126) - 1;  // below every kept value
   bool compact_ = false;
   std::vector<Vec<P>> full_;
@@ -250,14 +246,6 @@ class Engine {
   bool eye_inside(int first) const;
   bool eye_on_surface(int first) const;
   static void flip(Tri& t);
-  /// A 128-bit integer as a coordinate (Wide, Big).
-  static C of128(Int128 v) {
-    if constexpr (std::is_same_v<P, Big>) {
-      return to_mpz(v);
-    } else {
-      return C(v);
-    }
-  }
   // face_engine_occluders.cpp
   bool neighbour(const Tri& t, int k, int& face, int& third) const;
   void vertex_rules();

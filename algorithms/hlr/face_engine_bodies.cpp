@@ -216,7 +216,7 @@ template <class P>
 Vec<P> Engine<P>::normal(const Tri& t) const {
   if constexpr (kFiltered) {
     std::array<Int128, 3> n;
-    if (grid_normal(t, n)) return {of128(n[0]), of128(n[1]), of128(n[2])};
+    if (grid_normal(t, n)) return {from128<P>(n[0]), from128<P>(n[1]), from128<P>(n[2])};
   }
   return cross<P>(sub<P>(X_[t.v[1]], X_[t.v[0]]), sub<P>(X_[t.v[2]], X_[t.v[0]]));
 }

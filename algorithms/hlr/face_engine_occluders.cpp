@@ -455,7 +455,7 @@ void Engine<P>::side_plane(int p, int q, Vec<P>& m, V& c) const {
       const auto &a = prep_->small[p], &b = prep_->small[q];
       std::array<Int128, 3> sm;
       if (grid_side(p, q, sm)) {
-        m = {of128(sm[0]), of128(sm[1]), of128(sm[2])};
+        m = {from128<P>(sm[0]), from128<P>(sm[1]), from128<P>(sm[2])};
       } else {
         const Vec<P> d = {C(static_cast<long>(b[0] - a[0])), C(static_cast<long>(b[1] - a[1])), C(static_cast<long>(b[2] - a[2]))};  // below 2^62
         m = cross<P>(view_, d);
