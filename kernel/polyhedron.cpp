@@ -35,7 +35,17 @@ Polyhedron::Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces,
     for (Rational& q : c) q.canonicalize();
     p = Point3(c[0], c[1], c[2]);
   });
-  // Faces checked on the loop, the first bad one (in order) reported.
+  check_faces(loop);
+}
+
+Polyhedron::Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces, InLowestTerms,
+                       const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop)
+    : vertices_(std::move(vertices)), faces_(std::move(faces)) {
+  check_faces(loop);
+}
+
+// Faces checked on the loop, the first bad one (in order) reported.
+void Polyhedron::check_faces(const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop) const {
   const long nv = static_cast<long>(vertices_.size());
   std::vector<char> bad(faces_.size(), 0);
   loop(faces_.size(), [&](std::size_t f) {

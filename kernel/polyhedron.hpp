@@ -49,6 +49,11 @@ class Polyhedron {
   /// calling body(i) for every i < n (e.g. on all cores; the same result and error on any).
   Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces,
              const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop);
+  /// The same for vertices known to be in lowest terms (results of exact arithmetic, points
+  /// of another polyhedron): only the faces are checked.
+  struct InLowestTerms {};
+  Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces, InLowestTerms,
+             const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop);
 
   const std::vector<Point3>& vertices() const { return vertices_; }
   const std::vector<Face>& faces() const { return faces_; }
@@ -83,6 +88,7 @@ class Polyhedron {
 
  private:
   void build_mesh() const;
+  void check_faces(const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop) const;
 
   std::vector<Point3> vertices_;
   std::vector<Face> faces_;

@@ -8,6 +8,7 @@
 #include "algorithms/sections/section_cut.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <unordered_map>
 
@@ -22,8 +23,9 @@ namespace {
 std::uint64_t edge_key(int u, int v) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) | static_cast<std::uint32_t>(v); }
 
 // The directed edges of `faces` (vertices below nv) grouped by their lower vertex, in linear
-// time: whether one occurs twice, and those whose reverse does not occur (each occurrence),
-// sorted.
+// time on all cores: whether one occurs twice, and those whose reverse does not occur (each
+// occurrence), sorted. (Each group is sorted before it is read: the order in which the cores
+// filled it does not show.)
 struct EdgeCensus {
   bool duplicate = false;
   std::vector<std::array<int, 2>> unpaired;
@@ -31,32 +33,48 @@ struct EdgeCensus {
 };
 
 EdgeCensus edge_census(const std::vector<Face>& faces, std::size_t nv) {
+  constexpr std::size_t kGrain = 4096;
+  const ParallelLoop loop;
   EdgeCensus c;
   std::vector<int> start(nv + 1, 0);
-  for (const Face& f : faces)
-    for (std::size_t k = 0; k < f.size(); ++k) ++start[std::min(f[k], f[(k + 1) % f.size()]) + 1];
+  loop.for_each(faces.size(), kGrain, [&](std::size_t fi) {
+    const Face& f = faces[fi];
+    for (std::size_t k = 0; k < f.size(); ++k)
+      std::atomic_ref<int>(start[std::min(f[k], f[(k + 1) % f.size()]) + 1]).fetch_add(1, std::memory_order_relaxed);
+  });
   for (std::size_t i = 0; i < nv; ++i) start[i + 1] += start[i];
   c.any = start[nv] > 0;
   std::vector<std::uint32_t> other(start[nv]);  // the higher vertex, times 2, plus 1 when the edge runs downward
   std::vector<int> at(start.begin(), start.end() - 1);
-  for (const Face& f : faces)
+  loop.for_each(faces.size(), kGrain, [&](std::size_t fi) {
+    const Face& f = faces[fi];
     for (std::size_t k = 0; k < f.size(); ++k) {
       const int u = f[k], v = f[(k + 1) % f.size()];
-      other[at[std::min(u, v)]++] = static_cast<std::uint32_t>(std::max(u, v)) * 2 + (u > v);
+      other[std::atomic_ref<int>(at[std::min(u, v)]).fetch_add(1, std::memory_order_relaxed)] =
+          static_cast<std::uint32_t>(std::max(u, v)) * 2 + (u > v);
     }
-  for (std::size_t lo = 0; lo < nv; ++lo) {
-    auto b = other.begin() + start[lo], e = other.begin() + start[lo + 1];
-    std::sort(b, e);
-    for (auto i = b; i != e;) {
-      const std::uint32_t hi = *i / 2;
-      int up = 0, down = 0;
-      for (; i != e && *i / 2 == hi; ++i) (*i & 1 ? down : up) += 1;
-      if (up > 1 || down > 1) c.duplicate = true;
-      if (hi == lo) continue;  // an edge from a vertex to itself is its own reverse
-      const int l = static_cast<int>(lo), h = static_cast<int>(hi);
-      for (int k = 0; k < up && down == 0; ++k) c.unpaired.push_back({l, h});
-      for (int k = 0; k < down && up == 0; ++k) c.unpaired.push_back({h, l});
+  });
+  PerWorker<char> duplicate(loop, 0);
+  PerWorker<std::vector<std::array<int, 2>>> unpaired(loop);
+  loop.run(nv, kGrain, [&](unsigned w, std::size_t b, std::size_t e) {
+    for (std::size_t lo = b; lo < e; ++lo) {
+      auto first = other.begin() + start[lo], last = other.begin() + start[lo + 1];
+      std::sort(first, last);
+      for (auto i = first; i != last;) {
+        const std::uint32_t hi = *i / 2;
+        int up = 0, down = 0;
+        for (; i != last && *i / 2 == hi; ++i) (*i & 1 ? down : up) += 1;
+        if (up > 1 || down > 1) duplicate[w] = 1;
+        if (hi == lo) continue;  // an edge from a vertex to itself is its own reverse
+        const int l = static_cast<int>(lo), h = static_cast<int>(hi);
+        for (int k = 0; k < up && down == 0; ++k) unpaired[w].push_back({l, h});
+        for (int k = 0; k < down && up == 0; ++k) unpaired[w].push_back({h, l});
+      }
     }
+  });
+  for (unsigned w = 0; w < duplicate.size(); ++w) {
+    c.duplicate = c.duplicate || duplicate[w];
+    c.unpaired.insert(c.unpaired.end(), unpaired[w].begin(), unpaired[w].end());
   }
   std::sort(c.unpaired.begin(), c.unpaired.end());
   return c;
@@ -68,16 +86,24 @@ bool closed_oriented(const std::vector<Face>& faces, std::size_t nv) {
   return c.any && !c.duplicate && c.unpaired.empty();
 }
 
+// The faces being cut: the input's vertices (read, not copied) and the split points added
+// after them, plane after plane.
 struct Work {
-  std::vector<Point3> v;
+  const std::vector<Point3>* base;
+  std::vector<Point3> added;
   std::vector<Face> f;
   std::vector<int> part, cap;
+  std::size_t vertices() const { return base->size() + added.size(); }
+  const Point3& at(int i) const {
+    const std::size_t k = static_cast<std::size_t>(i);
+    return k < base->size() ? (*base)[k] : added[k - base->size()];
+  }
 };
 
 class PlaneCut {
  public:
-  PlaneCut(Work& w, const Plane& h) : w_(w), h_(h), sign_(w.v.size()) {
-    ParallelLoop().for_each(w.v.size(), 4096, [&](std::size_t i) { sign_[i] = static_cast<signed char>(side_of_plane(h, w.v[i])); });
+  PlaneCut(Work& w, const Plane& h) : w_(w), h_(h), sign_(w.vertices()) {
+    loop_.for_each(sign_.size(), 4096, [&](std::size_t i) { sign_[i] = static_cast<signed char>(side_of_plane(h, w.at(static_cast<int>(i)))); });
   }
 
   // Which side the body is on: -1 all kept (nothing above), 1 all removed (nothing below), 0 cut.
@@ -88,66 +114,93 @@ class PlaneCut {
     return !above ? -1 : !below ? 1 : 0;
   }
 
-  // The kept faces; the cap's edges (in the kept solid's orientation) into `rim`.
+  // The kept faces in the input's order (a cut face's pieces in its place); the cap's edges
+  // (in the kept solid's orientation) into `rim`. Which faces stay whole is decided on all
+  // cores; the cut faces are split in order, so that the split points are numbered as met.
   void run(Work& out, std::vector<std::array<int, 2>>& rim, bool& off_plane_rim) {
-    for (std::size_t fi = 0; fi < w_.f.size(); ++fi) keep_face(static_cast<int>(fi), out);
+    const std::size_t nf = w_.f.size();
+    std::vector<signed char> kind(nf);  // kDrop, kKeep, kSplit
+    loop_.for_each(nf, 4096, [&](std::size_t fi) { kind[fi] = classify(w_.f[fi]); });
+    std::vector<std::size_t> pos(nf + 1, 0);  // first output face of each input face
+    std::vector<Face> pieces;
+    std::vector<std::size_t> first_piece(nf, 0);
+    for (std::size_t fi = 0; fi < nf; ++fi) {
+      std::size_t n = kind[fi] == kKeep ? 1 : 0;
+      if (kind[fi] == kSplit) {
+        first_piece[fi] = pieces.size();
+        split_face(static_cast<int>(fi), pieces);
+        n = pieces.size() - first_piece[fi];
+      }
+      pos[fi + 1] = pos[fi] + n;
+    }
+    out.f.resize(pos[nf]);
+    out.part.resize(pos[nf]);
+    out.cap.resize(pos[nf]);
+    loop_.for_each(nf, 4096, [&](std::size_t fi) {
+      for (std::size_t k = pos[fi]; k < pos[fi + 1]; ++k) {
+        out.f[k] = kind[fi] == kKeep ? w_.f[fi] : std::move(pieces[first_piece[fi] + (k - pos[fi])]);
+        out.part[k] = w_.part[fi];
+        out.cap[k] = w_.cap[fi];
+      }
+    });
     // Directed edges whose twin is not kept: the cap's rim, reversed.
     off_plane_rim = false;
-    for (const auto& [u, v] : edge_census(out.f, w_.v.size()).unpaired) {
+    for (const auto& [u, v] : edge_census(out.f, w_.vertices()).unpaired) {
       if (on_plane(u) && on_plane(v)) rim.push_back({v, u});
       else off_plane_rim = true;
     }
   }
 
  private:
+  static constexpr signed char kDrop = 0, kKeep = 1, kSplit = 2;
+
   bool on_plane(int x) const { return x >= static_cast<int>(sign_.size()) || sign_[x] == 0; }
 
-  void keep_face(int fi, Work& out) {
-    const Face& f = w_.f[fi];
+  Vector3 normal(const Face& f) const {
+    std::vector<const Point3*> p;
+    for (int x : f) p.push_back(&w_.at(x));
+    return newell_normal(p.data(), p.size());
+  }
+
+  signed char classify(const Face& f) const {
     int lo = 1, hi = -1;
     for (int x : f) lo = std::min<int>(lo, sign_[x]), hi = std::max<int>(hi, sign_[x]);
-    if (lo == 0 && hi == 0) {  // in the plane: kept when it faces the removed side
-      std::vector<const Point3*> p;
-      for (int x : f) p.push_back(&w_.v[x]);
-      if (dot(newell_normal(p.data(), p.size()), h_.normal()) > 0) add(out, f, fi);
-      return;
-    }
-    if (lo >= 0) return;  // nothing strictly on the kept side
-    if (hi <= 0) {
-      add(out, f, fi);
-      return;
-    }
-    std::vector<const Point3*> p;
-    for (int x : f) p.push_back(&w_.v[x]);
-    const Vector3 n = newell_normal(p.data(), p.size());
-    std::vector<int> poly(f.begin(), f.end());
-    if (f.size() == 3 || polygon_is_convex(w_.v, poly, polygon_view(n))) {
-      clip(out, poly, fi);
-      return;
-    }
+    if (lo == 0 && hi == 0) return dot(normal(f), h_.normal()) > 0 ? kKeep : kDrop;  // in the plane: kept when it faces the removed side
+    if (lo >= 0) return kDrop;                                                       // nothing strictly on the kept side
+    return hi <= 0 ? kKeep : kSplit;
+  }
+
+  // A face that crosses the plane: its part on the kept side, as it is when convex, else
+  // through its exact triangles.
+  void split_face(int fi, std::vector<Face>& out) {
+    const Face& f = w_.f[fi];
     std::vector<Point3> corners;
-    Face local;
-    for (int x : f) local.push_back(static_cast<int>(corners.size())), corners.push_back(w_.v[x]);
-    const Polyhedron one(std::move(corners), {local});  // the face's exact triangles (positions in the face)
+    std::vector<int> local;
+    for (int x : f) local.push_back(static_cast<int>(corners.size())), corners.push_back(w_.at(x));
+    if (f.size() == 3 || polygon_is_convex(corners, local, polygon_view(normal(f)))) {
+      clip(out, std::vector<int>(f.begin(), f.end()));
+      return;
+    }
+    const Polyhedron one(std::move(corners), {Face(local.begin(), local.end())});  // the face's exact triangles (positions in the face)
     const FaceTriangles tris = face_triangles(one, 0);
     if (tris.status != FaceTriangles::Status::Ok) throw std::invalid_argument("a section cuts a face it cannot split: " + tris.problem(fi));
     for (const FaceTriangle& t : tris.triangles) {
       std::vector<int> tri = {f[t.v[0]], f[t.v[1]], f[t.v[2]]};
       int tlo = 1;
       for (int x : tri) tlo = std::min<int>(tlo, sign_[x]);
-      if (tlo < 0) clip(out, tri, fi);
+      if (tlo < 0) clip(out, tri);
     }
   }
 
   // The convex polygon's part on the kept side (it has a vertex strictly there).
-  void clip(Work& out, const std::vector<int>& poly, int fi) {
+  void clip(std::vector<Face>& out, const std::vector<int>& poly) {
     Face piece;
     for (std::size_t k = 0; k < poly.size(); ++k) {
       const int a = poly[k], b = poly[(k + 1) % poly.size()];
       if (sign_[a] <= 0) piece.push_back(a);
       if (sign_[a] * sign_[b] < 0) piece.push_back(split(a, b));
     }
-    add(out, piece, fi);
+    out.push_back(std::move(piece));
   }
 
   // The exact point where edge ab meets the plane, made once per edge.
@@ -155,38 +208,59 @@ class PlaneCut {
     const std::uint64_t key = edge_key(std::min(a, b), std::max(a, b));
     auto it = splits_.find(key);
     if (it != splits_.end()) return it->second;
-    const int lo = std::min(a, b), hi = std::max(a, b);
-    const Rational va = h_.value(w_.v[lo]), vb = h_.value(w_.v[hi]);
+    const Point3 &lo = w_.at(std::min(a, b)), &hi = w_.at(std::max(a, b));
+    const Rational va = h_.value(lo), vb = h_.value(hi);
     const Rational t = va / (va - vb);
-    const Vector3 d = w_.v[hi] - w_.v[lo];
-    const int id = static_cast<int>(w_.v.size());
-    w_.v.push_back(w_.v[lo] + t * d);
+    const int id = static_cast<int>(w_.vertices());
+    w_.added.push_back(lo + t * (hi - lo));
     splits_.emplace(key, id);
     return id;
   }
 
-  void add(Work& out, const Face& f, int fi) {
-    out.f.push_back(f);
-    out.part.push_back(w_.part[fi]);
-    out.cap.push_back(w_.cap[fi]);
-  }
-
+  const ParallelLoop loop_;
   Work& w_;
   const Plane& h_;
   std::vector<signed char> sign_;
   std::unordered_map<std::uint64_t, int> splits_;
 };
 
-// Drops the vertices no face uses, renumbering the faces.
-void compact(CutSolid& c) {
-  std::vector<int> id(c.vertices.size(), -1);
-  std::vector<Point3> kept;
-  for (Face& f : c.faces)
+// The cap: the rim's loops triangulated in the plane, on their own points (in the order of
+// their numbers in `w`).
+std::vector<std::array<int, 3>> triangulate_rim(const Work& w, const std::vector<std::array<int, 2>>& rim, const Plane& h) {
+  std::vector<int> global;
+  for (const auto& e : rim) global.insert(global.end(), e.begin(), e.end());
+  std::sort(global.begin(), global.end());
+  global.erase(std::unique(global.begin(), global.end()), global.end());
+  std::vector<Point3> pts;
+  for (int g : global) pts.push_back(w.at(g));
+  auto local = [&](int g) { return static_cast<int>(std::lower_bound(global.begin(), global.end(), g) - global.begin()); };
+  std::vector<std::array<int, 2>> edges;
+  for (const auto& [u, v] : rim) edges.push_back({local(u), local(v)});
+  std::vector<std::array<int, 3>> tris = triangulate_loops(pts, edges, polygon_view(h.normal()));
+  for (auto& t : tris)
+    for (int& x : t) x = global[static_cast<std::size_t>(x)];
+  return tris;
+}
+
+// The output: the vertices that faces use, numbered in the order the faces first use them,
+// copied (the input's) or moved (the split points) on all cores.
+void compact(Work& w, CutSolid& c) {
+  const std::size_t nv = w.vertices();
+  std::vector<int> id(nv, -1), from;
+  for (Face& f : w.f)
     for (int& x : f) {
-      if (id[x] < 0) id[x] = static_cast<int>(kept.size()), kept.push_back(std::move(c.vertices[x]));  // each moved once
+      if (id[x] < 0) id[x] = static_cast<int>(from.size()), from.push_back(x);
       x = id[x];
     }
-  c.vertices = std::move(kept);
+  c.vertices.resize(from.size());
+  ParallelLoop().for_each(from.size(), 4096, [&](std::size_t i) {
+    const std::size_t k = static_cast<std::size_t>(from[i]);
+    if (k < w.base->size()) c.vertices[i] = (*w.base)[k];
+    else c.vertices[i] = std::move(w.added[k - w.base->size()]);
+  });
+  c.faces = std::move(w.f);
+  c.part = std::move(w.part);
+  c.cap = std::move(w.cap);
 }
 
 }  // namespace
@@ -194,9 +268,9 @@ void compact(CutSolid& c) {
 CutSolid cut_solid(const Polyhedron& body, const std::vector<Plane>& planes) {
   CutSolid out;
   const int nf = static_cast<int>(body.num_faces());
-  Work w{body.vertices(), body.faces(), {}, std::vector<int>(nf, -1)};
+  Work w{&body.vertices(), {}, body.faces(), {}, std::vector<int>(nf, -1)};
   for (int f = 0; f < nf; ++f) w.part.push_back(f);
-  out.open = !closed_oriented(w.f, w.v.size());
+  out.open = !closed_oriented(w.f, w.vertices());
   bool cut = false;
   for (std::size_t k = 0; k < planes.size(); ++k) {
     PlaneCut pc(w, planes[k]);
@@ -207,14 +281,13 @@ CutSolid cut_solid(const Polyhedron& body, const std::vector<Plane>& planes) {
       return out;
     }
     cut = true;
-    Work kept;
+    Work kept{w.base, {}, {}, {}, {}};
     std::vector<std::array<int, 2>> rim;
     bool off_plane = false;
     pc.run(kept, rim, off_plane);
-    kept.v = std::move(w.v);
+    kept.added = std::move(w.added);
     if (!out.open && !off_plane && !rim.empty()) {
-      const PolygonView view = polygon_view(planes[k].normal());
-      for (const auto& t : triangulate_loops(kept.v, rim, view)) {
+      for (const auto& t : triangulate_rim(kept, rim, planes[k])) {
         kept.f.push_back(Face{t[0], t[1], t[2]});
         kept.part.push_back(nf + static_cast<int>(k));
         kept.cap.push_back(static_cast<int>(k));
@@ -226,11 +299,7 @@ CutSolid cut_solid(const Polyhedron& body, const std::vector<Plane>& planes) {
   }
   if (!cut) return out;
   out.state = CutSolid::State::Cut;
-  out.vertices = std::move(w.v);
-  out.faces = std::move(w.f);
-  out.part = std::move(w.part);
-  out.cap = std::move(w.cap);
-  compact(out);
+  compact(w, out);
   return out;
 }
 

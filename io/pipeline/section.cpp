@@ -159,8 +159,8 @@ void cut_bodies(const std::vector<Plane>& planes, const std::vector<Plane>& away
         input_face.push_back(part < input_faces ? n.output_face(part) : static_cast<int>(n.input_faces(input_faces)) + part - input_faces);
       n.input_face = std::move(input_face);
       n.numbered = n.input_faces(input_faces) + planes.size() + away.size();
-      const ParallelLoop loop;  // (the points' lowest terms checked on all cores)
-      b.body = Polyhedron(std::move(c.vertices), std::move(c.faces),
+      const ParallelLoop loop;  // (the faces checked on all cores; the points are the input's or exact results)
+      b.body = Polyhedron(std::move(c.vertices), std::move(c.faces), Polyhedron::InLowestTerms{},
                           [&](std::size_t n, const std::function<void(std::size_t)>& body) { loop.for_each(n, 4096, body); });
       b.surfaces = renumbered_surfaces(b.surfaces, c.part);
       b.section_part = std::move(c.part);
