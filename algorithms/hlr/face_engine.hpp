@@ -289,6 +289,8 @@ class Engine {
   void solve_into(Segment& s, const std::array<int, 2>& gv, Work& wk, PieceList& out) const;
   void test_integer(int oi, const std::array<int, 2>& gv, Work& wk) const;
   void exact_plane(const Occ& o, int k, Vec<P>& m, V& c) const;
+  int cap_part(int body, int face) const;
+  bool in_cap_plane(const Occ& o, const Work& wk) const;
   void filter_shift();
   void grid_view();
   void plane_doubles(const Vec<P>& m, const V& c, double* dm, double& dc) const;

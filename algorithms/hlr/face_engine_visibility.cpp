@@ -58,7 +58,31 @@ struct alignas(128) Engine<P>::Work {  // its own cache lines: workers update th
   std::vector<int> cand;
   std::vector<std::pair<Frac<P>, Frac<P>>> spans;
   mpz_class z[4];  // test_rational's scratch
+  std::array<std::pair<int, int>, 2> caps;  // the segment's: (body, part) of the caps it lies on, or part -1
 };
+
+// A section's cap lies exactly in its plane, and so does a segment on a cap face (an edge of
+// one, a hatch line or an intersection line on one): at both its ends the face plane
+// (constraint 0, through the triangle) of an occluder of the same cap is 0, known without
+// arithmetic (which on a cut's points is long: their common denominator has thousands of bits).
+template <class P>
+int Engine<P>::cap_part(int body, int face) const {
+  const auto b = static_cast<std::size_t>(body);
+  if (body < 0 || face < 0 || b >= hooks_.cap_face.size() || hooks_.cap_face[b].empty() || !hooks_.cap_face[b][face]) return -1;
+  return hooks_.face_part[b][face];
+}
+
+template <class P>
+bool Engine<P>::in_cap_plane(const Occ& o, const Work& wk) const {
+  if constexpr (kFiltered) {  // (on 64 and 128 bits the arithmetic is short)
+    if (!o.through_vertices) return false;
+    const std::pair<int, int> key{o.body, cap_part(o.body, o.face)};
+    return key.second >= 0 && (wk.caps[0] == key || wk.caps[1] == key);
+  } else {
+    (void)o, (void)wk;
+    return false;
+  }
+}
 
 // A segment lying in two side planes of an occluder runs along the sight line through their
 // common vertex (an edge seen end-on): hidden only where the ray just behind that vertex is
@@ -220,6 +244,8 @@ void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed
   }
   candidates(sb, wk);
   wk.skipped += occ_.size() - wk.cand.size();
+  const int body1 = s.kind == Segment::Kind::Edge ? s.body : s.body2;
+  wk.caps = {{{s.body, cap_part(s.body, s.face0)}, {body1, cap_part(body1, s.face1)}}};
   std::vector<std::pair<Rational, Rational>> hidden;
   if (gv[0] >= 0) {
     wk.spans.clear();
@@ -282,7 +308,9 @@ void Engine<P>::test_integer(int oi, const std::array<int, 2>& gv, Work& wk) con
     V f0, f1;
     int s0 = 0, s1 = 0;
     bool exact = true;
-    if constexpr (kFiltered) {
+    if (k == 0 && in_cap_plane(o, wk)) {
+      exact = false;  // s0 = s1 = 0
+    } else if constexpr (kFiltered) {
       auto known = [&](int e, int& sg) {
         const int g = gv[e];
         const bool on = k == 0 ? o.through_vertices && (g == o.v[0] || g == o.v[1] || g == o.v[2]) : g == o.v[k - 1] || g == o.v[k % 3];
@@ -465,12 +493,17 @@ void Engine<P>::plane_doubles(const Vec<P>& m, const V& c, double* dm, double& d
 // The same on rational end points (intersection lines), values m·X - c. A filter on doubles
 // first: an occluder whose inequality k is certainly not positive at both ends hides nothing
 // of the segment (the exact loop would return at k too: the result does not depend on the
-// order of k). The rest is decided on the exact values.
+// order of k), and one certainly positive at both ends takes no exact values (the exact loop
+// goes on past it). The rest is decided on the exact values.
 template <class P>
 void Engine<P>::test_rational(const Occ& o, const RationalEnds& e, std::vector<std::pair<Rational, Rational>>& out, Work& wk) const {
   ++wk.pairs;
-  for (int k = 0; e.filter && k < 4; ++k)
-    if (filtered_sign(o, k, e.Ad) < 0 && filtered_sign(o, k, e.Bd) < 0) return;
+  int inside = 0;  // bit k: inequality k certainly positive at both ends
+  for (int k = 0; e.filter && k < 4; ++k) {
+    const int a = filtered_sign(o, k, e.Ad), b = filtered_sign(o, k, e.Bd);
+    if (a < 0 && b < 0) return;
+    if (a > 0 && b > 0) inside |= 1 << k;
+  }
   // Exact: F = m·a - c·da is f·da (da > 0), so it has f's sign; t = f0 / (f0 - f1) is
   // F0·db / (F0·db - F1·da).
   mpz_class& F0 = wk.z[0];
@@ -479,19 +512,23 @@ void Engine<P>::test_rational(const Occ& o, const RationalEnds& e, std::vector<s
   std::optional<Rational> lo, hi;
   int on_side = 0;
   for (int k = 0; k < 4; ++k) {
-    Vec<P> m;
-    V ck;
-    exact_plane(o, k, m, ck);
-    set_z(c.get_mpz_t(), ck);
-    mpz_mul(F0.get_mpz_t(), c.get_mpz_t(), e.da.get_mpz_t());
-    mpz_mul(F1.get_mpz_t(), c.get_mpz_t(), e.db.get_mpz_t());
-    mpz_neg(F0.get_mpz_t(), F0.get_mpz_t());
-    mpz_neg(F1.get_mpz_t(), F1.get_mpz_t());
-    for (int j = 0; j < 3; ++j) {
-      addmul(F0.get_mpz_t(), m[j], e.a[j].get_mpz_t(), wk.z[3].get_mpz_t());
-      addmul(F1.get_mpz_t(), m[j], e.b[j].get_mpz_t(), wk.z[3].get_mpz_t());
+    if (inside >> k & 1) continue;
+    int s0 = 0, s1 = 0;  // (0 at both ends in the plane of its own cap)
+    if (k != 0 || !in_cap_plane(o, wk)) {
+      Vec<P> m;
+      V ck;
+      exact_plane(o, k, m, ck);
+      set_z(c.get_mpz_t(), ck);
+      mpz_mul(F0.get_mpz_t(), c.get_mpz_t(), e.da.get_mpz_t());
+      mpz_mul(F1.get_mpz_t(), c.get_mpz_t(), e.db.get_mpz_t());
+      mpz_neg(F0.get_mpz_t(), F0.get_mpz_t());
+      mpz_neg(F1.get_mpz_t(), F1.get_mpz_t());
+      for (int j = 0; j < 3; ++j) {
+        addmul(F0.get_mpz_t(), m[j], e.a[j].get_mpz_t(), wk.z[3].get_mpz_t());
+        addmul(F1.get_mpz_t(), m[j], e.b[j].get_mpz_t(), wk.z[3].get_mpz_t());
+      }
+      s0 = sgn(F0), s1 = sgn(F1);
     }
-    int s0 = sgn(F0), s1 = sgn(F1);
     if (s0 > 0 && s1 > 0) continue;
     if (s0 <= 0 && s1 <= 0) {
       if (o.closed[k] && s0 == 0 && s1 == 0) {
