@@ -206,6 +206,13 @@ struct Prepared {
   std::vector<std::optional<std::vector<int>>> continued;
   std::optional<std::vector<CrossLine>> cross;  // the intersection lines
   std::size_t intersection_pairs = 0;
+  // Orthographic views: the facing of every face for the direction of the view that made it
+  // (a later drawing in that direction, a section's hatch pass, reads it), and the filter's
+  // doubles of the multi-limb paths (Engine::filter_doubles; no direction changes them).
+  std::optional<Vec<P>> facing_view;
+  std::vector<std::vector<int>> facing;
+  std::vector<std::array<double, 3>> Xd;
+  long sigma = 0;
 };
 
 template <class P>

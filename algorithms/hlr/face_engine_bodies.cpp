@@ -490,10 +490,19 @@ template <class P>
 void Engine<P>::view_body(int b, LineDrawing& res) {
   std::vector<int>& facing = facing_[b];
   const std::vector<int>& at = prep_->facing_at[b];
-  facing.assign(at.size(), 0);
-  ParallelLoop(opt_.threads).for_each(at.size(), 4096, [&](std::size_t f) {
-    if (at[f] >= 0) facing[f] = facing_sign<P>(face_normal_[b].get(f), X_[at[f]], view_, cam_.perspective);
-  });
+  const bool again = !cam_.perspective && prep_->facing_view == view_ && static_cast<std::size_t>(b) < prep_->facing.size();
+  if (again) {
+    facing = prep_->facing[b];
+  } else {
+    facing.assign(at.size(), 0);
+    ParallelLoop(opt_.threads).for_each(at.size(), 4096, [&](std::size_t f) {
+      if (at[f] >= 0) facing[f] = facing_sign<P>(face_normal_[b].get(f), X_[at[f]], view_, cam_.perspective);
+    });
+    if (keep_ && !cam_.perspective) {  // for the next view in this direction
+      if (b == 0) prep_->facing_view = view_, prep_->facing.clear();
+      prep_->facing.push_back(facing);
+    }
+  }
   for (const BodyNote& n : prep_->notes)
     if (n.body == b) res.notes.push_back(n);
   const int first_tri = prep_->first_tri[b];

@@ -148,6 +148,7 @@ void Engine<P>::release_arrays() {
   std::vector<std::array<double, 3>>().swap(vproj_);
   std::vector<char>().swap(vfront_);
   std::vector<char>().swap(vertex_closed_);
+  if (keep_ && !cam_.perspective && prep_->Xd.empty()) prep_->Xd = std::move(Xd_), prep_->sigma = sigma_;
   std::vector<std::array<double, 3>>().swap(Xd_);
   if (keep_) return;  // the shared work stays for the next view
   std::vector<Tri>().swap(tris_);
@@ -429,6 +430,10 @@ template <class P>
 void Engine<P>::filter_doubles() {
   if constexpr (kFiltered) {
     if (!Xd_.empty() || X_.empty()) return;  // made before the intersection lines (Big)
+    if (!cam_.perspective && !prep_->Xd.empty()) {  // made by a view before
+      Xd_ = prep_->Xd;
+      return;
+    }
     const ParallelLoop loop(opt_.threads);
     Xd_.resize(X_.size());
     loop.for_each(X_.size(), 4096, [&](std::size_t i) {
@@ -455,6 +460,10 @@ template <class P>
 void Engine<P>::filter_shift() {
   if constexpr (std::is_same_v<P, Big>) {
     if (sigma_ > 0) return;  // made before the intersection lines
+    if (!cam_.perspective && prep_->sigma > 0) {  // by a view before
+      sigma_ = prep_->sigma;
+      return;
+    }
     std::size_t bits = 0;
     for (const Vec<P>& x : X_)
       for (int j = 0; j < 3; ++j) bits = std::max(bits, mpz_sizeinbase(x[j].get_mpz_t(), 2));

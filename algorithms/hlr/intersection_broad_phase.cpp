@@ -1,5 +1,7 @@
 // Broad phase (see intersection_broad_phase.hpp): cell size twice the mean box size, dense cell
-// ids sorted by a stable radix sort, a coarse single cell when a box spans too many cells.
+// ids sorted by a stable radix sort; a box over too many cells (a section's cap triangle across
+// the mesh) against the boxes in the slab of cells it reaches on its thinnest axis; a coarse
+// single cell when such boxes are too many.
 #include "algorithms/hlr/intersection_broad_phase.hpp"
 
 #include <algorithm>
@@ -65,6 +67,62 @@ struct Cells {
   }
 };
 
+// Huge boxes (over 64 cells) against the others: each against the boxes whose low cell on
+// its thinnest axis (counted in cells, with the widest span of the other boxes added) lies
+// where they can reach it, read from the boxes ordered by their low cell on that axis; the huge
+// boxes among themselves pair by pair. pair(i, j, worker) is called for every candidate pair
+// once (i huge; when both are, from the lower index).
+template <class Box, class Pair>
+void huge_box_pairs(std::span<const Box> bb, const Cells& g, const std::vector<std::array<std::int32_t, 3>>& low,
+                    const std::vector<std::uint32_t>& big, const ParallelLoop& loop, const Pair& pair) {
+  if (big.empty()) return;
+  const std::size_t n = bb.size();
+  std::vector<char> is_big(n, 0);
+  for (std::uint32_t i : big) is_big[i] = 1;
+  auto high = [&](std::size_t i, int k) { return g.key(k, bb[i][k + 3]); };
+  PerWorker<std::array<std::int64_t, 3>> widest(loop, {0, 0, 0});  // of the other boxes, in cells
+  loop.run(n, 8192, [&](unsigned w, std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i)
+      for (int k = 0; k < 3 && !is_big[i]; ++k) widest[w][k] = std::max(widest[w][k], high(i, k) - low[i][k]);
+  });
+  std::array<std::int64_t, 3> W = {0, 0, 0};
+  for (unsigned w = 0; w < widest.size(); ++w)
+    for (int k = 0; k < 3; ++k) W[k] = std::max(W[k], widest[w][k]);
+  auto axis_of = [&](std::uint32_t i) {  // the fewest cells to read, relative to the axis's length
+    int best = 0;
+    double least = INFINITY;
+    for (int k = 0; k < 3; ++k) {
+      const double f = static_cast<double>(high(i, k) - low[i][k] + 1 + W[k]) / static_cast<double>(g.dims[k]);
+      if (f < least) least = f, best = k;
+    }
+    return best;
+  };
+  // The other boxes in order of their low cell (then of index) on each axis a huge box reads.
+  std::array<std::vector<std::uint32_t>, 3> order;
+  std::array<std::vector<std::size_t>, 3> first;  // per cell on the axis: where its boxes start
+  for (std::uint32_t i : big) {
+    const int k = axis_of(i);
+    if (!first[k].empty()) continue;
+    first[k].assign(static_cast<std::size_t>(g.dims[k]) + 1, 0);
+    for (std::size_t j = 0; j < n; ++j)
+      if (!is_big[j]) ++first[k][static_cast<std::size_t>(low[j][k]) + 1];
+    for (std::size_t c = 0; c + 1 < first[k].size(); ++c) first[k][c + 1] += first[k][c];
+    order[k].resize(first[k].back());
+    std::vector<std::size_t> at(first[k].begin(), first[k].end() - 1);
+    for (std::size_t j = 0; j < n; ++j)
+      if (!is_big[j]) order[k][at[static_cast<std::size_t>(low[j][k])]++] = static_cast<std::uint32_t>(j);
+  }
+  loop.run(big.size(), 1, [&](unsigned w, std::size_t b, std::size_t e) {
+    for (std::size_t q = b; q < e; ++q) {
+      const std::uint32_t i = big[q];
+      const int k = axis_of(i);
+      const std::int64_t lo = std::max<std::int64_t>(0, low[i][k] - W[k]), hi = std::min<std::int64_t>(g.dims[k] - 1, high(i, k));
+      for (std::size_t r = first[k][static_cast<std::size_t>(lo)]; r < first[k][static_cast<std::size_t>(hi) + 1]; ++r) pair(i, order[k][r], w);
+      for (std::uint32_t j : big)
+        if (j > i) pair(i, j, w);
+    }
+  });
+}
 
 template <class Box>
 BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop,
@@ -205,15 +263,8 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop,
     for (std::size_t c = b; c < e; ++c)
       if (cell_start[c + 1] - cell_start[c] > 1) cell_pairs(cell_start[c], cell_start[c + 1], w, cell);
   });
-  // Huge boxes against every other box (a pair of two huge boxes once, from the lower index).
-  std::vector<char> is_big(big.empty() ? 0 : n, 0);
-  for (std::uint32_t i : big) is_big[i] = 1;
-  loop.run(big.size(), 1, [&](unsigned w, std::size_t b, std::size_t e) {
-    for (std::size_t k = b; k < e; ++k) {
-      const std::uint32_t i = big[k];
-      for (std::uint32_t j = 0; j < n; ++j)
-        if (j != i && !(is_big[j] && j < i) && overlap(i, j)) take(std::min(i, j), std::max(i, j), w);
-    }
+  huge_box_pairs(bb, g, low, big, loop, [&](std::uint32_t i, std::uint32_t j, unsigned w) {
+    if (overlap(i, j)) take(std::min(i, j), std::max(i, j), w);
   });
   for (unsigned w = 0; w < found.size(); ++w) {
     out.kept.insert(out.kept.end(), found[w].kept.begin(), found[w].kept.end());

@@ -1,5 +1,6 @@
 // The intersection lines' broad phase (algorithms/hlr/intersection_broad_phase.hpp): every
-// overlapping pair once, against a quadratic oracle, in doubles and in floats rounded outward;
+// overlapping pair once, against a quadratic oracle, in doubles and in floats rounded outward,
+// with huge boxes among the small ones (long, flat across the scene, over all of it);
 // the segment's owned and borrowed ends (algorithms/model/line_drawing.hpp).
 #include <gtest/gtest.h>
 
@@ -25,6 +26,8 @@ std::vector<Box3> random_boxes(std::mt19937_64& rng, std::size_t n, double scale
       b[k + 3] = b[k] + (rng() % 7 == 0 ? 0 : size(rng));  // some flat boxes
     }
     if (rng() % 50 == 0) b[3] = b[0] + 2 * scale;  // a huge one now and then
+    if (rng() % 60 == 0) b[0] = -scale, b[3] = scale, b[1] = -scale, b[4] = scale, b[5] = b[2];  // a flat one across (a cap's)
+    if (rng() % 200 == 0) b = {-scale, -scale, -scale, scale, scale, scale};                     // one over everything
   }
   return out;
 }
