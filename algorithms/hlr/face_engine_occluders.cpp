@@ -207,11 +207,11 @@ void Engine<P>::select_occluders(const std::vector<std::vector<DrawnEdge>>& draw
       if (cam_.perspective && !vfront_[t0.v[0]] && !vfront_[t0.v[1]] && !vfront_[t0.v[2]]) continue;
       ++hiding[w];
       state[i] = 1;
-      if (near && !near(t0)) continue;  // no drawn segment comes near it
-      if (hooks_.may_occlude) {         // a tile: only the triangles that can reach it
+      if (hooks_.may_occlude) {  // a tile: only the triangles that can reach it
         const int o = voff_[t0.body];
         if (!hooks_.may_occlude(t0.body, {t0.v[0] - o, t0.v[1] - o, t0.v[2] - o})) continue;
       }
+      if (near && !near(t0)) continue;  // no drawn segment comes near it
       state[i] = 2;
     }
   });

@@ -63,7 +63,8 @@ struct FaceRouteHooks {
   /// the tiles' pieces in: picture_tiles.hpp).
   std::function<bool(const Segment&)> decide;
   /// When set, a face triangle (its body and the body's vertex indices) hides only when this
-  /// returns true: a tile leaves out the triangles that cannot reach it. Called from several
+  /// returns true: a tile leaves out the triangles that cannot reach it, a section's hatch pass
+  /// the bodies that cannot hide its caps. Called from several
   /// threads at once: it must only read.
   std::function<bool(int body, const std::array<int, 3>& vertices)> may_occlude;
   /// Per body (empty: none), per face: which face of the user's model it is part of, after a

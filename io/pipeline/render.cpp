@@ -496,6 +496,7 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     cut_bodies(planes ? *planes : none, away ? *away : none, editable, r.names, repairs);
     r.section_planes = planes ? *planes : none;
     if (away) r.section_planes.insert(r.section_planes.end(), away->begin(), away->end());
+    r.section_cut_away = away && !away->empty();
     if (editable.empty()) throw std::invalid_argument("the section removes every body: nothing is left to draw");
     polys.clear();
     for (SceneBody* b : editable) polys.push_back(&b->body);

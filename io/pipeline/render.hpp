@@ -163,6 +163,7 @@ struct RenderResult {
   /// With a section: its planes, the kept side's (RenderOptions::section) then the cut-away's;
   /// a cap face of plane k (SceneBody::section_cap) lies on section_planes[k].
   std::vector<Plane> section_planes;
+  bool section_cut_away = false;  // some of them are a cut-away's
   /// With caps drawn by the per-face route in an orthographic view: that route's work on the
   /// cut bodies (scaled points, topology, triangles, normals), which the caps' hatching reads
   /// instead of doing it again (null otherwise).

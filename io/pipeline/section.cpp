@@ -7,6 +7,7 @@
 #include <unordered_set>
 
 #include "algorithms/hatching/hatch.hpp"
+#include "algorithms/model/facing.hpp"
 #include "algorithms/sections/section_cut.hpp"
 #include "algorithms/support/parallel.hpp"
 #include "io/pipeline/render_steps.hpp"
@@ -68,6 +69,18 @@ std::function<std::array<double, 3>(double, double)> lifter(const Projector& pro
 bool seen_edge_on(const Plane& h, const Camera& cam) {
   if (cam.perspective) return h.value(cam.eye) == 0;
   return h.a() * cam.direction.x() + h.b() * cam.direction.y() + h.c() * cam.direction.z() == 0;
+}
+
+// Every point a section keeps has a value <= 0 in each of its planes, and a point between the
+// eye and a cap that faces the eye has a positive value in the cap's plane: no body the section
+// cut (and no part of it) can hide such a cap. True when every cap of the drawing faces the eye
+// and none is a cut-away's (which keeps points on both sides of its planes).
+bool caps_face_the_eye(const RenderResult& r) {
+  if (r.section_cut_away) return false;
+  for (const SceneBody* b : r.bodies)
+    for (int k : b->section_cap)
+      if (k >= 0 && facing_sign(r.section_planes[static_cast<std::size_t>(k)], r.camera) <= 0) return false;
+  return true;
 }
 
 // The parts of a hatch line inside its cap as extra lines of the per-face pass, in chunks of
@@ -312,6 +325,11 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
   lo.threads = threads;
   hooks.see_through = see_through_bodies(r);
   hooks.extra_only = true;
+  if (caps_face_the_eye(r)) {  // only the bodies the section did not cut can hide a hatch line
+    std::vector<char> cut;
+    for (const SceneBody* b : r.bodies) cut.push_back(b->cut);
+    hooks.may_occlude = [cut = std::move(cut)](int body, const std::array<int, 3>&) { return !cut[static_cast<std::size_t>(body)]; };
+  }
   hooks.share = r.section_share;  // the drawing's prepared bodies, when it left them
   LineDrawing all = face_occluders(polys, r.camera, lo, hooks);
   std::size_t k = 0;

@@ -2,7 +2,8 @@
 // a plane equals, exactly, the drawing of the same scene with the removed parts deleted by hand
 // and the caps added as faces (random boxes that touch and interpenetrate, axis planes at
 // their faces' heights and between, orthographic and perspective views, lines and surfaces);
-// cut lines are their own class; bodies that take no cut stay whole; CGAL's fandisk and
+// cut lines are their own class; bodies that take no cut stay whole and hide hatch lines (the
+// only bodies that can, when the caps face the eye); CGAL's fandisk and
 // couplingdown drawn cut equal their cut meshes drawn whole.
 #include <gtest/gtest.h>
 
@@ -191,6 +192,60 @@ TEST(SectionRender, CapsSeenEdgeOnTakeNoHatch) {
   off.section = {Plane(1, 0, 0, -2)};
   off.view.direction = Vector3(Rational(1, 20), Rational(1), Rational(0));
   EXPECT_FALSE(cap_hatching(render({scene_of(boxes)}, off), 10, 0.35, 1).segments.empty());
+}
+
+// When every cap faces the eye, the hatch pass takes only the bodies the section did not cut as
+// occluders (no kept point lies between the eye and such a cap). Its visible hatch must equal
+// the pass with every body an occluder (forced here by calling the planes a cut-away's, which
+// turns the rule off), on random blocks and shafts that take no cut (in front of the caps,
+// through them, touching them), caps seen from the removed side and from the kept side,
+// orthographic and perspective.
+TEST(SectionRender, HatchBehindNoCutBodyOnlyIsHidden) {
+  std::mt19937 rng(977);
+  std::uniform_int_distribution<long> c(0, 6), len(1, 4), d(-3, 3);
+  int hatched = 0, unseen = 0;
+  for (int trial = 0; trial < 16; ++trial) {
+    std::vector<Box> boxes;
+    for (int k = 0; k < 4; ++k) {
+      Box b;
+      for (int a = 0; a < 3; ++a) b.lo[a] = c(rng), b.hi[a] = b.lo[a] + len(rng);
+      b.cut = k != 3;  // a shaft
+      boxes.push_back(b);
+    }
+    const int axis = trial % 3;
+    RenderOptions o;
+    Rational n[3] = {0, 0, 0};
+    n[axis] = 1;
+    o.section = {Plane(n[0], n[1], n[2], -Rational(c(rng)) - Rational(1, 2))};
+    if (trial % 4 == 3) {
+      o.view.eye = trial % 8 == 3 ? P(23, 17, 29) : P(-13, -11, -17);
+      o.view.target = P(3, 3, 3);
+    } else {
+      Vector3 v;
+      do v = Vector3(d(rng), d(rng), d(rng));
+      while (v.is_zero() || v[axis] == 0);
+      o.view.direction = v;
+    }
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    RenderResult r = render({scene_of(boxes)}, o);
+    const LineDrawing fast = cap_hatching(r, 10, 0.35, 1);
+    r.section_cut_away = true;
+    const LineDrawing all = cap_hatching(r, 10, 0.35, 1);
+    ASSERT_EQ(fast.segments.size(), all.segments.size());
+    unseen += has_caps(r) && all.segments.empty();
+    for (std::size_t i = 0; i < fast.segments.size(); ++i) {
+      const PieceList &a = fast.segments[i].pieces, &b = all.segments[i].pieces;
+      ASSERT_EQ(a.size(), b.size());
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        EXPECT_EQ(a[k].t0, b[k].t0);
+        EXPECT_EQ(a[k].t1, b[k].t1);
+        EXPECT_EQ(a[k].visible, b[k].visible);
+        hatched += a[k].visible;
+      }
+    }
+  }
+  EXPECT_GT(hatched, 1000);
+  EXPECT_GT(unseen, 2);  // caps seen from the kept side: hidden by their own body
 }
 
 TEST(SectionRender, RemovingEveryBodyIsAnError) {
