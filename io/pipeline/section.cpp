@@ -317,6 +317,26 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
     }
   }
   if (hooks.extra_lines.empty()) return out;
+  const bool all_cut = std::all_of(r.bodies.begin(), r.bodies.end(), [](const SceneBody* b) { return b->cut; });
+  if (!r.camera.perspective && all_cut && caps_face_the_eye(r)) {
+    // No body can hide a hatch line (caps_face_the_eye) and none lies behind the eye: every
+    // one is seen whole, as the per-face pass would find it.
+    for (std::size_t k = 0; k < hooks.extra_lines.size(); ++k) {
+      const FaceRouteHooks::ExtraLine& x = hooks.extra_lines[k];
+      Segment s;
+      s.kind = Segment::Kind::Intersection;
+      s.line = x.kind;
+      s.body = s.body2 = x.body;
+      s.face0 = s.face1 = x.face;
+      s.set_ends(x.a, x.b);
+      PieceList seen;
+      seen.set_whole(true);
+      s.pieces = clipped_pieces(seen, inside[k]);
+      if (r.clip) clip_pieces(s, *r.clip);
+      if (!s.pieces.empty()) out.segments.push_back(std::move(s));
+    }
+    return out;
+  }
   std::vector<const Polyhedron*> polys;
   for (const SceneBody* b : r.bodies) polys.push_back(&b->body);
   LineOptions lo;

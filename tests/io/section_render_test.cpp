@@ -195,7 +195,8 @@ TEST(SectionRender, CapsSeenEdgeOnTakeNoHatch) {
 }
 
 // When every cap faces the eye, the hatch pass takes only the bodies the section did not cut as
-// occluders (no kept point lies between the eye and such a cap). Its visible hatch must equal
+// occluders (no kept point lies between the eye and such a cap), and none when every body was
+// cut (orthographic: every hatch line seen whole). Its visible hatch must equal
 // the pass with every body an occluder (forced here by calling the planes a cut-away's, which
 // turns the rule off), on random blocks and shafts that take no cut (in front of the caps,
 // through them, touching them), caps seen from the removed side and from the kept side,
@@ -204,12 +205,12 @@ TEST(SectionRender, HatchBehindNoCutBodyOnlyIsHidden) {
   std::mt19937 rng(977);
   std::uniform_int_distribution<long> c(0, 6), len(1, 4), d(-3, 3);
   int hatched = 0, unseen = 0;
-  for (int trial = 0; trial < 16; ++trial) {
+  for (int trial = 0; trial < 24; ++trial) {
     std::vector<Box> boxes;
     for (int k = 0; k < 4; ++k) {
       Box b;
       for (int a = 0; a < 3; ++a) b.lo[a] = c(rng), b.hi[a] = b.lo[a] + len(rng);
-      b.cut = k != 3;  // a shaft
+      b.cut = k != 3 || trial % 2 == 0;  // a shaft, in every other scene
       boxes.push_back(b);
     }
     const int axis = trial % 3;
