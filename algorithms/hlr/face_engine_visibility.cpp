@@ -429,7 +429,7 @@ int Engine<P>::filtered_sign(const Occ& o, int k, const std::array<double, 3>& X
 template <class P>
 void Engine<P>::filter_doubles() {
   if constexpr (kFiltered) {
-    if (!Xd_.empty() || X_.empty()) return;  // made before the intersection lines (Big)
+    if (!Xd_.empty() || X_.empty()) return;         // made before the intersection lines (Big)
     if (!cam_.perspective && !prep_->Xd.empty()) {  // made by a view before
       Xd_ = prep_->Xd;
       return;
@@ -459,7 +459,7 @@ void Engine<P>::filter_doubles() {
 template <class P>
 void Engine<P>::filter_shift() {
   if constexpr (std::is_same_v<P, Big>) {
-    if (sigma_ > 0) return;  // made before the intersection lines
+    if (sigma_ > 0) return;                       // made before the intersection lines
     if (!cam_.perspective && prep_->sigma > 0) {  // by a view before
       sigma_ = prep_->sigma;
       return;
