@@ -178,7 +178,7 @@ class FaceNormals {
 /// inside-out solid or component was turned.
 template <class P>
 struct Prepared {
-  std::vector<Vec<P>> X;  // every vertex scaled to integers
+  std::vector<Vec<P>> X;  // every vertex scaled to integers (Big: those on the grid left 0, Engine::pt)
   Rational scale;
   /// Wide and Big only (else empty): per vertex, whether it lies on the scene's grid (a
   /// common denominator G of most vertices, below 2^62), and then its coordinates times G,
@@ -234,6 +234,23 @@ class Engine {
 
  private:
   struct Work;
+
+  /// A vertex's scaled coordinates. Big with a grid: a vertex on the grid keeps only its small
+  /// integers (Prepared::small), and its coordinates, small·(scale / G), are made here when a
+  /// test needs them (a copy); any other is read from X_ (by reference under the other policies).
+  decltype(auto) pt(int g) const {
+    if constexpr (std::is_same_v<P, Big>) {
+      const auto i = static_cast<std::size_t>(g);
+      if (!prep_->on_grid.empty() && prep_->on_grid[i]) {
+        Vec<P> x;
+        for (int k = 0; k < 3; ++k) mpz_mul_si(x[k].get_mpz_t(), grid_factor_.get_mpz_t(), static_cast<long>(prep_->small[i][k]));
+        return x;
+      }
+      return Vec<P>(X_[i]);
+    } else {
+      return static_cast<const Vec<P>&>(X_[static_cast<std::size_t>(g)]);
+    }
+  }
 
   // face_engine_bodies.cpp
   void offsets();

@@ -218,7 +218,7 @@ Vec<P> Engine<P>::normal(const Tri& t) const {
     std::array<Int128, 3> n;
     if (grid_normal(t, n)) return {from128<P>(n[0]), from128<P>(n[1]), from128<P>(n[2])};
   }
-  return cross<P>(sub<P>(X_[t.v[1]], X_[t.v[0]]), sub<P>(X_[t.v[2]], X_[t.v[0]]));
+  return cross<P>(sub<P>(pt(t.v[1]), pt(t.v[0])), sub<P>(pt(t.v[2]), pt(t.v[0])));
 }
 
 // The same from the grid's small integers alone; false when a corner is off the grid.
@@ -359,12 +359,12 @@ int Engine<P>::volume_sign(const std::vector<int>& ids) const {
       }
     };
     std::vector<WideSum> part(loop.workers());
-    const Vec<P>& o = X_[tris_[ids[0]].v[0]];
+    const Vec<P>& o = pt(tris_[ids[0]].v[0]);
     loop.run(ids.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
       WideSum sum = part[w];
       for (std::size_t k = begin; k < end; ++k) {
         const int i = ids[k];
-        sum.add(dot<P>(sub<P>(X_[tris_[i].v[0]], o), cross<P>(sub<P>(X_[tris_[i].v[1]], o), sub<P>(X_[tris_[i].v[2]], o))));
+        sum.add(dot<P>(sub<P>(pt(tris_[i].v[0]), o), cross<P>(sub<P>(pt(tris_[i].v[1]), o), sub<P>(pt(tris_[i].v[2]), o))));
       }
       part[w] = sum;
     });
@@ -380,7 +380,7 @@ int Engine<P>::volume_sign(const std::vector<int>& ids) const {
       V sum = 0;
       for (std::size_t k = begin; k < end; ++k) {
         const int i = ids[k];
-        sum += dot<P>(X_[tris_[i].v[0]], cross<P>(X_[tris_[i].v[1]], X_[tris_[i].v[2]]));
+        sum += dot<P>(pt(tris_[i].v[0]), cross<P>(pt(tris_[i].v[1]), pt(tris_[i].v[2])));
       }
       part[w] += sum;
     });
@@ -496,7 +496,10 @@ void Engine<P>::view_body(int b, LineDrawing& res) {
   } else {
     facing.assign(at.size(), 0);
     ParallelLoop(opt_.threads).for_each(at.size(), 4096, [&](std::size_t f) {
-      if (at[f] >= 0) facing[f] = facing_sign<P>(face_normal_[b].get(f), X_[at[f]], view_, cam_.perspective);
+      if (at[f] < 0) return;
+      // (orthographic: the point is not read; none is made)
+      facing[f] = cam_.perspective ? facing_sign<P>(face_normal_[b].get(f), pt(at[f]), view_, true)
+                                   : facing_sign<P>(face_normal_[b].get(f), view_, view_, false);
     });
     if (keep_ && !cam_.perspective) {  // for the next view in this direction
       if (b == 0) prep_->facing_view = view_, prep_->facing.clear();
@@ -532,7 +535,7 @@ int Engine<P>::parity(const Vec<P>& x, const std::vector<int>& ids) const {
     int crossings = 0;
     for (int i : ids) {
       const Tri& t = tris_[i];
-      Vec<P> a = sub<P>(X_[t.v[0]], x), b = sub<P>(X_[t.v[1]], x), c = sub<P>(X_[t.v[2]], x);
+      Vec<P> a = sub<P>(pt(t.v[0]), x), b = sub<P>(pt(t.v[1]), x), c = sub<P>(pt(t.v[2]), x);
       int o1 = P::sign(dot<P>(a, cross<P>(b, d))), o2 = P::sign(dot<P>(b, cross<P>(c, d))), o3 = P::sign(dot<P>(c, cross<P>(a, d)));
       if (!((o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0))) continue;  // the line misses it
       if (o1 == 0 || o2 == 0 || o3 == 0) {
@@ -603,7 +606,7 @@ bool Engine<P>::orient_components(int b, int first) {
     // A cavity lies wholly inside the others: some vertex outside them all means inside out.
     bool outside = false;
     for (std::size_t i = 0; i < mine.size() && !outside; ++i)
-      for (int j = 0; j < 3 && !outside; ++j) outside = parity(X_[tris_[mine[i]].v[j]], others) == 0;
+      for (int j = 0; j < 3 && !outside; ++j) outside = parity(pt(tris_[mine[i]].v[j]), others) == 0;
     if (!outside) continue;  // a cavity's shell (or undecided: left as it is)
     for (int i : mine) flip(tris_[i]);
     int lowest = static_cast<int>(nf);
@@ -628,8 +631,8 @@ bool Engine<P>::eye_on_surface(int first) const {
     Vec<P> n = normal(t);
     bool inside = true;
     for (int k = 0; k < 3 && inside; ++k) {
-      const Vec<P>& a = X_[t.v[k]];
-      inside = P::sign(dot<P>(n, cross<P>(sub<P>(X_[t.v[(k + 1) % 3]], a), sub<P>(view_, a)))) >= 0;
+      const Vec<P>& a = pt(t.v[k]);
+      inside = P::sign(dot<P>(n, cross<P>(sub<P>(pt(t.v[(k + 1) % 3]), a), sub<P>(view_, a)))) >= 0;
     }
     if (inside) return true;
   }

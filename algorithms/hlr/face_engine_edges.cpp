@@ -123,7 +123,7 @@ bool Engine<P>::opposite_in_projection(int u, int v, int x, int y) const {
   Vec<P> m;
   V c;
   side_plane(u, v, m, c);
-  return P::sign(dot<P>(m, X_[x]) - c) * P::sign(dot<P>(m, X_[y]) - c) < 0;
+  return P::sign(dot<P>(m, pt(x)) - c) * P::sign(dot<P>(m, pt(y)) - c) < 0;
 }
 
 // Body b's feature class of every edge between two live faces (else -1), as collect_edges

@@ -221,14 +221,14 @@ std::optional<std::pair<Point3, Point3>> Engine<P>::segment(const Tri& x, const 
       Int128 sv[3];
       int sg[3], zeros = 0;
       for (int k = 0; k < 3; ++k) {
-        sv[k] = dot<P>(nrm, sub<P>(X_[t.v[k]], q));
+        sv[k] = dot<P>(nrm, sub<P>(pt(t.v[k]), q));
         sg[k] = P::sign(sv[k]);
         zeros += sg[k] == 0;
       }
       if (zeros == 3) return;
       for (int k = 0; k < 3; ++k) {
         const int j = (k + 1) % 3;
-        const Vec<P>&a = X_[t.v[k]], &b = X_[t.v[j]];
+        const Vec<P>&a = pt(t.v[k]), &b = pt(t.v[j]);
         if (sg[k] == 0 && c.n < 2) c.p[c.n++] = Pt{{a[0], a[1], a[2]}, 1};
         if (sg[k] * sg[j] < 0 && c.n < 2) {
           Int128 d = sv[k] - sv[j];
@@ -252,8 +252,8 @@ std::optional<std::pair<Point3, Point3>> Engine<P>::segment(const Tri& x, const 
       if (abs128(u[i]) > abs128(u[ax])) ax = i;
     if (u[ax] == 0) return std::nullopt;  // parallel planes
     Cut ca, cb;
-    cut(x, nb, X_[y.v[0]], ca);
-    cut(y, na, X_[x.v[0]], cb);
+    cut(x, nb, pt(y.v[0]), ca);
+    cut(y, na, pt(x.v[0]), cb);
     if (ca.n < 2 || cb.n < 2 || ca.along || cb.along) return std::nullopt;
     const int dir = u[ax] > 0 ? 1 : -1;
     auto cmp = [&](const Pt& p, const Pt& q) { return dir * compare_products(p.num[ax], q.den, q.num[ax], p.den); };
@@ -303,7 +303,7 @@ bool Engine<P>::may_meet(const Tri& x, const Vec<P>& nx, const Tri& y, const Vec
 template <class P>
 bool Engine<P>::extent_on_plane(const Tri& t, const Tri& o, const Vec<P>& n, int axis, double out[2], double& scale) const {
   V s[3];
-  for (int k = 0; k < 3; ++k) s[k] = dot<P>(n, sub<P>(X_[t.v[k]], X_[o.v[0]]));
+  for (int k = 0; k < 3; ++k) s[k] = dot<P>(n, sub<P>(pt(t.v[k]), pt(o.v[0])));
   out[0] = INFINITY;
   out[1] = -INFINITY;
   // Big: the coordinates as the filter's doubles (X·2^-sigma_, filter_doubles: any scale
@@ -312,7 +312,7 @@ bool Engine<P>::extent_on_plane(const Tri& t, const Tri& o, const Vec<P>& n, int
     if constexpr (std::is_same_v<P, Big>) {
       return Xd_[g][axis];
     } else {
-      return P::dbl(X_[g][axis]);
+      return P::dbl(pt(g)[axis]);
     }
   };
   for (int k = 0; k < 3; ++k) {
@@ -353,7 +353,7 @@ bool Engine<P>::straddles(const Tri& x, const Vec<P>* n, const Tri& y) const {
       s = orient_filter(Xd_[x.v[0]], Xd_[x.v[1]], Xd_[x.v[2]], Xd_[v]);
       if (s == 2) {
         if (!n) n = &made.emplace(normal(x));
-        s = P::sign(dot<P>(*n, sub<P>(X_[v], X_[x.v[0]])));
+        s = P::sign(dot<P>(*n, sub<P>(pt(v), pt(x.v[0]))));
       }
     } else if constexpr (std::is_same_v<P, Big>) {
       if (on_grid(x) && prep_->on_grid[v]) {  // *n from the grid's small integers too: the same sign
@@ -363,10 +363,10 @@ bool Engine<P>::straddles(const Tri& x, const Vec<P>* n, const Tri& y) const {
         s = P::sign(dot<P>(*n, d));
       } else {  // a cut's point: doubles first (orient_filter), else exact on the scaled points
         s = orient_filter(Xd_[x.v[0]], Xd_[x.v[1]], Xd_[x.v[2]], Xd_[v]);
-        if (s == 2) s = P::sign(dot<P>(*n, sub<P>(X_[v], X_[x.v[0]])));
+        if (s == 2) s = P::sign(dot<P>(*n, sub<P>(pt(v), pt(x.v[0]))));
       }
     } else {
-      s = P::sign(dot<P>(*n, sub<P>(X_[v], X_[x.v[0]])));
+      s = P::sign(dot<P>(*n, sub<P>(pt(v), pt(x.v[0]))));
     }
     pos += s > 0;
     neg_ += s < 0;

@@ -231,7 +231,7 @@ void Engine<P>::select_occluders(const std::vector<std::vector<DrawnEdge>>& draw
       V c;
       if (!solid_[t.body]) {  // the open-surface rule reads the side plane, oriented inward
         side_plane(t.v[k], t.v[(k + 1) % 3], m, c);
-        if (P::sign(dot<P>(m, X_[t.v[(k + 2) % 3]]) - c) < 0) {
+        if (P::sign(dot<P>(m, pt(t.v[(k + 2) % 3])) - c) < 0) {
           m = neg<P>(m);
           c = -c;
         }
@@ -310,9 +310,9 @@ void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& b
   // value at the third vertex r is det(D, q - p, r - p) = D·n (orthographic, D the view
   // direction), or det(p - E, q - E, r - E) = (p - E)·n = (a - E)·n for any vertex a
   // (perspective): the same sign for the three sides, computed once.
-  const bool turn = P::sign(cam_.perspective ? dot<P>(n, sub<P>(X_[t.v[0]], view_)) : dot<P>(n, view_)) < 0;
+  const bool turn = P::sign(cam_.perspective ? dot<P>(n, sub<P>(pt(t.v[0]), view_)) : dot<P>(n, view_)) < 0;
   Vec<P> m0 = neg<P>(n);
-  V c0 = to_eye ? dot<P>(m0, view_) : dot<P>(m0, X_[t.v[0]]);
+  V c0 = to_eye ? dot<P>(m0, view_) : dot<P>(m0, pt(t.v[0]));
   if constexpr (kFiltered) {
     o.through_vertices = !to_eye;
     o.turned = 0;
@@ -405,7 +405,7 @@ bool Engine<P>::closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, in
     if constexpr (std::is_same_v<P, Wide>) w = orient_filter(Xd_[t.v[0]], Xd_[t.v[1]], Xd_[t.v[2]], Xd_[third]);
     if (w == 2) {
       if (!n) n = normal(t);
-      w = P::sign(dot<P>(*n, sub<P>(X_[third], X_[t.v[0]])));
+      w = P::sign(dot<P>(*n, sub<P>(pt(third), pt(t.v[0]))));
     }
     if (fs > 0) {
       if (w > 0) return true;            // reflex edge: the wedge holds the ray
@@ -415,7 +415,7 @@ bool Engine<P>::closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, in
     return facing_[b][g] < 0;            // convex or flat: both faces away from the viewer
   }
   // Open surface: the neighbour continues on the other side of the edge in the projection.
-  return P::sign(dot<P>(m, X_[third]) - c) < 0;
+  return P::sign(dot<P>(m, pt(third)) - c) < 0;
 }
 
 // Constraint k of a lazy occluder, exact, as make_occluder made it: the face plane (turned
@@ -426,7 +426,7 @@ void Engine<P>::exact_plane(const Occ& o, int k, Vec<P>& m, V& c) const {
   if constexpr (kFiltered) {
     if (k == 0) {
       m = neg<P>(normal(Tri{o.body, o.face, o.v, {true, true, true}}));
-      c = o.through_vertices ? dot<P>(m, X_[o.v[0]]) : dot<P>(m, view_);
+      c = o.through_vertices ? dot<P>(m, pt(o.v[0])) : dot<P>(m, view_);
       return;
     }
     side_plane(o.v[k - 1], o.v[k % 3], m, c);
@@ -471,11 +471,11 @@ void Engine<P>::side_plane(int p, int q, Vec<P>& m, V& c) const {
     }
   }
   if (cam_.perspective) {
-    m = cross<P>(sub<P>(X_[p], view_), sub<P>(X_[q], view_));
+    m = cross<P>(sub<P>(pt(p), view_), sub<P>(pt(q), view_));
     c = dot<P>(m, view_);
   } else {
-    m = cross<P>(view_, sub<P>(X_[q], X_[p]));
-    c = dot<P>(m, X_[p]);
+    m = cross<P>(view_, sub<P>(pt(q), pt(p)));
+    c = dot<P>(m, pt(p));
   }
 }
 

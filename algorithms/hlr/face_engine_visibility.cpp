@@ -300,8 +300,6 @@ template <class P>
 void Engine<P>::test_integer(int oi, const std::array<int, 2>& gv, Work& wk) const {
   ++wk.pairs;
   const Occ& o = occ_[oi];
-  const Vec<P>& X0 = X_[gv[0]];
-  const Vec<P>& X1 = X_[gv[1]];
   bool has_lo = false, has_hi = false;
   Frac<P> lo{V(0), V(1), 0.0}, hi{V(1), V(1), 1.0};
   int on_side = 0;  // bit k: the segment lies in side plane k (closed)
@@ -325,11 +323,11 @@ void Engine<P>::test_integer(int oi, const std::array<int, 2>& gv, Work& wk) con
         Vec<P> m;
         V c;
         exact_plane(o, k, m, c);
-        f0 = dot<P>(m, X0) - c;
-        f1 = dot<P>(m, X1) - c;
+        f0 = dot<P>(m, pt(gv[0])) - c;
+        f1 = dot<P>(m, pt(gv[1])) - c;
       } else {
-        f0 = dot<P>(o.m[k], X0) - o.c[k];
-        f1 = dot<P>(o.m[k], X1) - o.c[k];
+        f0 = dot<P>(o.m[k], pt(gv[0])) - o.c[k];
+        f1 = dot<P>(o.m[k], pt(gv[1])) - o.c[k];
       }
       s0 = P::sign(f0), s1 = P::sign(f1);
     }
@@ -436,7 +434,36 @@ void Engine<P>::filter_doubles() {
     }
     const ParallelLoop loop(opt_.threads);
     Xd_.resize(X_.size());
+    // Big, a vertex on the grid (its X not kept: pt): X = small·K (K = scale / G) as
+    // |small|·k·2^(s - sigma_), k the top 64 bits of K (K = k·2^s·(1 + d), 0 <= d < 2^-63), the
+    // product exact in 128 bits and rounded once: within u + 2^-63 < 2u, as the truncation of
+    // mpz_get_d_2exp.
+    std::uint64_t k_top = 0;
+    long k_shift = 0;
+    const bool grid = std::is_same_v<P, Big> && !prep_->on_grid.empty();
+    if constexpr (std::is_same_v<P, Big>) {
+      if (grid) {
+        k_shift = std::max<long>(0, static_cast<long>(mpz_sizeinbase(grid_factor_.get_mpz_t(), 2)) - 64);
+        mpz_class k;
+        mpz_tdiv_q_2exp(k.get_mpz_t(), grid_factor_.get_mpz_t(), static_cast<mp_bitcnt_t>(k_shift));
+        k_top = mpz_get_ui(k.get_mpz_t());
+      }
+    }
     loop.for_each(X_.size(), 4096, [&](std::size_t i) {
+      if (grid && prep_->on_grid[i]) {
+        for (int j = 0; j < 3; ++j) {
+          const std::int64_t v = prep_->small[i][j];
+          double x = 0;
+          if (v != 0) {
+            const UInt128 a = (v < 0 ? -static_cast<UInt128>(v) : static_cast<UInt128>(v)) * k_top;  // below 2^125
+            x = std::ldexp(static_cast<double>(a), static_cast<int>(std::max<long>(k_shift - sigma_, -4000)));
+            if (!(x >= 0x1p-1000)) x = NAN;
+            if (v < 0) x = -x;
+          }
+          Xd_[i][j] = x;
+        }
+        return;
+      }
       for (int j = 0; j < 3; ++j) {
         if constexpr (std::is_same_v<P, Big>) {
           long e = 0;
@@ -464,9 +491,19 @@ void Engine<P>::filter_shift() {
       sigma_ = prep_->sigma;
       return;
     }
+    // (a vertex on the grid, its X not kept: small·K has at most the bits of both together)
+    const std::vector<char>& g = prep_->on_grid;
+    const std::size_t k_bits = g.empty() ? 0 : mpz_sizeinbase(grid_factor_.get_mpz_t(), 2);
     std::size_t bits = 0;
-    for (const Vec<P>& x : X_)
-      for (int j = 0; j < 3; ++j) bits = std::max(bits, mpz_sizeinbase(x[j].get_mpz_t(), 2));
+    for (std::size_t i = 0; i < X_.size(); ++i)
+      for (int j = 0; j < 3; ++j) {
+        if (!g.empty() && g[i]) {
+          const std::int64_t v = prep_->small[i][j];
+          if (v != 0) bits = std::max(bits, static_cast<std::size_t>(bit_length(abs128(Int128(v)))) + k_bits);
+        } else {
+          bits = std::max(bits, mpz_sizeinbase(X_[i][j].get_mpz_t(), 2));
+        }
+      }
     if (cam_.perspective)
       for (int j = 0; j < 3; ++j) bits = std::max(bits, mpz_sizeinbase(view_[j].get_mpz_t(), 2));
     sigma_ = static_cast<long>(bits);

@@ -311,7 +311,6 @@ void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, 
   const ParallelLoop loop(threads);
   const mpz_class L = gmp_common_denominator(bodies, cam, loop, 0);
   grid = scene_grid(bodies, total, loop, false);
-  const mpz_class K = L / mpz_class(static_cast<unsigned long>(grid.G));  // G divides L
   auto sc = [&](const Rational& q) { return mpz_class(q.get_num() * (L / q.get_den())); };
   pts.resize(total);
   std::size_t first = 0;
@@ -319,11 +318,8 @@ void scale_big(const std::vector<const Polyhedron*>& bodies, const Camera& cam, 
     const std::vector<Point3>& vs = p->vertices();
     loop.for_each(vs.size(), 4096, [&](std::size_t i) {
       const std::size_t at = first + i;
-      if (!grid.on.empty() && grid.on[at]) {
-        for (int k = 0; k < 3; ++k) mpz_mul_si(pts[at][k].get_mpz_t(), K.get_mpz_t(), static_cast<long>(grid.small[at][k]));
-      } else {
+      if (grid.on.empty() || !grid.on[at])  // (a vertex on the grid: small·(L / G), made when a test needs it, Engine::pt)
         for (int k = 0; k < 3; ++k) pts[at][k] = sc(vs[i][k]);
-      }
     });
     first += vs.size();
   }
