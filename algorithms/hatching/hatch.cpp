@@ -53,10 +53,14 @@ std::vector<HatchLine> clip_exact_lines(const std::vector<Point3>& pts, const st
   if (boundary.empty()) return out;
   const Vector3 normal = plane.normal();
   std::vector<Rational> hits;
-  std::map<int, std::array<double, 3>> approx;  // the border's corners in doubles
   auto d3 = [](const Point3& p) { return std::array<double, 3>{to_double(p.x()), to_double(p.y()), to_double(p.z())}; };
+  std::map<int, std::array<double, 3>> corner;  // the border's corners in doubles, each once
   for (const auto& e : boundary)
-    for (int v : e) approx.emplace(v, d3(pts[v]));
+    for (int v : e) corner.emplace(v, std::array<double, 3>{});
+  for (auto& [v, x] : corner) x = d3(pts[v]);
+  std::vector<std::array<std::array<double, 3>, 2>> approx;  // per border edge, read by every line
+  approx.reserve(boundary.size());
+  for (const auto& e : boundary) approx.push_back({corner.at(e[0]), corner.at(e[1])});
   for (HatchLine& line : lines) {
     const Vector3 d = line.p1 - line.p0;
     if (d.is_zero()) continue;
@@ -64,9 +68,10 @@ std::vector<HatchLine> clip_exact_lines(const std::vector<Point3>& pts, const st
     const std::array<double, 3> wd = {to_double(w.x()), to_double(w.y()), to_double(w.z())};
     hits.clear();
     const std::array<double, 3> p0d = d3(line.p0);
-    for (const auto& e : boundary) {
+    for (std::size_t k = 0; k < boundary.size(); ++k) {
+      const auto& e = boundary[k];
       const Point3 &pa = pts[e[0]], &pb = pts[e[1]];
-      const bool la = left_of(w, wd, pa, approx.at(e[0]), line.p0, p0d), lb = left_of(w, wd, pb, approx.at(e[1]), line.p0, p0d);
+      const bool la = left_of(w, wd, pa, approx[k][0], line.p0, p0d), lb = left_of(w, wd, pb, approx[k][1], line.p0, p0d);
       if (la == lb) continue;
       // Where the edge meets the line: t along p0 -> p1 (w·(X − p0) = 0 on the edge).
       const Vector3 ab = pb - pa;

@@ -280,10 +280,12 @@ class Engine {
                                                 std::vector<ScreenRect>& rects) const;
   void make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& bx) const;
   bool closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs, std::optional<Vec<P>>& n) const;
+  int wedge_side(const Tri& t, int g, int third, std::optional<Vec<P>>& n) const;
   void side_plane(int p, int q, Vec<P>& m, V& c) const;
   bool grid_normal(const Tri& t, std::array<Int128, 3>& n) const;
   bool grid_side(int p, int q, std::array<Int128, 3>& m) const;
   bool grid_planes(const Tri& t, std::uint8_t closed, Occ& o) const;
+  bool local_planes(const Tri& t, std::uint8_t closed, Occ& o) const;
   void grid_doubles(const std::array<Int128, 3>& m, const std::array<std::int64_t, 3>& o, bool turn, double* dm, double& dc) const;
   void occluder_box(const Tri& t, int fs, Box& bx) const;
   // face_engine_edges.cpp

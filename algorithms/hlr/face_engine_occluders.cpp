@@ -300,7 +300,7 @@ void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& b
   // -n·(X - E) > 0. Exact for convex solids (docs/design.md); others are refused.
   const bool to_eye = fs < 0 && solid_[b];
   if constexpr (kFiltered) {
-    if (!to_eye && grid_planes(t, closed, o)) {
+    if (!to_eye && (grid_planes(t, closed, o) || local_planes(t, closed, o))) {
       occluder_box(t, fs, bx);
       return;
     }
@@ -371,6 +371,57 @@ bool Engine<P>::grid_planes(const Tri& t, std::uint8_t closed, Occ& o) const {
   return false;
 }
 
+// GMP path, orthographic, a triangle off the grid (a cut's split points): the face plane and
+// side planes' doubles from each corner's own integers instead of the scaled points, whose
+// common denominator L can have thousands of bits. A corner p = p_n / d (d > 0 the lowest
+// common denominator of its coordinates) is X = p_n·(L / d). With u = q_n·d_p - p_n·d_q
+// (for q - p, times d_p·d_q) the planes through p are positive multiples of make_occluder's:
+// the normal u × w (w the same for r), side k's D × u, each constant m·X = (m·p_n)·(L / d_p),
+// one product with the long factor; plane_doubles reads them as it reads make_occluder's, and
+// exact_plane makes the exact ones when a test needs them. False where it does not apply.
+template <class P>
+bool Engine<P>::local_planes(const Tri& t, std::uint8_t closed, Occ& o) const {
+  if constexpr (std::is_same_v<P, Big>) {
+    if (cam_.perspective || mpz_cmp_ui(scale_.get_den_mpz_t(), 1) != 0) return false;
+    const mpz_class& L = scale_.get_num();
+    mpz_class pn[3][3], d[3], Ld[3];
+    for (int i = 0; i < 3; ++i) {
+      const Point3& w = world(t.v[i]);
+      d[i] = 1;
+      for (int k = 0; k < 3; ++k) mpz_lcm(d[i].get_mpz_t(), d[i].get_mpz_t(), w[k].get_den_mpz_t());
+      if (!mpz_divisible_p(L.get_mpz_t(), d[i].get_mpz_t())) return false;
+      mpz_divexact(Ld[i].get_mpz_t(), L.get_mpz_t(), d[i].get_mpz_t());
+      for (int k = 0; k < 3; ++k) {
+        mpz_divexact(pn[i][k].get_mpz_t(), d[i].get_mpz_t(), w[k].get_den_mpz_t());
+        pn[i][k] *= w[k].get_num();
+      }
+    }
+    auto diff = [&](int a, int b) {  // (corner b - corner a)·d_a·d_b
+      Vec<P> u;
+      for (int k = 0; k < 3; ++k) u[k] = pn[b][k] * d[a] - pn[a][k] * d[b];
+      return u;
+    };
+    auto constant = [&](const Vec<P>& m, int a) { return V(dot<P>(m, Vec<P>{pn[a][0], pn[a][1], pn[a][2]}) * Ld[a]); };
+    const Vec<P> n = cross<P>(diff(0, 1), diff(0, 2));
+    const bool turn = P::sign(dot<P>(n, view_)) < 0;
+    const Vec<P> m0 = neg<P>(n);
+    o.through_vertices = true;
+    o.turned = 0;
+    plane_doubles(m0, constant(m0, 0), o.m[0], o.c[0]);
+    for (int k = 0; k < 3; ++k) {
+      Vec<P> m = cross<P>(view_, diff(k, (k + 1) % 3));
+      if (turn) m = neg<P>(m);
+      plane_doubles(m, constant(m, k), o.m[k + 1], o.c[k + 1]);
+      if (turn) o.turned |= static_cast<std::uint8_t>(1u << (k + 1));
+      o.closed[k + 1] = !t.edge[k] || (closed >> (k + 1) & 1) != 0;
+    }
+    return true;
+  } else {
+    (void)t, (void)closed, (void)o;
+    return false;
+  }
+}
+
 // The occluder's screen box and nearest depth.
 template <class P>
 void Engine<P>::occluder_box(const Tri& t, int fs, Box& bx) const {
@@ -401,12 +452,7 @@ bool Engine<P>::closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, in
     // the ray just behind the edge when the wedge holds it; a back face (an occluder only when
     // the eye is on the surface; `t` is turned, its normal points inward) when the wedge holds
     // the ray just beyond the edge, toward the eye: the mirror rule.
-    int w = 2;
-    if constexpr (std::is_same_v<P, Wide>) w = orient_filter(Xd_[t.v[0]], Xd_[t.v[1]], Xd_[t.v[2]], Xd_[third]);
-    if (w == 2) {
-      if (!n) n = normal(t);
-      w = P::sign(dot<P>(*n, sub<P>(pt(third), pt(t.v[0]))));
-    }
+    const int w = wedge_side(t, g, third, n);
     if (fs > 0) {
       if (w > 0) return true;            // reflex edge: the wedge holds the ray
       return facing_[b][g] > 0;          // convex or flat: both faces toward the viewer
@@ -416,6 +462,30 @@ bool Engine<P>::closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, in
   }
   // Open surface: the neighbour continues on the other side of the edge in the projection.
   return P::sign(dot<P>(m, pt(third)) - c) < 0;
+}
+
+// Sign of det(B - A, C - A, X - A) for triangle t = ABC and the far vertex X of its
+// neighbour g (face of the same body), exact: the same cap (both faces of one section's cap,
+// in its plane: 0 without arithmetic), the doubles' filter (orient_filter), the grid's small
+// integers (a positive multiple of the scaled points' value), or the scaled points.
+template <class P>
+int Engine<P>::wedge_side(const Tri& t, int g, int third, std::optional<Vec<P>>& n) const {
+  if constexpr (kFiltered) {
+    const int part = cap_part(t.body, t.face);
+    if (part >= 0 && cap_part(t.body, g) == part) return 0;
+    const int w = orient_filter(Xd_[t.v[0]], Xd_[t.v[1]], Xd_[t.v[2]], Xd_[third]);
+    if (w != 2) return w;
+    std::array<Int128, 3> m;
+    const std::vector<char>& on = prep_->on_grid;
+    if (!on.empty() && on[third] && grid_normal(t, m)) {
+      const auto &a = prep_->small[t.v[0]], &x = prep_->small[third];
+      WideInt<4> d;
+      for (int k = 0; k < 3; ++k) d += WideInt<4>::product(WideInt<4>(m[k]), WideInt<4>(Int128(x[k]) - a[k]));
+      return d.sign();
+    }
+  }
+  if (!n) n = normal(t);
+  return P::sign(dot<P>(*n, sub<P>(pt(third), pt(t.v[0]))));
 }
 
 // Constraint k of a lazy occluder, exact, as make_occluder made it: the face plane (turned

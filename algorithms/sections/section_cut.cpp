@@ -117,7 +117,9 @@ class PlaneCut {
   // The kept faces in the input's order (a cut face's pieces in its place); the cap's edges
   // (in the kept solid's orientation) into `rim`. Which faces stay whole is decided on all
   // cores; the cut faces are split in order, so that the split points are numbered as met.
-  void run(Work& out, std::vector<std::array<int, 2>>& rim, bool& off_plane_rim) {
+  // `closed`: the faces are known closed and oriented (every directed edge once, its reverse
+  // too), so that only edges with an end in the plane can lose their twin (rim_census).
+  void run(Work& out, std::vector<std::array<int, 2>>& rim, bool& off_plane_rim, bool closed) {
     const std::size_t nf = w_.f.size();
     std::vector<signed char> kind(nf);  // kDrop, kKeep, kSplit
     loop_.for_each(nf, 4096, [&](std::size_t fi) { kind[fi] = classify(w_.f[fi]); });
@@ -145,7 +147,7 @@ class PlaneCut {
     });
     // Directed edges whose twin is not kept: the cap's rim, reversed.
     off_plane_rim = false;
-    for (const auto& [u, v] : edge_census(out.f, w_.vertices()).unpaired) {
+    for (const auto& [u, v] : closed ? rim_census(out.f) : edge_census(out.f, w_.vertices()).unpaired) {
       if (on_plane(u) && on_plane(v)) rim.push_back({v, u});
       else off_plane_rim = true;
     }
@@ -155,6 +157,38 @@ class PlaneCut {
   static constexpr signed char kDrop = 0, kKeep = 1, kSplit = 2;
 
   bool on_plane(int x) const { return x >= static_cast<int>(sign_.size()) || sign_[x] == 0; }
+
+  // The directed edges of the kept faces whose reverse is not kept, sorted (edge_census's
+  // unpaired), when the input was closed and oriented. An edge with an end strictly on the kept
+  // side keeps its twin: it is an input edge or a diagonal of a face's exact triangles, whose
+  // twin's face (or triangle) is kept whole or split with those two corners still consecutive,
+  // or an edge's part from that end to its split point, which is made once per edge and which
+  // the twin's split makes too. So only the edges with both ends in the plane are counted.
+  std::vector<std::array<int, 2>> rim_census(const std::vector<Face>& faces) const {
+    PerWorker<std::vector<std::array<int, 2>>> found(loop_);
+    loop_.run(faces.size(), 4096, [&](unsigned wk, std::size_t b, std::size_t e) {
+      for (std::size_t fi = b; fi < e; ++fi) {
+        const Face& f = faces[fi];
+        for (std::size_t k = 0; k < f.size(); ++k) {
+          const int u = f[k], v = f[(k + 1) % f.size()];
+          if (on_plane(u) && on_plane(v)) found[wk].push_back({u, v});
+        }
+      }
+    });
+    std::vector<std::array<int, 2>> all;
+    for (unsigned wk = 0; wk < found.size(); ++wk) all.insert(all.end(), found[wk].begin(), found[wk].end());
+    std::sort(all.begin(), all.end());
+    std::vector<std::array<int, 2>> out;
+    for (std::size_t i = 0; i < all.size();) {  // (u, v) repeated: each occurrence, as the census lists them
+      std::size_t j = i;
+      while (j < all.size() && all[j] == all[i]) ++j;
+      const auto& [u, v] = all[i];
+      if (u != v && !std::binary_search(all.begin(), all.end(), std::array<int, 2>{v, u}))
+        for (std::size_t k = i; k < j; ++k) out.push_back(all[i]);
+      i = j;
+    }
+    return out;
+  }
 
   Vector3 normal(const Face& f) const {
     std::vector<const Point3*> p;
@@ -271,7 +305,7 @@ CutSolid cut_solid(const Polyhedron& body, const std::vector<Plane>& planes) {
   Work w{&body.vertices(), {}, body.faces(), {}, std::vector<int>(nf, -1)};
   for (int f = 0; f < nf; ++f) w.part.push_back(f);
   out.open = !closed_oriented(w.f, w.vertices());
-  bool cut = false;
+  bool cut = false, input = !out.open;  // w is the input, checked closed and oriented
   for (std::size_t k = 0; k < planes.size(); ++k) {
     PlaneCut pc(w, planes[k]);
     const int side = pc.side();
@@ -284,7 +318,8 @@ CutSolid cut_solid(const Polyhedron& body, const std::vector<Plane>& planes) {
     Work kept{w.base, {}, {}, {}, {}};
     std::vector<std::array<int, 2>> rim;
     bool off_plane = false;
-    pc.run(kept, rim, off_plane);
+    pc.run(kept, rim, off_plane, input);
+    input = false;
     kept.added = std::move(w.added);
     if (!out.open && !off_plane && !rim.empty()) {
       for (const auto& t : triangulate_rim(kept, rim, planes[k])) {

@@ -156,8 +156,11 @@ std::string describe(unsigned seed, const Camera& c) {
 // 2^-far_bits wide far from the others, whose coordinates put the whole scene on the
 // multi-limb path (70) or on GMP integers (200), where the other bodies stay on the grid of
 // small denominators (face_engine.hpp, Prepared::on_grid) and the far box does not; with
-// `eye_off_grid`, half of the free eyes moved by 2^-90 (off that grid).
-void eye_among_the_bodies(long n, unsigned seed0, int far_bits, bool eye_off_grid = false) {
+// `eye_off_grid`, half of the free eyes moved by 2^-90 (off that grid); with `off_grid`, only
+// orthographic views, and two of the boxes moved by 2^-90 along (1, 1, 1), off the grid: their
+// triangles hide as occluders made from each corner's own integers (Engine::local_planes) and
+// their sides close by the doubles' filter or exactly (Engine::wedge_side).
+void eye_among_the_bodies(long n, unsigned seed0, int far_bits, bool eye_off_grid = false, bool off_grid = false) {
   Result res;
   for (long i = 0; i < n; ++i) {
     unsigned seed = seed0 * 100003u + static_cast<unsigned>(i);
@@ -170,10 +173,19 @@ void eye_among_the_bodies(long n, unsigned seed0, int far_bits, bool eye_off_gri
       mpq_div_2exp(e.get_mpq_t(), e.get_mpq_t(), static_cast<mp_bitcnt_t>(far_bits));
       bodies.push_back(make_box(Point3(-40, -40, -40), Point3(Rational(-40) + e, Rational(-40) + e, Rational(-40) + e)));
     }
+    if (off_grid) {
+      Rational e = 1;
+      mpq_div_2exp(e.get_mpq_t(), e.get_mpq_t(), 90);
+      for (int k = 0; k < 2; ++k) {
+        std::vector<Point3> moved;
+        for (const Point3& p : bodies[k].vertices()) moved.push_back(Point3(p.x() + e, p.y() + e, p.z() + e));
+        bodies[k] = Polyhedron(std::move(moved), bodies[k].faces());
+      }
+    }
     std::vector<std::vector<OraclePlane>> planes;
     for (const auto& b : bodies) planes.push_back(oracle_planes(b));
     Camera cam;
-    int kind = i % 5;
+    int kind = off_grid ? 3 : static_cast<int>(i % 5);
     if (kind == 4) {  // the eye on the surface of a box: on a face, an edge or a vertex
       Point3 eye;
       for (;;) {  // until the point is inside no other body
@@ -247,6 +259,11 @@ TEST(Torture, EyeAmongTheBodiesOnTheMultiLimbPath) {
 // (face_engine.hpp); the eye on the grid or, for half of the free eyes, just off it.
 TEST(Torture, EyeAmongTheBodiesOnGmpWithAGrid) {
   eye_among_the_bodies(env_long("HLR_TORTURE_SCENES", 200) / 2, static_cast<unsigned>(env_long("HLR_TORTURE_SEED", 12)) + 1, 200, true);
+}
+
+// GMP integers in orthographic views with two boxes off the grid (see eye_among_the_bodies).
+TEST(Torture, OffGridBoxesOnGmpInOrthographicViews) {
+  eye_among_the_bodies(env_long("HLR_TORTURE_SCENES", 200) / 4, static_cast<unsigned>(env_long("HLR_TORTURE_SEED", 12)) + 2, 200, false, true);
 }
 
 // Every scene the torture suite (or a report) found wrong once, as a named file in
