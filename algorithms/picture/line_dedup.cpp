@@ -180,8 +180,9 @@ class Dedup {
     delta_ = blind_ ? 0 : box_pad({m});
   }
 
-  // Ends that are the same mesh vertex, or the same boundary between two pieces of a segment,
-  // are the same point without arithmetic.
+  // Ends that are the same mesh vertex, or the same boundary between two pieces of a segment
+  // (one's end at the other's start: pieces need not meet), are the same point without
+  // arithmetic.
   void join_same_keys(unsigned threads) {
     const ParallelLoop loop(threads);
     const std::size_t n = points_.parent.size();
@@ -203,8 +204,13 @@ class Dedup {
       const Piece& p = s.pieces[ref.piece];
       const Rational& t = e & 1 ? p.t1 : p.t0;
       int v = s.kind == Segment::Kind::Edge ? (t == 0 ? s.v0 : t == 1 ? s.v1 : -1) : -1;
+      // A boundary between pieces: piece k starts at boundary 2k, and ends at boundary 2k + 2
+      // where piece k + 1 starts at the same parameter, else at its own 2k + 3 (a gap follows).
+      std::uint32_t boundary = 2 * static_cast<std::uint32_t>(ref.piece);
+      const auto next = static_cast<std::size_t>(ref.piece) + 1;
+      if (e & 1) boundary += next < s.pieces.size() && s.pieces[next].t0 == p.t1 ? 2 : 3;
       key[e] = v >= 0 ? (std::uint64_t{1} << 63) | (static_cast<std::uint64_t>(s.body) << 32) | static_cast<std::uint32_t>(v)
-                      : (static_cast<std::uint64_t>(ref.segment) << 32) | static_cast<std::uint32_t>(ref.piece + (e & 1));
+                      : (static_cast<std::uint64_t>(ref.segment) << 32) | boundary;
     });
     // The vertices of the first body by a table: each end's parent is the smallest end of its
     // vertex (the sets are fresh here, so that is their union-find forest, the root being the

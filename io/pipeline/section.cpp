@@ -123,6 +123,21 @@ PieceList clipped_pieces(const PieceList& seen, const std::vector<std::pair<Rati
   return l;
 }
 
+// A hatch line seen whole (cap_hatching): one segment, visible where it is inside its cap.
+void add_whole(const HatchLine& l, int body, int face, const RenderResult& r, LineDrawing& out) {
+  Segment s;
+  s.kind = Segment::Kind::Intersection;
+  s.line = LineKind::Hatch;
+  s.body = s.body2 = body;
+  s.face0 = s.face1 = face;
+  s.set_ends(l.p0, l.p1);
+  PieceList seen;
+  seen.set_whole(true);
+  s.pieces = clipped_pieces(seen, l.inside);
+  if (r.clip) clip_pieces(s, *r.clip);
+  if (!s.pieces.empty()) out.segments.push_back(std::move(s));
+}
+
 // The keep cut, then the cut-away, as one cut (cap k of the cut-away is cap keep.size() + k).
 CutSolid cut_both(const Polyhedron& body, const std::vector<Plane>& keep, const std::vector<Plane>& away) {
   CutSolid c = keep.empty() ? CutSolid{} : cut_solid(body, keep);
@@ -267,6 +282,10 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
   LineDrawing out;
   if (!has_caps(r) || !(mm_per_unit > 0)) return out;
   const Projector proj = drawing_projector(r.drawing, r.camera);
+  // No body can hide a hatch line (caps_face_the_eye) and none lies behind the eye: every one
+  // is seen whole, as the per-face pass would find it, and is drawn as one segment.
+  const bool all_cut = std::all_of(r.bodies.begin(), r.bodies.end(), [](const SceneBody* b) { return b->cut; });
+  const bool whole = !r.camera.perspective && all_cut && caps_face_the_eye(r);
   FaceRouteHooks hooks;
   std::vector<std::vector<std::pair<Rational, Rational>>> inside;  // per hatch line
   // The default angle alternates between materials (bodies of one material: one hatch, as ISO
@@ -312,31 +331,12 @@ LineDrawing cap_hatching(const RenderResult& r, double mm_per_unit, double pen_m
         const double step = std::max(mm / mm_per_unit, (chi - clo) / kMaxHatchLines);
         const double first = std::floor(clo / step) * step + step / 2;  // no line through the corner the range starts at
         for (const HatchLine& l : hatch_lines(body.body.vertices(), border, h, lifter(proj, r.camera, h), a, first, step, chi, box, size))
-          add_chunks(l, size, static_cast<int>(b), faces[0], hooks, inside);
+          if (whole) add_whole(l, static_cast<int>(b), faces[0], r, out);
+          else add_chunks(l, size, static_cast<int>(b), faces[0], hooks, inside);
       }
     }
   }
-  if (hooks.extra_lines.empty()) return out;
-  const bool all_cut = std::all_of(r.bodies.begin(), r.bodies.end(), [](const SceneBody* b) { return b->cut; });
-  if (!r.camera.perspective && all_cut && caps_face_the_eye(r)) {
-    // No body can hide a hatch line (caps_face_the_eye) and none lies behind the eye: every
-    // one is seen whole, as the per-face pass would find it.
-    for (std::size_t k = 0; k < hooks.extra_lines.size(); ++k) {
-      const FaceRouteHooks::ExtraLine& x = hooks.extra_lines[k];
-      Segment s;
-      s.kind = Segment::Kind::Intersection;
-      s.line = x.kind;
-      s.body = s.body2 = x.body;
-      s.face0 = s.face1 = x.face;
-      s.set_ends(x.a, x.b);
-      PieceList seen;
-      seen.set_whole(true);
-      s.pieces = clipped_pieces(seen, inside[k]);
-      if (r.clip) clip_pieces(s, *r.clip);
-      if (!s.pieces.empty()) out.segments.push_back(std::move(s));
-    }
-    return out;
-  }
+  if (whole || hooks.extra_lines.empty()) return out;
   std::vector<const Polyhedron*> polys;
   for (const SceneBody* b : r.bodies) polys.push_back(&b->body);
   LineOptions lo;

@@ -334,6 +334,47 @@ TEST(PlotCleanUp, VisibleLengthIsKept) {
   EXPECT_NEAR(visible_clean, visible_only, 1e-9 * visible_only);
 }
 
+// A segment's pieces need not meet: a hatch line has a gap where its cap has a hole, a line
+// clipped to a region where it leaves it. The clean-up draws exactly the pieces (visible ones
+// here), never across a gap: random segments, each with gaps between its pieces (some pieces
+// touching, some segments on one line of the picture), against the raw pieces' length.
+TEST(PlotCleanUp, PiecesWithGapsBetweenThemStayApart) {
+  std::mt19937 rng(41);
+  std::uniform_int_distribution<int> c(-6, 6), cut(1, 15);
+  const Camera cam = make_orthographic(Vector3(1, 2, 3));
+  for (int round = 0; round < 20; ++round) {
+    LineDrawing d;
+    for (int k = 0; k < 12; ++k) {
+      Segment s;
+      s.kind = Segment::Kind::Intersection;
+      s.line = k % 2 ? LineKind::Hatch : LineKind::Intersection;
+      s.body = s.body2 = 0;
+      s.face0 = s.face1 = 0;
+      Point3 a(c(rng), c(rng), c(rng)), b(c(rng), c(rng), c(rng));
+      if (k % 3 == 2) a = d.segments.back().from(), b = d.segments.back().to();  // on one line with the last
+      if (a == b) continue;
+      s.set_ends(a, b);
+      std::set<int> at;  // parameters in sixteenths: pieces between every other pair, some sharing an end
+      for (int i = 0; i < 6; ++i) at.insert(cut(rng));
+      std::vector<int> t = {0};
+      t.insert(t.end(), at.begin(), at.end());
+      t.push_back(16);
+      std::vector<Piece> pieces;
+      for (std::size_t i = 0; i + 1 < t.size(); i += (i % 3 == 0 ? 1 : 2)) pieces.push_back(Piece{Rational(t[i], 16), Rational(t[i + 1], 16), true});
+      for (Piece& q : pieces) q.t0.canonicalize(), q.t1.canonicalize();
+      s.pieces = std::move(pieces);
+      d.segments.push_back(std::move(s));
+    }
+    PlotOptions po;
+    Plot p = make_plot(d, cam, po);
+    PlotOptions raw = po;
+    raw.dedup = raw.chain = false;
+    Plot q = make_plot(d, cam, raw);
+    EXPECT_NEAR(q.stats.pen_down_length, p.stats.pen_down_length + p.stats.duplicate_length, 1e-9 * q.stats.pen_down_length) << "round " << round;
+    EXPECT_EQ(overlap_length(p), 0) << "round " << round;
+  }
+}
+
 // ---------------------------------------------------------------- pages and writers
 TEST(PlotOutput, PagesAndScales) {
   EXPECT_EQ(parse_page_size("A4"), (std::array<double, 2>{210, 297}));

@@ -43,10 +43,10 @@ Scene scene_of(const std::vector<Box>& boxes) {
 
 // The visible drawing as maximal visible intervals on each exact picture line.
 using Lines = std::map<std::array<Rational, 3>, std::vector<std::pair<Rational, Rational>>>;
-Lines visible_lines(const RenderResult& r) {
-  const PicturePlane pp(r.camera);
+Lines visible_lines(const LineDrawing& d, const Camera& camera) {
+  const PicturePlane pp(camera);
   Lines raw;
-  for (const Segment& s : r.drawing.segments)
+  for (const Segment& s : d.segments)
     for (const Piece& p : s.pieces) {
       if (!p.visible || p.behind_eye || p.clipped) continue;
       const Exact2 a = pp.project(s.at(p.t0)), b = pp.project(s.at(p.t1));
@@ -70,6 +70,8 @@ Lines visible_lines(const RenderResult& r) {
   }
   return raw;
 }
+
+Lines visible_lines(const RenderResult& r) { return visible_lines(r.drawing, r.camera); }
 
 }  // namespace
 
@@ -232,20 +234,13 @@ TEST(SectionRender, HatchBehindNoCutBodyOnlyIsHidden) {
     const LineDrawing fast = cap_hatching(r, 10, 0.35, 1);
     r.section_cut_away = true;
     const LineDrawing all = cap_hatching(r, 10, 0.35, 1);
-    ASSERT_EQ(fast.segments.size(), all.segments.size());
+    // (A hatch line seen whole is one segment; the per-face pass takes it in short chunks.)
+    const Lines a = visible_lines(fast, r.camera), b = visible_lines(all, r.camera);
+    EXPECT_EQ(a, b);
     unseen += has_caps(r) && all.segments.empty();
-    for (std::size_t i = 0; i < fast.segments.size(); ++i) {
-      const PieceList &a = fast.segments[i].pieces, &b = all.segments[i].pieces;
-      ASSERT_EQ(a.size(), b.size());
-      for (std::size_t k = 0; k < a.size(); ++k) {
-        EXPECT_EQ(a[k].t0, b[k].t0);
-        EXPECT_EQ(a[k].t1, b[k].t1);
-        EXPECT_EQ(a[k].visible, b[k].visible);
-        hatched += a[k].visible;
-      }
-    }
+    for (const auto& [line, iv] : a) hatched += static_cast<int>(iv.size());
   }
-  EXPECT_GT(hatched, 1000);
+  EXPECT_GT(hatched, 150);
   EXPECT_GT(unseen, 2);  // caps seen from the kept side: hidden by their own body
 }
 
