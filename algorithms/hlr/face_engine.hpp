@@ -315,6 +315,7 @@ class Engine {
   void solve_into(Segment& s, const std::array<int, 2>& gv, Work& wk, PieceList& out) const;
   void test_integer(int oi, const std::array<int, 2>& gv, Work& wk) const;
   void exact_plane(const Occ& o, int k, Vec<P>& m, V& c) const;
+  void mark_cap_vertices();
   int cap_part(int body, int face) const;
   bool in_cap_plane(const Occ& o, const Work& wk) const;
   void filter_shift();
@@ -375,6 +376,7 @@ class Engine {
   std::optional<std::array<Int128, 3>> view_small_;  // orthographic: the direction, each component below 2^62
   std::vector<char> vfront_;
   std::vector<char> vertex_closed_;
+  std::vector<int> vertex_cap_;   // find_intersections: per vertex, the cap part of its cap faces (-1 none, -2 several)
   std::vector<CrossLine> cross_;  // intersection lines, found before the occluders are built
 };
 

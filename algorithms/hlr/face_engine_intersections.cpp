@@ -67,20 +67,22 @@ void Engine<P>::find_intersections(LineDrawing& res) {
     return b;
   };
   // Each pair takes its two normals once. Big: those of the triangles off the grid (a cut's
-  // points: multi-limb products) are made once for all pairs when they are few.
+  // points: multi-limb products) are made once for all pairs when they are few (a sixteenth of
+  // the triangles, or up to 65,536).
   std::vector<int> slot;
   std::vector<Vec<P>> kept_normal;
   if constexpr (std::is_same_v<P, Big>) {
     if (!prep_->on_grid.empty()) {
       std::size_t off = 0;
       for (std::size_t i = 0; i < n; ++i) off += !on_grid(tris_[i]);
-      if (off * 16 <= n) {
+      if (off * 16 <= n || off <= 65536) {
         slot.assign(n, -1);
         for (std::size_t i = 0; i < n; ++i)
           if (!on_grid(tris_[i])) slot[i] = static_cast<int>(kept_normal.size()), kept_normal.push_back(normal(tris_[i]));
       }
     }
   }
+  mark_cap_vertices();
   const auto normal_of = [&](std::uint32_t i, Vec<P>& made) -> const Vec<P>& {
     if (!slot.empty() && slot[i] >= 0) return kept_normal[slot[i]];
     made = normal(tris_[i]);
@@ -99,8 +101,9 @@ void Engine<P>::find_intersections(LineDrawing& res) {
       if (!part.empty() && part[x.face] == part[y.face]) return PairVerdict::Skip;
     }
     Vec<P> mx, my;
-    if constexpr (std::is_same_v<P, Wide>) {  // sides from doubles first: the normals only when a pair stays
-      if (!straddles(x, nullptr, y) || !straddles(y, nullptr, x)) return PairVerdict::Reject;
+    if constexpr (kFiltered) {  // sides from doubles or the grid first: the normals only when a pair stays
+      auto kept = [&](std::uint32_t i) { return !slot.empty() && slot[i] >= 0 ? &kept_normal[static_cast<std::size_t>(slot[i])] : nullptr; };
+      if (!straddles(x, kept(ta), y) || !straddles(y, kept(tc), x)) return PairVerdict::Reject;
       const Vec<P>&nx = normal_of(ta, mx), &ny = normal_of(tc, my);
       return may_meet(x, nx, y, ny) ? PairVerdict::Keep : PairVerdict::Reject;
     }
@@ -347,23 +350,25 @@ template <class P>
 bool Engine<P>::straddles(const Tri& x, const Vec<P>* n, const Tri& y) const {
   int pos = 0, neg_ = 0;
   std::optional<Vec<P>> made;
+  const int cap = vertex_cap_.empty() ? -1 : cap_part(x.body, x.face);
+  const int lo = voff_[x.body], hi = lo + static_cast<int>(bodies_[x.body]->num_vertices());  // x's body's vertices
   for (int v : y.v) {
     int s = 0;
-    if constexpr (std::is_same_v<P, Wide>) {
+    if (cap >= 0 && vertex_cap_[v] == cap && v >= lo && v < hi) {
+      s = 0;  // a corner of a face of x's cap: in its plane
+    } else if constexpr (kFiltered) {
+      // Doubles first (orient_filter), then the grid's small integers when x and v are on it
+      // (a positive multiple of the scaled points' value), else the scaled points.
       s = orient_filter(Xd_[x.v[0]], Xd_[x.v[1]], Xd_[x.v[2]], Xd_[v]);
-      if (s == 2) {
+      std::array<Int128, 3> m;
+      if (s == 2 && !prep_->on_grid.empty() && prep_->on_grid[v] && grid_normal(x, m)) {
+        const auto &a = prep_->small[x.v[0]], &b = prep_->small[v];
+        WideInt<4> d;  // (m below 2^125, b - a below 2^62)
+        for (int k = 0; k < 3; ++k) d += WideInt<4>::product(WideInt<4>(m[k]), WideInt<4>(Int128(b[k]) - a[k]));
+        s = d.sign();
+      } else if (s == 2) {
         if (!n) n = &made.emplace(normal(x));
         s = P::sign(dot<P>(*n, sub<P>(pt(v), pt(x.v[0]))));
-      }
-    } else if constexpr (std::is_same_v<P, Big>) {
-      if (on_grid(x) && prep_->on_grid[v]) {  // *n from the grid's small integers too: the same sign
-        const auto &a = prep_->small[x.v[0]], &b = prep_->small[v];
-        Vec<P> d;
-        for (int k = 0; k < 3; ++k) mpz_set_si(d[k].get_mpz_t(), static_cast<long>(b[k] - a[k]));  // below 2^62
-        s = P::sign(dot<P>(*n, d));
-      } else {  // a cut's point: doubles first (orient_filter), else exact on the scaled points
-        s = orient_filter(Xd_[x.v[0]], Xd_[x.v[1]], Xd_[x.v[2]], Xd_[v]);
-        if (s == 2) s = P::sign(dot<P>(*n, sub<P>(pt(v), pt(x.v[0]))));
       }
     } else {
       s = P::sign(dot<P>(*n, sub<P>(pt(v), pt(x.v[0]))));
@@ -373,6 +378,28 @@ bool Engine<P>::straddles(const Tri& x, const Vec<P>* n, const Tri& y) const {
   }
   if (pos == 3 || neg_ == 3) return false;
   return pos + neg_ > 0;  // all three on the plane: coplanar, no line
+}
+
+// Which vertices lie on a section's cap (a corner of one of its faces, hooks_.cap_face): in
+// the plane of every face of that cap, which straddles() then knows without arithmetic.
+template <class P>
+void Engine<P>::mark_cap_vertices() {
+  vertex_cap_.clear();
+  bool any = false;
+  for (const auto& c : hooks_.cap_face) any = any || std::find(c.begin(), c.end(), 1) != c.end();
+  if (!any) return;
+  vertex_cap_.assign(X_.size(), -1);
+  for (std::size_t b = 0; b < bodies_.size() && b < hooks_.cap_face.size(); ++b) {
+    const std::vector<char>& cap = hooks_.cap_face[b];
+    for (std::size_t f = 0; f < cap.size(); ++f) {
+      if (!cap[f]) continue;
+      const int part = hooks_.face_part[b][f];
+      for (int v : bodies_[b]->faces()[f]) {
+        int& at = vertex_cap_[static_cast<std::size_t>(voff_[b] + v)];
+        at = at == -1 || at == part ? part : -2;
+      }
+    }
+  }
 }
 
 template <class P>
