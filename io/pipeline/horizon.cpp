@@ -479,8 +479,9 @@ std::optional<Plot> HorizonDrawing::plot(const PlotOptions& opt) const {
     };
     auto key = [&](const Rational& t, std::uint32_t piece, int end) -> std::uint64_t {
       const int v = t == 0 ? e.v0 : t == 1 ? e.v1 : -1;
-      return v >= 0 ? (std::uint64_t{1} << 63) | static_cast<std::uint32_t>(v)
-                    : (static_cast<std::uint64_t>(k) << 32) | static_cast<std::uint32_t>(piece + static_cast<std::uint32_t>(end));
+      std::uint32_t boundary = 2 * piece;  // (join_same_keys(): an end meets the next piece's start, or a gap follows)
+      if (end) boundary += piece + 1 < e.count && *pieces_[e.first + piece + 1].t0 == t ? 2 : 3;
+      return v >= 0 ? (std::uint64_t{1} << 63) | static_cast<std::uint32_t>(v) : (static_cast<std::uint64_t>(k) << 32) | boundary;
     };
     std::uint32_t out = first[k];
     for (std::uint32_t m = 0; m < e.count; ++m) {
