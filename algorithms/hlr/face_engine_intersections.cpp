@@ -99,6 +99,10 @@ void Engine<P>::find_intersections(LineDrawing& res) {
       // plane: no line.
       const auto& part = static_cast<std::size_t>(x.body) < hooks_.face_part.size() ? hooks_.face_part[x.body] : kNoParts;
       if (!part.empty() && part[x.face] == part[y.face]) return PairVerdict::Skip;
+      // Two caps of one body lie on the boundary of one convex region (what the planes keep,
+      // or what a cut-away removes): they meet only along its edges, where the cut's faces
+      // share their edges (the seams). No line crosses there.
+      if (cap_part(x.body, x.face) >= 0 && cap_part(y.body, y.face) >= 0) return PairVerdict::Skip;
     }
     Vec<P> mx, my;
     if constexpr (kFiltered) {  // sides from doubles or the grid first: the normals only when a pair stays

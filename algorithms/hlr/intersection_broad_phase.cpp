@@ -67,11 +67,12 @@ struct Cells {
   }
 };
 
-// Huge boxes (over 64 cells) against the others: each against the boxes whose low cell on
-// its thinnest axis (counted in cells, with the widest span of the other boxes added) lies
-// where they can reach it, read from the boxes ordered by their low cell on that axis; the huge
-// boxes among themselves pair by pair. pair(i, j, worker) is called for every candidate pair
-// once (i huge; when both are, from the lower index).
+// Huge boxes (over 64 cells) against the others: each against the boxes whose low cells on
+// its two thinnest axes k and k2 (counted in cells, with the widest span of the other boxes
+// added) lie where they can reach it: the layers of cells it reaches on k, and in each layer
+// the run of boxes whose low cell on k2 can reach it, from the boxes ordered by their low
+// cells on k, then on k2. The huge boxes among themselves pair by pair. pair(i, j, worker) is
+// called for every candidate pair once (i huge; when both are, from the lower index).
 template <class Box, class Pair>
 void huge_box_pairs(std::span<const Box> bb, const Cells& g, const std::vector<std::array<std::int32_t, 3>>& low,
                     const std::vector<std::uint32_t>& big, const ParallelLoop& loop, const Pair& pair) {
@@ -88,36 +89,52 @@ void huge_box_pairs(std::span<const Box> bb, const Cells& g, const std::vector<s
   std::array<std::int64_t, 3> W = {0, 0, 0};
   for (unsigned w = 0; w < widest.size(); ++w)
     for (int k = 0; k < 3; ++k) W[k] = std::max(W[k], widest[w][k]);
-  auto axis_of = [&](std::uint32_t i) {  // the fewest cells to read, relative to the axis's length
-    int best = 0;
-    double least = INFINITY;
-    for (int k = 0; k < 3; ++k) {
-      const double f = static_cast<double>(high(i, k) - low[i][k] + 1 + W[k]) / static_cast<double>(g.dims[k]);
-      if (f < least) least = f, best = k;
-    }
-    return best;
+  auto axes_of = [&](std::uint32_t i) {  // the two axes with the fewest cells to read, relative to their length
+    std::array<int, 3> a = {0, 1, 2};
+    auto share = [&](int k) { return static_cast<double>(high(i, k) - low[i][k] + 1 + W[k]) / static_cast<double>(g.dims[k]); };
+    std::sort(a.begin(), a.end(), [&](int x, int y) { return share(x) < share(y) || (share(x) == share(y) && x < y); });
+    return std::array<int, 2>{a[0], a[1]};
   };
-  // The other boxes in order of their low cell (then of index) on each axis a huge box reads.
-  std::array<std::vector<std::uint32_t>, 3> order;
-  std::array<std::vector<std::size_t>, 3> first;  // per cell on the axis: where its boxes start
+  // The other boxes in order of their low cell on k, then on k2 (then of index), for each pair
+  // of axes a huge box reads; first[c]: where the boxes of layer c on k start.
+  struct Order {
+    std::vector<std::uint32_t> items;
+    std::vector<std::size_t> first;
+  };
+  std::array<std::array<Order, 3>, 3> orders;
+  // (Two stable counting sorts: by the low cell on k2, then on k.)
+  auto counting = [&](const std::vector<std::uint32_t>& in, int axis, std::vector<std::size_t>& first) {
+    first.assign(static_cast<std::size_t>(g.dims[axis]) + 1, 0);
+    for (std::uint32_t j : in) ++first[static_cast<std::size_t>(low[j][axis]) + 1];
+    for (std::size_t c = 0; c + 1 < first.size(); ++c) first[c + 1] += first[c];
+    std::vector<std::uint32_t> out(in.size());
+    std::vector<std::size_t> at(first.begin(), first.end() - 1);
+    for (std::uint32_t j : in) out[at[static_cast<std::size_t>(low[j][axis])]++] = j;
+    return out;
+  };
+  std::vector<std::uint32_t> others;
+  for (std::size_t j = 0; j < n; ++j)
+    if (!is_big[j]) others.push_back(static_cast<std::uint32_t>(j));
   for (std::uint32_t i : big) {
-    const int k = axis_of(i);
-    if (!first[k].empty()) continue;
-    first[k].assign(static_cast<std::size_t>(g.dims[k]) + 1, 0);
-    for (std::size_t j = 0; j < n; ++j)
-      if (!is_big[j]) ++first[k][static_cast<std::size_t>(low[j][k]) + 1];
-    for (std::size_t c = 0; c + 1 < first[k].size(); ++c) first[k][c + 1] += first[k][c];
-    order[k].resize(first[k].back());
-    std::vector<std::size_t> at(first[k].begin(), first[k].end() - 1);
-    for (std::size_t j = 0; j < n; ++j)
-      if (!is_big[j]) order[k][at[static_cast<std::size_t>(low[j][k])]++] = static_cast<std::uint32_t>(j);
+    const auto [k, k2] = axes_of(i);
+    Order& o = orders[k][k2];
+    if (!o.first.empty()) continue;
+    std::vector<std::size_t> unused;
+    o.items = counting(counting(others, k2, unused), k, o.first);
   }
   loop.run(big.size(), 1, [&](unsigned w, std::size_t b, std::size_t e) {
     for (std::size_t q = b; q < e; ++q) {
       const std::uint32_t i = big[q];
-      const int k = axis_of(i);
+      const auto [k, k2] = axes_of(i);
+      const Order& o = orders[k][k2];
       const std::int64_t lo = std::max<std::int64_t>(0, low[i][k] - W[k]), hi = std::min<std::int64_t>(g.dims[k] - 1, high(i, k));
-      for (std::size_t r = first[k][static_cast<std::size_t>(lo)]; r < first[k][static_cast<std::size_t>(hi) + 1]; ++r) pair(i, order[k][r], w);
+      const std::int64_t lo2 = low[i][k2] - W[k2], hi2 = high(i, k2);
+      for (std::int64_t c = lo; c <= hi; ++c) {
+        const auto begin = o.items.begin() + static_cast<std::ptrdiff_t>(o.first[static_cast<std::size_t>(c)]);
+        const auto end = o.items.begin() + static_cast<std::ptrdiff_t>(o.first[static_cast<std::size_t>(c) + 1]);
+        auto r = std::lower_bound(begin, end, lo2, [&](std::uint32_t x, std::int64_t v) { return low[x][k2] < v; });
+        for (; r != end && low[*r][k2] <= hi2; ++r) pair(i, *r, w);
+      }
       for (std::uint32_t j : big)
         if (j > i) pair(i, j, w);
     }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cstdint>
 #include <unordered_map>
 
@@ -355,32 +356,61 @@ std::vector<Point3> keep_below(const std::vector<Point3>& poly, const Plane& h) 
   return out;
 }
 
-// Faces as corner lists joined into one mesh: equal points are one vertex, and a vertex lying
-// inside an edge that runs in one of the planes is put into that edge (the pieces' seams).
-// A point's hash from its coordinates' canonical numerators and denominators (equal points
-// have equal limbs).
-struct PointHash {
-  std::size_t operator()(const Point3& p) const {
-    std::size_t h = 0;
-    auto mix = [&](const mpz_class& z) {
-      const std::size_t low = mpz_size(z.get_mpz_t()) ? static_cast<std::size_t>(mpz_getlimbn(z.get_mpz_t(), 0)) : 0;
-      h ^= (low + static_cast<std::size_t>(mpz_sgn(z.get_mpz_t()) + 1) * 0x9e3779b97f4a7c15ull) + (h << 6) + (h >> 2);
-    };
-    for (int k = 0; k < 3; ++k) mix(p[k].get_num()), mix(p[k].get_den());
+// Faces joined into one mesh: equal points are one vertex, and a vertex lying inside an edge
+// that runs in one of the planes is put into that edge (the pieces' seams). Points are found by
+// a hash of their certified double bounds (equal points have equal bounds) in an open-addressed
+// table of vertex numbers, then compared exactly; a piece's vertex is looked up once, when a
+// face first uses it, so the vertices are numbered in the order the faces first use them.
+struct Joiner {
+  CutSolid out;
+  std::vector<int> slots;  // vertex numbers, -1 empty; a power of two of them
+
+  static std::uint64_t hash(const Point3& p) {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (int k = 0; k < 3; ++k)
+      for (double d : {p.approx(k).lo, p.approx(k).hi}) h = (h ^ std::bit_cast<std::uint64_t>(d)) * 0xff51afd7ed558ccdull, h ^= h >> 32;
     return h;
   }
-};
-
-struct Joiner {
-  std::unordered_map<Point3, int, PointHash> id;
-  CutSolid out;
+  int intern(const Point3& p) {
+    if (2 * (out.vertices.size() + 1) > slots.size()) grow();
+    const std::size_t mask = slots.size() - 1;
+    for (std::size_t at = hash(p) & mask;; at = (at + 1) & mask) {
+      int& s = slots[at];
+      if (s < 0) {
+        s = static_cast<int>(out.vertices.size());
+        out.vertices.push_back(p);
+        return s;
+      }
+      if (out.vertices[static_cast<std::size_t>(s)] == p) return s;
+    }
+  }
+  void grow() {
+    std::vector<int> old = std::move(slots);
+    slots.assign(std::max<std::size_t>(1024, 2 * old.size()), -1);
+    const std::size_t mask = slots.size() - 1;
+    for (int v : old) {
+      if (v < 0) continue;
+      std::size_t at = hash(out.vertices[static_cast<std::size_t>(v)]) & mask;
+      while (slots[at] >= 0) at = (at + 1) & mask;
+      slots[at] = v;
+    }
+  }
   void add(const std::vector<Point3>& corners, int part, int cap) {
     Face f;
-    for (const Point3& p : corners) {
-      auto [it, fresh] = id.emplace(p, static_cast<int>(out.vertices.size()));
-      if (fresh) out.vertices.push_back(p);
-      f.push_back(it->second);
+    for (const Point3& p : corners) f.push_back(intern(p));
+    push(std::move(f), part, cap);
+  }
+  // Face f of piece c, its vertices' numbers in `ids` (-1: not looked up yet).
+  void add(const CutSolid& c, std::size_t f, std::vector<int>& ids, int part, int cap) {
+    Face g;
+    for (int v : c.faces[f]) {
+      int& id = ids[static_cast<std::size_t>(v)];
+      if (id < 0) id = intern(c.vertices[static_cast<std::size_t>(v)]);
+      g.push_back(id);
     }
+    push(std::move(g), part, cap);
+  }
+  void push(Face f, int part, int cap) {
     out.faces.push_back(std::move(f));
     out.part.push_back(part);
     out.cap.push_back(cap);
@@ -446,10 +476,11 @@ CutSolid cut_away(const Polyhedron& body, const std::vector<Plane>& given) {
     if (c.state == CutSolid::State::Removed) continue;
     if (c.state == CutSolid::State::Whole) return CutSolid{};  // wholly in one piece: the region does not reach it
     cut = true;
+    std::vector<int> ids(c.vertices.size(), -1);
     for (std::size_t f = 0; f < c.faces.size(); ++f) {
       if (c.cap[f] >= 0 && c.cap[f] < static_cast<int>(i)) continue;  // shared with an earlier piece: inside
       if (c.cap[f] < 0) {
-        j.add(corners_of(c, f), c.part[f], -1);
+        j.add(c, f, ids, c.part[f], -1);
         continue;
       }
       std::vector<Point3> pts = corners_of(c, f);  // the cap on plane i: only where the later planes remove too

@@ -1,6 +1,7 @@
 // The intersection lines' broad phase (algorithms/hlr/intersection_broad_phase.hpp): every
 // overlapping pair once, against a quadratic oracle, in doubles and in floats rounded outward,
-// with huge boxes among the small ones (long, flat across the scene, over all of it);
+// with huge boxes among the small ones (long, flat across the scene, across one axis and part of
+// another, over all of it);
 // the segment's owned and borrowed ends (algorithms/model/line_drawing.hpp).
 #include <gtest/gtest.h>
 
@@ -17,17 +18,19 @@ using namespace hlr;
 
 namespace {
 
-std::vector<Box3> random_boxes(std::mt19937_64& rng, std::size_t n, double scale) {
-  std::uniform_real_distribution<double> at(-scale, scale), size(0, scale / 20);
+// `rare`: one box in `rare` of each large kind (fewer, smaller small ones make a finer grid).
+std::vector<Box3> random_boxes(std::mt19937_64& rng, std::size_t n, double scale, unsigned rare = 1) {
+  std::uniform_real_distribution<double> at(-scale, scale), size(0, scale / (rare > 1 ? 50 : 20));
   std::vector<Box3> out(n);
   for (Box3& b : out) {
     for (int k = 0; k < 3; ++k) {
       b[k] = at(rng);
       b[k + 3] = b[k] + (rng() % 7 == 0 ? 0 : size(rng));  // some flat boxes
     }
-    if (rng() % 50 == 0) b[3] = b[0] + 2 * scale;  // a huge one now and then
-    if (rng() % 60 == 0) b[0] = -scale, b[3] = scale, b[1] = -scale, b[4] = scale, b[5] = b[2];  // a flat one across (a cap's)
-    if (rng() % 200 == 0) b = {-scale, -scale, -scale, scale, scale, scale};                     // one over everything
+    if (rng() % (50 * rare) == 0) b[3] = b[0] + 2 * scale;                                                // a huge one now and then
+    if (rng() % (40 * rare) == 0) b[0] = -scale, b[3] = scale, b[5] = b[2] + scale / 2;                   // across x, a quarter of z, thin in y
+    if (rng() % (60 * rare) == 0) b[0] = -scale, b[3] = scale, b[1] = -scale, b[4] = scale, b[5] = b[2];  // a flat one across (a cap's)
+    if (rng() % (200 * rare) == 0) b = {-scale, -scale, -scale, scale, scale, scale};                     // one over everything
   }
   return out;
 }
@@ -47,8 +50,15 @@ std::set<std::pair<std::uint32_t, std::uint32_t>> oracle(const std::vector<Box3>
 
 TEST(BroadPhase, EveryOverlappingPairOnceInDoublesAndInOutwardFloats) {
   std::mt19937_64 rng(7);
-  for (double scale : {1.0, 1e-30, 1e30}) {
-    const std::vector<Box3> boxes = random_boxes(rng, 600, scale);
+  for (double scale : {1.0, 1e-30, 1e30, 2.0}) {
+    // (6,000 boxes: a grid fine enough that a box across one axis and part of another is huge)
+    std::vector<Box3> boxes = scale == 2.0 ? random_boxes(rng, 6000, scale, 8) : random_boxes(rng, 600, scale);
+    if (scale == 2.0)
+      for (int t = 0; t < 8; ++t) {  // huge boxes thin in y, and small ones reaching them from below in z
+        const double y = -1.5 + 0.4 * t, z = -1.2 + 0.3 * t;
+        boxes.push_back({-2, y, z, 2, y + 0.01, z + 1});
+        for (int k = 1; k <= 4; ++k) boxes.push_back({0.1 * t, y, z - 0.012 * k, 0.1 * t + 0.01, y + 0.01, z + 0.001});
+      }
     const auto want = oracle(boxes);
     for (unsigned threads : {1u, 2u}) {
       std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
