@@ -68,11 +68,12 @@ struct Cells {
 };
 
 // Huge boxes (over 64 cells) against the others: each against the boxes whose low cells on
-// its two thinnest axes k and k2 (counted in cells, with the widest span of the other boxes
-// added) lie where they can reach it: the layers of cells it reaches on k, and in each layer
-// the run of boxes whose low cell on k2 can reach it, from the boxes ordered by their low
-// cells on k, then on k2. The huge boxes among themselves pair by pair. pair(i, j, worker) is
-// called for every candidate pair once (i huge; when both are, from the lower index).
+// its two thinnest axes k and k2 (counted in cells, with the widest span of those boxes added)
+// lie where they can reach it: the layers of cells it reaches on k, and in each layer the run
+// of boxes whose low cell on k2 can reach it, from the boxes ordered by their low cells on k,
+// then on k2. Long boxes (over kLong cells on some axis, a sliver: one would widen every
+// reach) and the huge boxes among themselves pair by pair. pair(i, j, worker) is called for
+// every candidate pair once (i huge; when both are, from the lower index).
 template <class Box, class Pair>
 void huge_box_pairs(std::span<const Box> bb, const Cells& g, const std::vector<std::array<std::int32_t, 3>>& low,
                     const std::vector<std::uint32_t>& big, const ParallelLoop& loop, const Pair& pair) {
@@ -81,7 +82,15 @@ void huge_box_pairs(std::span<const Box> bb, const Cells& g, const std::vector<s
   std::vector<char> is_big(n, 0);
   for (std::uint32_t i : big) is_big[i] = 1;
   auto high = [&](std::size_t i, int k) { return g.key(k, bb[i][k + 3]); };
-  PerWorker<std::array<std::int64_t, 3>> widest(loop, {0, 0, 0});  // of the other boxes, in cells
+  constexpr std::int64_t kLong = 4;
+  std::vector<std::uint32_t> longs;  // boxes over kLong cells on some axis (not huge)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (is_big[i]) continue;
+    bool is_long = false;
+    for (int k = 0; k < 3; ++k) is_long = is_long || high(i, k) - low[i][k] > kLong;
+    if (is_long) is_big[i] = 2, longs.push_back(static_cast<std::uint32_t>(i));
+  }
+  PerWorker<std::array<std::int64_t, 3>> widest(loop, {0, 0, 0});  // of the ordered boxes, in cells
   loop.run(n, 8192, [&](unsigned w, std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i)
       for (int k = 0; k < 3 && !is_big[i]; ++k) widest[w][k] = std::max(widest[w][k], high(i, k) - low[i][k]);
@@ -135,6 +144,7 @@ void huge_box_pairs(std::span<const Box> bb, const Cells& g, const std::vector<s
         auto r = std::lower_bound(begin, end, lo2, [&](std::uint32_t x, std::int64_t v) { return low[x][k2] < v; });
         for (; r != end && low[*r][k2] <= hi2; ++r) pair(i, *r, w);
       }
+      for (std::uint32_t j : longs) pair(i, j, w);
       for (std::uint32_t j : big)
         if (j > i) pair(i, j, w);
     }
