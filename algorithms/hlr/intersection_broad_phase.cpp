@@ -125,7 +125,8 @@ void huge_box_pairs(std::span<const Box> bb, const Cells& g, const std::vector<s
   for (std::size_t j = 0; j < n; ++j)
     if (!is_big[j]) others.push_back(static_cast<std::uint32_t>(j));
   for (std::uint32_t i : big) {
-    const auto [k, k2] = axes_of(i);
+    const std::array<int, 2> axes = axes_of(i);
+    const int k = axes[0], k2 = axes[1];
     Order& o = orders[k][k2];
     if (!o.first.empty()) continue;
     std::vector<std::size_t> unused;
@@ -134,7 +135,8 @@ void huge_box_pairs(std::span<const Box> bb, const Cells& g, const std::vector<s
   loop.run(big.size(), 1, [&](unsigned w, std::size_t b, std::size_t e) {
     for (std::size_t q = b; q < e; ++q) {
       const std::uint32_t i = big[q];
-      const auto [k, k2] = axes_of(i);
+      const std::array<int, 2> axes = axes_of(i);
+      const int k = axes[0], k2 = axes[1];
       const Order& o = orders[k][k2];
       const std::int64_t lo = std::max<std::int64_t>(0, low[i][k] - W[k]), hi = std::min<std::int64_t>(g.dims[k] - 1, high(i, k));
       const std::int64_t lo2 = low[i][k2] - W[k2], hi2 = high(i, k2);
