@@ -282,6 +282,7 @@ class Engine {
   bool closed_side(const Tri& t, int k, const Vec<P>& m, const V& c, int fs, std::optional<Vec<P>>& n) const;
   int wedge_side(const Tri& t, int g, int third, std::optional<Vec<P>>& n) const;
   void side_plane(int p, int q, Vec<P>& m, V& c) const;
+  bool grid_side_sign(const Tri& t, int v, int& sign) const;
   bool grid_normal(const Tri& t, std::array<Int128, 3>& n) const;
   bool grid_side(int p, int q, std::array<Int128, 3>& m) const;
   bool grid_planes(const Tri& t, std::uint8_t closed, Occ& o) const;

@@ -234,6 +234,21 @@ bool Engine<P>::grid_normal(const Tri& t, std::array<Int128, 3>& n) const {
   return true;
 }
 
+// Sign of det(B - A, C - A, X - A) for triangle t = ABC and vertex v = X from the grid's small
+// integers (a positive multiple of the scaled points' value: normal below 2^125, X - A below
+// 2^62, exact in 256 bits); false when a corner or v is off the grid.
+template <class P>
+bool Engine<P>::grid_side_sign(const Tri& t, int v, int& sign) const {
+  const std::vector<char>& on = prep_->on_grid;
+  std::array<Int128, 3> m;
+  if (on.empty() || !on[static_cast<std::size_t>(v)] || !grid_normal(t, m)) return false;
+  const auto &a = prep_->small[t.v[0]], &x = prep_->small[v];
+  WideInt<4> d;
+  for (int k = 0; k < 3; ++k) d += WideInt<4>::product(WideInt<4>(m[k]), WideInt<4>(Int128(x[k]) - a[k]));
+  sign = d.sign();
+  return true;
+}
+
 // Triangles of every face of body b into tris_, face normals, facing and the opposite vertex
 // of every polygon side (topo_[b].slot_third); returns the index of the body's first triangle.
 template <class P>

@@ -364,13 +364,7 @@ bool Engine<P>::straddles(const Tri& x, const Vec<P>* n, const Tri& y) const {
       // Doubles first (orient_filter), then the grid's small integers when x and v are on it
       // (a positive multiple of the scaled points' value), else the scaled points.
       s = orient_filter(Xd_[x.v[0]], Xd_[x.v[1]], Xd_[x.v[2]], Xd_[v]);
-      std::array<Int128, 3> m;
-      if (s == 2 && !prep_->on_grid.empty() && prep_->on_grid[v] && grid_normal(x, m)) {
-        const auto &a = prep_->small[x.v[0]], &b = prep_->small[v];
-        WideInt<4> d;  // (m below 2^125, b - a below 2^62)
-        for (int k = 0; k < 3; ++k) d += WideInt<4>::product(WideInt<4>(m[k]), WideInt<4>(Int128(b[k]) - a[k]));
-        s = d.sign();
-      } else if (s == 2) {
+      if (s == 2 && !grid_side_sign(x, v, s)) {
         if (!n) n = &made.emplace(normal(x));
         s = P::sign(dot<P>(*n, sub<P>(pt(v), pt(x.v[0]))));
       }

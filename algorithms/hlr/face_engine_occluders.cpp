@@ -475,14 +475,8 @@ int Engine<P>::wedge_side(const Tri& t, int g, int third, std::optional<Vec<P>>&
     if (part >= 0 && cap_part(t.body, g) == part) return 0;
     const int w = orient_filter(Xd_[t.v[0]], Xd_[t.v[1]], Xd_[t.v[2]], Xd_[third]);
     if (w != 2) return w;
-    std::array<Int128, 3> m;
-    const std::vector<char>& on = prep_->on_grid;
-    if (!on.empty() && on[third] && grid_normal(t, m)) {
-      const auto &a = prep_->small[t.v[0]], &x = prep_->small[third];
-      WideInt<4> d;
-      for (int k = 0; k < 3; ++k) d += WideInt<4>::product(WideInt<4>(m[k]), WideInt<4>(Int128(x[k]) - a[k]));
-      return d.sign();
-    }
+    int s = 0;
+    if (grid_side_sign(t, third, s)) return s;
   }
   if (!n) n = normal(t);
   return P::sign(dot<P>(*n, sub<P>(pt(third), pt(t.v[0]))));
