@@ -1,18 +1,17 @@
 // Exact constructions on points, vectors and planes (see geometry.hpp).
 #include "kernel/geometry.hpp"
-#include "kernel/exact_int.hpp"
-
-#include <cmath>
-
-#include "kernel/int128.hpp"
 
 #include <CGAL/Interval_nt.h>
 #include <CGAL/mpq_class.h>
 
 #include <algorithm>
-#include <optional>
+#include <cmath>
 #include <ostream>
 #include <vector>
+
+#include "kernel/exact_int.hpp"
+#include "kernel/int128.hpp"
+#include "kernel/plane_int128.hpp"
 
 namespace hlr {
 
@@ -106,56 +105,9 @@ Plane primitive_plane(const Plane& h) {
   return Plane(Rational(k[0]), Rational(k[1]), Rational(k[2]), Rational(k[3]));
 }
 
-namespace {
-
-// The fast path of primitive_plane_of_polygon; nullopt when a bound would be exceeded.
-std::optional<Plane> primitive_plane_int128(const Point3* const* v, std::size_t n) {
-  constexpr Int128 kLimit = bounds::kWideCoordinateLimit;
-  if (n > 1024) return std::nullopt;
-  std::vector<const Rational*> qs;
-  qs.reserve(3 * n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (int k = 0; k < 3; ++k) qs.push_back(&(*v[i])[k]);
-  std::uint64_t L;
-  if (!common_denominator(qs.data(), static_cast<int>(qs.size()), static_cast<std::uint64_t>(kLimit), L)) return std::nullopt;
-  std::vector<std::array<Int128, 3>> X(n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (int k = 0; k < 3; ++k)
-      if (!scaled_integer((*v[i])[k], L, kLimit, X[i][k])) return std::nullopt;
-  // Newell's normal as a fan from X[0]: differences < 2^41, products < 2^83, at most 2^10 terms.
-  Int128 nrm[3] = {0, 0, 0};
-  for (std::size_t i = 1; i + 1 < n; ++i) {
-    Int128 a[3], b[3];
-    for (int k = 0; k < 3; ++k) {
-      a[k] = X[i][k] - X[0][k];
-      b[k] = X[i + 1][k] - X[0][k];
-    }
-    nrm[0] += a[1] * b[2] - a[2] * b[1];
-    nrm[1] += a[2] * b[0] - a[0] * b[2];
-    nrm[2] += a[0] * b[1] - a[1] * b[0];
-  }
-  if (nrm[0] == 0 && nrm[1] == 0 && nrm[2] == 0) return Plane(0, 0, 0, 0);
-  int nb = std::max({bit_length(nrm[0]), bit_length(nrm[1]), bit_length(nrm[2])});
-  int xb = std::max({bit_length(X[0][0]), bit_length(X[0][1]), bit_length(X[0][2])});
-  if (nb + xb + 2 > 125) return std::nullopt;
-  // n·X + d = 0 with X = L·x: the plane (n·L, d) in x. Reduce to primitive form.
-  Int128 d = -(nrm[0] * X[0][0] + nrm[1] * X[0][1] + nrm[2] * X[0][2]);
-  Int128 h = gcd128(gcd128(nrm[0], nrm[1]), gcd128(nrm[2], d));
-  for (Int128& c : nrm) c /= h;
-  d /= h;
-  // gcd(n) and d are now coprime, so gcd(n·L, d) = gcd(L, d).
-  Int128 r = gcd128(static_cast<Int128>(L), d);
-  Int128 k = static_cast<Int128>(L) / r;
-  d /= r;
-  mpz_class kz = to_mpz(k);
-  return Plane(Rational(to_mpz(nrm[0]) * kz), Rational(to_mpz(nrm[1]) * kz), Rational(to_mpz(nrm[2]) * kz),
-               Rational(to_mpz(d)));
-}
-
-}  // namespace
-
 Plane primitive_plane_of_polygon(const Point3* const* v, std::size_t n) {
-  if (auto fast = primitive_plane_int128(v, n)) return *fast;
+  PlaneInt128 fast;
+  if (plane_int128(v, n, fast)) return to_plane(fast);
   return primitive_plane(plane_of_polygon(v, n));
 }
 

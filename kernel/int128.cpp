@@ -1,6 +1,8 @@
 // Exact 128-bit integer helpers (see int128.hpp).
 #include "kernel/int128.hpp"
 
+#include <utility>
+
 namespace hlr {
 namespace {
 
@@ -22,30 +24,37 @@ int compare(const U256& x, const U256& y) {
   return 0;
 }
 
+// One Euclid step (a large number against a small one is one division), then binary gcd
+// (Stein): shifts and subtractions.
 std::uint64_t gcd64(std::uint64_t a, std::uint64_t b) {
+  if (a > b) std::swap(a, b);
+  if (a == 0) return b;
+  b %= a;
+  if (b == 0) return a;
+  const int shift = __builtin_ctzll(a | b);
+  a >>= __builtin_ctzll(a);
   while (b) {
-    std::uint64_t t = a % b;
-    a = b;
-    b = t;
+    b >>= __builtin_ctzll(b);
+    if (a > b) std::swap(a, b);
+    b -= a;
   }
-  return a;
+  return a << shift;
 }
 
 }  // namespace
 
 int bit_length(Int128 v) {
-  UInt128 u = static_cast<UInt128>(abs128(v));
-  int n = 0;
-  while (u) {
-    ++n;
-    u >>= 1;
-  }
-  return n;
+  const UInt128 u = static_cast<UInt128>(abs128(v));
+  const auto hi = static_cast<std::uint64_t>(u >> 64), lo = static_cast<std::uint64_t>(u);
+  if (hi) return 128 - __builtin_clzll(hi);
+  return lo ? 64 - __builtin_clzll(lo) : 0;
 }
 
 Int128 gcd128(Int128 a, Int128 b) {
   UInt128 x = static_cast<UInt128>(abs128(a)), y = static_cast<UInt128>(abs128(b));
   while (y) {
+    if ((x >> 64) == 0 && (y >> 64) == 0)  // the rest in 64 bits
+      return static_cast<Int128>(gcd64(static_cast<std::uint64_t>(x), static_cast<std::uint64_t>(y)));
     UInt128 t = x % y;
     x = y;
     y = t;

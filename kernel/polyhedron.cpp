@@ -112,11 +112,7 @@ void Polyhedron::build_mesh() const {
 void Polyhedron::compute_planes(const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop) const {
   if (planes_done_) return;
   std::vector<Plane> out(faces_.size());
-  loop(faces_.size(), [&](std::size_t f) {
-    std::vector<const Point3*> pts;
-    for (int v : faces_[f]) pts.push_back(&vertices_[v]);
-    out[f] = primitive_plane_of_polygon(pts.data(), pts.size());
-  });
+  loop(faces_.size(), [&](std::size_t f) { out[f] = face_plane(f); });
   planes_ = std::move(out);
   planes_done_ = true;
 }
@@ -137,8 +133,14 @@ const std::vector<Plane>& Polyhedron::planes() const {
 
 Plane Polyhedron::face_plane(std::size_t f) const {
   if (planes_done_) return planes_[f];
+  const Face& face = faces_[f];
+  if (face.size() <= 8) {  // nearly every face: no allocation
+    const Point3* pts[8];
+    for (std::size_t i = 0; i < face.size(); ++i) pts[i] = &vertices_[face[i]];
+    return primitive_plane_of_polygon(pts, face.size());
+  }
   std::vector<const Point3*> pts;
-  for (int v : faces_[f]) pts.push_back(&vertices_[v]);
+  for (int v : face) pts.push_back(&vertices_[v]);
   return primitive_plane_of_polygon(pts.data(), pts.size());
 }
 

@@ -68,6 +68,8 @@ class Polyhedron {
   const std::vector<Plane>& planes() const;
   /// The plane of face f alone, as planes()[f] (from there when they are made).
   Plane face_plane(std::size_t f) const;
+  /// planes()[f] when the planes are made, else nullptr (nothing is computed).
+  const Plane* plane_if_made(std::size_t f) const { return planes_done_ ? &planes_[f] : nullptr; }
   /// Computes the planes (once) with `loop(n, body)` calling body(i) for every i < n, e.g. on
   /// all cores (algorithms/support/parallel.hpp: plane_all_faces); planes() then returns them.
   void compute_planes(const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop) const;

@@ -28,6 +28,59 @@ PicturePlane::PicturePlane(const Camera& c) : persp_(c.perspective), e_(c.eye) {
   };
   integers(r_, ri_, rden_);
   integers(u_, ui_, uden_);
+  integers(d_, di_, dden_);
+  if (!persp_) {
+    const Rational k0(dden_), kx = Rational(dden_) / (Rational(rden_) * rr_), ky = Rational(dden_) / (Rational(uden_) * uu_);
+    depth_k_ = {k0.get_d(), kx.get_d(), ky.get_d()};
+  }
+}
+
+// n·r = Nr / rden with Nr = Σ n_k·ri_k an integer, and alike for u and d, so
+// s = -(d + x·n·r/|r|² + y·n·u/|u|²) / n·v has c0 = -d·K0 / Nd, cx = -Nr·Kx / Nd,
+// cy = -Nu·Ky / Nd (K as in depth_k_). Each double is three inputs within kToDoubleError
+// (mpz_get_d truncates) and two roundings of half that: within 4·kToDoubleError + O(u²).
+PicturePlane::DepthDoubles PicturePlane::depth_doubles(const Plane& h) const {
+  if (persp_) return {};
+  for (int k = 0; k < 4; ++k)
+    if (h[k].get_den() != 1) return {};
+  return depth_doubles(h[0].get_num_mpz_t(), h[1].get_num_mpz_t(), h[2].get_num_mpz_t(), h[3].get_num_mpz_t());
+}
+
+PicturePlane::DepthDoubles PicturePlane::depth_doubles(const PlaneInt128& h) const {
+  if (persp_) return {};
+  thread_local std::array<mpz_class, 4> c;
+  thread_local mpz_class k;
+  set_mpz(k.get_mpz_t(), h.k);
+  for (int i = 0; i < 3; ++i) {
+    set_mpz(c[i].get_mpz_t(), h.n[i]);
+    c[i] *= k;
+  }
+  set_mpz(c[3].get_mpz_t(), h.d);
+  return depth_doubles(c[0].get_mpz_t(), c[1].get_mpz_t(), c[2].get_mpz_t(), c[3].get_mpz_t());
+}
+
+PicturePlane::DepthDoubles PicturePlane::depth_doubles(mpz_srcptr a, mpz_srcptr b, mpz_srcptr c, mpz_srcptr d) const {
+  DepthDoubles out;
+  out.integers = true;
+  thread_local mpz_class nr, nu, nd;
+  auto sum = [&](mpz_class& s, const std::array<mpz_class, 3>& axis) {
+    mpz_mul(s.get_mpz_t(), a, axis[0].get_mpz_t());
+    mpz_addmul(s.get_mpz_t(), b, axis[1].get_mpz_t());
+    mpz_addmul(s.get_mpz_t(), c, axis[2].get_mpz_t());
+  };
+  sum(nd, di_);
+  out.facing = sgn(nd);
+  if (out.facing == 0) return out;
+  sum(nr, ri_);
+  sum(nu, ui_);
+  // Every input within [2^-200, 2^200] or an exact zero: no product or quotient below leaves
+  // the normal doubles, so the relative bound holds.
+  const double in[4] = {mpz_get_d(d), nr.get_d(), nu.get_d(), nd.get_d()};
+  auto fine = [](double v, bool zero) { return zero ? v == 0 : (std::fabs(v) >= 0x1p-200 && std::fabs(v) <= 0x1p200); };
+  out.ok = fine(in[0], mpz_sgn(d) == 0) && fine(in[1], sgn(nr) == 0) && fine(in[2], sgn(nu) == 0) && fine(in[3], false);
+  for (double k : depth_k_) out.ok = out.ok && fine(k, false);
+  out.c = {-(in[0] * depth_k_[0]) / in[3], -(in[1] * depth_k_[1]) / in[3], -(in[2] * depth_k_[2]) / in[3]};
+  return out;
 }
 
 Exact2 PicturePlane::project(const Point3& p) const {

@@ -11,6 +11,7 @@
 
 #include "algorithms/model/camera.hpp"
 #include "kernel/geometry.hpp"
+#include "kernel/plane_int128.hpp"
 #include "kernel/predicates_2d.hpp"
 
 namespace hlr {
@@ -38,6 +39,21 @@ class PicturePlane {
   /// viewer, den constant); perspective, the parameter l of E + l·dir(q) (smaller is nearer,
   /// positive in front of the eye).
   std::array<PictureLinear, 2> ray_parameter(const Plane& h) const;
+  /// Orthographic only, for a plane with integer coefficients (a primitive plane): the sign of
+  /// n·v (positive: the face is turned toward the viewer; 0: edge-on) exactly, and doubles of
+  /// the depth s(q) = num(q) / den (ray_parameter) as c0 + cx·x + cy·y, each within
+  /// 5·kToDoubleError of its coefficient relatively (docs/design.md, "Visible surfaces as
+  /// exact polygons"). `ok` is false when a double left [2^-400, 2^400] (then no filter may
+  /// use them) or the coefficients are not integers.
+  struct DepthDoubles {
+    bool integers = false;  // false: the plane's coefficients are not integers, nothing was made
+    int facing = 0;
+    bool ok = false;
+    std::array<double, 3> c{0, 0, 0};
+  };
+  DepthDoubles depth_doubles(const Plane& h) const;
+  /// The same for a plane in 128-bit parts (kernel/plane_int128.hpp); never degenerate.
+  DepthDoubles depth_doubles(const PlaneInt128& h) const;
   /// The axes r, u and the viewing vector d (orthographic: v; perspective: target - eye).
   const Vector3& r() const { return r_; }
   const Vector3& u() const { return u_; }
@@ -49,8 +65,12 @@ class PicturePlane {
   Vector3 r_, u_, d_;
   Rational rr_, uu_, dd_;  // squared lengths
   // r = ri / rden and u = ui / uden with integers (orthographic project() without rationals).
-  std::array<mpz_class, 3> ri_, ui_;
-  mpz_class rden_, uden_;
+  std::array<mpz_class, 3> ri_, ui_, di_;
+  mpz_class rden_, uden_, dden_;
+  // depth_doubles: dden, dden / (rden·|r|²), dden / (uden·|u|²) as doubles (each within
+  // kToDoubleError relatively).
+  std::array<double, 3> depth_k_{0, 0, 0};
+  DepthDoubles depth_doubles(mpz_srcptr a, mpz_srcptr b, mpz_srcptr c, mpz_srcptr d) const;
 };
 
 /// Drawing coordinates (Projector's, in its DrawingFrame) of exact picture points, without a

@@ -3,34 +3,38 @@
 // surfaces as exact polygons").
 #include "algorithms/surfaces/visible_surfaces.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 
 #include "algorithms/picture/drawing_2d.hpp"
-#include "algorithms/solids/face_triangles.hpp"
 #include "algorithms/picture/line_dedup.hpp"
+#include "algorithms/solids/face_triangles.hpp"
 #include "algorithms/support/parallel.hpp"
 #include "algorithms/support/screen_grid.hpp"
+#include "kernel/plane_int128.hpp"
 
 namespace hlr {
 namespace {
 
-// A scene triangle as the picture sees it: exact projected corners counter-clockwise, the
-// face's ray parameter num(q) / den(q) (PicturePlane::ray_parameter).
+// A scene triangle as the picture sees it: its corners (vertex numbers of its body, counter-
+// clockwise in the picture) and, as filters (they decide only when their error bound allows;
+// docs/design.md), the corners' doubles and for orthographic views the doubles of the depth
+// s(q) = c0 + cx·x + cy·y (PicturePlane::depth_doubles). The exact depth or ray parameter is
+// made per face when a filter cannot decide (Prober::ray). Plain numbers only, so the
+// triangles of a million faces are a few tens of megabytes and copy as bytes.
 struct PictureTriangle {
   int body, face, id;  // id: global face number
+  std::array<std::uint32_t, 3> v;
   bool front;
-  std::array<const Exact2*, 3> p;  // into the projected vertices
-  const std::array<PictureLinear, 2>* ray;  // the face's
-  // Filters (decide only when their error bound allows; docs/design.md): the corners' doubles,
-  // and for orthographic views the depth s(q) = num(q) / den exactly and in doubles.
+  bool pd_ok;     // every corner double in [2^-400, 2^400] or zero: the side filter may be used
+  bool depth_ok;  // depth_d may be used
   std::array<std::array<double, 2>, 3> pd;
-  bool pd_ok;  // every corner double in [2^-400, 2^400] or zero: the side filter may be used
-  PictureLinear depth;
   std::array<double, 3> depth_d;
 };
-
 
 // Doubles are trusted only in [2^-400, 2^400] (no underflow or overflow in products of two),
 // and a zero only when the value is zero.
@@ -105,83 +109,43 @@ int side_sign(const Exact2& p, const Exact2& q, const Offset& off) {
 
 class Prober {
  public:
-  Prober(const std::vector<const Polyhedron*>& bodies, const PicturePlane& pp, const LineDrawing& lines, unsigned threads) : pp_(pp) {
+  Prober(const std::vector<const Polyhedron*>& bodies, const PicturePlane& pp, const LineDrawing& lines, unsigned threads)
+      : pp_(pp), bodies_(bodies) {
     std::vector<int> offset(bodies.size() + 1, 0);
     for (std::size_t b = 0; b < bodies.size(); ++b) offset[b + 1] = offset[b] + static_cast<int>(bodies[b]->num_faces());
     total_faces_ = offset.back();
-    std::vector<std::vector<PictureTriangle>> per_face(total_faces_);
     front_.assign(total_faces_, 1);
+    rays_ = std::make_unique<std::atomic<const Ray*>[]>(total_faces_);
+    for (int i = 0; i < total_faces_; ++i) rays_[i].store(nullptr, std::memory_order_relaxed);
     ParallelLoop loop(threads);
-    proj_.resize(bodies.size());
-    rays_.resize(total_faces_);
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-      bodies[b]->planes();  // computed on first use, not thread-safe then
-      proj_[b].resize(bodies[b]->num_vertices());
-      loop.for_each(proj_[b].size(), 256, [&](std::size_t v) { proj_[b][v] = pp_.project(bodies[b]->vertices()[v]); });
-    }
-    std::vector<std::pair<int, int>> faces;
-    for (std::size_t b = 0; b < bodies.size(); ++b)
-      for (std::size_t f = 0; f < bodies[b]->num_faces(); ++f) faces.emplace_back(static_cast<int>(b), static_cast<int>(f));
-    loop.for_each(faces.size(), 64, [&](std::size_t i) {
-      auto [b, f] = faces[i];
-      const Polyhedron& p = *bodies[b];
-      const Plane& h = p.planes()[f];
-      if (h.is_degenerate()) return;
-      // A closed solid's faces turned away are never met first by a sight ray.
-      if (static_cast<std::size_t>(b) < lines.back_faces_unseen.size() && lines.back_faces_unseen[b] &&
-          lines.facing[b][f] < 0)
-        return;
-      FaceTriangles ft = face_triangles(p, f);
-      if (ft.status != FaceTriangles::Status::Ok) return;
-      const int id = offset[b] + f;
-      rays_[id] = pp_.ray_parameter(h);
-      const auto& ray = rays_[id];
-      if (!pp_.perspective() && ray[1].c0 == 0) return;  // edge-on: never the face seen at a point of a cell
-      const bool front = pp_.perspective() ? sgn(ray[0].c0) < 0 : sgn(ray[1].c0) > 0;
-      front_[id] = front;
-      PictureLinear depth;
-      std::array<double, 3> depth_d{0, 0, 0};
-      if (!pp_.perspective()) {
-        const Rational& den = ray[1].c0;
-        depth = PictureLinear{ray[0].c0 / den, ray[0].cx / den, ray[0].cy / den};
-        depth_d = {depth.c0.get_d(), depth.cx.get_d(), depth.cy.get_d()};
+    project_vertices(loop);
+    // The faces' triangles in order of face, made on all cores in ranges of faces joined in order.
+    std::mutex m;
+    std::vector<std::pair<std::size_t, std::vector<PictureTriangle>>> runs;
+    loop.run(total_faces_, 256, [&](unsigned, std::size_t begin, std::size_t end) {
+      std::vector<PictureTriangle> run;
+      std::size_t b = std::upper_bound(offset.begin(), offset.end(), static_cast<int>(begin)) - offset.begin() - 1;
+      for (std::size_t id = begin; id < end; ++id) {
+        while (static_cast<int>(id) >= offset[b + 1]) ++b;
+        add_face(static_cast<int>(b), static_cast<int>(id) - offset[b], static_cast<int>(id), lines, run);
       }
-      const Face& face = p.faces()[f];
-      for (const FaceTriangle& t : ft.triangles) {
-        PictureTriangle pt{b, f, id, front, {}, &ray, {}, false, {}, depth_d};
-        for (int k = 0; k < 3; ++k) pt.p[k] = &proj_[b][face[t.v[k]]];
-        int o = orient2d(*pt.p[0], *pt.p[1], *pt.p[2]);
-        if (o == 0) continue;  // edge-on: never the face seen at a point of a cell
-        if (o < 0) std::swap(pt.p[1], pt.p[2]);
-        for (int k = 0; k < 3; ++k) pt.pd[k] = {(*pt.p[k])[0].get_d(), (*pt.p[k])[1].get_d()};
-        pt.pd_ok = true;
-        for (int k = 0; k < 3; ++k) pt.pd_ok = pt.pd_ok && trusted(pt.pd[k][0], (*pt.p[k])[0]) && trusted(pt.pd[k][1], (*pt.p[k])[1]);
-        if (!pp_.perspective()) pt.depth = depth;
-        per_face[i].push_back(std::move(pt));
-      }
+      std::lock_guard<std::mutex> lock(m);
+      runs.emplace_back(begin, std::move(run));
     });
+    std::sort(runs.begin(), runs.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     std::size_t count = 0;
-    for (const auto& v : per_face) count += v.size();
-    tris_.reserve(count);  // growing would copy the triangles' GMP depths (mpq_class's move is not noexcept)
-    for (auto& v : per_face)
-      for (auto& t : v) tris_.push_back(std::move(t));
-    std::vector<ScreenRect> rects;
-    rects.reserve(tris_.size());
-    for (const auto& t : tris_) {
-      ScreenRect r{INFINITY, INFINITY, -INFINITY, -INFINITY};
-      for (const auto& q : t.pd) {
-        double x = q[0], y = q[1];
-        r.x0 = std::min(r.x0, x), r.x1 = std::max(r.x1, x), r.y0 = std::min(r.y0, y), r.y1 = std::max(r.y1, y);
-      }
-      double pad = box_pad({r.x0, r.x1, r.y0, r.y1});
-      rects.push_back({r.x0 - pad, r.y0 - pad, r.x1 + pad, r.y1 + pad});
-    }
-    std::vector<char> always(rects.size(), 0);
-    for (std::size_t i = 0; i < rects.size(); ++i)
-      always[i] = !(std::isfinite(rects[i].x0) && std::isfinite(rects[i].x1) && std::isfinite(rects[i].y0) && std::isfinite(rects[i].y1));
-    grid_.build(rects, always, 4.0, 2048);
-    rects_ = std::move(rects);
+    for (const auto& r : runs) count += r.second.size();
+    tris_.reserve(count);
+    for (const auto& r : runs) tris_.insert(tris_.end(), r.second.begin(), r.second.end());
+    runs.clear();
+    build_grid(loop, threads);
   }
+
+  ~Prober() {
+    for (int i = 0; i < total_faces_; ++i) delete rays_[i].load(std::memory_order_relaxed);
+  }
+  Prober(const Prober&) = delete;
+  Prober& operator=(const Prober&) = delete;
 
   std::size_t triangles() const { return tris_.size(); }
   int total_faces() const { return total_faces_; }
@@ -225,7 +189,7 @@ class Prober {
   // Is m + e·n + e²·t inside the (counter-clockwise) triangle? Each side first by the double
   // filter at m (error bound as planar_arrangement.cpp's orientation, doubled for m's own
   // rounding), then lexicographically in rationals.
-  static bool contains(const PictureTriangle& tr, const Offset& off, const Near& nr) {
+  bool contains(const PictureTriangle& tr, const Offset& off, const Near& nr) const {
     for (int k = 0; k < 3; ++k) {
       if (nr.ok && tr.pd_ok) {
         const auto &p = tr.pd[k], &q = tr.pd[(k + 1) % 3];
@@ -234,8 +198,7 @@ class Prober {
         if (o > 0) continue;
         if (o < 0) return false;
       }
-      const Exact2 &p = *tr.p[k], &q = *tr.p[(k + 1) % 3];
-      if (side_sign(p, q, off) <= 0) return false;
+      if (side_sign(corner(tr, k), corner(tr, (k + 1) % 3), off) <= 0) return false;
     }
     return true;
   }
@@ -248,20 +211,21 @@ class Prober {
     if (!pp_.perspective()) {
       // s = num / den with den constant; larger is nearer: sign(s_x - s_y). Filter: each
       // depth's double at m is within 16·kToDoubleError·(|c0| + |cx|·|mx| + |cy|·|my|) of its value.
-      if (nr.ok && std::isfinite(x.depth_d[0]) && std::isfinite(y.depth_d[0])) {
+      if (nr.ok && x.depth_ok && y.depth_ok) {
         auto val = [&](const std::array<double, 3>& c) { return c[0] + c[1] * nr.x + c[2] * nr.y; };
         auto mag = [&](const std::array<double, 3>& c) { return std::fabs(c[0]) + std::fabs(c[1]) * nr.mag_x + std::fabs(c[2]) * nr.mag_y; };
         double d = val(x.depth_d) - val(y.depth_d), bound = 16 * kToDoubleError * (mag(x.depth_d) + mag(y.depth_d));
         if (d > bound) return true;
         if (d < -bound) return false;
       }
-      PictureLinear diff{x.depth.c0 - y.depth.c0, x.depth.cx - y.depth.cx, x.depth.cy - y.depth.cy};
+      const PictureLinear &dx = ray(x).depth, &dy = ray(y).depth;
+      PictureLinear diff{dx.c0 - dy.c0, dx.cx - dy.cx, dx.cy - dy.cy};
       off.need();
       s = lex_sign(diff, off.m, off.n, off.t);
     } else {
       // l = num / den(q), num constant; smaller is nearer. l_x - l_y = G / (den_x den_y) with
       // G = num_x den_y - num_y den_x linear in q.
-      const auto &rx = *x.ray, &ry = *y.ray;
+      const auto &rx = ray(x).ray, &ry = ray(y).ray;
       PictureLinear g = scaled_minus(ry[1], rx[0].c0, rx[1], ry[0].c0);
       off.need();
       const Exact2 &m = off.m, &n = off.n, &t = off.t;
@@ -273,9 +237,117 @@ class Prober {
     return x.id < y.id;
   }
 
+  // The face's ray parameter (PicturePlane::ray_parameter) and, orthographic, its depth
+  // num / den; made on first use by any thread (the first one stored is kept).
+  struct Ray {
+    std::array<PictureLinear, 2> ray;
+    PictureLinear depth;
+  };
+  const Ray& ray(int id, int b, int f) const {
+    if (const Ray* r = rays_[id].load(std::memory_order_acquire)) return *r;
+    auto made = std::make_unique<Ray>();
+    const Polyhedron& p = *bodies_[b];
+    const Plane* h = p.plane_if_made(f);
+    Plane own;
+    if (!h) own = p.face_plane(f), h = &own;
+    made->ray = pp_.ray_parameter(*h);
+    if (!pp_.perspective() && sgn(made->ray[1].c0) != 0) {
+      const Rational& den = made->ray[1].c0;
+      made->depth = PictureLinear{made->ray[0].c0 / den, made->ray[0].cx / den, made->ray[0].cy / den};
+    }
+    const Ray* expected = nullptr;
+    if (rays_[id].compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel)) return *made.release();
+    return *expected;
+  }
+  const Ray& ray(const PictureTriangle& t) const { return ray(t.id, t.body, t.face); }
+  const Exact2& corner(const PictureTriangle& t, int k) const { return proj_[t.body][t.v[k]]; }
+
+  void project_vertices(const ParallelLoop& loop) {
+    proj_.resize(bodies_.size());
+    projd_.resize(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      const Polyhedron& p = *bodies_[b];
+      proj_[b].resize(p.num_vertices());
+      projd_[b].resize(p.num_vertices());
+      loop.for_each(p.num_vertices(), 256, [&](std::size_t v) {
+        proj_[b][v] = pp_.project(p.vertices()[v]);
+        const Exact2& q = proj_[b][v];
+        Corner& c = projd_[b][v];
+        c.d = {q[0].get_d(), q[1].get_d()};
+        c.ok = trusted(c.d[0], q[0]) && trusted(c.d[1], q[1]);
+      });
+    }
+  }
+
+  // The triangles of face f of body b (global number id) that a sight ray can meet first.
+  void add_face(int b, int f, int id, const LineDrawing& lines, std::vector<PictureTriangle>& out) {
+    const Polyhedron& p = *bodies_[b];
+    // A closed solid's faces turned away are never met first by a sight ray.
+    if (static_cast<std::size_t>(b) < lines.back_faces_unseen.size() && lines.back_faces_unseen[b] && lines.facing[b][f] < 0) return;
+    // The plane in 128-bit integers when it fits (no rationals), else the exact one.
+    const Plane* h = p.plane_if_made(f);
+    PlaneInt128 small;
+    const bool is_small = !h && face_plane_int128(p, f, small);
+    Plane own;
+    if (!h && !is_small) own = p.face_plane(f), h = &own;
+    if (is_small ? small.degenerate() : h->is_degenerate()) return;
+    PictureTriangle pt{b, f, id, {}, true, true, false, {}, {0, 0, 0}};
+    if (pp_.perspective()) {
+      pt.front = sgn(ray(id, b, f).ray[0].c0) < 0;
+    } else {
+      const PicturePlane::DepthDoubles dd = is_small ? pp_.depth_doubles(small) : pp_.depth_doubles(*h);
+      const int facing = dd.integers ? dd.facing : sgn(ray(id, b, f).ray[1].c0);
+      if (facing == 0) return;  // edge-on: never the face seen at a point of a cell
+      pt.front = facing > 0;
+      pt.depth_ok = dd.ok;
+      pt.depth_d = dd.c;
+    }
+    front_[id] = pt.front;
+    const Face& face = p.faces()[f];
+    auto add = [&](std::array<int, 3> k) {
+      pt.v = {static_cast<std::uint32_t>(face[k[0]]), static_cast<std::uint32_t>(face[k[1]]), static_cast<std::uint32_t>(face[k[2]])};
+      const int o = orient2d(corner(pt, 0), corner(pt, 1), corner(pt, 2));
+      if (o == 0) return;  // edge-on: never the face seen at a point of a cell
+      if (o < 0) std::swap(pt.v[1], pt.v[2]);
+      pt.pd_ok = true;
+      for (int c = 0; c < 3; ++c) {
+        const Corner& cd = projd_[b][pt.v[c]];
+        pt.pd[c] = cd.d;
+        pt.pd_ok = pt.pd_ok && cd.ok;
+      }
+      out.push_back(pt);
+    };
+    if (face.size() == 3) return add({0, 1, 2});
+    FaceTriangles ft = face_triangles(p, f);
+    if (ft.status != FaceTriangles::Status::Ok) return;
+    for (const FaceTriangle& t : ft.triangles) add({t.v[0], t.v[1], t.v[2]});
+  }
+
+  void build_grid(const ParallelLoop& loop, unsigned threads) {
+    rects_.resize(tris_.size());
+    std::vector<char> always(tris_.size(), 0);
+    loop.for_each(tris_.size(), 1024, [&](std::size_t i) {
+      ScreenRect r{INFINITY, INFINITY, -INFINITY, -INFINITY};
+      for (const auto& q : tris_[i].pd) {
+        double x = q[0], y = q[1];
+        r.x0 = std::min(r.x0, x), r.x1 = std::max(r.x1, x), r.y0 = std::min(r.y0, y), r.y1 = std::max(r.y1, y);
+      }
+      double pad = box_pad({r.x0, r.x1, r.y0, r.y1});
+      rects_[i] = {r.x0 - pad, r.y0 - pad, r.x1 + pad, r.y1 + pad};
+      always[i] = !(std::isfinite(rects_[i].x0) && std::isfinite(rects_[i].x1) && std::isfinite(rects_[i].y0) && std::isfinite(rects_[i].y1));
+    });
+    grid_.build(rects_, always, 4.0, 2048, threads);
+  }
+
+  struct Corner {
+    std::array<double, 2> d;
+    bool ok;
+  };
   const PicturePlane& pp_;
-  std::vector<std::vector<Exact2>> proj_;                  // per body and vertex
-  std::vector<std::array<PictureLinear, 2>> rays_;         // per global face
+  const std::vector<const Polyhedron*>& bodies_;
+  std::vector<std::vector<Exact2>> proj_;            // per body and vertex
+  std::vector<std::vector<Corner>> projd_;           // their doubles
+  std::unique_ptr<std::atomic<const Ray*>[]> rays_;  // per global face, made on first use
   std::vector<PictureTriangle> tris_;
   std::vector<ScreenRect> rects_;
   ScreenGrid grid_;
@@ -315,9 +387,11 @@ void regions_to_surfaces(const PlanarArrangement& arr, const std::vector<int>& l
   std::vector<std::array<PictureLinear, 2>> ray_of(total_faces);
   {
     std::vector<char> used(total_faces, 0);
-    if (options.lift && options.faces)
+    if (options.lift && options.faces) {
       for (int l : label)
         if (l >= 0) used[l] = 1;
+      for (const Polyhedron* b : bodies) plane_all_faces(*b, options.threads);  // before the parallel reads
+    }
     loop.for_each(used.size(), 256, [&](std::size_t id) {
       if (!used[id]) return;
       auto [b, f] = face_of[id];

@@ -26,6 +26,7 @@
 #include "io/pipeline/render_methods.hpp"
 #include "io/pipeline/render_steps.hpp"
 #include "io/pipeline/section.hpp"
+#include "kernel/plane_int128.hpp"
 
 namespace hlr {
 
@@ -45,8 +46,7 @@ namespace {
 // except a sharp edge under the crease angle they did not make.
 void surface_lines(LineDrawing& d, const std::vector<const SceneBody*>& bodies, const RenderOptions& o) {
   const bool classify = o.lines.edges == EdgeSelection::Feature || o.lines.classify_all;
-  std::vector<Segment> kept;
-  kept.reserve(d.segments.size());
+  std::size_t kept = 0;  // kept in place, in order (no second array of a million segments)
   for (Segment& s : d.segments) {
     const bool edge = s.kind == Segment::Kind::Edge && s.body >= 0 && static_cast<std::size_t>(s.body) < bodies.size();
     if (classify && edge && (s.line == LineKind::Crease || s.line == LineKind::Edge || s.line == LineKind::Tangent)) {
@@ -69,9 +69,10 @@ void surface_lines(LineDrawing& d, const std::vector<const SceneBody*>& bodies, 
       if (o.tangent_edges == TangentEdges::None) continue;
       if (o.tangent_edges == TangentEdges::Visible) s.line = LineKind::Crease;
     }
-    kept.push_back(std::move(s));
+    if (&s != &d.segments[kept]) d.segments[kept] = std::move(s);
+    ++kept;
   }
-  d.segments = std::move(kept);
+  d.segments.erase(d.segments.begin() + static_cast<std::ptrdiff_t>(kept), d.segments.end());
 }
 
 void eye_plane_notes(const RenderResult& r, std::vector<std::string>& notes) {
@@ -114,8 +115,20 @@ Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Light
 }
 
 Rgb face_colour(const RenderResult& r, std::size_t b, std::size_t f, const Lighting& light, bool back, const ViewDoubles& vd) {
-  const Plane& h = r.bodies[b]->body.planes()[f];
-  return face_colour(r, b, f, light, back, unit({mid(h.approx(0)), mid(h.approx(1)), mid(h.approx(2))}), vd);
+  // The plane from the stored ones when they are made, else made here for this face alone
+  // (thread-safe; a plain fill of a large mesh then keeps no plane per face).
+  const Polyhedron& p = r.bodies[b]->body;
+  std::array<Bounds, 3> n;
+  PlaneInt128 small;
+  if (const Plane* stored = p.plane_if_made(f)) {
+    n = {stored->approx(0), stored->approx(1), stored->approx(2)};
+  } else if (face_plane_int128(p, f, small)) {
+    n = normal_bounds(small);
+  } else {
+    const Plane h = p.face_plane(f);
+    n = {h.approx(0), h.approx(1), h.approx(2)};
+  }
+  return face_colour(r, b, f, light, back, unit({mid(n[0]), mid(n[1]), mid(n[2])}), vd);
 }
 
 // Flat colour of every face, for the side the viewer sees (facing: 1 front, -1 back, 0 edge-on).
@@ -233,7 +246,6 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
   if (o.shadows && !(m.flags & kTakesShadows))
     throw std::invalid_argument("--shadows works with --method " +
                                 method_list([](const RenderMethodEntry& e) { return (e.flags & kTakesShadows) != 0; }));
-  for (const Polyhedron* p : polys) plane_all_faces(*p, o.lines.threads);  // computed once, before the parallel stages
   if (r.camera.perspective)
     for (std::size_t b = 0; b < polys.size(); ++b)
       for (const Point3& v : polys[b]->vertices())
@@ -249,11 +261,18 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
     for (Segment& s : d.segments) clip_near(s, near);
   }
   if (o.through_lines) r.through_pieces = mark_see_through(d, polys, r.camera, all, see_through_bodies(r));
-  shade_faces(r, scenes, d);
   SurfaceOptions so;
   so.threads = o.lines.threads;
   so.lift = o.surface_corners;
   so.faces = o.surface_faces || o.shadows;  // the shadows are cut from the regions of each face
+  // Every face's plane made once on all cores where a later stage reads them on all cores
+  // (lifting corners, shadows, the colours seen through glass); otherwise the shading and the
+  // probes make each plane they need alone, and a plain fill keeps none (a quarter of a
+  // gigabyte at a million faces).
+  const std::vector<char> see = see_through_bodies(r);
+  if ((so.faces && so.lift) || o.shadows || std::find(see.begin(), see.end(), 1) != see.end() || o.method != RenderMethod::Faces)
+    for (const Polyhedron* p : polys) plane_all_faces(*p, o.lines.threads);
+  shade_faces(r, scenes, d);
   so.exact_groups = false;  // the groups only feed the fills (add_surface_fills)
   std::map<std::array<int, 3>, int> group_of;
   if (o.surface_groups) so.face_group.resize(r.bodies.size());
@@ -268,10 +287,9 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
   mark_cut_lines(d, r.bodies);
   surface_lines(d, r.bodies, o);
   if (o.lines.edges == EdgeSelection::Feature) {
-    std::vector<Segment> kept;
-    for (Segment& s : d.segments)
-      if (s.kind == Segment::Kind::Intersection || s.line != LineKind::Edge) kept.push_back(std::move(s));
-    d.segments = std::move(kept);
+    d.segments.erase(std::remove_if(d.segments.begin(), d.segments.end(),
+                                    [](const Segment& s) { return s.kind != Segment::Kind::Intersection && s.line == LineKind::Edge; }),
+                     d.segments.end());
   } else {
     for (Segment& s : d.segments)
       if (s.kind == Segment::Kind::Edge && s.line != LineKind::Cut) s.line = LineKind::Edge;

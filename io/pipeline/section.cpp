@@ -257,18 +257,24 @@ void section_hooks(const std::vector<const SceneBody*>& bodies, FaceRouteHooks& 
 }
 
 void mark_cut_lines(LineDrawing& d, const std::vector<const SceneBody*>& bodies) {
-  std::vector<Segment> out;
-  out.reserve(d.segments.size());
-  for (Segment& s : d.segments) {
+  if (std::all_of(bodies.begin(), bodies.end(), [](const SceneBody* b) { return b->section_part.empty(); })) return;
+  // Kept in place, in order (no second array of the drawing's segments).
+  auto dropped = [&](Segment& s) {
     if (s.kind == Segment::Kind::Edge && s.face0 >= 0 && s.face1 >= 0 && !bodies[s.body]->section_part.empty()) {
       const SceneBody& b = *bodies[s.body];
-      if (b.section_part[s.face0] == b.section_part[s.face1]) continue;
-      if (b.section_cap[s.face0] == kEyeCap || b.section_cap[s.face1] == kEyeCap) continue;  // on the near plane
+      if (b.section_part[s.face0] == b.section_part[s.face1]) return true;
+      if (b.section_cap[s.face0] == kEyeCap || b.section_cap[s.face1] == kEyeCap) return true;  // on the near plane
       if (b.section_cap[s.face0] >= 0 || b.section_cap[s.face1] >= 0) s.line = LineKind::Cut;
     }
-    out.push_back(std::move(s));
+    return false;
+  };
+  std::size_t kept = 0;
+  for (Segment& s : d.segments) {
+    if (dropped(s)) continue;
+    if (&s != &d.segments[kept]) d.segments[kept] = std::move(s);
+    ++kept;
   }
-  d.segments = std::move(out);
+  d.segments.erase(d.segments.begin() + static_cast<std::ptrdiff_t>(kept), d.segments.end());
 }
 
 bool has_caps(const RenderResult& r) {
