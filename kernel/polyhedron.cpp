@@ -1,15 +1,15 @@
 // Polyhedron: exact vertices and planes beside an OpenMesh mesh (see polyhedron.hpp).
 #include "kernel/polyhedron.hpp"
 
-#include <array>
-
-#include "kernel/openmesh_mesh.hpp"
-
 #include <OpenMesh/Core/System/omstream.hh>
 #include <algorithm>
+#include <array>
 #include <deque>
+#include <mutex>
 #include <stdexcept>
 #include <unordered_map>
+
+#include "kernel/openmesh_mesh.hpp"
 
 namespace hlr {
 
@@ -109,30 +109,39 @@ void Polyhedron::build_mesh() const {
   if (was_enabled) omerr().enable();
 }
 
+namespace {
+std::mutex& planes_mutex() {  // one for all polyhedra: planes are made once each
+  static std::mutex m;
+  return m;
+}
+}  // namespace
+
 void Polyhedron::compute_planes(const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop) const {
-  if (planes_done_) return;
+  if (planes_done_.get()) return;
   std::vector<Plane> out(faces_.size());
   loop(faces_.size(), [&](std::size_t f) { out[f] = face_plane(f); });
+  std::lock_guard<std::mutex> lock(planes_mutex());
+  if (planes_done_.get()) return;
   planes_ = std::move(out);
-  planes_done_ = true;
+  planes_done_.set();
 }
 
 const std::vector<Plane>& Polyhedron::planes() const {
-  if (!planes_done_) {
-    planes_.reserve(faces_.size());
-    std::vector<const Point3*> pts;
-    for (const auto& f : faces_) {
-      pts.clear();
-      for (int v : f) pts.push_back(&vertices_[v]);
-      planes_.push_back(primitive_plane_of_polygon(pts.data(), pts.size()));
+  if (!planes_done_.get()) {
+    std::lock_guard<std::mutex> lock(planes_mutex());
+    if (!planes_done_.get()) {
+      std::vector<Plane> out;
+      out.reserve(faces_.size());
+      for (std::size_t f = 0; f < faces_.size(); ++f) out.push_back(face_plane(f));
+      planes_ = std::move(out);
+      planes_done_.set();
     }
-    planes_done_ = true;
   }
   return planes_;
 }
 
 Plane Polyhedron::face_plane(std::size_t f) const {
-  if (planes_done_) return planes_[f];
+  if (planes_done_.get()) return planes_[f];
   const Face& face = faces_[f];
   if (face.size() <= 8) {  // nearly every face: no allocation
     const Point3* pts[8];

@@ -4,14 +4,14 @@
 // mesh_checks.hpp (closed, manifold, oriented, planar, ...) say when that is known.
 #pragma once
 
+#include <atomic>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
-#include <functional>
 #include <vector>
 
 #include "kernel/face.hpp"
-
 #include "kernel/geometry.hpp"
 #include "kernel/mesh_checks.hpp"
 
@@ -65,11 +65,12 @@ class Polyhedron {
   /// Exact plane of each face (Newell normal, oriented by the face's vertex order: a face
   /// listed counter-clockwise seen from outside gets an outward normal). Degenerate (zero
   /// normal) for zero-area faces. Scaled to primitive integer coefficients (primitive_plane).
+  /// Made on first use, once, also when that use is on several threads at a time.
   const std::vector<Plane>& planes() const;
   /// The plane of face f alone, as planes()[f] (from there when they are made).
   Plane face_plane(std::size_t f) const;
   /// planes()[f] when the planes are made, else nullptr (nothing is computed).
-  const Plane* plane_if_made(std::size_t f) const { return planes_done_ ? &planes_[f] : nullptr; }
+  const Plane* plane_if_made(std::size_t f) const { return planes_done_.get() ? &planes_[f] : nullptr; }
   /// Computes the planes (once) with `loop(n, body)` calling body(i) for every i < n, e.g. on
   /// all cores (algorithms/support/parallel.hpp: plane_all_faces); planes() then returns them.
   void compute_planes(const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop) const;
@@ -98,8 +99,20 @@ class Polyhedron {
   mutable bool edges_done_ = false;
   mutable std::shared_ptr<Mesh> mesh_;
   mutable std::vector<int> refused_;
+  // A flag that copies (the polyhedron stays copyable) and is read and set across threads.
+  struct DoneFlag {
+    std::atomic<bool> value{false};
+    DoneFlag() = default;
+    DoneFlag(const DoneFlag& o) : value(o.get()) {}
+    DoneFlag& operator=(const DoneFlag& o) {
+      value.store(o.get(), std::memory_order_release);
+      return *this;
+    }
+    bool get() const { return value.load(std::memory_order_acquire); }
+    void set() { value.store(true, std::memory_order_release); }
+  };
   mutable std::vector<Plane> planes_;
-  mutable bool planes_done_ = false;
+  mutable DoneFlag planes_done_;
   mutable std::shared_ptr<MeshReport> report_;
 };
 

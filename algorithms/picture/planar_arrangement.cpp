@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <execution>
 #include <map>
 #include <numeric>
 #include <stdexcept>
@@ -75,18 +74,20 @@ std::vector<std::uint32_t> join_equal_points(const std::vector<Exact2>& pts, con
 }
 
 // Candidate pairs of segments: a grid over the picture, each segment in every cell its box
-// (widened far beyond the doubles' error) overlaps; pairs sharing a cell.
-std::vector<std::pair<std::uint32_t, std::uint32_t>> candidate_pairs(const std::vector<std::array<std::uint32_t, 2>>& segs,
-                                                                      const std::vector<std::array<double, 2>>& ap, unsigned threads) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  if (segs.size() < 2) return pairs;
+// (widened far beyond the doubles' error) overlaps; visit(worker, a, b) for each pair whose
+// widened boxes meet, once: in the cell that holds the low corner of their boxes' overlap
+// (that cell is in both segments' ranges), so no list of pairs is made or sorted.
+template <class Visit>
+void visit_candidate_pairs(const std::vector<std::array<std::uint32_t, 2>>& segs, const std::vector<std::array<double, 2>>& ap,
+                           const ParallelLoop& loop, Visit&& visit) {
+  if (segs.size() < 2) return;
   bool finite = true;
   for (const auto& s : segs)
     for (std::uint32_t p : s) finite = finite && std::isfinite(ap[p][0]) && std::isfinite(ap[p][1]);
   if (!finite) {  // coordinates beyond doubles: every pair (such scenes are small)
     for (std::uint32_t a = 0; a < segs.size(); ++a)
-      for (std::uint32_t b = a + 1; b < segs.size(); ++b) pairs.emplace_back(a, b);
-    return pairs;
+      for (std::uint32_t b = a + 1; b < segs.size(); ++b) visit(0u, a, b);
+    return;
   }
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
   for (const auto& s : segs)
@@ -100,12 +101,17 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> candidate_pairs(const std::
   const double cw = (x1 - x0) / g, ch = (y1 - y0) / g;
   auto cx = [&](double x) { return std::clamp(static_cast<int>((x - x0) / cw), 0, g - 1); };
   auto cy = [&](double y) { return std::clamp(static_cast<int>((y - y0) / ch), 0, g - 1); };
-  auto cells = [&](std::uint32_t k, auto&& visit) {
+  // Each segment's box widened by pad: [lo - pad, hi + pad] on both axes.
+  std::vector<std::array<double, 4>> box(segs.size());
+  loop.for_each(segs.size(), 4096, [&](std::size_t k) {
     const auto &a = ap[segs[k][0]], &b = ap[segs[k][1]];
-    int i0 = cx(std::min(a[0], b[0]) - pad), i1 = cx(std::max(a[0], b[0]) + pad);
-    int j0 = cy(std::min(a[1], b[1]) - pad), j1 = cy(std::max(a[1], b[1]) + pad);
+    box[k] = {std::min(a[0], b[0]) - pad, std::min(a[1], b[1]) - pad, std::max(a[0], b[0]) + pad, std::max(a[1], b[1]) + pad};
+  });
+  auto cells = [&](std::uint32_t k, auto&& each) {
+    const auto& bx = box[k];
+    const int i0 = cx(bx[0]), i1 = cx(bx[2]), j0 = cy(bx[1]), j1 = cy(bx[3]);
     for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i) visit(static_cast<std::size_t>(j) * g + i);
+      for (int i = i0; i <= i1; ++i) each(static_cast<std::size_t>(j) * g + i);
   };
   const std::size_t n_cells = static_cast<std::size_t>(g) * g;
   std::vector<std::uint32_t> start(n_cells + 1, 0);
@@ -113,24 +119,19 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> candidate_pairs(const std::
   for (std::size_t c = 0; c < n_cells; ++c) start[c + 1] += start[c];
   std::vector<std::uint32_t> items(start[n_cells]), fill(start.begin(), start.end() - 1);
   for (std::uint32_t k = 0; k < segs.size(); ++k) cells(k, [&](std::size_t c) { items[fill[c]++] = k; });
-  ParallelLoop loop(threads);
-  PerWorker<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop);
   loop.run(n_cells, 256, [&](unsigned w, std::size_t begin, std::size_t end) {
     for (std::size_t c = begin; c < end; ++c)
       for (std::uint32_t i = start[c]; i < start[c + 1]; ++i)
         for (std::uint32_t j = i + 1; j < start[c + 1]; ++j) {
-          std::uint32_t a = items[i], b = items[j];
-          const auto &p0 = ap[segs[a][0]], &p1 = ap[segs[a][1]], &q0 = ap[segs[b][0]], &q1 = ap[segs[b][1]];
-          if (std::max(p0[0], p1[0]) + pad < std::min(q0[0], q1[0]) || std::max(q0[0], q1[0]) + pad < std::min(p0[0], p1[0]) ||
-              std::max(p0[1], p1[1]) + pad < std::min(q0[1], q1[1]) || std::max(q0[1], q1[1]) + pad < std::min(p0[1], p1[1]))
-            continue;
-          found[w].emplace_back(std::min(a, b), std::max(a, b));
+          const std::uint32_t a = items[i], b = items[j];
+          const auto &p = box[a], &q = box[b];
+          // The widened boxes meet (each widened by pad: a gap of up to 2·pad is no gap).
+          if (p[2] < q[0] || q[2] < p[0] || p[3] < q[1] || q[3] < p[1]) continue;
+          const std::size_t owner = static_cast<std::size_t>(cy(std::max(p[1], q[1]))) * g + cx(std::max(p[0], q[0]));
+          if (owner != c) continue;
+          visit(w, std::min(a, b), std::max(a, b));
         }
   });
-  for (unsigned w = 0; w < found.size(); ++w) pairs.insert(pairs.end(), found[w].begin(), found[w].end());
-  std::sort(std::execution::par, pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  return pairs;
 }
 
 // Is point k strictly inside segment (i, j)? (k is neither end.)
@@ -177,7 +178,6 @@ PlanarArrangement build_arrangement(std::vector<Exact2> points, const std::vecto
     // On all cores, each worker into its own lists; the splits are sorted below and the
     // crossing pairs here, so the result does not depend on the thread count.
     Signs sg(points, ap, filter);
-    const auto cand = candidate_pairs(segs, ap, options.threads);
     ParallelLoop loop(options.threads);
     struct Found {
       std::vector<Split> splits;
@@ -185,22 +185,19 @@ PlanarArrangement build_arrangement(std::vector<Exact2> points, const std::vecto
       std::size_t exact = 0;
     };
     PerWorker<Found> found(loop);
-    loop.run(cand.size(), 1024, [&](unsigned w, std::size_t begin, std::size_t end) {
+    visit_candidate_pairs(segs, ap, loop, [&](unsigned w, std::uint32_t a, std::uint32_t b) {
       Found& f = found[w];
-      for (std::size_t i = begin; i < end; ++i) {
-        auto [a, b] = cand[i];
-        std::uint32_t p0 = segs[a][0], p1 = segs[a][1], q0 = segs[b][0], q1 = segs[b][1];
-        for (std::uint32_t q : {q0, q1})
-          if (inside_segment(sg, p0, p1, q, &f.exact)) f.splits.push_back({a, q});
-        for (std::uint32_t p : {p0, p1})
-          if (inside_segment(sg, q0, q1, p, &f.exact)) f.splits.push_back({b, p});
-        if (p0 == q0 || p0 == q1 || p1 == q0 || p1 == q1) continue;
-        int o0 = sg.orient(p0, p1, q0, &f.exact), o1 = sg.orient(p0, p1, q1, &f.exact);
-        if (o0 == 0 || o1 == 0 || o0 == o1) continue;
-        int o2 = sg.orient(q0, q1, p0, &f.exact), o3 = sg.orient(q0, q1, p1, &f.exact);
-        if (o2 == 0 || o3 == 0 || o2 == o3) continue;
-        f.crossings.emplace_back(a, b);
-      }
+      std::uint32_t p0 = segs[a][0], p1 = segs[a][1], q0 = segs[b][0], q1 = segs[b][1];
+      for (std::uint32_t q : {q0, q1})
+        if (inside_segment(sg, p0, p1, q, &f.exact)) f.splits.push_back({a, q});
+      for (std::uint32_t p : {p0, p1})
+        if (inside_segment(sg, q0, q1, p, &f.exact)) f.splits.push_back({b, p});
+      if (p0 == q0 || p0 == q1 || p1 == q0 || p1 == q1) return;
+      int o0 = sg.orient(p0, p1, q0, &f.exact), o1 = sg.orient(p0, p1, q1, &f.exact);
+      if (o0 == 0 || o1 == 0 || o0 == o1) return;
+      int o2 = sg.orient(q0, q1, p0, &f.exact), o3 = sg.orient(q0, q1, p1, &f.exact);
+      if (o2 == 0 || o3 == 0 || o2 == o3) return;
+      f.crossings.emplace_back(a, b);
     });
     for (unsigned w = 0; w < found.size(); ++w) {
       const Found& f = found[w];

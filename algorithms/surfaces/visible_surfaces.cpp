@@ -384,14 +384,13 @@ void regions_to_surfaces(const PlanarArrangement& arr, const std::vector<int>& l
   for (std::size_t b = 0, id = 0; b < bodies.size(); ++b)
     for (std::size_t f = 0; f < bodies[b]->num_faces(); ++f, ++id) face_of[id] = {static_cast<int>(b), static_cast<int>(f)};
   // A corner is lifted into the plane of the face on the left of its half-edge.
-  std::vector<std::array<PictureLinear, 2>> ray_of(total_faces);
-  {
+  // (Only when lifting: a million faces' empty rays are a million GMP initialisations.)
+  std::vector<std::array<PictureLinear, 2>> ray_of(options.lift && options.faces ? total_faces : 0);
+  if (options.lift && options.faces) {
     std::vector<char> used(total_faces, 0);
-    if (options.lift && options.faces) {
-      for (int l : label)
-        if (l >= 0) used[l] = 1;
-      for (const Polyhedron* b : bodies) plane_all_faces(*b, options.threads);  // before the parallel reads
-    }
+    for (int l : label)
+      if (l >= 0) used[l] = 1;
+    for (const Polyhedron* b : bodies) plane_all_faces(*b, options.threads);  // before the parallel reads
     loop.for_each(used.size(), 256, [&](std::size_t id) {
       if (!used[id]) return;
       auto [b, f] = face_of[id];

@@ -265,12 +265,13 @@ void solve_surfaces(RenderResult& r, const std::vector<const Polyhedron*>& polys
   so.threads = o.lines.threads;
   so.lift = o.surface_corners;
   so.faces = o.surface_faces || o.shadows;  // the shadows are cut from the regions of each face
-  // Every face's plane made once on all cores where a later stage reads them on all cores
-  // (lifting corners, shadows, the colours seen through glass); otherwise the shading and the
-  // probes make each plane they need alone, and a plain fill keeps none (a quarter of a
-  // gigabyte at a million faces).
+  // Every face's plane made once on all cores, before the stages that read them on all cores
+  // (per-face regions, tone hatching, shadows, the colours seen through glass, the course's
+  // methods); a plain fill needs none: its shading and probes make each plane they need
+  // alone, and no plane per face is kept (a quarter of a gigabyte at a million faces).
   const std::vector<char> see = see_through_bodies(r);
-  if ((so.faces && so.lift) || o.shadows || std::find(see.begin(), see.end(), 1) != see.end() || o.method != RenderMethod::Faces)
+  const bool plain_fill = !so.faces && !o.shadows && std::find(see.begin(), see.end(), 1) == see.end() && o.method == RenderMethod::Faces;
+  if (!plain_fill)
     for (const Polyhedron* p : polys) plane_all_faces(*p, o.lines.threads);
   shade_faces(r, scenes, d);
   so.exact_groups = false;  // the groups only feed the fills (add_surface_fills)

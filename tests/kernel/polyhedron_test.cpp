@@ -1,9 +1,14 @@
 // Polyhedron checks (kernel/polyhedron.hpp, kernel/mesh_checks.hpp), each naming indices.
+#include "kernel/polyhedron.hpp"
+
 #include <gtest/gtest.h>
+
+#include <atomic>
+#include <random>
+#include <thread>
 
 #include "io/readers/mesh_reader.hpp"
 #include "kernel/openmesh_mesh.hpp"
-#include "kernel/polyhedron.hpp"
 
 using namespace hlr;
 
@@ -128,4 +133,45 @@ TEST(Polyhedron, OrientFacesMakesAnyOrientationOutward) {
   Polyhedron inward = cube.reversed();
   EXPECT_EQ(six_signed_volume(inward.vertices(), inward.faces()), -48);
   EXPECT_EQ(six_signed_volume(cube.vertices(), orient_faces(cube.vertices(), inward.faces())), 48);
+}
+
+// The planes are made on first use; that use may come from several threads at once (the
+// visible surfaces and tone hatching read them on all cores): they are made once, and every
+// thread sees the same, complete list.
+TEST(Polyhedron, PlanesFirstReadOnManyThreadsAreMadeOnce) {
+  std::mt19937_64 rng(3);
+  std::uniform_int_distribution<long> c(-1000, 1000);
+  std::vector<Point3> v;
+  std::vector<Face> f;
+  for (int i = 0; i < 20000; ++i) {
+    for (int k = 0; k < 3; ++k) v.emplace_back(Rational(c(rng), 7), Rational(c(rng), 3), Rational(c(rng)));
+    f.push_back(Face{3 * i, 3 * i + 1, 3 * i + 2});
+  }
+  std::vector<Plane> want;
+  for (std::size_t k = 0; k < f.size(); k += 97) {
+    const Point3* pts[3] = {&v[f[k][0]], &v[f[k][1]], &v[f[k][2]]};
+    want.push_back(primitive_plane(plane_of_polygon(pts, 3)));
+  }
+  for (int round = 0; round < 3; ++round) {
+    const Polyhedron p(v, f);
+    std::atomic<int> ready{0};
+    std::vector<const std::vector<Plane>*> seen(8, nullptr);
+    std::vector<char> good(8, 0);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 8; ++t)
+      threads.emplace_back([&, t] {
+        ready.fetch_add(1);
+        while (ready.load() < 8) {
+        }
+        const std::vector<Plane>& pl = p.planes();  // read at once, while others may still be making them
+        bool ok = pl.size() == f.size();
+        for (std::size_t k = 0; ok && k < want.size(); ++k) ok = pl[97 * k] == want[k];
+        seen[t] = &pl;
+        good[t] = ok;
+      });
+    for (auto& t : threads) t.join();
+    for (int t = 0; t < 8; ++t) ASSERT_EQ(seen[t], seen[0]);
+    for (int t = 0; t < 8; ++t) ASSERT_TRUE(good[t]) << "thread " << t;
+    EXPECT_EQ(p.plane_if_made(5), &(*seen[0])[5]);
+  }
 }
