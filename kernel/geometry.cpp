@@ -15,6 +15,53 @@
 
 namespace hlr {
 
+namespace {
+
+// The tightest interval of doubles around ±n/d for n and d below 2^128 (an exporter's 17 to 19
+// digit decimals: a numerator of one limb over 10^19 to 10^23), by one division of GMP limbs on
+// the stack: a = n·2^s / d truncated lies in [2^54, 2^56); cut to 53 significant bits it is the
+// double below (times 2^-s, exact for a normal double), the next one up bounds it above unless
+// the division left no remainder and no cut bits (then q is that double). The same interval as
+// CGAL::to_interval's (rounding away from zero, then the neighbour toward zero), without MPFR.
+// False outside that range or for a result that is not a normal double.
+bool bounds_by_division(const Rational& q, Bounds& out) {
+  mpz_srcptr n = q.get_num_mpz_t(), d = q.get_den_mpz_t();
+  const std::size_t nl = mpz_size(n), dl = mpz_size(d);
+  if (nl == 0 || nl > 2 || dl == 0 || dl > 2) return false;
+  const long nb = static_cast<long>(mpz_sizeinbase(n, 2)), db = static_cast<long>(mpz_sizeinbase(d, 2));
+  const long s = 55 - nb + db;  // in [55 - 128 + 1, 55 + 128 - 1]
+  // a = |n|·2^max(s, 0), b = d·2^max(-s, 0): at most 5 and 4 limbs.
+  mp_limb_t a[6] = {0, 0, 0, 0, 0, 0}, b[5] = {0, 0, 0, 0, 0}, quo[6], rem[5];
+  auto shifted = [](mp_limb_t* to, mpz_srcptr x, std::size_t xl, long by) {
+    const std::size_t limbs = static_cast<std::size_t>(by / GMP_NUMB_BITS);
+    const unsigned bits = static_cast<unsigned>(by % GMP_NUMB_BITS);
+    const mp_limb_t* xp = mpz_limbs_read(x);
+    if (bits == 0) {
+      std::copy(xp, xp + xl, to + limbs);
+      return limbs + xl;
+    }
+    to[limbs + xl] = mpn_lshift(to + limbs, xp, static_cast<mp_size_t>(xl), bits);
+    return limbs + xl + 1;
+  };
+  std::size_t an = shifted(a, n, nl, std::max(s, 0L)), bn = shifted(b, d, dl, std::max(-s, 0L));
+  while (an > 0 && a[an - 1] == 0) --an;
+  while (bn > 0 && b[bn - 1] == 0) --bn;
+  mpn_tdiv_qr(quo, rem, 0, a, static_cast<mp_size_t>(an), b, static_cast<mp_size_t>(bn));
+  const std::uint64_t m = quo[0];  // in [2^54, 2^56): the higher limbs are zero
+  bool exact = true;
+  for (std::size_t i = 0; i < bn; ++i) exact = exact && rem[i] == 0;
+  const int drop = m >= (std::uint64_t{1} << 55) ? 3 : 2;  // bits below the 53 kept
+  const std::uint64_t low = m & ((std::uint64_t{1} << drop) - 1), base = m - low;
+  exact = exact && low == 0;
+  const double lo = std::ldexp(static_cast<double>(base), static_cast<int>(-s));
+  const double hi = exact ? lo : std::ldexp(static_cast<double>(base + (std::uint64_t{1} << drop)), static_cast<int>(-s));
+  if (!(lo >= 0x1p-1022) || !std::isfinite(hi)) return false;
+  out = mpz_sgn(n) < 0 ? Bounds{-hi, -lo} : Bounds{lo, hi};
+  return true;
+}
+
+}  // namespace
+
 Bounds bounds_of(const Rational& q) {
   // Fast path: numerator and denominator exact in doubles; IEEE division is correctly rounded,
   // so the quotient is within one unit in the last place (exact for integers).
@@ -26,6 +73,8 @@ Bounds bounds_of(const Rational& q) {
     double v = x / y;
     return {std::nextafter(v, -HUGE_VAL), std::nextafter(v, HUGE_VAL)};
   }
+  Bounds b;
+  if (bounds_by_division(q, b)) return b;
   std::pair<double, double> iv = CGAL::to_interval(q);
   return {iv.first, iv.second};
 }

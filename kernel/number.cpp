@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "kernel/int128.hpp"
+
 namespace hlr {
 
 NumberError::NumberError(std::string token, const std::string& why)
@@ -91,6 +93,13 @@ bool parse_decimal(std::string_view t, Rational& out) {
       unsigned long long d = 1;
       for (long k = 0; k < fives; ++k) d *= 5;
       mpz_set_ui(den, d << twos);
+    } else if (fives <= 54 && twos <= 126 - 2 * fives - fives / 3) {  // below 2^128: two limbs (numpy's 10^23)
+      unsigned __int128 d = 1;
+      for (long k = 0; k < fives; ++k) d *= 5;
+      d <<= twos;
+      mp_limb_t* limbs = mpz_limbs_write(den, 2);
+      limbs[0] = static_cast<mp_limb_t>(d), limbs[1] = static_cast<mp_limb_t>(d >> 64);
+      mpz_limbs_finish(den, limbs[1] != 0 ? 2 : 1);
     } else {
       mpz_ui_pow_ui(den, 5, static_cast<unsigned long>(fives));
       mpz_mul_2exp(den, den, static_cast<mp_bitcnt_t>(twos));
@@ -172,6 +181,31 @@ std::string parse_impl(std::string_view text, Rational& out) {
 }
 
 }  // namespace
+
+static_assert(GMP_NUMB_BITS == 64, "limbs of 64 bits");
+
+bool in_lowest_terms(const Rational& q) {
+  mpz_srcptr n = q.get_num_mpz_t(), d = q.get_den_mpz_t();
+  if (mpz_sgn(d) <= 0) return false;
+  if (mpz_cmp_ui(d, 1) == 0) return true;
+  if (mpz_sgn(n) == 0) return false;         // 0 is 0/1
+  const mp_bitcnt_t twos = mpz_scan1(d, 0);  // d = 2^twos·r, r odd
+  if (twos > 0 && mpz_even_p(n)) return false;
+  if (mpz_sizeinbase(d, 2) - twos > 64) {  // r is long: GMP's gcd
+    thread_local mpz_class g;
+    mpz_gcd(g.get_mpz_t(), n, d);
+    return mpz_cmp_ui(g.get_mpz_t(), 1) == 0;
+  }
+  const mp_size_t k = static_cast<mp_size_t>(twos / 64);  // r = d >> twos, from d's limbs k and k + 1
+  const unsigned b = static_cast<unsigned>(twos % 64);
+  const std::uint64_t r = b == 0 ? mpz_getlimbn(d, k) : (mpz_getlimbn(d, k) >> b) | (mpz_getlimbn(d, k + 1) << (64 - b));
+  if (r == 1) return true;
+  std::uint64_t f = r;  // a power of five (decimals): only 5 to test
+  while (f % 5 == 0) f /= 5;
+  if (f == 1) return !mpz_divisible_ui_p(n, 5);
+  if (mpz_size(n) == 1) return gcd128(static_cast<Int128>(mpz_getlimbn(n, 0)), static_cast<Int128>(r)) == 1;  // binary gcd
+  return mpz_gcd_ui(nullptr, n, r) == 1;
+}
 
 Rational parse_rational(std::string_view text) {
   Rational q;

@@ -36,6 +36,11 @@ class NumberError : public std::runtime_error {
 /// make numbers of millions of digits from a few bytes of text.
 inline constexpr long kMaxDecimalExponent = 4000;
 
+/// Whether q is in lowest terms with a positive denominator (what GMP's arithmetic needs):
+/// decided without a general gcd for a denominator 2^a·r with r of one limb (decimals), and
+/// without allocating.
+bool in_lowest_terms(const Rational& q);
+
 /// Parses an exact rational from text: integer (`-12`, `+3`), decimal (`0.1`, `.5`, `5.`),
 /// scientific (`1e-3`, `2.5E+2`) or fraction of two integers (`-3/7`; a zero denominator is an
 /// error). Surrounding whitespace is not accepted. NaN, infinities and anything else throw

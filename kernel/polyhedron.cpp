@@ -25,12 +25,7 @@ Polyhedron::Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces,
   // as mpq_class(836, 1024) is brought to 209/256 here, once, for every route.
   loop(vertices_.size(), [&](std::size_t i) {
     Point3& p = vertices_[i];
-    bool canonical = true;
-    for (int k = 0; k < 3; ++k) {
-      const Rational& c = p[k];
-      canonical = canonical && sgn(c.get_den()) > 0 && gcd(c.get_num(), c.get_den()) == 1;
-    }
-    if (canonical) return;
+    if (in_lowest_terms(p[0]) && in_lowest_terms(p[1]) && in_lowest_terms(p[2])) return;
     std::array<Rational, 3> c{p.x(), p.y(), p.z()};
     for (Rational& q : c) q.canonicalize();
     p = Point3(c[0], c[1], c[2]);

@@ -4,6 +4,7 @@
 #include "algorithms/hlr/face_occluders.hpp"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -246,6 +247,30 @@ SceneGrid scene_grid(const std::vector<const Polyhedron*>& bodies, std::size_t t
   return grid;
 }
 
+// L / d for the denominators d of one run of coordinates: the last 16, by d's lowest limb and
+// size (an exporter's decimals have a few dozen denominators, 2^a·5^b; one division each).
+class QuotientCache {
+ public:
+  const mpz_class& get(const mpz_class& L, const mpz_class& d) {
+    mpz_srcptr dp = d.get_mpz_t();
+    Slot& s = slot_[(mpz_getlimbn(dp, 0) ^ (mpz_getlimbn(dp, 0) >> 17) ^ mpz_size(dp)) % kSlots];
+    if (!s.used || s.d != d) {
+      s.d = d;
+      mpz_divexact(s.q.get_mpz_t(), L.get_mpz_t(), dp);
+      s.used = true;
+    }
+    return s.q;
+  }
+
+ private:
+  static constexpr std::size_t kSlots = 16;
+  struct Slot {
+    mpz_class d, q;
+    bool used = false;
+  };
+  std::array<Slot, kSlots> slot_;
+};
+
 // Wide: the common denominator L of any size (GMP), then every coordinate (and the eye) scaled
 // on all cores and kept when below 2^Wide::kBits: a vertex on the scene's grid as its small
 // integers times L / G in fixed-width limbs, any other through GMP; the view direction by its
@@ -260,9 +285,10 @@ bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
   if (!fits(L)) return false;
   grid = scene_grid(bodies, total, loop, true);
   const Wide::C K(mpz_class(L / mpz_class(static_cast<unsigned long>(grid.G))).get_mpz_t());  // G divides L
-  // q·L, exact (q's denominator divides L), into `out` when below the bound.
-  auto scaled = [&](const Rational& q, mpz_class& t, Wide::C& out) {
-    mpz_divexact(t.get_mpz_t(), L.get_mpz_t(), q.get_den_mpz_t());
+  // q·L, exact (q's denominator divides L), into `out` when below the bound. L / den from the
+  // last quotients made with that denominator (`cache`: a decimal scene has few of them).
+  auto scaled = [&](const Rational& q, mpz_class& t, Wide::C& out, QuotientCache& cache) {
+    t = cache.get(L, q.get_den());
     t *= q.get_num();
     if (!fits(t)) return false;
     out = Wide::C(t.get_mpz_t());
@@ -278,6 +304,7 @@ bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
     std::vector<char> ok((vs.size() + kChunk - 1) / kChunk, 1);
     loop.for_each(ok.size(), 1, [&](std::size_t c) {
       mpz_class t;
+      QuotientCache cache;
       for (std::size_t i = c * kChunk, e = std::min(vs.size(), i + kChunk); i < e && ok[c]; ++i) {
         const std::size_t at = first + i;
         for (int k = 0; k < 3 && ok[c]; ++k) {
@@ -285,7 +312,7 @@ bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
             pts[at][k] = Wide::C::product(K, Wide::C(static_cast<long>(grid.small[at][k])));
             ok[c] = pts[at][k].bits() <= Wide::kBits;
           } else {
-            ok[c] = scaled(vs[i][k], t, pts[at][k]);
+            ok[c] = scaled(vs[i][k], t, pts[at][k], cache);
           }
         }
       }
@@ -294,9 +321,10 @@ bool scale_wide(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
     first += vs.size();
   }
   mpz_class t;
+  QuotientCache cache;
   if (cam.perspective) {
     for (int k = 0; k < 3; ++k)
-      if (!scaled(cam.eye[k], t, view[k])) return false;
+      if (!scaled(cam.eye[k], t, view[k], cache)) return false;
   } else if (!direction_wide(cam, view)) {
     return false;
   }

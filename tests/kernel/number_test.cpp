@@ -151,3 +151,58 @@ TEST(Number, ToDoubleEqualsTheExactComparisonOnRandomAndTiedValues) {
   EXPECT_EQ(hlr::to_double(tiny), nearest_by_comparison(tiny));
   EXPECT_EQ(hlr::to_double(huge), nearest_by_comparison(huge));
 }
+
+// in_lowest_terms against GMP's gcd on fractions built without canonicalising: decimal
+// denominators 2^a·5^b, an odd part of one limb, long odd parts, numerators sharing factors.
+TEST(Number, InLowestTermsAgreesWithTheGcd) {
+  std::mt19937_64 rng(45);
+  auto big = [&](int limbs) {
+    mpz_class v = 0;
+    for (int i = 0; i < limbs; ++i) v = (v << 64) + mpz_class(std::to_string(rng()));
+    return v;
+  };
+  auto pow = [](unsigned long b, unsigned long e) {
+    mpz_class r;
+    mpz_ui_pow_ui(r.get_mpz_t(), b, e);
+    return r;
+  };
+  int decided = 0, canonical = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    mpz_class den;
+    switch (trial % 5) {
+      case 0:
+        den = pow(2, rng() % 80) * pow(5, rng() % 30);
+        break;
+      case 1:
+        den = pow(2, rng() % 130) * mpz_class(std::to_string(rng() | 1));
+        break;
+      case 2:
+        den = big(1 + static_cast<int>(rng() % 3));
+        break;
+      case 3:
+        den = pow(10, rng() % 25);
+        break;
+      default:
+        den = mpz_class(std::to_string(rng() % 1000 + 1));
+        break;
+    }
+    if (den == 0) den = 1;
+    mpz_class num = big(1 + static_cast<int>(rng() % 2)) >> (rng() % 100);
+    if (rng() % 3 == 0) num *= pow(rng() % 2 ? 5 : 2, rng() % 4);
+    if (rng() % 7 == 0) num *= mpz_class(std::to_string(rng() % 1000 + 1));
+    if (rng() % 11 == 0) num = 0;
+    if (rng() % 2) num = -num;
+    if (trial % 97 == 0) den = -den;  // not canonical: a negative denominator
+    Rational q;
+    mpz_set(q.get_num_mpz_t(), num.get_mpz_t());
+    mpz_set(q.get_den_mpz_t(), den.get_mpz_t());
+    const mpz_class g = gcd(num, den);
+    const bool expected = sgn(den) > 0 && g == 1;
+    ASSERT_EQ(hlr::in_lowest_terms(q), expected) << num << " / " << den;
+    ++decided;
+    canonical += expected;
+  }
+  EXPECT_EQ(decided, 20000);
+  EXPECT_GT(canonical, 3000);
+  EXPECT_LT(canonical, 17000);
+}

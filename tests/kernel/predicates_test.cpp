@@ -98,3 +98,62 @@ TEST(Geometry, FastPrimitivePlaneEqualsTheRationalOne) {
   }
   EXPECT_EQ(checked, 4000);
 }
+
+#include <CGAL/Interval_nt.h>
+#include <CGAL/mpq_class.h>
+
+#include <cstdio>
+
+// bounds_of is CGAL's tightest interval (the doubles next to the value, or the value itself)
+// for numerators and denominators of 54 to 128 bits, where it divides limbs instead of calling
+// MPFR: random fractions, numpy's %.18e decimals, exact doubles with long numerators, values
+// near the ends of the normal range.
+TEST(Geometry, BoundsOfLongFractionsAreCgalsTightInterval) {
+  std::mt19937_64 rng(128);
+  auto bits = [&](int n) {
+    mpz_class v = 0;
+    for (int i = 0; i < n; i += 32) v = (v << 32) + static_cast<unsigned long>(rng() & 0xffffffffu);
+    return mpz_class(v >> ((n + 31) / 32 * 32 - n));
+  };
+  int exact = 0, inexact = 0;
+  for (int trial = 0; trial < 30000; ++trial) {
+    Rational q;
+    char text[64];
+    switch (trial % 4) {
+      case 0:
+        q = Rational(bits(1 + static_cast<int>(rng() % 128)), bits(1 + static_cast<int>(rng() % 128)) + 1);
+        break;
+      case 1: {  // an exporter's 19 significant digits
+        const double v = std::ldexp(static_cast<double>(rng() >> 11), -static_cast<int>(rng() % 70));
+        std::snprintf(text, sizeof text, "%.18e", v);
+        q = parse_rational(text);
+        break;
+      }
+      case 2: {  // a double itself, written as a long numerator over a power of two
+        const mpz_class m = bits(1 + static_cast<int>(rng() % 53)) << static_cast<int>(rng() % 70);
+        mpz_class d = 1;
+        d <<= static_cast<int>(rng() % 127);
+        q = Rational(m, d);
+        break;
+      }
+      default: {  // near the ends of the normal range
+        mpz_class d = 1;
+        d <<= 1000 + static_cast<int>(rng() % 40);
+        q = rng() % 2 ? Rational(bits(100), d) : Rational(bits(100) << 900, mpz_class(bits(60) + 1));
+        break;
+      }
+    }
+    q.canonicalize();
+    if (rng() % 2) q = -q;
+    if (mpz_sizeinbase(q.get_num_mpz_t(), 2) <= 53 && mpz_sizeinbase(q.get_den_mpz_t(), 2) <= 53) continue;  // the 2-ulp path
+    const Bounds b = bounds_of(q);
+    const std::pair<double, double> c = CGAL::to_interval(q);
+    ASSERT_EQ(b.lo, c.first) << q;
+    ASSERT_EQ(b.hi, c.second) << q;
+    ASSERT_LE(Rational(b.lo), q);
+    ASSERT_GE(Rational(b.hi), q);
+    (b.lo == b.hi ? exact : inexact) += 1;
+  }
+  EXPECT_GT(exact, 2000);
+  EXPECT_GT(inexact, 10000);
+}
