@@ -5,7 +5,8 @@
 // along pq). The kept segments are found in a grid of cells a few tolerances wide and of
 // direction classes: a segment looks only at the kept segments in the cells near it whose
 // direction lies within the angle of its own, so a drawing denser than the pen costs about the
-// same per segment as a sparse one.
+// same per segment as a sparse one. A stroke's segments read only what the strokes before it
+// kept, so a long stroke (a mesh's chained path) is looked at on all cores.
 #include "algorithms/plot/coincident_lines.hpp"
 
 #include <algorithm>
@@ -15,6 +16,8 @@
 #include <limits>
 #include <stdexcept>
 #include <utility>
+
+#include "algorithms/support/parallel.hpp"
 
 namespace hlr {
 namespace {
@@ -196,41 +199,34 @@ class Merge {
  public:
   // The reach: a margin of half the tolerance over it for the covers' rounding (and 1e-12 of the
   // drawing's size, for a tolerance far below it).
-  Merge(const std::array<double, 4>& box, std::size_t segments, double tol)
+  Merge(const std::array<double, 4>& box, std::size_t segments, double tol, const ParallelLoop& loop)
       : tol_(tol),
         reach_(1.5 * tol + 1e-12 * std::max({std::fabs(box[0]), std::fabs(box[1]), std::fabs(box[2]), std::fabs(box[3])})),
-        grid_(box, 2 * reach_, segments) {}
+        grid_(box, 2 * reach_, segments),
+        looked_(loop),
+        look_(loop, 0) {}
 
-  // The strokes s leaves drawn, s itself when nothing covers it.
-  std::vector<Stroke> stroke(Stroke&& s) {
+  // The strokes s leaves drawn, s itself when nothing covers it. Its segments' covers read only
+  // what strokes before it kept, so a long stroke's segments are looked at on all cores (each
+  // writes its own covers; the same result on any number of them).
+  std::vector<Stroke> stroke(Stroke&& s, const ParallelLoop& loop) {
     const std::size_t n = segment_count(s);
     std::vector<std::vector<std::pair<double, double>>> covers(n);
+    auto look = [&](unsigned w, std::size_t begin, std::size_t end) {
+      std::vector<std::uint32_t>& looked = looked_[w];
+      if (looked.size() < kept_.size()) looked.resize(kept_.size(), 0);
+      for (std::size_t i = begin; i < end; ++i) covers[i] = covers_of(segment(s, i), looked, ++look_[w]);
+    };
+    if (n >= kParallelSegments) loop.run(n, kParallelSegments / 4, look);
+    else look(0, 0, n);
     bool touched = false;
-    for (std::size_t i = 0; i < n; ++i) {
-      const Seg g = segment(s, i);
-      const std::array<double, 4> near{std::min(g.a[0], g.b[0]) - reach_, std::min(g.a[1], g.b[1]) - reach_, std::max(g.a[0], g.b[0]) + reach_,
-                                       std::max(g.a[1], g.b[1]) + reach_};
-      ++look_;
-      grid_.visit(g, reach_, [&](std::uint32_t k) {
-        const Seg& e = kept_[k];
-        // A cover needs a point of g within the tolerance of e: their boxes meet, padded.
-        if (std::max(e.a[0], e.b[0]) < near[0] || std::min(e.a[0], e.b[0]) > near[2] || std::max(e.a[1], e.b[1]) < near[1] ||
-            std::min(e.a[1], e.b[1]) > near[3] || looked_[k] == look_)
-          return;
-        looked_[k] = look_;
-        auto c = covered(g.a, g.b, e, tol_);
-        if (c.second > c.first) covers[i].push_back(c);
-      });
-      if (!covers[i].empty()) covers[i] = runs_of(covers[i], length(g.a, g.b), tol_);
-      touched = touched || !covers[i].empty();
-    }
+    for (std::size_t i = 0; i < n && !touched; ++i) touched = !covers[i].empty();
     std::vector<Stroke> out;
     if (!touched) out.push_back(std::move(s));
     else out = split(s, covers);
     for (const Stroke& o : out)  // what is drawn is kept for the strokes after it
       for (std::size_t i = 0; i < segment_count(o); ++i) {
         kept_.push_back(segment(o, i));
-        looked_.push_back(0);
         grid_.add(kept_.back(), static_cast<std::uint32_t>(kept_.size() - 1));
       }
     return out;
@@ -238,6 +234,28 @@ class Merge {
   const CoincidentStats& stats() const { return st_; }
 
  private:
+  static constexpr std::size_t kParallelSegments = 2048;  // a stroke this long is looked at on all cores
+
+  // The covered runs of g by the kept segments; `looked` and `stamp`: the looking worker's marks
+  // of the kept segments this look has tried.
+  std::vector<std::pair<double, double>> covers_of(const Seg& g, std::vector<std::uint32_t>& looked, std::uint32_t stamp) const {
+    const std::array<double, 4> near{std::min(g.a[0], g.b[0]) - reach_, std::min(g.a[1], g.b[1]) - reach_, std::max(g.a[0], g.b[0]) + reach_,
+                                     std::max(g.a[1], g.b[1]) + reach_};
+    std::vector<std::pair<double, double>> covers;
+    grid_.visit(g, reach_, [&](std::uint32_t k) {
+      const Seg& e = kept_[k];
+      // A cover needs a point of g within the tolerance of e: their boxes meet, padded.
+      if (std::max(e.a[0], e.b[0]) < near[0] || std::min(e.a[0], e.b[0]) > near[2] || std::max(e.a[1], e.b[1]) < near[1] ||
+          std::min(e.a[1], e.b[1]) > near[3] || looked[k] == stamp)
+        return;
+      looked[k] = stamp;
+      auto c = covered(g.a, g.b, e, tol_);
+      if (c.second > c.first) covers.push_back(c);
+    });
+    if (!covers.empty()) covers = runs_of(covers, length(g.a, g.b), tol_);
+    return covers;
+  }
+
   // The parts of s outside the covered runs, as strokes; parts shorter than the tolerance go.
   std::vector<Stroke> split(const Stroke& s, const std::vector<std::vector<std::pair<double, double>>>& covers) {
     std::vector<Stroke> out;
@@ -279,8 +297,8 @@ class Merge {
   double tol_, reach_;
   KeptGrid grid_;
   std::vector<Seg> kept_;
-  std::vector<std::uint32_t> looked_;  // per kept segment: the last look that covered with it
-  std::uint32_t look_ = 0;
+  PerWorker<std::vector<std::uint32_t>> looked_;  // per worker, per kept segment: the last look that tried it
+  PerWorker<std::uint32_t> look_;                 // per worker: its looks so far
   CoincidentStats st_;
 };
 
@@ -300,11 +318,12 @@ CoincidentStats merge_coincident_lines(Plot& plot, double tol) {
       for (const Point2& p : s.points) box = {std::min(box[0], p[0]), std::min(box[1], p[1]), std::max(box[2], p[0]), std::max(box[3], p[1])};
     }
   if (!(box[0] <= box[2] && box[1] <= box[3])) box = {0, 0, 0, 0};
-  Merge merge(box, segments, tol);
+  const ParallelLoop loop;
+  Merge merge(box, segments, tol, loop);
   for (std::size_t li : order) {
     std::vector<Stroke> out;
     for (Stroke& s : plot.layers[li].strokes)
-      for (Stroke& o : merge.stroke(std::move(s))) out.push_back(std::move(o));
+      for (Stroke& o : merge.stroke(std::move(s), loop)) out.push_back(std::move(o));
     plot.layers[li].strokes = std::move(out);
   }
   std::vector<PlotLayer> layers;

@@ -13,6 +13,8 @@
 #include <cmath>
 #include <random>
 
+#include "algorithms/support/parallel.hpp"
+
 namespace hlr {
 namespace {
 
@@ -281,6 +283,46 @@ TEST(CoincidentLines, ParallelNeighboursOfALongLineAndAHalfTurn) {
     EXPECT_NEAR(std::fabs(e[end == 1 ? 1 : 0][1]), tol, 1e-12);
   }
   EXPECT_EQ(p.layers[0].strokes[3].points, l.strokes[3].points);
+}
+
+// Strokes of thousands of segments (a mesh's chained paths) are looked at on all cores: a
+// random walk, the same walk retraced beside it within the tolerance (reversed, with noise)
+// and a closed one through both, against the oracle and against one thread.
+TEST(CoincidentLines, LongStrokesOnAllCoresAsTheOracle) {
+  std::size_t removed = 0;
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const double tol = 0.01;
+    std::vector<Point2> walk{{0, 0}};
+    double angle = 0;
+    for (int i = 0; i < 5000; ++i) {
+      angle += 0.3 * u(rng);
+      const double step = tol * (1.5 + u(rng));
+      walk.push_back({walk.back()[0] + step * std::cos(angle), walk.back()[1] + step * std::sin(angle)});
+    }
+    std::vector<Point2> beside(walk.rbegin(), walk.rend());
+    for (Point2& q : beside) q = {q[0] + 0.4 * tol * u(rng), q[1] + 0.4 * tol * u(rng)};
+    std::vector<Point2> loop;
+    for (std::size_t i = 0; i < walk.size(); i += 2) loop.push_back({walk[i][0] + 0.2 * tol, walk[i][1] - 0.1 * tol});
+    Plot p;
+    PlotLayer l;
+    l.strokes = {Stroke{walk, false}, Stroke{beside, false}, Stroke{loop, true}};
+    p.layers.push_back(l);
+    Plot want = p, one = p;
+    const CoincidentStats got = merge_coincident_lines(p, tol);
+    const CoincidentStats expected = oracle_merge(want, tol);
+    expect_same(p, want, "long strokes, seed " + std::to_string(seed));
+    EXPECT_EQ(got.pieces_removed, expected.pieces_removed);
+    {
+      const ThreadLimit single(1);
+      merge_coincident_lines(one, tol);
+    }
+    expect_same(p, one, "one thread, seed " + std::to_string(seed));
+    removed += expected.pieces_removed;
+    if (HasFatalFailure()) return;
+  }
+  EXPECT_GT(removed, 300u);
 }
 
 }  // namespace
