@@ -183,6 +183,9 @@ struct Segment {
     own_.reset();
     base_ = vertices.data();
   }
+  /// The vertices the ends are borrowed from (from() is borrowed()[v0]), or nullptr when the
+  /// segment owns its ends.
+  const Point3* borrowed() const { return own_ ? nullptr : base_; }
 
  private:
   std::unique_ptr<const std::array<Point3, 2>> own_;

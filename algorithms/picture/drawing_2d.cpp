@@ -80,11 +80,67 @@ void close_gaps(const std::vector<std::size_t>& at, const std::vector<std::size_
 
 }  // namespace
 
+namespace {
+
+// The points the segments end at, each borrowed vertex once: per worker, the vertex arrays the
+// ends are borrowed from with a mark per vertex used, and the owned ends; then the marked
+// vertices in the order of their arrays. A vertex ends about six edges of a mesh, and reading
+// the vertices in order is a pass through memory instead of two scattered reads per segment.
+std::vector<const Point3*> segment_ends(const std::vector<Segment>& segs) {
+  struct Ends {
+    std::vector<std::pair<const Point3*, std::vector<char>>> bases;  // an array and its marks
+    std::vector<const Point3*> own;
+  };
+  const ParallelLoop loop;
+  PerWorker<Ends> part(loop);
+  loop.run(segs.size(), 65536, [&](unsigned w, std::size_t b, std::size_t e) {
+    Ends& ends = part[w];
+    std::size_t last = 0;  // the array of the segment before (nearly always the same)
+    for (std::size_t i = b; i < e; ++i) {
+      const Segment& s = segs[i];
+      const Point3* base = s.borrowed();
+      if (!base) {
+        ends.own.push_back(&s.from());
+        ends.own.push_back(&s.to());
+        continue;
+      }
+      if (last >= ends.bases.size() || ends.bases[last].first != base) {
+        last = 0;
+        while (last < ends.bases.size() && ends.bases[last].first != base) ++last;
+        if (last == ends.bases.size()) ends.bases.emplace_back(base, std::vector<char>());
+      }
+      std::vector<char>& mark = ends.bases[last].second;
+      const auto top = static_cast<std::size_t>(std::max(s.v0, s.v1));
+      if (mark.size() <= top) mark.resize(std::max(top + 1, 2 * mark.size()), 0);
+      mark[static_cast<std::size_t>(s.v0)] = mark[static_cast<std::size_t>(s.v1)] = 1;
+    }
+  });
+  std::vector<std::pair<const Point3*, std::vector<char>>> bases;  // every worker's marks joined
+  std::vector<const Point3*> pts;
+  for (unsigned w = 0; w < part.size(); ++w) {
+    pts.insert(pts.end(), part[w].own.begin(), part[w].own.end());
+    for (auto& [base, mark] : part[w].bases) {
+      auto it = std::find_if(bases.begin(), bases.end(), [&](const auto& x) { return x.first == base; });
+      if (it == bases.end()) {
+        bases.emplace_back(base, std::move(mark));
+        continue;
+      }
+      if (it->second.size() < mark.size()) it->second.resize(mark.size(), 0);
+      for (std::size_t v = 0; v < mark.size(); ++v) it->second[v] |= mark[v];
+    }
+  }
+  for (const auto& [base, mark] : bases)
+    for (std::size_t v = 0; v < mark.size(); ++v)
+      if (mark[v]) pts.push_back(base + v);
+  return pts;
+}
+
+}  // namespace
+
 Projector drawing_projector(const LineDrawing& r, const Camera& camera) {
-  const auto& segs = r.segments;
-  return Projector(camera, drawing_frame(2 * segs.size(), [&](std::size_t i) -> const Point3& {
-                     return i % 2 ? segs[i / 2].to() : segs[i / 2].from();
-                   }));
+  // The hull of the segments' ends (drawing_frame's minima and maxima: the same in any order).
+  const std::vector<const Point3*> pts = segment_ends(r.segments);
+  return Projector(camera, drawing_frame(pts.size(), [&](std::size_t i) -> const Point3& { return *pts[i]; }));
 }
 
 Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Project2DOptions& opt) {

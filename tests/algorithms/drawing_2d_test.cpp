@@ -134,3 +134,43 @@ TEST(ProjectDrawing, PerspectivePiecesNearerThanTheNearDepthLeaveNoGap) {
     expect_same(project_drawing(d, cam), want, d);
   }
 }
+
+// The drawing's frame comes from the segments' ends, each borrowed vertex once: on a scene far
+// from the origin (so the frame is not the identity) with segments of two bodies' vertex
+// arrays, owned ends and vertices no segment uses, it is the frame of every end read in turn.
+TEST(ProjectDrawing, FrameOfBorrowedAndOwnedEndsIsTheFrameOfEveryEnd) {
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> coord(-1000, 1000);
+  const Rational far = Rational(mpz_class(1) << 120);
+  auto point = [&] { return Point3(far + coord(rng), Rational(coord(rng), 7), far * 3 + Rational(coord(rng), 1000)); };
+  std::vector<Point3> a(5000), b(300);
+  for (Point3& p : a) p = point();
+  for (Point3& p : b) p = point();
+  a[4999] = Point3(far * 2, Rational(0), Rational(0));  // used by no segment: outside the ends' hull
+  LineDrawing d;
+  for (int i = 0; i < 200000; ++i) {
+    Segment s;
+    if (i % 17 == 0) {
+      s.set_ends(point(), point());
+    } else {
+      const std::vector<Point3>& v = i % 5 == 0 ? b : a;
+      const int n = static_cast<int>(v.size()) - (&v == &a ? 1 : 0);
+      s.v0 = static_cast<int>(rng() % static_cast<unsigned>(n));
+      s.v1 = static_cast<int>(rng() % static_cast<unsigned>(n));
+      s.borrow_ends(v);
+    }
+    d.segments.push_back(std::move(s));
+  }
+  const Camera cam = make_orthographic(Vector3(Rational(1), Rational(2), Rational(3)));
+  const auto& segs = d.segments;
+  const DrawingFrame want =
+      drawing_frame(2 * segs.size(), [&](std::size_t i) -> const Point3& { return i % 2 ? segs[i / 2].to() : segs[i / 2].from(); });
+  ASSERT_FALSE(want.identity);
+  for (unsigned threads : {1u, 2u}) {
+    const ThreadLimit limit(threads);
+    const DrawingFrame got = drawing_projector(d, cam).frame();
+    EXPECT_EQ(got.identity, want.identity);
+    EXPECT_EQ(got.centre, want.centre);
+    EXPECT_EQ(got.scale, want.scale);
+  }
+}
