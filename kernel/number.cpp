@@ -214,6 +214,11 @@ Rational parse_rational(std::string_view text) {
   return q;
 }
 
+void parse_rational_into(std::string_view text, Rational& out) {
+  std::string why = parse_impl(text, out);
+  if (!why.empty()) throw NumberError(std::string(text.substr(0, 64)), why);
+}
+
 bool try_parse_rational(std::string_view text, Rational& out) {
   Rational q;
   if (!parse_impl(text, q).empty()) return false;

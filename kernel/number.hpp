@@ -47,6 +47,9 @@ bool in_lowest_terms(const Rational& q);
 /// NumberError naming the token.
 Rational parse_rational(std::string_view text);
 
+/// The same into an existing number (its storage reused; on an error it is left unspecified).
+void parse_rational_into(std::string_view text, Rational& out);
+
 /// Non-throwing variant: returns false (and leaves `out` untouched) on bad text.
 bool try_parse_rational(std::string_view text, Rational& out);
 

@@ -37,8 +37,11 @@ Header read_header(TokenStream& ts) {
 }
 
 void read_vertex(TokenStream& ts, Point3& out) {
-  Rational x = ts.number("vertex x"), y = ts.number("vertex y"), z = ts.number("vertex z");
-  out = Point3(std::move(x), std::move(y), std::move(z));
+  out.fill([&](Rational& x, Rational& y, Rational& z) {
+    ts.number_into("vertex x", x);
+    ts.number_into("vertex y", y);
+    ts.number_into("vertex z", z);
+  });
   ts.skip_rest_of_line();
 }
 

@@ -150,6 +150,15 @@ Rational TokenStream::number(const char* what) {
   }
 }
 
+void TokenStream::number_into(const char* what, Rational& out) {
+  std::string_view t = expect(what);
+  try {
+    parse_rational_into(t, out);
+  } catch (const NumberError& e) {
+    fail(std::string(what) + ": " + e.what());
+  }
+}
+
 long TokenStream::integer(const char* what, long lo, long hi) {
   std::string_view t = expect(what);
   std::size_t i = 0;

@@ -31,6 +31,8 @@ class TokenStream {
   std::string_view expect(const char* what);
   /// Next token as an exact number, or an error naming the token.
   Rational number(const char* what);
+  /// The same into an existing number (its storage reused).
+  void number_into(const char* what, Rational& out);
   /// Next token as an integer in [lo, hi], or an error.
   long integer(const char* what, long lo, long hi);
   /// Skips what is left of the current token's line.

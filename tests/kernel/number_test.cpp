@@ -206,3 +206,21 @@ TEST(Number, InLowestTermsAgreesWithTheGcd) {
   EXPECT_GT(canonical, 3000);
   EXPECT_LT(canonical, 17000);
 }
+
+// Parsing into an existing number (a reader's vertex storage) gives what parsing anew gives,
+// whatever the number held before, and refuses what parse_rational refuses.
+TEST(Number, ParseIntoAnExistingNumberIsParseAnew) {
+  const char* texts[] = {"0", "-0.0", "12", "-3/7", "6/8", "1e-3", "2.5E+2", "-8.506508000000000402e-01", "6.123233995736766e-17",
+                         "123456789012345678901234567890", "1e400", ".5", "5."};
+  const Rational before[] = {Rational(0), hlr::rational(-22, 7), Rational(mpz_class("98765432109876543210987654321") << 300), hlr::rational(1, 1024)};
+  for (const char* t : texts)
+    for (const Rational& b : before) {
+      Rational q = b;
+      hlr::parse_rational_into(t, q);
+      EXPECT_EQ(q, parse_rational(t)) << t;
+      EXPECT_EQ(hlr::to_string(q), hlr::to_string(parse_rational(t))) << t;  // lowest terms, the same text
+    }
+  Rational q = 5;
+  EXPECT_THROW(hlr::parse_rational_into("nan", q), hlr::NumberError);
+  EXPECT_THROW(hlr::parse_rational_into("1/0", q), hlr::NumberError);
+}
