@@ -1,10 +1,10 @@
 // Exact numbers from text (kernel/number.hpp).
+#include "kernel/number.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
-
-#include "kernel/number.hpp"
 
 using hlr::parse_rational;
 using hlr::Rational;
@@ -74,8 +74,8 @@ TEST(Number, ExportersDecimalsAreExact) {
 }
 
 TEST(Number, BadTokensNameTheToken) {
-  for (const char* bad : {"nan", "NaN", "-inf", "inf", "Infinity", "abc", "1/0", "1/-2", "--1", "", "1.2.3",
-                          "0x10", "1e", "1e999999", "1e4001", "3/", "/3", "1 2", "e5", "."}) {
+  for (const char* bad : {"nan",   "NaN",  "-inf", "inf",      "Infinity", "abc", "1/0", "1/-2", "--1", "",
+                          "1.2.3", "0x10", "1e",   "1e999999", "1e4001",   "3/",  "/3",  "1 2",  "e5",  "."}) {
     try {
       parse_rational(bad);
       ADD_FAILURE() << "accepted '" << bad << "'";
@@ -210,8 +210,9 @@ TEST(Number, InLowestTermsAgreesWithTheGcd) {
 // Parsing into an existing number (a reader's vertex storage) gives what parsing anew gives,
 // whatever the number held before, and refuses what parse_rational refuses.
 TEST(Number, ParseIntoAnExistingNumberIsParseAnew) {
-  const char* texts[] = {"0", "-0.0", "12", "-3/7", "6/8", "1e-3", "2.5E+2", "-8.506508000000000402e-01", "6.123233995736766e-17",
-                         "123456789012345678901234567890", "1e400", ".5", "5."};
+  const char* texts[] = {
+      "0",     "-0.0", "12", "-3/7", "6/8", "1e-3", "2.5E+2", "-8.506508000000000402e-01", "6.123233995736766e-17", "123456789012345678901234567890",
+      "1e400", ".5",   "5."};
   const Rational before[] = {Rational(0), hlr::rational(-22, 7), Rational(mpz_class("98765432109876543210987654321") << 300), hlr::rational(1, 1024)};
   for (const char* t : texts)
     for (const Rational& b : before) {
