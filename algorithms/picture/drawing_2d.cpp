@@ -119,7 +119,9 @@ std::vector<const Point3*> segment_ends(const std::vector<Segment>& segs) {
   std::vector<const Point3*> pts;
   for (unsigned w = 0; w < part.size(); ++w) {
     pts.insert(pts.end(), part[w].own.begin(), part[w].own.end());
-    for (auto& [base, mark] : part[w].bases) {
+    for (auto& entry : part[w].bases) {
+      const Point3* base = entry.first;
+      std::vector<char>& mark = entry.second;
       auto it = std::find_if(bases.begin(), bases.end(), [&](const auto& x) { return x.first == base; });
       if (it == bases.end()) {
         bases.emplace_back(base, std::move(mark));
