@@ -87,7 +87,10 @@ class WideInt {
     const int n = std::abs(size_);
     if (n == 0) return 0;
     const double top = n == 1 ? static_cast<double>(limb_[0]) : static_cast<double>((static_cast<UInt128>(limb_[n - 1]) << 64) | limb_[n - 2]);
-    const double r = n > 2 ? std::ldexp(top, 64 * (n - 2)) : top;
+    // (times 2^(64 (n - 2)): exact, a power of two, as ldexp; 2^960 the last below the range)
+    static constexpr double kScale[] = {1.0,     0x1p64,  0x1p128, 0x1p192, 0x1p256, 0x1p320, 0x1p384, 0x1p448,
+                                        0x1p512, 0x1p576, 0x1p640, 0x1p704, 0x1p768, 0x1p832, 0x1p896, 0x1p960};
+    const double r = n <= 2 ? top : n - 2 < 16 ? top * kScale[n - 2] : std::ldexp(top, 64 * (n - 2));
     return size_ < 0 ? -r : r;
   }
 
@@ -191,13 +194,13 @@ class WideInt {
     if ((as < 0) == (bs < 0)) {
       if (an < bn) std::swap(a, b), std::swap(an, bn), std::swap(as, bs);
       if (an < N) {  // room for the carry
-        limb_[an] = mpn_add(limb_, a, an, b, bn);
+        limb_[an] = add_limbs(limb_, a, an, b, bn);
         const int n = an + (limb_[an] != 0);
         size_ = as < 0 ? -n : n;
         return;
       }
       mp_limb_t t[N + 1];
-      t[an] = mpn_add(t, a, an, b, bn);
+      t[an] = add_limbs(t, a, an, b, bn);
       const int n = an + (t[an] != 0);
       check(n);
       std::memcpy(limb_, t, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
@@ -210,10 +213,39 @@ class WideInt {
       return;
     }
     if (c < 0) std::swap(a, b), std::swap(an, bn), std::swap(as, bs);
-    mpn_sub(limb_, a, an, b, bn);
+    sub_limbs(limb_, a, an, b, bn);
     int n = an;
     while (n > 0 && limb_[n - 1] == 0) --n;
     size_ = as < 0 ? -n : n;
+  }
+  // r = a + b (an >= bn >= 1), returning the carry out; r may be a or b. Up to 5 limbs in
+  // line (mpn's call and dispatch cost more than the work at these sizes); beyond, mpn_add.
+  static mp_limb_t add_limbs(mp_limb_t* r, const mp_limb_t* a, int an, const mp_limb_t* b, int bn) {
+    if (an > 5) return mpn_add(r, a, an, b, bn);
+    bool carry = false;
+    int i = 0;
+    for (; i < bn; ++i) {
+      mp_limb_t t;
+      const bool c1 = __builtin_add_overflow(a[i], b[i], &t);
+      carry = c1 | __builtin_add_overflow(t, static_cast<mp_limb_t>(carry), &r[i]);
+    }
+    for (; i < an; ++i) carry = __builtin_add_overflow(a[i], static_cast<mp_limb_t>(carry), &r[i]);
+    return carry;
+  }
+  // r = a - b for |a| > |b| (an >= bn >= 1, no borrow out); r may be a or b. As add_limbs.
+  static void sub_limbs(mp_limb_t* r, const mp_limb_t* a, int an, const mp_limb_t* b, int bn) {
+    if (an > 5) {
+      mpn_sub(r, a, an, b, bn);
+      return;
+    }
+    bool borrow = false;
+    int i = 0;
+    for (; i < bn; ++i) {
+      mp_limb_t t;
+      const bool b1 = __builtin_sub_overflow(a[i], b[i], &t);
+      borrow = b1 | __builtin_sub_overflow(t, static_cast<mp_limb_t>(borrow), &r[i]);
+    }
+    for (; i < an; ++i) borrow = __builtin_sub_overflow(a[i], static_cast<mp_limb_t>(borrow), &r[i]);
   }
   void set(const mp_limb_t* p, int s) {
     const int n = std::abs(s);

@@ -11,9 +11,11 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -107,28 +109,41 @@ typename P::C from128(Int128 v) {
 /// One body's face normals. Compact (the multi-limb path with a grid): a normal below 2^126
 /// in magnitude (a face on the grid) as three 128-bit integers, any other in a second array
 /// that its first integer's mark points into; a third of the memory of five-limb numbers.
+/// Lazy (the multi-limb path without a grid, a body of triangles only): the normal's doubles
+/// and whether it was turned; the exact normal is made again from the face's triangle when a
+/// test needs it (Engine::face_normal), a sixth of the memory of five-limb numbers.
 /// Otherwise every normal in the policy's own numbers.
 template <class P>
 class FaceNormals {
  public:
-  void reset(std::size_t faces, bool compact) {
-    compact_ = compact;
+  enum class Store { Full, Compact, Lazy };
+  void reset(std::size_t faces, Store store) {
+    store_ = store;
     full_.clear();
     small_.clear();
     wide_.clear();
-    if (compact) small_.resize(faces);
+    approx_.clear();
+    turned_.clear();
+    if (store == Store::Compact) small_.resize(faces);
+    else if (store == Store::Lazy) approx_.resize(faces), turned_.resize(faces, 0);
     else full_.resize(faces);
   }
-  std::size_t size() const { return compact_ ? small_.size() : full_.size(); }
+  std::size_t size() const { return store_ == Store::Compact ? small_.size() : store_ == Store::Lazy ? approx_.size() : full_.size(); }
+  bool lazy() const { return store_ == Store::Lazy; }
+  /// Lazy: whether face f's normal was turned (negate) since it was put.
+  bool turned(std::size_t f) const { return turned_[f] != 0; }
+  /// Not for a lazy store (Engine::face_normal makes its normals).
   Vec<P> get(std::size_t f) const {
-    if (!compact_) return full_[f];
+    if (store_ == Store::Lazy) throw std::logic_error("FaceNormals: a lazy store keeps no exact normal");
+    if (store_ == Store::Full) return full_[f];
     const std::array<Int128, 3>& s = small_[f];
     if (s[0] == kMark) return wide_[static_cast<std::size_t>(s[1])];
     return {from128<P>(s[0]), from128<P>(s[1]), from128<P>(s[2])};
   }
   /// Doubles of the normal, each within 2^-52 of the exact value (relative). Not for Big.
   std::array<double, 3> approx(std::size_t f) const {
-    if (compact_) {
+    if (store_ == Store::Lazy) return approx_[f];
+    if (store_ == Store::Compact) {
       const std::array<Int128, 3>& s = small_[f];
       if (s[0] != kMark) return {static_cast<double>(s[0]), static_cast<double>(s[1]), static_cast<double>(s[2])};
       return doubles(wide_[static_cast<std::size_t>(s[1])]);
@@ -137,11 +152,11 @@ class FaceNormals {
   }
   /// On all cores for distinct faces. False when compact and n does not fit (then put_wide).
   bool put(std::size_t f, Vec<P> n) {
-    if (!compact_) {
+    if (store_ == Store::Full) {
       full_[f] = std::move(n);
-      return true;
-    }
-    if constexpr (std::is_same_v<P, Wide>) {
+    } else if (store_ == Store::Lazy) {
+      approx_[f] = doubles(n);
+    } else if constexpr (std::is_same_v<P, Wide>) {
       for (int k = 0; k < 3; ++k)
         if (n[k].bits() > 126) return false;
       for (int k = 0; k < 3; ++k) small_[f][k] = n[k].to_int128();
@@ -154,8 +169,11 @@ class FaceNormals {
     wide_.push_back(std::move(n));
   }
   void negate(std::size_t f) {
-    if (!compact_) {
+    if (store_ == Store::Full) {
       full_[f] = neg<P>(full_[f]);
+    } else if (store_ == Store::Lazy) {
+      for (double& v : approx_[f]) v = -v;
+      turned_[f] ^= 1;
     } else if (small_[f][0] == kMark) {
       Vec<P>& w = wide_[static_cast<std::size_t>(small_[f][1])];
       w = neg<P>(w);
@@ -167,10 +185,12 @@ class FaceNormals {
  private:
   static std::array<double, 3> doubles(const Vec<P>& n) { return {P::cdbl(n[0]), P::cdbl(n[1]), P::cdbl(n[2])}; }
   static constexpr Int128 kMark = -(Int128(1) << 126) - 1;  // below every kept value
-  bool compact_ = false;
+  Store store_ = Store::Full;
   std::vector<Vec<P>> full_;
   std::vector<std::array<Int128, 3>> small_;
   std::vector<Vec<P>> wide_;
+  std::vector<std::array<double, 3>> approx_;
+  std::vector<std::uint8_t> turned_;
 };
 
 /// The engine's work that no view changes (FaceRouteShare): filled by the first view, read by
@@ -255,6 +275,8 @@ class Engine {
   // face_engine_bodies.cpp
   void offsets();
   Vec<P> normal(const Tri& t) const;
+  Vec<P> face_normal(int b, int f) const;
+  int facing_of(int b, int f, const std::vector<int>& at) const;
   bool on_grid(const Tri& t) const;
   int volume_filter(const std::vector<int>& ids) const;
   void prepare_body(int b);

@@ -261,19 +261,30 @@ int Engine<P>::triangulate_body(int b) {
   std::vector<int>& facing_at = prep_->facing_at[b];
   facing_at.assign(faces.size(), -1);
   degenerate_[b].assign(faces.size(), 0);
+  const ParallelLoop loop(opt_.threads);
+  PerWorker<char> polygon(loop, 0);  // some face is not a triangle
+  loop.run(faces.size(), 16384, [&](unsigned w, std::size_t b0, std::size_t e) {
+    bool any = false;
+    for (std::size_t f = b0; f < e; ++f) any = any || faces[f].size() != 3;
+    if (any) polygon[w] = 1;
+  });
+  bool triangles = true;
+  for (unsigned w = 0; w < polygon.size(); ++w) triangles = triangles && !polygon[w];
   // Wide with a grid over most vertices (a face off it in about three in eight at most): the
-  // normals kept compact (FaceNormals).
+  // normals kept compact; else, for a body of triangles, only their doubles (FaceNormals).
   std::size_t on = 0;
   const std::size_t nv = p.num_vertices();
   if (std::is_same_v<P, Wide> && !prep_->on_grid.empty())
     for (std::size_t i = 0; i < nv; ++i) on += prep_->on_grid[static_cast<std::size_t>(vo) + i] != 0;
-  face_normal_[b].reset(faces.size(), std::is_same_v<P, Wide> && on > 0 && on * 8 >= nv * 7);
+  using Store = typename FaceNormals<P>::Store;
+  const Store store = !std::is_same_v<P, Wide> ? Store::Full : on > 0 && on * 8 >= nv * 7 ? Store::Compact : triangles ? Store::Lazy : Store::Full;
+  face_normal_[b].reset(faces.size(), store);
   const int first_tri = static_cast<int>(tris_.size());
   // Triangles' normals on all cores (integer arithmetic on the shared coordinates; each face
   // writes its own slots; a compact store's few long normals after), then the triangles
   // listed in face order.
   std::vector<char> long_normal(faces.size(), 0);
-  ParallelLoop(opt_.threads).for_each(faces.size(), 4096, [&](std::size_t f) {
+  loop.for_each(faces.size(), 4096, [&](std::size_t f) {
     const Face& face = faces[f];
     if (face.size() != 3) return;  // after the triangulation below
     Tri probe{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}};
@@ -290,15 +301,6 @@ int Engine<P>::triangulate_body(int b) {
       const Face& face = faces[f];
       face_normal_[b].put_wide(f, normal(Tri{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}}));
     }
-  const ParallelLoop loop(opt_.threads);
-  PerWorker<char> polygon(loop, 0);  // some face is not a triangle
-  loop.run(faces.size(), 16384, [&](unsigned w, std::size_t b0, std::size_t e) {
-    bool any = false;
-    for (std::size_t f = b0; f < e; ++f) any = any || faces[f].size() != 3;
-    if (any) polygon[w] = 1;
-  });
-  bool triangles = true;
-  for (unsigned w = 0; w < polygon.size(); ++w) triangles = triangles && !polygon[w];
   if (triangles) {
     // Only triangles (most large meshes): listed on all cores, each chunk of faces after the
     // ones before it (the order of the loop below).
@@ -406,13 +408,15 @@ int Engine<P>::volume_sign(const std::vector<int>& ids) const {
 }
 
 // The same sign from doubles of the input's rational vertices (the scaled ones are a positive
-// multiple), 0 when the bound does not decide it. Each coordinate is within 2u of its double
-// (u = 2^-53; mpq_get_d truncates), each term x0 (y1 z2 - z1 y2) + ... takes 9 more roundings
+// multiple), 0 when the bound does not decide it. Each coordinate's double is the end of its
+// tight bounds toward 0 (Point3::approx: the neighbouring doubles at worst), within one ulp,
+// so within 2u of it (u = 2^-53); each term x0 (y1 z2 - z1 y2) + ... takes 9 more roundings
 // and the sum of N terms on W workers N + W more: with k = N + W + 64 every monomial carries a
 // factor (1 + t), |t| <= gamma_k = k u / (1 - k u), so the computed sum is within gamma_k M
 // of the exact one, M the sum of the monomials' absolute values, itself computed within the
 // same factor; 4 k u M-hat covers both for k u <= 1/4. Coordinates beyond [2^-250, 2^250]
-// (a product could leave the normal doubles) are left to the exact sum.
+// (a product could leave the normal doubles), and non-zero ones whose bounds reach 0, are
+// left to the exact sum.
 template <class P>
 int Engine<P>::volume_filter(const std::vector<int>& ids) const {
   if (ids.empty()) return 0;
@@ -425,9 +429,10 @@ int Engine<P>::volume_filter(const std::vector<int>& ids) const {
   loop.run(vs.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
       for (int k = 0; k < 3; ++k) {
-        const double x = vs[i][k].get_d(), a = std::fabs(x);
+        const Bounds& q = vs[i].approx(k);
+        const double x = q.lo > 0 ? q.lo : q.hi, a = std::fabs(x);  // the end toward 0
         d[i][k] = x;
-        if (x != 0 && !(a >= 0x1p-250 && a <= 0x1p250)) wild[w] = 1;
+        if (!(q.lo == 0 && q.hi == 0) && !(a >= 0x1p-250 && a <= 0x1p250)) wild[w] = 1;
       }
   });
   for (unsigned w = 0; w < wild.size(); ++w)
@@ -512,9 +517,7 @@ void Engine<P>::view_body(int b, LineDrawing& res) {
     facing.assign(at.size(), 0);
     ParallelLoop(opt_.threads).for_each(at.size(), 4096, [&](std::size_t f) {
       if (at[f] < 0) return;
-      // (orthographic: the point is not read; none is made)
-      facing[f] = cam_.perspective ? facing_sign<P>(face_normal_[b].get(f), pt(at[f]), view_, true)
-                                   : facing_sign<P>(face_normal_[b].get(f), view_, view_, false);
+      facing[f] = facing_of(b, static_cast<int>(f), at);
     });
     if (keep_ && !cam_.perspective) {  // for the next view in this direction
       if (b == 0) prep_->facing_view = view_, prep_->facing.clear();
@@ -536,6 +539,23 @@ void Engine<P>::view_body(int b, LineDrawing& res) {
   res.facing.emplace_back(facing.begin(), facing.end());
   res.back_faces_unseen.resize(b + 1, 0);
   res.back_faces_unseen[b] = solid_[b] && !eye_on_[b];
+}
+
+// Facing of face f of body b (facing_sign; perspective: measured at vertex at[f]). A lazy
+// store's doubles decide an orthographic view when filtered_sign can (the normal's doubles and
+// the direction's, integers' each within 2^-52, c = 0); otherwise the exact normal does.
+template <class P>
+int Engine<P>::facing_of(int b, int f, const std::vector<int>& at) const {
+  if constexpr (std::is_same_v<P, Wide>) {
+    if (!cam_.perspective && face_normal_[b].lazy()) {
+      const std::array<double, 3> n = face_normal_[b].approx(static_cast<std::size_t>(f));
+      const std::array<double, 3> d = {P::cdbl(view_[0]), P::cdbl(view_[1]), P::cdbl(view_[2])};
+      if (const int s = filtered_sign(n.data(), 0.0, d)) return s;
+    }
+  }
+  // (orthographic: the point is not read; none is made)
+  return cam_.perspective ? facing_sign<P>(face_normal(b, f), pt(at[static_cast<std::size_t>(f)]), view_, true)
+                          : facing_sign<P>(face_normal(b, f), view_, view_, false);
 }
 
 // Parity of the crossings of a ray from `x` with the triangles `ids`, exactly: 1 inside, 0

@@ -173,6 +173,18 @@ LineKind Engine<P>::feature_kind(int b, const EdgeUse& a, const EdgeUse& c) cons
   return crease(b, a, c, crease_) ? LineKind::Crease : LineKind::Edge;
 }
 
+// Face f's normal as triangulate_body put it (turned where the face was turned): the kept one,
+// or, from a lazy store, made again from the face's triangle.
+template <class P>
+Vec<P> Engine<P>::face_normal(int b, int f) const {
+  const FaceNormals<P>& store = face_normal_[b];
+  if (!store.lazy()) return store.get(static_cast<std::size_t>(f));
+  const Face& face = bodies_[b]->faces()[static_cast<std::size_t>(f)];
+  const int vo = voff_[b];
+  const Vec<P> n = normal(Tri{b, f, {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}});
+  return store.turned(static_cast<std::size_t>(f)) ? neg<P>(n) : n;
+}
+
 template <class P>
 bool Engine<P>::crease(int b, const EdgeUse& a, const EdgeUse& c, const CreaseAngle& angle) const {
   // Consistently oriented neighbours traverse the edge in opposite directions; otherwise turn one.
@@ -182,8 +194,8 @@ bool Engine<P>::crease(int b, const EdgeUse& a, const EdgeUse& c, const CreaseAn
     const double y[3] = {turn ? -y0[0] : y0[0], turn ? -y0[1] : y0[1], turn ? -y0[2] : y0[2]};
     if (const int f = angle.filter(x.data(), y); f >= 0) return f == 1;
   }
-  const Vec<P> na = face_normal_[b].get(a.face);
-  Vec<P> nc = face_normal_[b].get(c.face);
+  const Vec<P> na = face_normal(b, a.face);
+  Vec<P> nc = face_normal(b, c.face);
   if (turn) nc = neg<P>(nc);
   if constexpr (std::is_same_v<P, Fast>) {
     long x[3] = {na[0], na[1], na[2]}, y[3] = {nc[0], nc[1], nc[2]};

@@ -138,6 +138,42 @@ TEST(ExactInt, WideIntegersAgreeWithGmp) {
   EXPECT_THROW(W4(five_limbs.get_mpz_t()), std::logic_error);
 }
 
+// Sums, differences and doubles at every width the engine uses: the in-line limb loops (up to
+// five limbs), GMP's beyond, carries and borrows through runs of all-ones limbs, and doubles
+// of values up to 19 limbs (scaled by the table of powers of two, then beyond the range).
+TEST(ExactInt, WideSumsAndDoublesAtEveryWidthAgreeWithGmp) {
+  using W20 = WideInt<20>;
+  std::mt19937_64 rng(20261205);
+  const mpq_class two52 = mpq_class(mpz_class(1) << 52);
+  int infinite = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const int la = 1 + static_cast<int>(rng() % 9), lb = 1 + static_cast<int>(rng() % 9);
+    const mpz_class a = random_value(rng, la), b = rng() % 8 == 0 ? mpz_class(-a + 1) : random_value(rng, lb);
+    const W20 wa(a.get_mpz_t()), wb(b.get_mpz_t());
+    EXPECT_EQ((wa + wb).to_mpz(), a + b) << a << " + " << b;
+    EXPECT_EQ((wa - wb).to_mpz(), a - b) << a << " - " << b;
+    W20 acc = wa;
+    acc += wb;
+    EXPECT_EQ(acc.to_mpz(), a + b);
+    const mpz_class big = random_value(rng, 19);
+    const double d = W20(big.get_mpz_t()).to_double();
+    const std::size_t bits = mpz_sizeinbase(big.get_mpz_t(), 2);
+    if (std::isinf(d)) {  // beyond the range, or rounded up to 2^1024
+      EXPECT_GE(bits, 1024u) << big;
+      ++infinite;
+    } else {
+      EXPECT_LE(bits, 1024u) << big;
+      EXPECT_LE(abs(mpq_class(d) - mpq_class(big)), mpq_class(abs(big)) / two52) << big;
+    }
+  }
+  EXPECT_GT(infinite, 100);
+  // A carry out of five all-ones limbs into a sixth; a borrow through four zero limbs.
+  mpz_class ones = (mpz_class(1) << 320) - 1, one = 1;
+  EXPECT_EQ((WideInt<6>(ones.get_mpz_t()) + WideInt<6>(one.get_mpz_t())).to_mpz(), ones + 1);
+  const mpz_class power = mpz_class(1) << 256;
+  EXPECT_EQ((WideInt<5>(power.get_mpz_t()) - WideInt<5>(one.get_mpz_t())).to_mpz(), power - 1);
+}
+
 // GMP ratios beyond the double range: 3·10^400 / 10^300 against 10^101. Dividing the doubles
 // (inf / 1e300) would call the first one larger; it is 3·10^100.
 TEST(ExactInt, SplitFilterNeverDecidesBeyondTheDoubles) {
@@ -243,4 +279,65 @@ TEST(ExactInt, CurvedMeshDrawsAlikeOnEveryPath) {
   const std::string fast = curved_at(1);
   ASSERT_NE(fast.find(" h "), std::string::npos);
   for (int e : {70, 100, 160}) EXPECT_EQ(curved_at(1 / pow2(e)), fast) << "scaled by 2^-" << e;
+}
+
+namespace {
+
+// Two tori in one body, the second inside out (a component the engine turns), and a third
+// torus wholly inside out (a solid the engine turns), every coordinate on 1/1024 times k;
+// drawn along two directions and from an eye in the first ring, every edge and the creases
+// over 20 degrees: the pieces, each face's facing and the notes. Triangles only, so that
+// the multi-limb path without a grid keeps only the doubles of the normals (FaceNormals,
+// lazy) and makes each exact normal again when a facing or crease test needs it.
+std::string turned_tori_at(const Rational& k) {
+  auto on_grid = [&](double x) -> Rational {  // (a Rational: not an expression on the local q)
+    Rational q(static_cast<long>(std::lround(x * 1024)), 1024);
+    q.canonicalize();
+    return q * k;
+  };
+  const Polyhedron a = test::torus_mesh(16, 8, 3, 1, on_grid);
+  const Polyhedron b = test::torus_mesh(12, 6, 2, 0.5, on_grid);
+  std::vector<Point3> vs = a.vertices();
+  std::vector<Face> fs = a.faces();
+  const int off = static_cast<int>(vs.size());
+  for (const Point3& p : b.vertices()) vs.emplace_back(p[0] + 9 * k, p[1], p[2]);
+  for (Face f : b.faces()) {
+    std::reverse(f.begin(), f.end());
+    for (int& v : f) v += off;
+    fs.push_back(f);
+  }
+  const Polyhedron pair(vs, fs);
+  std::vector<Point3> ws;
+  for (const Point3& p : a.vertices()) ws.emplace_back(p[0], p[1] + 8 * k, p[2] + k);
+  std::vector<Face> turned = a.faces();
+  for (Face& f : turned) std::reverse(f.begin(), f.end());
+  const Polyhedron inside_out(ws, turned);
+  std::string out;
+  for (EdgeSelection edges : {EdgeSelection::All, EdgeSelection::Feature}) {
+    LineOptions o;
+    o.edges = edges;
+    o.crease_degrees = 20;
+    for (const Camera& cam : {make_orthographic(Vector3(1, 2, 3)), make_orthographic(Vector3(0, -1, 4)),
+                              make_perspective(Point3(0, Rational(1, 4) * k, Rational(1, 8) * k), Point3(3 * k, 0, 0))}) {
+      const LineDrawing r = face_occluders({&pair, &inside_out}, cam, o);
+      out += pieces_of(r);
+      for (const auto& body : r.facing)
+        for (signed char f : body) out += std::to_string(f);
+      for (const BodyNote& n : r.notes) out += std::to_string(n.body) + n.text;
+      out += "|";
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+// Turned components and solids on every path: the multi-limb path without a grid (2^-100:
+// denominators of 2^110) keeps only its normals' doubles and their turns, and draws as the
+// 64-bit path and GMP (2^-160) do, facing, creases and notes alike.
+TEST(ExactInt, TurnedBodiesWithLazyNormalsDrawAlikeOnEveryPath) {
+  const std::string fast = turned_tori_at(1);
+  ASSERT_NE(fast.find(" h "), std::string::npos);
+  ASSERT_NE(fast.find("inside-out component"), std::string::npos);
+  for (int e : {100, 160}) EXPECT_EQ(turned_tori_at(1 / pow2(e)), fast) << "scaled by 2^-" << e;
 }
