@@ -10,6 +10,7 @@
 #include <gmp.h>
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -175,7 +176,14 @@ class WideInt {
       r[an + j] = carry;
     }
   }
-  void copy_limbs(const mp_limb_t* p, int n) { std::memcpy(limb_, p, sizeof(mp_limb_t) * static_cast<std::size_t>(n)); }
+  void copy_limbs(const mp_limb_t* p, int n) {
+    if constexpr (N <= 5) {  // unrolled in line: no call for a few limbs
+      for (int i = 0; i < N; ++i)
+        if (i < n) limb_[i] = p[i];
+    } else {
+      std::memcpy(limb_, p, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
+    }
+  }
   static void check(int n) {
     if (n > N) throw std::logic_error("WideInt: a value exceeds its proven bound");
   }
@@ -191,6 +199,7 @@ class WideInt {
     if (bs == 0) return set(a, as);
     if (as == 0) return set(b, bs);
     int an = std::abs(as), bn = std::abs(bs);
+    if (N >= 3 && an <= 2 && bn <= 2) return add128(a, as, b, bs);
     if ((as < 0) == (bs < 0)) {
       if (an < bn) std::swap(a, b), std::swap(an, bn), std::swap(as, bs);
       if (an < N) {  // room for the carry
@@ -246,6 +255,34 @@ class WideInt {
       borrow = b1 | __builtin_sub_overflow(t, static_cast<mp_limb_t>(borrow), &r[i]);
     }
     for (; i < an; ++i) borrow = __builtin_sub_overflow(a[i], static_cast<mp_limb_t>(borrow), &r[i]);
+  }
+  // add's case of two non-zero values of at most two limbs each (N >= 3: room for the carry),
+  // in 128-bit words.
+  void add128(const mp_limb_t* a, int as, const mp_limb_t* b, int bs) {
+    const UInt128 x = std::abs(as) == 2 ? (static_cast<UInt128>(a[1]) << 64) | a[0] : a[0];
+    const UInt128 y = std::abs(bs) == 2 ? (static_cast<UInt128>(b[1]) << 64) | b[0] : b[0];
+    int n = 0;
+    bool negative = false;
+    if ((as < 0) == (bs < 0)) {
+      const UInt128 s = x + y;
+      const bool carry = s < x;
+      limb_[0] = static_cast<mp_limb_t>(s);
+      limb_[1] = static_cast<mp_limb_t>(s >> 64);
+      if (carry) limb_[std::min(2, N - 1)] = 1;
+      n = carry ? 3 : (limb_[1] != 0 ? 2 : 1);
+      negative = as < 0;
+    } else {
+      if (x == y) {
+        size_ = 0;
+        return;
+      }
+      const UInt128 d = x > y ? x - y : y - x;
+      limb_[0] = static_cast<mp_limb_t>(d);
+      limb_[1] = static_cast<mp_limb_t>(d >> 64);
+      n = limb_[1] != 0 ? 2 : 1;
+      negative = x > y ? as < 0 : bs < 0;
+    }
+    size_ = negative ? -n : n;
   }
   void set(const mp_limb_t* p, int s) {
     const int n = std::abs(s);

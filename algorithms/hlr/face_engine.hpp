@@ -309,6 +309,7 @@ class Engine {
   bool grid_side(int p, int q, std::array<Int128, 3>& m) const;
   bool grid_planes(const Tri& t, std::uint8_t closed, Occ& o) const;
   bool local_planes(const Tri& t, std::uint8_t closed, Occ& o) const;
+  bool shared_edge_planes(const Tri& t, std::uint8_t closed, Occ& o) const;
   void grid_doubles(const std::array<Int128, 3>& m, const std::array<std::int64_t, 3>& o, bool turn, double* dm, double& dc) const;
   void occluder_box(const Tri& t, int fs, Box& bx) const;
   // face_engine_edges.cpp

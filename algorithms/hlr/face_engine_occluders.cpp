@@ -300,7 +300,7 @@ void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& b
   // -n·(X - E) > 0. Exact for convex solids (docs/design.md); others are refused.
   const bool to_eye = fs < 0 && solid_[b];
   if constexpr (kFiltered) {
-    if (!to_eye && (grid_planes(t, closed, o) || local_planes(t, closed, o))) {
+    if (!to_eye && (grid_planes(t, closed, o) || local_planes(t, closed, o) || shared_edge_planes(t, closed, o))) {
       occluder_box(t, fs, bx);
       return;
     }
@@ -413,6 +413,48 @@ bool Engine<P>::local_planes(const Tri& t, std::uint8_t closed, Occ& o) const {
       if (turn) m = neg<P>(m);
       plane_doubles(m, constant(m, k), o.m[k + 1], o.c[k + 1]);
       if (turn) o.turned |= static_cast<std::uint8_t>(1u << (k + 1));
+      o.closed[k + 1] = !t.edge[k] || (closed >> (k + 1) & 1) != 0;
+    }
+    return true;
+  } else {
+    (void)t, (void)closed, (void)o;
+    return false;
+  }
+}
+
+// Wide, orthographic, no corner on the grid: make_occluder's planes' doubles with the edge
+// vectors made once for the normal and the side planes (side k: D x (q - p), through p, the
+// same numbers as normal's and side_plane's), and the turn of the side planes (the sign of n·D) from the
+// doubles when filtered_sign decides it (the normal's doubles and the direction's, integers
+// within 2^-52 each, c = 0). False where it does not apply.
+template <class P>
+bool Engine<P>::shared_edge_planes(const Tri& t, std::uint8_t closed, Occ& o) const {
+  if constexpr (std::is_same_v<P, Wide>) {
+    const std::vector<char>& g = prep_->on_grid;
+    if (cam_.perspective || (!g.empty() && (g[t.v[0]] || g[t.v[1]] || g[t.v[2]]))) return false;  // (side_plane's grid pairs)
+    const Vec<P>&a = pt(t.v[0]), &b = pt(t.v[1]), &c = pt(t.v[2]);
+    const Vec<P> u = sub<P>(b, a), w = sub<P>(c, a);
+    const Vec<P> n = cross<P>(u, w);
+    const std::array<double, 3> nd = {P::cdbl(n[0]), P::cdbl(n[1]), P::cdbl(n[2])};
+    const std::array<double, 3> dd = {P::cdbl(view_[0]), P::cdbl(view_[1]), P::cdbl(view_[2])};
+    int facing = filtered_sign(nd.data(), 0.0, dd);
+    if (facing == 0) facing = P::sign(dot<P>(n, view_));
+    const bool turn = facing < 0;
+    o.through_vertices = true;
+    o.turned = 0;
+    for (int k = 0; k < 3; ++k) o.m[0][k] = -nd[k];
+    o.c[0] = P::dbl(dot<P>(neg<P>(n), a));
+    const Vec<P> edge[3] = {u, sub<P>(c, b), neg<P>(w)};
+    const Vec<P>* from[3] = {&a, &b, &c};
+    for (int k = 0; k < 3; ++k) {
+      Vec<P> m = cross<P>(view_, edge[k]);
+      V cm = dot<P>(m, *from[k]);
+      if (turn) {
+        m = neg<P>(m);
+        cm = -cm;
+        o.turned |= static_cast<std::uint8_t>(1u << (k + 1));
+      }
+      plane_doubles(m, cm, o.m[k + 1], o.c[k + 1]);
       o.closed[k + 1] = !t.edge[k] || (closed >> (k + 1) & 1) != 0;
     }
     return true;
