@@ -59,7 +59,7 @@ class WideInt {
   explicit WideInt(const WideInt<M>& o) {
     const int n = std::abs(o.size_);
     check(n);
-    std::memcpy(limb_, o.limb_, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
+    copy_limbs(o.limb_, n);
     size_ = o.size_;
   }
 
@@ -176,12 +176,14 @@ class WideInt {
       r[an + j] = carry;
     }
   }
+  // n <= N limbs from p (p may be these limbs themselves); unrolled in line up to ten limbs (a
+  // library call costs more than the copy at these sizes).
   void copy_limbs(const mp_limb_t* p, int n) {
-    if constexpr (N <= 5) {  // unrolled in line: no call for a few limbs
+    if constexpr (N <= 10) {
       for (int i = 0; i < N; ++i)
         if (i < n) limb_[i] = p[i];
     } else {
-      std::memcpy(limb_, p, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
+      std::memmove(limb_, p, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
     }
   }
   static void check(int n) {
@@ -287,7 +289,7 @@ class WideInt {
   void set(const mp_limb_t* p, int s) {
     const int n = std::abs(s);
     check(n);
-    std::memmove(limb_, p, sizeof(mp_limb_t) * static_cast<std::size_t>(n));
+    copy_limbs(p, n);
     size_ = s;
   }
 
