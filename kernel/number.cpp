@@ -2,9 +2,12 @@
 #include "kernel/number.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "kernel/int128.hpp"
 
@@ -35,6 +38,36 @@ bool parse_integer(std::string_view s, mpz_class& out) {
   return true;
 }
 
+// Eight ASCII digits from p (little-endian words; eight readable bytes): true and their value,
+// the first digit the most significant, when all eight are digits. A byte is a digit when its
+// high nibble is 3 and stays 3 after adding 6 (0x3A-0x3F reach 4); a carry out of a byte comes
+// only from one that fails the test itself. Then pairs, then fours, then eight in one word:
+// each step multiplies by the place values (10, 100, 10^4) with no carry between the fields.
+bool eight_digits(const char* p, std::uint64_t& value) {
+  if constexpr (std::endian::native != std::endian::little) {
+    return false;
+  } else {
+    std::uint64_t w;
+    std::memcpy(&w, p, 8);
+    constexpr std::uint64_t kHigh = 0xF0F0F0F0F0F0F0F0ull;
+    if (((w & kHigh) | (((w + 0x0606060606060606ull) & kHigh) >> 4)) != 0x3333333333333333ull) return false;
+    w -= 0x3030303030303030ull;  // byte k: digit k
+    w = w * 10 + (w >> 8);       // byte 2k: digits 2k, 2k + 1 (at most 99)
+    constexpr std::uint64_t kPairs = 0x000000FF000000FFull;
+    constexpr std::uint64_t kHundreds = 100 + (1000000ull << 32), kOnes = 1 + (10000ull << 32);
+    value = ((w & kPairs) * kHundreds + ((w >> 16) & kPairs) * kOnes) >> 32;
+    return true;
+  }
+}
+
+// 5^k for k <= 27 (the largest below 2^64).
+constexpr std::array<std::uint64_t, 28> kPowersOfFive = [] {
+  std::array<std::uint64_t, 28> p{};
+  p[0] = 1;
+  for (std::size_t k = 1; k < p.size(); ++k) p[k] = p[k - 1] * 5;
+  return p;
+}();
+
 // Fast path for the common decimal forms ("-0.0378297", "12", "3.5", an exporter's
 // "6.123233995736766e-17" or numpy's "1.234567890123456789e-01"): at most 19 digits and an
 // exponent of at most three digits. The value is an integer times a power of ten, reduced by
@@ -46,18 +79,27 @@ bool parse_decimal(std::string_view t, Rational& out) {
   if (i < t.size() && (t[i] == '-' || t[i] == '+')) neg = t[i++] == '-';
   unsigned long long n = 0;  // at most 19 digits: below 10^19 < 2^64
   int digits = 0, frac = -1;
-  for (; i < t.size() && t[i] != 'e' && t[i] != 'E'; ++i) {
-    const char c = t[i];
-    if (c >= '0' && c <= '9') {
-      if (++digits > 19) return false;
-      n = n * 10 + static_cast<unsigned long long>(c - '0');
-      if (frac >= 0) ++frac;
-    } else if (c == '.' && frac < 0) {
-      frac = 0;
-    } else {
-      return false;
+  // A run of digits: eight at a time while eight are left (and the 19 allow it), then one by one.
+  auto run = [&](bool fraction) {
+    for (std::uint64_t eight = 0; digits <= 11 && t.size() - i >= 8 && eight_digits(t.data() + i, eight); i += 8) {
+      n = n * 100000000ull + eight;
+      digits += 8;
+      if (fraction) frac += 8;
     }
+    for (; i < t.size() && t[i] >= '0' && t[i] <= '9'; ++i) {
+      if (++digits > 19) return false;
+      n = n * 10 + static_cast<unsigned long long>(t[i] - '0');
+      if (fraction) ++frac;
+    }
+    return true;
+  };
+  if (!run(false)) return false;
+  if (i < t.size() && t[i] == '.') {
+    ++i;
+    frac = 0;
+    if (!run(true)) return false;
   }
+  if (i < t.size() && t[i] != 'e' && t[i] != 'E') return false;
   if (digits == 0) return false;
   long e = 0;
   if (i < t.size()) {  // an exponent
@@ -90,12 +132,11 @@ bool parse_decimal(std::string_view t, Rational& out) {
     while (fives > 0 && n % 5 == 0) n /= 5, --fives;
     mpz_set_ui(num, n);
     if (fives <= 27 && twos <= 63 - 2 * fives - fives / 3) {  // 5^fives·2^twos below 2^64
-      unsigned long long d = 1;
-      for (long k = 0; k < fives; ++k) d *= 5;
-      mpz_set_ui(den, d << twos);
+      mpz_set_ui(den, kPowersOfFive[static_cast<std::size_t>(fives)] << twos);
     } else if (fives <= 54 && twos <= 126 - 2 * fives - fives / 3) {  // below 2^128: two limbs (numpy's 10^23)
-      unsigned __int128 d = 1;
-      for (long k = 0; k < fives; ++k) d *= 5;
+      const long low = std::min<long>(fives, 27);
+      unsigned __int128 d =
+          static_cast<unsigned __int128>(kPowersOfFive[static_cast<std::size_t>(low)]) * kPowersOfFive[static_cast<std::size_t>(fives - low)];
       d <<= twos;
       mp_limb_t* limbs = mpz_limbs_write(den, 2);
       limbs[0] = static_cast<mp_limb_t>(d), limbs[1] = static_cast<mp_limb_t>(d >> 64);

@@ -3,6 +3,7 @@
 # (benchmarks/exporter_formats.py: %.7f, Open CASCADE's %.10g with 1e-17 noise, %g, %.7g,
 # %.17g, numpy's %.18e, float32 binary STL), each drawn with `--edges all --view 1,1.3,1.7`
 # by every hlr given (e.g. a build before and after a change) in alternating runs, best of 3
+# (HLR_BENCH_ROUNDS: more, where this machine's neighbours make single runs noisy)
 # wall seconds (GNU time) with peak memory, and the cost against the same mesh in short fixed
 # decimals. The SVGs of the builds are compared byte for byte (exactness is not traded). Meshes:
 # the 100k-triangle icosphere and bunny00; with --large also the 1M icosphere. Writes
@@ -13,6 +14,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${HLR_BUILD_DIR:-$ROOT/build}"
 OUT="$BUILD/bench"
 LARGE=0
+ROUNDS="${HLR_BENCH_ROUNDS:-3}"
 if [ "${1:-}" = "--large" ]; then LARGE=1; shift; fi
 [ $# -gt 0 ] || set -- "$BUILD/hlr"
 for h in "$@"; do [ -x "$h" ] || { echo "bench_numbers: $h is not a program" >&2; exit 1; }; done
@@ -40,7 +42,7 @@ fail=0
 {
   echo "# Number formats ($(date -u +%Y-%m-%d), $(nproc) cores, $(awk '/MemTotal/{printf "%d GiB", $2/1048576}' /proc/meminfo))"
   echo
-  echo "\`--edges all --view 1,1.3,1.7\` to SVG, whole process, best of 3 in alternating runs: wall s, peak MB, and the"
+  echo "\`--edges all --view 1,1.3,1.7\` to SVG, whole process, best of $ROUNDS in alternating runs: wall s, peak MB, and the"
   echo "ratio to the same build on the fixed-decimal file."
   echo
   header="| mesh | format |"
@@ -52,7 +54,7 @@ fail=0
     declare -A base=()
     for f in "${formats[@]}"; do
       declare -A best=() mem=()
-      for _ in 1 2 3; do
+      for _ in $(seq "$ROUNDS"); do
         i=0
         for h in "$@"; do
           /usr/bin/time -f "%e %M" -o "$OUT/time.txt" "$h" render "$OUT/numbers/$m/$f" --edges all --view 1,1.3,1.7 \

@@ -73,6 +73,32 @@ TEST(Number, ExportersDecimalsAreExact) {
   }
 }
 
+// The decimal parser reads eight digits at a time: one non-digit anywhere in a long run (the
+// bytes next to '0' and '9', others that share a digit's low nibble, a high bit) refuses the
+// token, and runs that cross the point or end at the exponent read as digit by digit (more
+// than 19 digits go to the general parser, exact as well).
+TEST(Number, EveryByteOfALongDigitRunIsChecked) {
+  std::mt19937_64 rng(20261206);
+  const std::string bad = std::string(":;<=>?@`x ") + static_cast<char>(0xB5) + static_cast<char>(0x7F) + static_cast<char>(0x10);
+  for (int i = 0; i < 20000; ++i) {
+    std::string ds;
+    const int digits = 9 + static_cast<int>(rng() % 16);  // past the fast path's 19 too
+    for (int k = 0; k < digits; ++k) ds += static_cast<char>('0' + rng() % 10);
+    const std::size_t at = rng() % ds.size();
+    std::string text = ds;
+    text[at] = bad[rng() % bad.size()];
+    if (rng() % 2) text += "e-0" + std::to_string(rng() % 10);
+    EXPECT_THROW(parse_rational(text), hlr::NumberError) << text;
+    const std::size_t point = rng() % (ds.size() + 1);  // the same digits with a point anywhere
+    const std::string good = ds.substr(0, point) + "." + ds.substr(point) + "e-3";
+    mpz_class p10;
+    mpz_ui_pow_ui(p10.get_mpz_t(), 10, static_cast<unsigned long>(ds.size() - point + 3));
+    Rational want(mpz_class(ds, 10), p10);
+    want.canonicalize();
+    ASSERT_EQ(parse_rational(good), want) << good;
+  }
+}
+
 TEST(Number, BadTokensNameTheToken) {
   for (const char* bad : {"nan",   "NaN",  "-inf", "inf",      "Infinity", "abc", "1/0", "1/-2", "--1", "",
                           "1.2.3", "0x10", "1e",   "1e999999", "1e4001",   "3/",  "/3",  "1 2",  "e5",  "."}) {
