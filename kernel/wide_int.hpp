@@ -11,7 +11,9 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -19,6 +21,31 @@
 #include "kernel/int128.hpp"
 
 namespace hlr {
+
+/// hi·2^64 + lo (hi != 0) rounded to the nearest double, ties to even: static_cast<double> of
+/// the 128-bit integer without libgcc's generic conversion. The top 64 bits are converted with
+/// every lower bit that is set folded into their last bit: that bit lies ten places below the
+/// rounding place, so it changes no rounding but a tie's (a tie with more set bits below is
+/// no tie); then times 2^(64 - s), exact.
+inline double uint128_to_double(std::uint64_t hi, std::uint64_t lo) {
+  const int s = __builtin_clzll(hi);
+  const std::uint64_t top = s == 0 ? hi : (hi << s) | (lo >> (64 - s));
+  const std::uint64_t rest = lo << s;
+  const double scale = std::bit_cast<double>(static_cast<std::uint64_t>(1023 + 64 - s) << 52);
+  return static_cast<double>(top | (rest != 0 ? 1 : 0)) * scale;
+}
+
+/// The magnitude of n limbs (least significant first, the top one non-zero) as a double: the
+/// top two limbs rounded once, times 2^(64 (n - 2)) (exact, a power of two, as ldexp; 2^960
+/// the last below the range). The limbs below weigh under 2^-64 of the value, so the double is
+/// within 2^-52 relative; infinite beyond the range.
+inline double limbs_to_double(const mp_limb_t* limb, int n) {
+  if (n == 0) return 0;
+  const double top = n == 1 ? static_cast<double>(limb[0]) : uint128_to_double(limb[n - 1], limb[n - 2]);
+  static constexpr double kScale[] = {1.0,     0x1p64,  0x1p128, 0x1p192, 0x1p256, 0x1p320, 0x1p384, 0x1p448,
+                                      0x1p512, 0x1p576, 0x1p640, 0x1p704, 0x1p768, 0x1p832, 0x1p896, 0x1p960};
+  return n <= 2 ? top : n - 2 < 16 ? top * kScale[n - 2] : std::ldexp(top, 64 * (n - 2));
+}
 
 template <int N>
 class WideInt {
@@ -85,13 +112,7 @@ class WideInt {
   /// The double of the top two limbs (rounded once) times a power of two: the limbs below
   /// weigh under 2^-64 of the value, so within 2^-52 relative; infinite beyond the range.
   double to_double() const {
-    const int n = std::abs(size_);
-    if (n == 0) return 0;
-    const double top = n == 1 ? static_cast<double>(limb_[0]) : static_cast<double>((static_cast<UInt128>(limb_[n - 1]) << 64) | limb_[n - 2]);
-    // (times 2^(64 (n - 2)): exact, a power of two, as ldexp; 2^960 the last below the range)
-    static constexpr double kScale[] = {1.0,     0x1p64,  0x1p128, 0x1p192, 0x1p256, 0x1p320, 0x1p384, 0x1p448,
-                                        0x1p512, 0x1p576, 0x1p640, 0x1p704, 0x1p768, 0x1p832, 0x1p896, 0x1p960};
-    const double r = n <= 2 ? top : n - 2 < 16 ? top * kScale[n - 2] : std::ldexp(top, 64 * (n - 2));
+    const double r = limbs_to_double(limb_, std::abs(size_));
     return size_ < 0 ? -r : r;
   }
 

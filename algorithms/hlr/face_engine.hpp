@@ -163,6 +163,8 @@ class FaceNormals {
     }
     return true;
   }
+  /// Lazy: the doubles of a non-zero normal (as put() makes them from the exact one).
+  void put_doubles(std::size_t f, const std::array<double, 3>& d) { approx_[f] = d; }
   /// One caller at a time.
   void put_wide(std::size_t f, Vec<P> n) {
     small_[f] = {kMark, static_cast<Int128>(wide_.size()), 0};
@@ -320,6 +322,11 @@ class Engine {
   bool crease(int b, const EdgeUse& a, const EdgeUse& c, const CreaseAngle& angle) const;
   void continue_creases(int b, std::vector<signed char>& kinds, std::vector<signed char>& hidden, std::vector<char>& line);
   bool continues(int b, const BodyEdge& e) const;
+  void fixed_width();
+  std::array<Int128, 3> fixed_point(int g) const;
+  bool fixed_normal(const Tri& t, Vec<P>& n) const;
+  bool fixed_normal_doubles(const Tri& t, std::array<double, 3>& d) const;
+  bool fixed_edge_planes(const Tri& t, std::uint8_t closed, Occ& o) const;
   // face_engine_intersections.cpp
   void find_intersections(LineDrawing& res);
   std::vector<Segment> crossing_segments(LineDrawing& res);
@@ -398,6 +405,8 @@ class Engine {
   long grid_factor_exp_ = 0;
   std::optional<std::array<std::int64_t, 3>> eye_small_;
   std::optional<std::array<Int128, 3>> view_small_;  // orthographic: the direction, each component below 2^62
+  bool fixed_ = false;                               // Wide: every coordinate below 2^125 (face_engine_edges.cpp)
+  std::optional<std::array<Int128, 3>> view_fixed_;  // and an orthographic direction below 2^61
   std::vector<char> vfront_;
   std::vector<char> vertex_closed_;
   std::vector<int> vertex_cap_;   // find_intersections: per vertex, the cap part of its cap faces (-1 none, -2 several)

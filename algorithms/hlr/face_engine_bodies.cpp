@@ -61,6 +61,7 @@ LineDrawing Engine<P>::run() {
   auto t0 = Clock::now();
   offsets();
   grid_view();
+  fixed_width();
   // The view-independent work once (or from a view before), then this view's facing and checks.
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     if (!prep_->done) prepare_body(static_cast<int>(b));
@@ -217,6 +218,7 @@ Vec<P> Engine<P>::normal(const Tri& t) const {
   if constexpr (kFiltered) {
     std::array<Int128, 3> n;
     if (grid_normal(t, n)) return {from128<P>(n[0]), from128<P>(n[1]), from128<P>(n[2])};
+    if (Vec<P> f; fixed_normal(t, f)) return f;
   }
   return cross<P>(sub<P>(pt(t.v[1]), pt(t.v[0])), sub<P>(pt(t.v[2]), pt(t.v[0])));
 }
@@ -288,6 +290,11 @@ int Engine<P>::triangulate_body(int b) {
     const Face& face = faces[f];
     if (face.size() != 3) return;  // after the triangulation below
     Tri probe{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}};
+    if (std::array<double, 3> d; face_normal_[b].lazy() && fixed_normal_doubles(probe, d)) {  // (0 exactly when 0)
+      if (d[0] == 0 && d[1] == 0 && d[2] == 0) degenerate_[b][f] = 1;
+      else facing_at[f] = probe.v[0], face_normal_[b].put_doubles(f, d);
+      return;
+    }
     Vec<P> n = normal(probe);
     if (P::sign(n[0]) == 0 && P::sign(n[1]) == 0 && P::sign(n[2]) == 0) {
       degenerate_[b][f] = 1;  // zero area: neither occludes nor faces

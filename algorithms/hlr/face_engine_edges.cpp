@@ -1,10 +1,12 @@
 // The per-face engine, drawn edges (see face_engine.hpp): which edges of each body are lines
 // of the drawing (boundary, silhouette, crease over the threshold, or every edge) and which
 // are self-hidden (both faces non-facing, the notes' Stage 1); a crease line that ends goes on
-// along its straightest continuation over half the crease angle (docs/design.md, "Crease lines").
+// along its straightest continuation over half the crease angle (docs/design.md, "Crease lines");
+// normals and occluder planes in fixed widths when the coordinates allow.
 #include "algorithms/hlr/face_engine.hpp"
 #include "algorithms/support/parallel.hpp"
 #include "algorithms/support/parallel_scan.hpp"
+#include "kernel/fixed_int.hpp"
 
 namespace hlr::face_route {
 
@@ -316,6 +318,132 @@ const std::vector<int>* Engine<P>::continued_lines(int b, std::vector<char>& lin
   if (p.feature[b].size() != topo_[b].edges.size()) return nullptr;
   if (!p.continued[b]) p.continued[b] = continued_edges(b, line);
   return &*p.continued[b];
+}
+
+// ---- fixed widths (docs/design.md, "Number paths"): on the multi-limb path, when every scaled
+// coordinate lies below 2^125, the normals and an orthographic view's occluder planes are made
+// in two's complement of fixed widths (kernel/fixed_int.hpp) instead of WideInt's sign and
+// size. The numbers are the generic construction's, so are their doubles: nothing downstream
+// can tell the two apart.
+namespace {
+
+constexpr int kFixedCoordinateBits = 125;  // differences below 2^126: Int128 with a bit free
+constexpr int kFixedViewBits = 61;         // an orthographic direction's components
+
+std::array<Int128, 3> diff(const std::array<Int128, 3>& a, const std::array<Int128, 3>& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+}  // namespace
+
+// Whether every coordinate lies below 2^125 (each worker's answer, then all of them), and an
+// orthographic direction's components below 2^61.
+template <class P>
+void Engine<P>::fixed_width() {
+  fixed_ = false;
+  view_fixed_.reset();
+  if constexpr (std::is_same_v<P, Wide>) {
+    const ParallelLoop loop(opt_.threads);
+    PerWorker<char> wide(loop, 0);
+    loop.run(X_.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
+      bool any = false;
+      for (std::size_t i = begin; i < end && !any; ++i)
+        for (int k = 0; k < 3; ++k) any = any || X_[i][k].bits() > kFixedCoordinateBits;
+      if (any) wide[w] = 1;
+    });
+    for (unsigned w = 0; w < wide.size(); ++w)
+      if (wide[w]) return;
+    fixed_ = true;
+    if (cam_.perspective) return;
+    std::array<Int128, 3> d;
+    for (int k = 0; k < 3; ++k) {
+      if (view_[k].bits() > kFixedViewBits) return;
+      d[k] = view_[k].to_int128();
+    }
+    view_fixed_ = d;
+  }
+}
+
+// A vertex's coordinates as 128-bit integers (fixed_: each below 2^125).
+template <class P>
+std::array<Int128, 3> Engine<P>::fixed_point(int g) const {
+  if constexpr (std::is_same_v<P, Wide>) {
+    const Vec<P>& x = pt(g);
+    return {x[0].to_int128(), x[1].to_int128(), x[2].to_int128()};
+  } else {
+    (void)g;
+    return {};
+  }
+}
+
+// The normal (B - A) x (C - A) of normal(), in fixed widths (fixed_).
+template <class P>
+bool Engine<P>::fixed_normal(const Tri& t, Vec<P>& n) const {
+  if constexpr (std::is_same_v<P, Wide>) {
+    if (!fixed_) return false;
+    const std::array<Int128, 3> a = fixed_point(t.v[0]);
+    const std::array<FixedInt<4>, 3> f = fixed_cross(diff(fixed_point(t.v[1]), a), diff(fixed_point(t.v[2]), a));
+    n = {f[0].to_wide<5>(), f[1].to_wide<5>(), f[2].to_wide<5>()};
+    return true;
+  } else {
+    (void)t, (void)n;
+    return false;
+  }
+}
+
+// The same normal's doubles alone (a lazy store keeps no more), each WideInt::to_double of its
+// component: 0 exactly for 0.
+template <class P>
+bool Engine<P>::fixed_normal_doubles(const Tri& t, std::array<double, 3>& d) const {
+  if constexpr (std::is_same_v<P, Wide>) {
+    if (!fixed_) return false;
+    const std::array<Int128, 3> a = fixed_point(t.v[0]);
+    const std::array<FixedInt<4>, 3> f = fixed_cross(diff(fixed_point(t.v[1]), a), diff(fixed_point(t.v[2]), a));
+    d = {f[0].to_double(), f[1].to_double(), f[2].to_double()};
+    return true;
+  } else {
+    (void)t, (void)d;
+    return false;
+  }
+}
+
+// shared_edge_planes() in fixed widths (fixed_ and view_fixed_): the normal below 2^253 and
+// its value at a vertex below 2^381; a side plane's normal D x e below 2·2^61·2^126 = 2^188 in
+// 4 limbs and its value at a vertex below 3·2^188·2^125 < 2^315 in 6; D·n below 2^317 in 6.
+template <class P>
+bool Engine<P>::fixed_edge_planes(const Tri& t, std::uint8_t closed, Occ& o) const {
+  if constexpr (std::is_same_v<P, Wide>) {
+    if (!view_fixed_) return false;
+    const std::array<Int128, 3> a = fixed_point(t.v[0]), b = fixed_point(t.v[1]), c = fixed_point(t.v[2]);
+    const std::array<Int128, 3>& view = *view_fixed_;
+    const std::array<Int128, 3> u = diff(b, a), w = diff(c, a);
+    const std::array<FixedInt<4>, 3> n = fixed_cross(u, w);
+    const std::array<double, 3> nd = {n[0].to_double(), n[1].to_double(), n[2].to_double()};
+    const std::array<double, 3> dd = {P::cdbl(view_[0]), P::cdbl(view_[1]), P::cdbl(view_[2])};
+    int facing = filtered_sign(nd.data(), 0.0, dd);
+    if (facing == 0) facing = fixed_dot(n, view).sign();
+    const bool turn = facing < 0;
+    o.through_vertices = true;
+    o.turned = 0;
+    for (int k = 0; k < 3; ++k) o.m[0][k] = -nd[k];
+    o.c[0] = fixed_dot(n, a).negated().to_double();
+    const std::array<Int128, 3> edge[3] = {u, diff(c, b), diff(a, c)};
+    const std::array<Int128, 3>* from[3] = {&a, &b, &c};
+    for (int k = 0; k < 3; ++k) {
+      std::array<FixedInt<4>, 3> m = fixed_cross(view, edge[k]);
+      FixedInt<6> cm = fixed_dot(m, *from[k]);
+      if (turn) {
+        for (FixedInt<4>& x : m) x = x.negated();
+        cm = cm.negated();
+        o.turned |= static_cast<std::uint8_t>(1u << (k + 1));
+      }
+      for (int j = 0; j < 3; ++j) o.m[k + 1][j] = m[j].to_double();
+      o.c[k + 1] = cm.to_double();
+      o.closed[k + 1] = !t.edge[k] || (closed >> (k + 1) & 1) != 0;
+    }
+    return true;
+  } else {
+    (void)t, (void)closed, (void)o;
+    return false;
+  }
 }
 
 template class Engine<Fast>;

@@ -432,6 +432,7 @@ bool Engine<P>::shared_edge_planes(const Tri& t, std::uint8_t closed, Occ& o) co
   if constexpr (std::is_same_v<P, Wide>) {
     const std::vector<char>& g = prep_->on_grid;
     if (cam_.perspective || (!g.empty() && (g[t.v[0]] || g[t.v[1]] || g[t.v[2]]))) return false;  // (side_plane's grid pairs)
+    if (fixed_edge_planes(t, closed, o)) return true;
     const Vec<P>&a = pt(t.v[0]), &b = pt(t.v[1]), &c = pt(t.v[2]);
     const Vec<P> u = sub<P>(b, a), w = sub<P>(c, a);
     const Vec<P> n = cross<P>(u, w);

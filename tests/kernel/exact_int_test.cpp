@@ -6,11 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <random>
 
 #include "algorithms/hlr/face_occluders.hpp"
+#include "kernel/fixed_int.hpp"
 #include "support/torus.hpp"
 
 using namespace hlr;
@@ -172,6 +174,114 @@ TEST(ExactInt, WideSumsAndDoublesAtEveryWidthAgreeWithGmp) {
   EXPECT_EQ((WideInt<6>(ones.get_mpz_t()) + WideInt<6>(one.get_mpz_t())).to_mpz(), ones + 1);
   const mpz_class power = mpz_class(1) << 256;
   EXPECT_EQ((WideInt<5>(power.get_mpz_t()) - WideInt<5>(one.get_mpz_t())).to_mpz(), power - 1);
+}
+
+namespace {
+
+// A value of at most `bits` bits (either sign), often with all-ones or zero runs, or at the
+// bound itself.
+mpz_class random_bits(std::mt19937_64& rng, int bits) {
+  mpz_class v = random_value(rng, (bits + 63) / 64);
+  v = abs(v) % (mpz_class(1) << bits);
+  if (rng() % 16 == 0) v = (mpz_class(1) << bits) - 1;                             // the largest magnitude
+  if (rng() % 16 == 0) v = mpz_class(1) << (rng() % static_cast<unsigned>(bits));  // a power of two
+  if (rng() % 2) v = -v;
+  return v;
+}
+
+template <int N>
+mpz_class fixed_value(const FixedInt<N>& x) {
+  mpz_class v = 0;
+  for (int i = N - 1; i >= 0; --i) v = (v << 64) + mpz_class(static_cast<unsigned long>(x.limb[i]));
+  if (x.negative()) v -= mpz_class(1) << (64 * N);
+  return v;
+}
+
+Int128 to_int128(const mpz_class& v) {
+  const mpz_class m = abs(v);
+  const auto lo = static_cast<UInt128>(mpz_class(m % (mpz_class(1) << 64)).get_ui());
+  const auto hi = static_cast<UInt128>(mpz_class(m >> 64).get_ui());
+  const Int128 r = static_cast<Int128>(hi << 64 | lo);
+  return v < 0 ? -r : r;
+}
+
+}  // namespace
+
+// The two's-complement widths of the multi-limb path's fixed constructions against GMP, at their
+// bounds: 128-bit values below 2^126 and their products, 256-bit values below 2^253 times
+// 128-bit ones, sums and differences, negation, signs, the doubles (bit for bit WideInt's) and
+// the WideInt made from each.
+TEST(ExactInt, FixedWidthsAgreeWithGmpAndWideIntAtTheirBounds) {
+  std::mt19937_64 rng(20261206);
+  for (int i = 0; i < 20000; ++i) {
+    const mpz_class a = random_bits(rng, 126), b = random_bits(rng, 126), c = random_bits(rng, 126), d = random_bits(rng, 126);
+    const FixedInt<2> fa(to_int128(a)), fb(to_int128(b)), fc(to_int128(c)), fd(to_int128(d));
+    ASSERT_EQ(fixed_value(fa), a);
+    const FixedInt<4> p = mul(fa, fb) - mul(fc, fd);  // a cross product's component
+    ASSERT_EQ(fixed_value(p), a * b - c * d) << a << " " << b << " " << c << " " << d;
+    ASSERT_EQ(fixed_value(mul(fa, fb) + mul(fc, fd)), a * b + c * d);
+    const mpz_class n = a * b - c * d;
+    ASSERT_EQ(fixed_value(p.negated()), -n);
+    ASSERT_EQ(p.sign(), sgn(n));
+    const mpz_class e = random_bits(rng, 253);
+    FixedInt<4> fe;
+    {
+      const mpz_class m = abs(e);
+      for (int k = 0; k < 4; ++k) fe.limb[k] = mpz_class((m >> (64 * k)) % (mpz_class(1) << 64)).get_ui();
+      if (e < 0) fe = fe.negated();
+    }
+    ASSERT_EQ(fixed_value(fe), e);
+    const FixedInt<6> q = mul(fe, fa) + mul(p, fb) - mul(fe, fc);  // a plane value
+    const mpz_class qv = e * a + n * b - e * c;
+    ASSERT_EQ(fixed_value(q), qv) << e << " " << a;
+    ASSERT_EQ(q.sign(), sgn(qv));
+    // The doubles and the WideInts are WideInt's own of the same numbers.
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(p.to_double()), std::bit_cast<std::uint64_t>(WideInt<5>(n.get_mpz_t()).to_double())) << n;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(q.to_double()), std::bit_cast<std::uint64_t>(WideInt<10>(qv.get_mpz_t()).to_double())) << qv;
+    EXPECT_EQ(p.to_wide<5>().to_mpz(), n);
+    EXPECT_EQ(q.to_wide<10>().to_mpz(), qv);
+  }
+  EXPECT_EQ(FixedInt<4>().to_double(), 0.0);
+  EXPECT_FALSE(std::signbit(FixedInt<4>().negated().to_double()));  // +0, as WideInt's 0
+}
+
+// The 128-bit conversion rounds as the compiler's: to nearest, ties to even, also where the tie
+// is decided by a bit far below the top 64 (every lower bit folded into one).
+TEST(ExactInt, DoublesOf128BitWordsRoundAsTheCompilers) {
+  std::mt19937_64 rng(1205);
+  auto check = [](std::uint64_t hi, std::uint64_t lo) {
+    const UInt128 v = static_cast<UInt128>(hi) << 64 | lo;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(uint128_to_double(hi, lo)), std::bit_cast<std::uint64_t>(static_cast<double>(v))) << hi << " " << lo;
+  };
+  for (int i = 0; i < 200000; ++i) {
+    const int shift = static_cast<int>(rng() % 64);
+    const std::uint64_t hi = (rng() >> shift) | 1;
+    std::uint64_t lo = rng();
+    switch (rng() % 4) {
+      case 0:
+        lo = 0;
+        break;
+      case 1:
+        lo = std::uint64_t{1} << (rng() % 64);
+        break;  // one bit far below
+      case 2:
+        lo = ~std::uint64_t{0} >> (rng() % 64);
+        break;  // a run of ones
+      default:
+        break;
+    }
+    check(hi, lo);
+    // Ties at the rounding place of the top 64 bits: 1 then zeros below it, with and without a
+    // set bit further down.
+    const int s = __builtin_clzll(hi);
+    if (s <= 10) {
+      const std::uint64_t round = std::uint64_t{1} << (10 - s);
+      check((hi & ~((round << 1) - 1)) | round, 0);
+      check((hi & ~((round << 1) - 1)) | round, 1);
+    }
+  }
+  check(~std::uint64_t{0}, ~std::uint64_t{0});  // rounds up to 2^128
+  check(1, 0);
 }
 
 // GMP ratios beyond the double range: 3·10^400 / 10^300 against 10^101. Dividing the doubles

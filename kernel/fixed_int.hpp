@@ -1,0 +1,142 @@
+// Signed integers of exactly N 64-bit limbs in two's complement (docs/design.md, "Number
+// paths"): the multi-limb path's hottest constructions when every scaled coordinate lies below
+// 2^125 (differences in 128 bits, normals in 256, plane values in 384), without WideInt's
+// sign-and-size bookkeeping and its branches. The caller proves that every result fits its
+// width (the bounds are stated where it is used); nothing here checks, and a value that did
+// not fit would wrap. A value's double and its WideInt are WideInt's own of the same number
+// (limbs_to_double), so a construction made here and the generic one give the same bits.
+#pragma once
+
+#include <gmp.h>
+
+#include <array>
+#include <cstdint>
+
+#include "kernel/int128.hpp"
+#include "kernel/wide_int.hpp"
+
+namespace hlr {
+
+template <int N>
+struct FixedInt {
+  static_assert(N >= 2 && N % 2 == 0, "pairs of limbs");
+  std::uint64_t limb[N] = {};  // least significant first; the top bit of limb[N - 1] is the sign
+
+  FixedInt() = default;
+  explicit FixedInt(Int128 v) {  // sign-extended
+    set(0, static_cast<UInt128>(v));
+    for (int i = 1; i < N / 2; ++i) set(i, v < 0 ? ~UInt128{0} : 0);
+  }
+
+  /// Limbs 2i and 2i + 1 as one 128-bit word.
+  UInt128 pair(int i) const { return static_cast<UInt128>(limb[2 * i + 1]) << 64 | limb[2 * i]; }
+  void set(int i, UInt128 v) {
+    limb[2 * i] = static_cast<std::uint64_t>(v);
+    limb[2 * i + 1] = static_cast<std::uint64_t>(v >> 64);
+  }
+
+  bool negative() const { return (limb[N - 1] >> 63) != 0; }
+  int sign() const {
+    if (negative()) return -1;
+    for (int i = 0; i < N; ++i)
+      if (limb[i] != 0) return 1;
+    return 0;
+  }
+  /// -x (x is never the most negative value: the callers' bounds keep one bit free).
+  FixedInt negated() const { return FixedInt() - *this; }
+  FixedInt magnitude() const { return negative() ? negated() : *this; }
+
+  friend FixedInt operator+(const FixedInt& a, const FixedInt& b) {
+    FixedInt r;
+    UInt128 carry = 0;
+    for (int i = 0; i < N / 2; ++i) {
+      const UInt128 x = a.pair(i), s = x + b.pair(i), t = s + carry;
+      carry = static_cast<UInt128>((s < x) | (t < s));
+      r.set(i, t);
+    }
+    return r;
+  }
+  friend FixedInt operator-(const FixedInt& a, const FixedInt& b) {
+    FixedInt r;
+    UInt128 borrow = 0;
+    for (int i = 0; i < N / 2; ++i) {
+      const UInt128 x = a.pair(i), y = b.pair(i), d = x - y, t = d - borrow;
+      borrow = static_cast<UInt128>((x < y) | (d < borrow));
+      r.set(i, t);
+    }
+    return r;
+  }
+
+  /// WideInt::to_double of the same value.
+  double to_double() const {
+    const FixedInt m = magnitude();
+    int n = N;
+    while (n > 0 && m.limb[n - 1] == 0) --n;
+    const double r = limbs_to_double(m.limb, n);
+    return negative() ? -r : r;
+  }
+  /// The same value as a WideInt of M limbs (its magnitude must fit them).
+  template <int M>
+  WideInt<M> to_wide() const {
+    const FixedInt m = magnitude();
+    int n = N;
+    while (n > 0 && m.limb[n - 1] == 0) --n;
+    mpz_t view;
+    return WideInt<M>(mpz_roinit_n(view, m.limb, negative() ? -n : n));
+  }
+};
+
+namespace fixed_detail {
+/// The 256-bit product of two unsigned 128-bit words: {low, high}.
+inline std::array<UInt128, 2> product(UInt128 a, UInt128 b) {
+  const auto a0 = static_cast<std::uint64_t>(a), a1 = static_cast<std::uint64_t>(a >> 64);
+  const auto b0 = static_cast<std::uint64_t>(b), b1 = static_cast<std::uint64_t>(b >> 64);
+  const UInt128 p00 = static_cast<UInt128>(a0) * b0, p01 = static_cast<UInt128>(a0) * b1;
+  const UInt128 p10 = static_cast<UInt128>(a1) * b0, p11 = static_cast<UInt128>(a1) * b1;
+  const UInt128 mid = (p00 >> 64) + static_cast<std::uint64_t>(p01) + static_cast<std::uint64_t>(p10);
+  return {mid << 64 | static_cast<std::uint64_t>(p00), p11 + (p01 >> 64) + (p10 >> 64) + (mid >> 64)};
+}
+}  // namespace fixed_detail
+
+/// The exact product of an A-limb and a B-limb value in A + B limbs (B = 2): the product of
+/// the two bit patterns read as unsigned, less b·2^(64A) when a < 0 and a·2^(64B) when b < 0
+/// (two's complement, modulo 2^(64(A + B)); no branch).
+template <int A, int B>
+inline FixedInt<A + B> mul(const FixedInt<A>& a, const FixedInt<B>& b) {
+  static_assert(B == 2 && (A == 2 || A == 4), "the widths the engine uses");
+  const UInt128 ub = b.pair(0);
+  const UInt128 ma = a.negative() ? ~UInt128{0} : 0, mb = b.negative() ? ~UInt128{0} : 0;
+  FixedInt<A + B> r;
+  if constexpr (A == 2) {
+    const UInt128 ua = a.pair(0);
+    const auto p = fixed_detail::product(ua, ub);
+    r.set(0, p[0]);
+    r.set(1, p[1] - (ub & ma) - (ua & mb));
+  } else {
+    const UInt128 lo = a.pair(0), hi = a.pair(1);
+    const auto p0 = fixed_detail::product(lo, ub), p1 = fixed_detail::product(hi, ub);
+    UInt128 mid = p0[1] + p1[0];
+    UInt128 top = p1[1] + static_cast<UInt128>(mid < p0[1]);
+    const UInt128 s = lo & mb;  // a·2^128 when b < 0: its low word from mid, its high from top
+    top -= static_cast<UInt128>(mid < s);
+    mid -= s;
+    top -= (hi & mb) + (ub & ma);
+    r.set(0, p0[0]);
+    r.set(1, mid);
+    r.set(2, top);
+  }
+  return r;
+}
+
+/// a x b for components below 2^126: products below 2^252, components below 2^253 (4 limbs).
+inline std::array<FixedInt<4>, 3> fixed_cross(const std::array<Int128, 3>& a, const std::array<Int128, 3>& b) {
+  auto m = [](Int128 x, Int128 y) { return mul(FixedInt<2>(x), FixedInt<2>(y)); };
+  return {m(a[1], b[2]) - m(a[2], b[1]), m(a[2], b[0]) - m(a[0], b[2]), m(a[0], b[1]) - m(a[1], b[0])};
+}
+
+/// n·x for n below 2^253 and x below 2^126: below 3·2^379 < 2^381 (6 limbs).
+inline FixedInt<6> fixed_dot(const std::array<FixedInt<4>, 3>& n, const std::array<Int128, 3>& x) {
+  return mul(n[0], FixedInt<2>(x[0])) + mul(n[1], FixedInt<2>(x[1])) + mul(n[2], FixedInt<2>(x[2]));
+}
+
+}  // namespace hlr
