@@ -128,15 +128,67 @@ inline FixedInt<A + B> mul(const FixedInt<A>& a, const FixedInt<B>& b) {
   return r;
 }
 
+namespace fixed_detail {
+/// a·b for |a|, |b| < 2^126 as hi·2^128 + r1·2^64 + r0: each operand split into a signed high
+/// and an unsigned low limb, the four partial products in 128-bit words (the two middle ones
+/// below 2^126 each, their sum below 2^127).
+struct Signed256 {
+  std::uint64_t r0, r1;
+  Int128 hi;
+};
+inline Signed256 product(Int128 a, Int128 b) {
+  const auto al = static_cast<std::uint64_t>(a), bl = static_cast<std::uint64_t>(b);
+  const auto ah = static_cast<std::int64_t>(a >> 64), bh = static_cast<std::int64_t>(b >> 64);
+  const UInt128 low = static_cast<UInt128>(al) * bl;
+  const Int128 mid = static_cast<Int128>(ah) * static_cast<Int128>(bl) + static_cast<Int128>(bh) * static_cast<Int128>(al);
+  const UInt128 t = (low >> 64) + static_cast<std::uint64_t>(mid);
+  return {static_cast<std::uint64_t>(low), static_cast<std::uint64_t>(t), static_cast<Int128>(ah) * bh + (mid >> 64) + static_cast<Int128>(t >> 64)};
+}
+/// p - q in four limbs.
+inline FixedInt<4> difference(const Signed256& p, const Signed256& q) {
+  FixedInt<4> r;
+  const std::uint64_t b0 = p.r0 < q.r0;
+  r.limb[0] = p.r0 - q.r0;
+  const UInt128 d1 = static_cast<UInt128>(p.r1) - q.r1 - b0;
+  r.limb[1] = static_cast<std::uint64_t>(d1);
+  r.set(1, static_cast<UInt128>(p.hi - q.hi - static_cast<Int128>(d1 >> 127)));
+  return r;
+}
+}  // namespace fixed_detail
+
 /// a x b for components below 2^126: products below 2^252, components below 2^253 (4 limbs).
 inline std::array<FixedInt<4>, 3> fixed_cross(const std::array<Int128, 3>& a, const std::array<Int128, 3>& b) {
-  auto m = [](Int128 x, Int128 y) { return mul(FixedInt<2>(x), FixedInt<2>(y)); };
-  return {m(a[1], b[2]) - m(a[2], b[1]), m(a[2], b[0]) - m(a[0], b[2]), m(a[0], b[1]) - m(a[1], b[0])};
+  using fixed_detail::difference, fixed_detail::product;
+  return {difference(product(a[1], b[2]), product(a[2], b[1])), difference(product(a[2], b[0]), product(a[0], b[2])),
+          difference(product(a[0], b[1]), product(a[1], b[0]))};
 }
 
-/// n·x for n below 2^253 and x below 2^126: below 3·2^379 < 2^381 (6 limbs).
+/// n·x for n below 2^253 and x below 2^126: below 3·2^379 < 2^381 (6 limbs). Each term as
+/// nh·x·2^128 + nl·x (n's signed high and unsigned low words), nl·x as the unsigned product
+/// less nl·2^128 when x < 0; summed in three words with their carries.
 inline FixedInt<6> fixed_dot(const std::array<FixedInt<4>, 3>& n, const std::array<Int128, 3>& x) {
-  return mul(n[0], FixedInt<2>(x[0])) + mul(n[1], FixedInt<2>(x[1])) + mul(n[2], FixedInt<2>(x[2]));
+  UInt128 lo = 0, mid = 0;
+  Int128 hi = 0;
+  for (int k = 0; k < 3; ++k) {
+    const UInt128 nl = n[k].pair(0);
+    const auto u = fixed_detail::product(nl, static_cast<UInt128>(x[k]));
+    const fixed_detail::Signed256 p = fixed_detail::product(static_cast<Int128>(n[k].pair(1)), x[k]);
+    lo += u[0];
+    const UInt128 pl = static_cast<UInt128>(p.r1) << 64 | p.r0, less = x[k] < 0 ? nl : 0;
+    Int128 carry = 0;
+    for (const UInt128 v : {u[1], pl, static_cast<UInt128>(lo < u[0])}) {
+      mid += v;
+      carry += mid < v;
+    }
+    carry -= mid < less;
+    mid -= less;
+    hi += p.hi + carry;
+  }
+  FixedInt<6> r;
+  r.set(0, lo);
+  r.set(1, mid);
+  r.set(2, static_cast<UInt128>(hi));
+  return r;
 }
 
 }  // namespace hlr

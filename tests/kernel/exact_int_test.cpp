@@ -240,6 +240,17 @@ TEST(ExactInt, FixedWidthsAgreeWithGmpAndWideIntAtTheirBounds) {
     EXPECT_EQ(std::bit_cast<std::uint64_t>(q.to_double()), std::bit_cast<std::uint64_t>(WideInt<10>(qv.get_mpz_t()).to_double())) << qv;
     EXPECT_EQ(p.to_wide<5>().to_mpz(), n);
     EXPECT_EQ(q.to_wide<10>().to_mpz(), qv);
+    // The cross product and the dot product the occluders are made with.
+    const std::array<mpz_class, 3> u = {a, b, random_bits(rng, 126)}, w = {c, d, random_bits(rng, 126)};
+    const std::array<Int128, 3> ui = {to_int128(u[0]), to_int128(u[1]), to_int128(u[2])}, wi = {to_int128(w[0]), to_int128(w[1]), to_int128(w[2])};
+    const std::array<FixedInt<4>, 3> x = fixed_cross(ui, wi);
+    const std::array<mpz_class, 3> xv = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    for (int k = 0; k < 3; ++k)
+      ASSERT_EQ(fixed_value(x[k]), xv[k]) << k << ": " << u[0] << " " << u[1] << " " << u[2] << " x " << w[0] << " " << w[1] << " " << w[2];
+    const std::array<mpz_class, 3> z = {random_bits(rng, 126), random_bits(rng, 126), random_bits(rng, 126)};
+    ASSERT_EQ(fixed_value(fixed_dot(x, {to_int128(z[0]), to_int128(z[1]), to_int128(z[2])})), xv[0] * z[0] + xv[1] * z[1] + xv[2] * z[2]);
+    ASSERT_EQ(fixed_dot(x, ui).sign(), 0);  // (u x w)·u
+    ASSERT_EQ(fixed_value(fixed_dot({fe, p, fe.negated()}, wi)), e * w[0] + n * w[1] - e * w[2]);
   }
   EXPECT_EQ(FixedInt<4>().to_double(), 0.0);
   EXPECT_FALSE(std::signbit(FixedInt<4>().negated().to_double()));  // +0, as WideInt's 0
