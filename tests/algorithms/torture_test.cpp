@@ -266,6 +266,12 @@ TEST(Torture, OffGridBoxesOnGmpInOrthographicViews) {
   eye_among_the_bodies(env_long("HLR_TORTURE_SCENES", 200) / 4, static_cast<unsigned>(env_long("HLR_TORTURE_SEED", 12)) + 2, 200, false, true);
 }
 
+// The same two boxes off the grid on the multi-limb path (no far box: every coordinate below
+// 2^125), where their normals and occluder planes are made in fixed widths (fixed_int.hpp).
+TEST(Torture, OffGridBoxesOnTheMultiLimbPathInOrthographicViews) {
+  eye_among_the_bodies(env_long("HLR_TORTURE_SCENES", 200) / 4, static_cast<unsigned>(env_long("HLR_TORTURE_SEED", 12)) + 3, 0, false, true);
+}
+
 // Every scene the torture suite (or a report) found wrong once, as a named file in
 // data/degenerate/: both routes checked by the oracle and against each other.
 TEST(Torture, DegenerateFiles) {
