@@ -327,6 +327,7 @@ class Engine {
   bool fixed_normal(const Tri& t, Vec<P>& n) const;
   bool fixed_normal_doubles(const Tri& t, std::array<double, 3>& d) const;
   bool fixed_edge_planes(const Tri& t, std::uint8_t closed, Occ& o) const;
+  bool fixed_plane_values(const Occ& o, int k, const std::array<int, 2>& gv, V& f0, V& f1) const;
   // face_engine_intersections.cpp
   void find_intersections(LineDrawing& res);
   std::vector<Segment> crossing_segments(LineDrawing& res);

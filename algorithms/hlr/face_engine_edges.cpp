@@ -446,6 +446,42 @@ bool Engine<P>::fixed_edge_planes(const Tri& t, std::uint8_t closed, Occ& o) con
   }
 }
 
+// Constraint k's values m·X - c at the segment's two end vertices, as exact_plane's plane gives
+// them, in fixed widths: m·(X - a) for a vertex a on the plane (the face plane through the
+// triangle's first vertex, -n: exact_plane's m; side plane k, orthographic, D x (q - p) through
+// p, turned as make_occluder turned it). Not where normal() or side_plane() take the grid's
+// multiples (every corner on the grid; both of the side's ends), nor for a face plane moved to
+// the eye: false, and the caller makes the plane. X - a below 2^126, m below 2^253: the values
+// below 2^381 (fixed_dot).
+template <class P>
+bool Engine<P>::fixed_plane_values(const Occ& o, int k, const std::array<int, 2>& gv, V& f0, V& f1) const {
+  if constexpr (std::is_same_v<P, Wide>) {
+    if (!fixed_) return false;
+    const std::vector<char>& g = prep_->on_grid;
+    auto on = [&](int v) { return !g.empty() && g[static_cast<std::size_t>(v)] != 0; };
+    std::array<FixedInt<4>, 3> m;
+    std::array<Int128, 3> a;
+    if (k == 0) {
+      if (!o.through_vertices || (on(o.v[0]) && on(o.v[1]) && on(o.v[2]))) return false;
+      a = fixed_point(o.v[0]);
+      m = fixed_cross(diff(fixed_point(o.v[2]), a), diff(fixed_point(o.v[1]), a));  // -(b - a) x (c - a)
+    } else {
+      const int p = o.v[k - 1], q = o.v[k % 3];
+      if (!view_fixed_ || (on(p) && on(q))) return false;
+      a = fixed_point(p);
+      m = fixed_cross(*view_fixed_, diff(fixed_point(q), a));
+      if (o.turned >> k & 1)
+        for (FixedInt<4>& x : m) x = x.negated();
+    }
+    f0 = fixed_dot(m, diff(fixed_point(gv[0]), a)).template to_wide<10>();
+    f1 = fixed_dot(m, diff(fixed_point(gv[1]), a)).template to_wide<10>();
+    return true;
+  } else {
+    (void)o, (void)k, (void)gv, (void)f0, (void)f1;
+    return false;
+  }
+}
+
 template class Engine<Fast>;
 template class Engine<Fast40>;
 template class Engine<Wide>;

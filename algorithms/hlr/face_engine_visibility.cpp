@@ -320,11 +320,13 @@ void Engine<P>::test_integer(int oi, const std::array<int, 2>& gv, Work& wk) con
     }
     if (exact) {
       if constexpr (kFiltered) {
-        Vec<P> m;
-        V c;
-        exact_plane(o, k, m, c);
-        f0 = dot<P>(m, pt(gv[0])) - c;
-        f1 = dot<P>(m, pt(gv[1])) - c;
+        if (!fixed_plane_values(o, k, gv, f0, f1)) {
+          Vec<P> m;
+          V c;
+          exact_plane(o, k, m, c);
+          f0 = dot<P>(m, pt(gv[0])) - c;
+          f1 = dot<P>(m, pt(gv[1])) - c;
+        }
       } else {
         f0 = dot<P>(o.m[k], pt(gv[0])) - o.c[k];
         f1 = dot<P>(o.m[k], pt(gv[1])) - o.c[k];
