@@ -15,7 +15,6 @@
 int main(int argc, char** argv) {
   hlr::cli::use_huge_pages(argv);
   hlr::cli::use_number_pool();
-  hlr::cli::keep_large_blocks();
   hlr::cli::report_arithmetic_faults();
   CLI::App app{"hlr: exact hidden-line removal for polyhedra"};
   app.require_subcommand(1);

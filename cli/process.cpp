@@ -165,7 +165,6 @@ void report_arithmetic_faults() {
 }
 
 void exit_without_teardown(int code) {
-  report_large_blocks();
 #ifdef HLR_SANITIZED
   (void)code;
 #else

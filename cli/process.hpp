@@ -17,13 +17,6 @@ void use_huge_pages(char** argv);
 /// HLR_MALLOC=system or a sanitizer build. Call first thing, before any thread starts.
 void use_number_pool();
 
-/// Keeps up to eight freed blocks over glibc's mmap threshold (32 MiB) for the next large
-/// request instead of unmapping them (large_blocks.cpp: the program's operator new and sized
-/// delete), unless HLR_MALLOC=system; sanitizer builds keep their own operator new.
-void keep_large_blocks();
-/// Under HLR_MALLOC=show, how many requests over 32 MiB kept blocks served (standard error).
-void report_large_blocks();
-
 /// Turns an arithmetic fault (SIGFPE: GMP's answer to a conversion of a number that is not
 /// finite, or an integer division by zero) into a message and exit code 1 instead of a crash
 /// (not in sanitizer builds, which report it with its stack). The outputs are written whole or

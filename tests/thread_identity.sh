@@ -5,8 +5,7 @@
 # visible surfaces (--surfaces), a raster (PNG and face ids) and a horizon (SVG and JSON).
 # The same bytes again with HLR_MALLOC=system (no huge pages) and =restart (the settings a
 # large job gets, here for small ones), and the restart's settings are the ones
-# cli/process.cpp names, for large jobs only, a user's own left alone; and large blocks kept
-# for the next large request.
+# cli/process.cpp names, for large jobs only, a user's own left alone.
 # Usage: tests/thread_identity.sh HLR GEN_MESH DATA_DIR
 set -euo pipefail
 hlr="$1"; gen="$2"; data="$3"
@@ -74,21 +73,5 @@ done
 echo "huge pages, small jobs: set in process"
 shown="$(GLIBC_TUNABLES=glibc.malloc.hugetlb=0 HLR_MALLOC=show "$hlr" --version 2>&1 >/dev/null || true)"
 [ "$shown" = "hlr: GLIBC_TUNABLES=glibc.malloc.hugetlb=0" ] || { echo "huge pages: a user's setting changed: '$shown'"; fail=1; }
-# Large blocks kept for the next large request (cli/large_blocks.cpp): a batch of two views of
-# a 500k-triangle sphere, whose second drawing takes the first's freed arrays over 32 MiB, the
-# same bytes as with glibc's own settings (not in a sanitizer build, which keeps none).
-shown="$(HLR_MALLOC=show "$hlr" render "$work/sphere.off" -o "$work/kept.svg" 2>&1 >/dev/null | grep 'large blocks' || true)"
-case "$shown" in
-  *"not kept (sanitizer build)"*) echo "large blocks: not kept in a sanitizer build" ;;
-  *" of "*)
-    "$gen" sphere 160 > "$work/big.off"
-    big=(render "$work/big.off" --edges all --view 1,1.3,1.7 --view 0,0.3,1)
-    shown="$(HLR_MALLOC=show "$hlr" "${big[@]}" -o "$work/big1.svg" -o "$work/big2.svg" 2>&1 >/dev/null | grep 'large blocks' || true)"
-    HLR_MALLOC=system "$hlr" "${big[@]}" -o "$work/big1.system.svg" -o "$work/big2.system.svg" 2> "$work/err" || { echo "large blocks: HLR_MALLOC=system failed"; fail=1; }
-    for k in 1 2; do cmp -s "$work/big$k.svg" "$work/big$k.system.svg" || { echo "large blocks: drawing $k differs from HLR_MALLOC=system"; fail=1; }; done
-    served="$(echo "$shown" | sed -n 's/.*large blocks: \([0-9]*\) of.*/\1/p')"
-    if [ "${served:-0}" -gt 0 ]; then echo "large blocks: $shown, the same bytes"; else echo "large blocks: none served from kept blocks: '$shown'"; fail=1; fi ;;
-  *) echo "large blocks: HLR_MALLOC=show did not report them: '$shown'"; fail=1 ;;
-esac
 [ "$fail" = 0 ] && echo "thread identity: all identical"
 exit "$fail"
