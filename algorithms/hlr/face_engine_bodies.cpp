@@ -290,7 +290,8 @@ int Engine<P>::triangulate_body(int b) {
     const Face& face = faces[f];
     if (face.size() != 3) return;  // after the triangulation below
     Tri probe{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}};
-    if (std::array<double, 3> d; face_normal_[b].lazy() && fixed_normal_doubles(probe, d)) {  // (0 exactly when 0)
+    // A lazy store's doubles in fixed widths, as normal() makes them off the grid (0 exactly when 0).
+    if (std::array<double, 3> d; face_normal_[b].lazy() && !on_grid(probe) && fixed_normal_doubles(probe, d)) {
       if (d[0] == 0 && d[1] == 0 && d[2] == 0) degenerate_[b][f] = 1;
       else facing_at[f] = probe.v[0], face_normal_[b].put_doubles(f, d);
       return;
