@@ -38,13 +38,17 @@ struct Tri {
   std::array<bool, 3> edge;  // side k is a polygon edge (else a diagonal)
 };
 
-/// A front triangle's sight prism: constraint k is m[k]·X - c[k] > 0 (>= 0 when closed[k]);
-/// 0 is "behind the plane", 1..3 the side planes through the view direction or the eye.
+/// A front triangle's sight prism: constraint k is m[k]·(X - a_k) > 0 (>= 0 when closed[k]);
+/// 0 is "behind the plane", 1..3 the side planes through the view direction or the eye. a_k
+/// is a point of plane k (Engine::plane_point): the vertex v[0] for the face plane, or the eye
+/// where that plane was moved to it (through_vertices false), and v[k-1] for side plane k
+/// (which holds v[k-1], v[k] and the eye). The constants m[k]·a_k are not kept: they were a
+/// third of the record, which is the largest array of a large drawing.
 template <class P>
 struct Occluder {
   Vec<P> m[4];
-  typename P::V c[4];
   bool closed[4] = {false, false, false, false};
+  bool through_vertices = true;
   int body, face;
   std::array<int, 3> v;  // global vertex ids, oriented toward the viewer (side k+1: v[k] -> v[k+1])
 };
@@ -364,7 +368,9 @@ class Engine {
     std::array<double, 3> Ad, Bd;
     bool filter = true;  // the doubles are fit for filtered_sign
   };
-  static int filtered_sign(const Occ& o, int k, const std::array<double, 3>& X);
+  int filtered_sign(const Occ& o, int k, const std::array<double, 3>& X) const;
+  /// The point a_k of constraint k's plane that an Occluder's values are taken from.
+  decltype(auto) plane_point(const Occ& o, int k) const { return k == 0 ? (o.through_vertices ? pt(o.v[0]) : view_) : pt(o.v[k - 1]); }
   void test_rational(const Occ& o, const RationalEnds& e, std::vector<std::pair<Rational, Rational>>& out, Work& wk) const;
 
   const std::vector<const Polyhedron*>& bodies_;

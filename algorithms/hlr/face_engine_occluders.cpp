@@ -254,6 +254,7 @@ void Engine<P>::build_occluders() {
   loop.for_each(sel_.size(), 1024, [&](std::size_t i) { make_occluder(tris_[sel_[i]], closed_[i], occ_[i], boxes[i]); });
   std::vector<int>().swap(sel_);
   std::vector<std::uint8_t>().swap(closed_);
+  if (!keep_) std::vector<Tri>().swap(tris_);  // the triangles' last use: visibility reads the occluders
   // Widen every box by a margin far above the error of the double projections (a filter
   // only: it skips work, never decides; bounds::kBoxMargin).
   // (The largest magnitude per worker, then over the workers: a maximum in any order.)
@@ -318,8 +319,8 @@ void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& b
     o.turned = 0;
     plane_doubles(m0, c0, o.m[0], o.c[0]);
   } else {
+    o.through_vertices = !to_eye;
     o.m[0] = std::move(m0);
-    o.c[0] = std::move(c0);
   }
   for (int k = 0; k < 3; ++k) {
     Vec<P> m;
@@ -333,8 +334,7 @@ void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& b
       if (turn) o.turned |= static_cast<std::uint8_t>(1u << (k + 1));
       plane_doubles(m, c, o.m[k + 1], o.c[k + 1]);
     } else {
-      o.m[k + 1] = m;
-      o.c[k + 1] = c;
+      o.m[k + 1] = m;  // c = m·v[k] (side_plane: through p, and the eye's plane holds p)
     }
     o.closed[k + 1] = !t.edge[k] || (closed >> (k + 1) & 1) != 0;
   }
@@ -543,7 +543,7 @@ void Engine<P>::exact_plane(const Occ& o, int k, Vec<P>& m, V& c) const {
     }
   } else {
     m = o.m[k];
-    c = o.c[k];
+    c = dot<P>(m, plane_point(o, k));
   }
 }
 

@@ -328,8 +328,9 @@ void Engine<P>::test_integer(int oi, const std::array<int, 2>& gv, Work& wk) con
           f1 = dot<P>(m, pt(gv[1])) - c;
         }
       } else {
-        f0 = dot<P>(o.m[k], pt(gv[0])) - o.c[k];
-        f1 = dot<P>(o.m[k], pt(gv[1])) - o.c[k];
+        const Vec<P>& a = plane_point(o, k);
+        f0 = dot<P>(o.m[k], sub<P>(pt(gv[0]), a));
+        f1 = dot<P>(o.m[k], sub<P>(pt(gv[1]), a));
       }
       s0 = P::sign(f0), s1 = P::sign(f1);
     }
@@ -411,12 +412,12 @@ int Engine<P>::filtered_sign(const double* m, double c, const std::array<double,
 }
 
 template <class P>
-int Engine<P>::filtered_sign(const Occ& o, int k, const std::array<double, 3>& X) {
+int Engine<P>::filtered_sign(const Occ& o, int k, const std::array<double, 3>& X) const {
   if constexpr (kFiltered) {
     return filtered_sign(o.m[k], o.c[k], X);
   } else {
     const double m[3] = {P::cdbl(o.m[k][0]), P::cdbl(o.m[k][1]), P::cdbl(o.m[k][2])};
-    return filtered_sign(m, P::dbl(o.c[k]), X);
+    return filtered_sign(m, P::dbl(dot<P>(o.m[k], plane_point(o, k))), X);
   }
 }
 
