@@ -163,6 +163,41 @@ inline std::array<FixedInt<4>, 3> fixed_cross(const std::array<Int128, 3>& a, co
           difference(product(a[0], b[1]), product(a[1], b[0]))};
 }
 
+namespace fixed_detail {
+/// d·e for |d| < 2^63 and |e| < 2^126 as hi·2^64 + lo (hi below 2^125): e split into its signed
+/// high and unsigned low limb, d·e_high one signed 64 x 64 product, d·e_low the unsigned
+/// product of the bit patterns less e_low·2^64 when d < 0 (its value below 2^127).
+struct Signed192 {
+  std::uint64_t lo;
+  Int128 hi;
+};
+inline Signed192 product(std::int64_t d, Int128 e) {
+  const auto el = static_cast<std::uint64_t>(e);
+  const auto eh = static_cast<std::int64_t>(e >> 64);
+  const UInt128 low = static_cast<UInt128>(static_cast<std::uint64_t>(d)) * el - (d < 0 ? static_cast<UInt128>(el) << 64 : 0);
+  return {static_cast<std::uint64_t>(low), static_cast<Int128>(d) * eh + (static_cast<Int128>(low) >> 64)};
+}
+/// p - q in four limbs (sign-extended).
+inline FixedInt<4> difference(const Signed192& p, const Signed192& q) {
+  FixedInt<4> r;
+  r.limb[0] = p.lo - q.lo;
+  const Int128 hi = p.hi - q.hi - static_cast<Int128>(p.lo < q.lo);
+  r.limb[1] = static_cast<std::uint64_t>(hi);
+  r.limb[2] = static_cast<std::uint64_t>(hi >> 64);
+  r.limb[3] = hi < 0 ? ~std::uint64_t{0} : 0;
+  return r;
+}
+}  // namespace fixed_detail
+
+/// d x e for |d_j| < 2^62 (an orthographic direction) and |e_j| < 2^126 (an edge): products
+/// below 2^188, components below 2^189, the same values as fixed_cross of the 128-bit d, in
+/// 64 x 64-bit products.
+inline std::array<FixedInt<4>, 3> fixed_cross(const std::array<std::int64_t, 3>& d, const std::array<Int128, 3>& e) {
+  using fixed_detail::difference, fixed_detail::product;
+  return {difference(product(d[1], e[2]), product(d[2], e[1])), difference(product(d[2], e[0]), product(d[0], e[2])),
+          difference(product(d[0], e[1]), product(d[1], e[0]))};
+}
+
 /// n·x for n below 2^253 and x below 2^126: below 3·2^379 < 2^381 (6 limbs). Each term as
 /// nh·x·2^128 + nl·x (n's signed high and unsigned low words), nl·x as the unsigned product
 /// less nl·2^128 when x < 0; summed in three words with their carries.

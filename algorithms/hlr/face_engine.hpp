@@ -411,9 +411,9 @@ class Engine {
   double grid_factor_mant_ = 0;  // grid_factor_ as mantissa (within 2u, truncated) and exponent
   long grid_factor_exp_ = 0;
   std::optional<std::array<std::int64_t, 3>> eye_small_;
-  std::optional<std::array<Int128, 3>> view_small_;  // orthographic: the direction, each component below 2^62
-  bool fixed_ = false;                               // Wide: every coordinate below 2^125 (face_engine_edges.cpp)
-  std::optional<std::array<Int128, 3>> view_fixed_;  // and an orthographic direction below 2^61
+  std::optional<std::array<Int128, 3>> view_small_;        // orthographic: the direction, each component below 2^62
+  bool fixed_ = false;                                     // Wide: every coordinate below 2^125 (face_engine_edges.cpp)
+  std::optional<std::array<std::int64_t, 3>> view_fixed_;  // and an orthographic direction below 2^61
   std::vector<char> vfront_;
   std::vector<char> vertex_closed_;
   std::vector<int> vertex_cap_;   // find_intersections: per vertex, the cap part of its cap faces (-1 none, -2 several)

@@ -353,10 +353,10 @@ void Engine<P>::fixed_width() {
       if (wide[w]) return;
     fixed_ = true;
     if (cam_.perspective) return;
-    std::array<Int128, 3> d;
+    std::array<std::int64_t, 3> d;
     for (int k = 0; k < 3; ++k) {
       if (view_[k].bits() > kFixedViewBits) return;
-      d[k] = view_[k].to_int128();
+      d[k] = static_cast<std::int64_t>(view_[k].to_int128());
     }
     view_fixed_ = d;
   }
@@ -407,19 +407,20 @@ bool Engine<P>::fixed_normal_doubles(const Tri& t, std::array<double, 3>& d) con
 
 // shared_edge_planes() in fixed widths (fixed_ and view_fixed_): the normal below 2^253 and
 // its value at a vertex below 2^381; a side plane's normal D x e below 2·2^61·2^126 = 2^188 in
-// 4 limbs and its value at a vertex below 3·2^188·2^125 < 2^315 in 6; D·n below 2^317 in 6.
+// 4 limbs (D's components as 64-bit factors) and its value at a vertex below 3·2^188·2^125 <
+// 2^315 in 6; D·n below 2^317 in 6.
 template <class P>
 bool Engine<P>::fixed_edge_planes(const Tri& t, std::uint8_t closed, Occ& o) const {
   if constexpr (std::is_same_v<P, Wide>) {
     if (!view_fixed_) return false;
     const std::array<Int128, 3> a = fixed_point(t.v[0]), b = fixed_point(t.v[1]), c = fixed_point(t.v[2]);
-    const std::array<Int128, 3>& view = *view_fixed_;
+    const std::array<std::int64_t, 3>& view = *view_fixed_;
     const std::array<Int128, 3> u = diff(b, a), w = diff(c, a);
     const std::array<FixedInt<4>, 3> n = fixed_cross(u, w);
     const std::array<double, 3> nd = {n[0].to_double(), n[1].to_double(), n[2].to_double()};
     const std::array<double, 3> dd = {P::cdbl(view_[0]), P::cdbl(view_[1]), P::cdbl(view_[2])};
     int facing = filtered_sign(nd.data(), 0.0, dd);
-    if (facing == 0) facing = fixed_dot(n, view).sign();
+    if (facing == 0) facing = fixed_dot(n, {view[0], view[1], view[2]}).sign();
     const bool turn = facing < 0;
     o.through_vertices = true;
     o.turned = 0;

@@ -251,6 +251,13 @@ TEST(ExactInt, FixedWidthsAgreeWithGmpAndWideIntAtTheirBounds) {
     ASSERT_EQ(fixed_value(fixed_dot(x, {to_int128(z[0]), to_int128(z[1]), to_int128(z[2])})), xv[0] * z[0] + xv[1] * z[1] + xv[2] * z[2]);
     ASSERT_EQ(fixed_dot(x, ui).sign(), 0);  // (u x w)·u
     ASSERT_EQ(fixed_value(fixed_dot({fe, p, fe.negated()}, wi)), e * w[0] + n * w[1] - e * w[2]);
+    // An orthographic direction below 2^62 across an edge: the 64-bit factors' cross product.
+    const std::array<mpz_class, 3> dv = {random_bits(rng, 62), random_bits(rng, 62), random_bits(rng, 62)};
+    const std::array<std::int64_t, 3> di = {dv[0].get_si(), dv[1].get_si(), dv[2].get_si()};
+    const std::array<FixedInt<4>, 3> y = fixed_cross(di, wi);
+    const std::array<mpz_class, 3> yv = {dv[1] * w[2] - dv[2] * w[1], dv[2] * w[0] - dv[0] * w[2], dv[0] * w[1] - dv[1] * w[0]};
+    for (int k = 0; k < 3; ++k) ASSERT_EQ(fixed_value(y[k]), yv[k]) << k << ": " << dv[0] << " " << dv[1] << " " << dv[2] << " x " << w[0];
+    ASSERT_EQ(fixed_dot(y, wi).sign(), 0);  // (d x w)·w
   }
   EXPECT_EQ(FixedInt<4>().to_double(), 0.0);
   EXPECT_FALSE(std::signbit(FixedInt<4>().negated().to_double()));  // +0, as WideInt's 0
