@@ -62,22 +62,41 @@ Point3 Segment::at(const Rational& t) const {
   return from() + t * (to() - from());
 }
 
-static_assert(sizeof(Segment) <= 64, "a segment of a mesh edge costs 64 bytes");
+static_assert(sizeof(Segment) <= 56, "a segment of a mesh edge costs 56 bytes");
 
 // Every field; the owned ends copied (the copy owns its own).
 Segment::Segment(const Segment& o)
     : kind(o.kind), line(o.line), self_hidden(o.self_hidden), body(o.body), body2(o.body2), v0(o.v0), v1(o.v1),
-      face0(o.face0), face1(o.face1), pieces(o.pieces),
-      own_(o.own_ ? std::make_unique<const std::array<Point3, 2>>(*o.own_) : nullptr), base_(o.base_) {}
+      face0(o.face0), face1(o.face1), pieces(o.pieces), ends_(o.ends_) {
+  if (o.owned()) {
+    ends_ = 0;
+    set_ends((*o.own())[0], (*o.own())[1]);
+  }
+}
 
 Segment& Segment::operator=(const Segment& o) {
-  if (this != &o) *this = Segment(o);
+  if (this != &o) Segment(o).swap(*this);
   return *this;
 }
 
+void Segment::swap(Segment& o) noexcept {
+  std::swap(kind, o.kind);
+  std::swap(line, o.line);
+  std::swap(self_hidden, o.self_hidden);
+  std::swap(body, o.body);
+  std::swap(body2, o.body2);
+  std::swap(v0, o.v0);
+  std::swap(v1, o.v1);
+  std::swap(face0, o.face0);
+  std::swap(face1, o.face1);
+  std::swap(pieces, o.pieces);
+  std::swap(ends_, o.ends_);
+}
+
 void Segment::set_ends(Point3 a, Point3 b) {
-  own_ = std::make_unique<const std::array<Point3, 2>>(std::array<Point3, 2>{std::move(a), std::move(b)});
-  base_ = nullptr;
+  const auto* own = new const std::array<Point3, 2>{std::move(a), std::move(b)};
+  release();
+  ends_ = reinterpret_cast<std::uintptr_t>(own) | 1;
 }
 
 namespace {

@@ -166,30 +166,42 @@ struct Segment {
 
   Segment() = default;
   Segment(const Segment& o);
-  Segment(Segment&&) noexcept = default;
+  Segment(Segment&& o) noexcept : Segment() { swap(o); }
   Segment& operator=(const Segment& o);
-  Segment& operator=(Segment&&) noexcept = default;
-  ~Segment() = default;
+  Segment& operator=(Segment&& o) noexcept {
+    Segment(std::move(o)).swap(*this);
+    return *this;
+  }
+  ~Segment() { release(); }
 
   /// The ends, world coordinates (set before use).
-  const Point3& from() const { return own_ ? (*own_)[0] : base_[v0]; }
-  const Point3& to() const { return own_ ? (*own_)[1] : base_[v1]; }
+  const Point3& from() const { return owned() ? (*own())[0] : base()[v0]; }
+  const Point3& to() const { return owned() ? (*own())[1] : base()[v1]; }
   /// Ends owned by the segment.
   void set_ends(Point3 a, Point3 b);
   /// Ends borrowed from storage that outlives the segment (a body's vertices): vertices[v0]
   /// and vertices[v1] (set v0 and v1 first). A segment of a million-edge mesh then costs no
   /// exact numbers of its own.
   void borrow_ends(const std::vector<Point3>& vertices) {
-    own_.reset();
-    base_ = vertices.data();
+    release();
+    ends_ = reinterpret_cast<std::uintptr_t>(vertices.data());
   }
   /// The vertices the ends are borrowed from (from() is borrowed()[v0]), or nullptr when the
   /// segment owns its ends.
-  const Point3* borrowed() const { return own_ ? nullptr : base_; }
+  const Point3* borrowed() const { return owned() ? nullptr : base(); }
 
  private:
-  std::unique_ptr<const std::array<Point3, 2>> own_;
-  const Point3* base_ = nullptr;
+  // One word for either end store (56 bytes a segment, not 64): the borrowed vertex array, or
+  // the owned pair's address with its lowest bit set (a heap block is aligned: that bit is 0).
+  std::uintptr_t ends_ = 0;
+  bool owned() const { return (ends_ & 1) != 0; }
+  const std::array<Point3, 2>* own() const { return reinterpret_cast<const std::array<Point3, 2>*>(ends_ & ~std::uintptr_t{1}); }
+  const Point3* base() const { return reinterpret_cast<const Point3*>(ends_); }
+  void release() {
+    if (owned()) delete own();
+    ends_ = 0;
+  }
+  void swap(Segment& o) noexcept;
 };
 
 /// The hidden-line methods: per-face occluders (any mesh), Roberts' algorithm on convex bodies,
