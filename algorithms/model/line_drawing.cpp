@@ -66,8 +66,17 @@ static_assert(sizeof(Segment) <= 56, "a segment of a mesh edge costs 56 bytes");
 
 // Every field; the owned ends copied (the copy owns its own).
 Segment::Segment(const Segment& o)
-    : kind(o.kind), line(o.line), self_hidden(o.self_hidden), body(o.body), body2(o.body2), v0(o.v0), v1(o.v1),
-      face0(o.face0), face1(o.face1), pieces(o.pieces), ends_(o.ends_) {
+    : kind(o.kind),
+      line(o.line),
+      self_hidden(o.self_hidden),
+      body(o.body),
+      body2(o.body2),
+      v0(o.v0),
+      v1(o.v1),
+      face0(o.face0),
+      face1(o.face1),
+      pieces(o.pieces),
+      ends_(o.ends_) {
   if (o.owned()) {
     ends_ = 0;
     set_ends((*o.own())[0], (*o.own())[1]);
