@@ -52,7 +52,7 @@ struct Occluder {
   int body, face;
   std::array<int, 3> v;  // global vertex ids, oriented toward the viewer (side k+1: v[k] -> v[k+1])
 };
-static_assert(sizeof(Occluder<Fast>) <= 120, "an occluder of the 64-bit path costs 120 bytes");
+static_assert(sizeof(Occluder<Fast>) <= 128, "an occluder of the 64-bit path costs 128 bytes");
 
 /// A drawn edge of a body (what its segment needs once the body's topology is freed).
 struct DrawnEdge {
