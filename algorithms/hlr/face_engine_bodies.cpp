@@ -116,23 +116,7 @@ LineDrawing Engine<P>::run() {
   // and the triangles are freed, so that they do not add to the engine's peak.
   std::vector<PieceList> pieces = visibility(drawn, crossing, res);
   release_arrays();
-  const ParallelLoop loop(opt_.threads);
-  reserve_touched(res.segments, total, loop);
-  res.segments.resize(total);
-  std::size_t at = 0;  // the segments on all cores, in the order of the pieces
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    loop.for_each(drawn[b].size(), 4096, [&](std::size_t k) {
-      Segment& s = res.segments[at + k];
-      s = edge_segment(static_cast<int>(b), drawn[b][k]);
-      s.pieces = std::move(pieces[at + k]);
-    });
-    at += drawn[b].size();
-    std::vector<DrawnEdge>().swap(drawn[b]);
-  }
-  for (Segment& s : crossing) {
-    s.pieces = std::move(pieces[at]);
-    res.segments[at++] = std::move(s);
-  }
+  make_segments(drawn, std::move(pieces), crossing, total, res);
   auto t3 = Clock::now();
   res.stats.setup_seconds = std::chrono::duration<double>((t1 - t0) - (ti1 - ti0)).count();
   res.stats.intersections_seconds = std::chrono::duration<double>(ti1 - ti0).count();

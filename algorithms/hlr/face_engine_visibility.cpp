@@ -140,6 +140,41 @@ std::vector<PieceList> Engine<P>::visibility(const std::vector<std::vector<Drawn
 }
 
 // Everything visibility needed, freed (the engine is done once visibility has run).
+// The segments on all cores, in the order of the pieces, a million at a time: each run's pages
+// touched on all cores, and the records and pieces it spent given back (release_pages), so that
+// the segments and what they are made of do not add up at the engine's end.
+template <class P>
+void Engine<P>::make_segments(std::vector<std::vector<DrawnEdge>>& drawn, std::vector<PieceList> pieces, std::vector<Segment>& crossing,
+                              std::size_t total, LineDrawing& res) const {
+  const ParallelLoop loop(opt_.threads);
+  res.segments.reserve(total);
+  constexpr std::size_t kRun = std::size_t{1} << 20;
+  std::size_t at = 0;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const std::size_t n = drawn[b].size();
+    for (std::size_t r0 = 0; r0 < n; r0 += kRun) {
+      const std::size_t r1 = std::min(n, r0 + kRun);
+      touch_pages(static_cast<void*>(res.segments.data() + at + r0), (r1 - r0) * sizeof(Segment), loop);
+      res.segments.resize(at + r1);
+      loop.for_each(r1 - r0, 4096, [&](std::size_t i) {
+        const std::size_t k = r0 + i;
+        Segment& s = res.segments[at + k];
+        s = edge_segment(static_cast<int>(b), drawn[b][k]);
+        s.pieces = std::move(pieces[at + k]);
+      });
+      release_pages(static_cast<void*>(drawn[b].data() + r0), (r1 - r0) * sizeof(DrawnEdge));
+      release_pages(static_cast<void*>(pieces.data() + at + r0), (r1 - r0) * sizeof(PieceList));
+    }
+    at += n;
+    std::vector<DrawnEdge>().swap(drawn[b]);
+  }
+  res.segments.resize(total);
+  for (Segment& s : crossing) {
+    s.pieces = std::move(pieces[at]);
+    res.segments[at++] = std::move(s);
+  }
+}
+
 template <class P>
 void Engine<P>::release_arrays() {
   std::vector<Occ>().swap(occ_);
@@ -329,8 +364,9 @@ void Engine<P>::test_integer(int oi, const std::array<int, 2>& gv, Work& wk) con
         }
       } else {
         const Vec<P>& a = plane_point(o, k);
-        f0 = dot<P>(o.m[k], sub<P>(pt(gv[0]), a));
-        f1 = dot<P>(o.m[k], sub<P>(pt(gv[1]), a));
+        const Vec<P> m = plane_normal(o, k);
+        f0 = dot<P>(m, sub<P>(pt(gv[0]), a));
+        f1 = dot<P>(m, sub<P>(pt(gv[1]), a));
       }
       s0 = P::sign(f0), s1 = P::sign(f1);
     }
@@ -416,8 +452,9 @@ int Engine<P>::filtered_sign(const Occ& o, int k, const std::array<double, 3>& X
   if constexpr (kFiltered) {
     return filtered_sign(o.m[k], o.c[k], X);
   } else {
-    const double m[3] = {P::cdbl(o.m[k][0]), P::cdbl(o.m[k][1]), P::cdbl(o.m[k][2])};
-    return filtered_sign(m, P::dbl(dot<P>(o.m[k], plane_point(o, k))), X);
+    const Vec<P> mk = plane_normal(o, k);
+    const double m[3] = {P::cdbl(mk[0]), P::cdbl(mk[1]), P::cdbl(mk[2])};
+    return filtered_sign(m, P::dbl(dot<P>(mk, plane_point(o, k))), X);
   }
 }
 

@@ -2,15 +2,17 @@
 // blocked range with the caller's grain does the chunking.
 #include "algorithms/support/parallel.hpp"
 
-#include "kernel/polyhedron.hpp"
-
-#include <algorithm>
-
+#include <sys/mman.h>
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cstdint>
+
+#include "kernel/polyhedron.hpp"
 
 namespace hlr {
 
@@ -55,6 +57,13 @@ void touch_pages(void* p, std::size_t bytes, const ParallelLoop& loop) {
   loop.run((bytes + kPage - 1) / kPage, kBlock / kPage, [&](unsigned, std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) c[i * kPage] = 0;
   });
+}
+
+void release_pages(void* p, std::size_t bytes) {
+  constexpr std::uintptr_t kPage = 4096;
+  const auto a = reinterpret_cast<std::uintptr_t>(p);
+  const std::uintptr_t lo = (a + kPage - 1) & ~(kPage - 1), hi = (a + bytes) & ~(kPage - 1);
+  if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_DONTNEED);  // (a failure only keeps them)
 }
 
 struct ThreadLimit::Control {

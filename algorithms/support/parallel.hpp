@@ -72,6 +72,12 @@ class ThreadLimit {
 /// big array in order. Writes zero bytes into raw storage (no object may live there yet).
 void touch_pages(void* p, std::size_t bytes, const ParallelLoop& loop);
 
+/// Gives the whole pages inside [p, p + bytes) back to the system (they read as zeros after):
+/// for a large array whose front part is spent while what it became is being made, so that the
+/// two do not add up at their peak. Only for objects whose all-zero bytes the destructor
+/// accepts (moved-from lists, plain records), never read again but as such.
+void release_pages(void* p, std::size_t bytes);
+
 /// v.reserve(n), the new storage's pages touched on all cores (touch_pages): for large
 /// arrays that one thread then fills or constructs in order.
 template <class T>
