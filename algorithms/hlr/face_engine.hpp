@@ -38,24 +38,21 @@ struct Tri {
   std::array<bool, 3> edge;  // side k is a polygon edge (else a diagonal)
 };
 
-/// A front triangle's sight prism: constraint k is m_k·(X - a_k) > 0 (>= 0 when closed[k]);
+/// A front triangle's sight prism: constraint k is m[k]·(X - a_k) > 0 (>= 0 when closed[k]);
 /// 0 is "behind the plane", 1..3 the side planes through the view direction or the eye. a_k
 /// is a point of plane k (Engine::plane_point): the vertex v[0] for the face plane, or the eye
 /// where that plane was moved to it (through_vertices false), and v[k-1] for side plane k
-/// (which holds v[k-1], v[k] and the eye). Only the face plane's normal m_0 is kept; a side
-/// plane's is made again from the vertices when a test needs it (Engine::plane_normal: one
-/// cross product of small integers, turned where `turned`), and no constant m_k·a_k is kept.
-/// The record is the largest array of a large drawing: 192 bytes with every plane, 56 now.
+/// (which holds v[k-1], v[k] and the eye). The constants m[k]·a_k are not kept: they were a
+/// third of the record, which is the largest array of a large drawing.
 template <class P>
 struct Occluder {
-  Vec<P> m0;
+  Vec<P> m[4];
   bool closed[4] = {false, false, false, false};
   bool through_vertices = true;
-  bool turned = false;  // the side planes were negated to hold the third vertex on their positive side
   int body, face;
   std::array<int, 3> v;  // global vertex ids, oriented toward the viewer (side k+1: v[k] -> v[k+1])
 };
-static_assert(sizeof(Occluder<Fast>) <= 56, "an occluder of the 64-bit path costs 56 bytes");
+static_assert(sizeof(Occluder<Fast>) <= 128, "an occluder of the 64-bit path costs 128 bytes");
 
 /// A drawn edge of a body (what its segment needs once the body's topology is freed).
 struct DrawnEdge {
@@ -378,14 +375,6 @@ class Engine {
   int filtered_sign(const Occ& o, int k, const std::array<double, 3>& X) const;
   /// The point a_k of constraint k's plane that an Occluder's values are taken from.
   decltype(auto) plane_point(const Occ& o, int k) const { return k == 0 ? (o.through_vertices ? pt(o.v[0]) : view_) : pt(o.v[k - 1]); }
-  /// An Occluder's constraint k normal: m_0 as kept, a side plane's as make_occluder made it
-  /// (side_plane's D x (q - p), or (p - E) x (q - E) in perspective; turned).
-  Vec<P> plane_normal(const Occluder<P>& o, int k) const {
-    if (k == 0) return o.m0;
-    const auto &p = pt(o.v[k - 1]), &q = pt(o.v[k % 3]);
-    Vec<P> m = cam_.perspective ? cross<P>(sub<P>(p, view_), sub<P>(q, view_)) : cross<P>(view_, sub<P>(q, p));
-    return o.turned ? neg<P>(m) : m;
-  }
   void test_rational(const Occ& o, const RationalEnds& e, std::vector<std::pair<Rational, Rational>>& out, Work& wk) const;
 
   const std::vector<const Polyhedron*>& bodies_;

@@ -320,21 +320,22 @@ void Engine<P>::make_occluder(const Tri& t0, std::uint8_t closed, Occ& o, Box& b
     plane_doubles(m0, c0, o.m[0], o.c[0]);
   } else {
     o.through_vertices = !to_eye;
-    o.turned = turn;
-    o.m0 = std::move(m0);
+    o.m[0] = std::move(m0);
   }
   for (int k = 0; k < 3; ++k) {
+    Vec<P> m;
+    V c;
+    side_plane(t.v[k], t.v[(k + 1) % 3], m, c);
+    if (turn) {
+      m = neg<P>(m);
+      c = -c;
+    }
     if constexpr (kFiltered) {
-      Vec<P> m;
-      V c;
-      side_plane(t.v[k], t.v[(k + 1) % 3], m, c);
-      if (turn) {
-        m = neg<P>(m);
-        c = -c;
-        o.turned |= static_cast<std::uint8_t>(1u << (k + 1));
-      }
+      if (turn) o.turned |= static_cast<std::uint8_t>(1u << (k + 1));
       plane_doubles(m, c, o.m[k + 1], o.c[k + 1]);
-    }  // (else the side planes are made again when a test needs them: plane_normal)
+    } else {
+      o.m[k + 1] = m;  // c = m·v[k] (side_plane: through p, and the eye's plane holds p)
+    }
     o.closed[k + 1] = !t.edge[k] || (closed >> (k + 1) & 1) != 0;
   }
   occluder_box(t, fs, bx);
@@ -541,7 +542,7 @@ void Engine<P>::exact_plane(const Occ& o, int k, Vec<P>& m, V& c) const {
       c = -c;
     }
   } else {
-    m = plane_normal(o, k);
+    m = o.m[k];
     c = dot<P>(m, plane_point(o, k));
   }
 }

@@ -139,7 +139,6 @@ std::vector<PieceList> Engine<P>::visibility(const std::vector<std::vector<Drawn
   return out;
 }
 
-// Everything visibility needed, freed (the engine is done once visibility has run).
 // The segments on all cores, in the order of the pieces, a million at a time: each run's pages
 // touched on all cores, and the records and pieces it spent given back (release_pages), so that
 // the segments and what they are made of do not add up at the engine's end.
@@ -175,6 +174,7 @@ void Engine<P>::make_segments(std::vector<std::vector<DrawnEdge>>& drawn, std::v
   }
 }
 
+// Everything visibility needed, freed (the engine is done once visibility has run).
 template <class P>
 void Engine<P>::release_arrays() {
   std::vector<Occ>().swap(occ_);
@@ -364,9 +364,8 @@ void Engine<P>::test_integer(int oi, const std::array<int, 2>& gv, Work& wk) con
         }
       } else {
         const Vec<P>& a = plane_point(o, k);
-        const Vec<P> m = plane_normal(o, k);
-        f0 = dot<P>(m, sub<P>(pt(gv[0]), a));
-        f1 = dot<P>(m, sub<P>(pt(gv[1]), a));
+        f0 = dot<P>(o.m[k], sub<P>(pt(gv[0]), a));
+        f1 = dot<P>(o.m[k], sub<P>(pt(gv[1]), a));
       }
       s0 = P::sign(f0), s1 = P::sign(f1);
     }
@@ -452,9 +451,8 @@ int Engine<P>::filtered_sign(const Occ& o, int k, const std::array<double, 3>& X
   if constexpr (kFiltered) {
     return filtered_sign(o.m[k], o.c[k], X);
   } else {
-    const Vec<P> mk = plane_normal(o, k);
-    const double m[3] = {P::cdbl(mk[0]), P::cdbl(mk[1]), P::cdbl(mk[2])};
-    return filtered_sign(m, P::dbl(dot<P>(mk, plane_point(o, k))), X);
+    const double m[3] = {P::cdbl(o.m[k][0]), P::cdbl(o.m[k][1]), P::cdbl(o.m[k][2])};
+    return filtered_sign(m, P::dbl(dot<P>(o.m[k], plane_point(o, k))), X);
   }
 }
 
