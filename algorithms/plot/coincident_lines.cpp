@@ -5,8 +5,11 @@
 // along pq). The kept segments are found in a grid of cells a few tolerances wide and of
 // direction classes: a segment looks only at the kept segments in the cells near it whose
 // direction lies within the angle of its own, so a drawing denser than the pen costs about the
-// same per segment as a sparse one. A stroke's segments read only what the strokes before it
-// kept, so a long stroke (a mesh's chained path) is looked at on all cores.
+// same per segment as a sparse one. Strokes are looked at in batches on all cores: each
+// segment of a batch first against what the strokes before the batch kept (the grid does not
+// change meanwhile), then, stroke by stroke in order, against what the batch's earlier strokes
+// kept (the newest entries of the grid's lists, read only where the boxes meet): the same
+// covers as one stroke at a time, on any number of cores.
 #include "algorithms/plot/coincident_lines.hpp"
 
 #include <algorithm>
@@ -14,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
@@ -54,6 +58,7 @@ std::size_t segment_count(const Stroke& s) {
   return n < 2 ? 0 : n - 1 + (s.closed && n > 2 ? 1 : 0);
 }
 Seg segment(const Stroke& s, std::size_t i) { return {s.points[i], s.points[(i + 1) % s.points.size()]}; }
+double length(const Seg& g) { return length(g.a, g.b); }
 
 // The direction class of (dx, dy): the pseudo-angle 1 - dx / (|dx| + dy) of the direction
 // turned into the upper half plane grows with the angle from 0 to 2 over a half turn.
@@ -81,27 +86,40 @@ class KeptGrid {
       cell_ *= 1.25;
     }
     heads_.assign(nx_ * ny_ * kBins, kNone);
+    entries_.reserve(segments + segments / 2);  // mostly one entry a segment: no copies as it grows
   }
 
-  void add(const Seg& s, std::uint32_t id) {
-    const double dx = s.b[0] - s.a[0], dy = s.b[1] - s.a[1], len2 = dx * dx + dy * dy;
-    if (!(len2 > 0)) return;  // covers nothing
-    const bool sound = sound_direction(len2);
-    const int c = sound ? direction_class(dx, dy) : 0;
-    cells(s, 0, [&](std::size_t cell) {
-      for (int k = sound ? c : 0; k <= (sound ? c : kBins - 1); ++k) {
-        std::uint32_t& head = heads_[cell * kBins + k];
-        entries_.push_back({id, head});
-        head = static_cast<std::uint32_t>(entries_.size() - 1);
-      }
-    });
+  // Enters the segments kept[from...], each under its place in `kept` as id; the lists they
+  // enter are found on all cores when they are many, then linked in order.
+  void add(const std::vector<Seg>& kept, std::size_t from, const ParallelLoop& loop) {
+    const std::size_t n = kept.size() - from;
+    if (kept.size() >= kNone) throw std::length_error("merge of coincident lines: too many segments");
+    std::vector<std::size_t> at(n + 1, 0), where;
+    if (n >= kParallelAdd) {
+      loop.for_each(n, 256, [&](std::size_t i) { lists(kept[from + i], [&](std::size_t) { ++at[i + 1]; }); });
+      for (std::size_t i = 0; i < n; ++i) at[i + 1] += at[i];
+      where.resize(at[n]);
+      loop.for_each(n, 256, [&](std::size_t i) {
+        std::size_t w = at[i];
+        lists(kept[from + i], [&](std::size_t l) { where[w++] = l; });
+      });
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto id = static_cast<std::uint32_t>(from + i);
+      if (n >= kParallelAdd)
+        for (std::size_t w = at[i]; w < at[i + 1]; ++w) link(where[w], id);
+      else lists(kept[from + i], [&](std::size_t l) { link(l, id); });
+    }
     if (entries_.size() >= kNone) throw std::length_error("merge of coincident lines: too many segments");
   }
 
+  std::size_t entries() const { return entries_.size(); }
+
   // f(id) for every kept segment in a cell within `reach` of s whose direction class lies
-  // within the reach angle of s's (some more than once).
+  // within the reach angle of s's (some more than once), of the entries from `first` on (a
+  // list holds its newest entries first), until f returns true.
   template <class F>
-  void visit(const Seg& s, double reach, F&& f) const {
+  void visit(const Seg& s, double reach, std::size_t first_entry, F&& f) const {
     const double dx = s.b[0] - s.a[0], dy = s.b[1] - s.a[1], len2 = dx * dx + dy * dy;
     if (!(len2 > 0)) return;  // covered by nothing
     int first = 0, last = kBins - 1;
@@ -109,9 +127,10 @@ class KeptGrid {
       first = direction_class(dx * kReachCos + dy * kReachSin, dy * kReachCos - dx * kReachSin);
       last = direction_class(dx * kReachCos - dy * kReachSin, dy * kReachCos + dx * kReachSin);
     }
+    bool done = false;
     cells(s, reach, [&](std::size_t cell) {
-      for (int k = first;; k = (k + 1) % kBins) {
-        for (std::uint32_t e = heads_[cell * kBins + k]; e != kNone; e = entries_[e].next) f(entries_[e].id);
+      for (int k = first; !done; k = (k + 1) % kBins) {
+        for (std::uint32_t e = heads_[cell * kBins + k]; e != kNone && e >= first_entry && !done; e = entries_[e].next) done = f(entries_[e].id);
         if (k == last) break;
       }
     });
@@ -119,6 +138,24 @@ class KeptGrid {
 
  private:
   static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  static constexpr std::size_t kParallelAdd = 1024;  // segments entered at once on all cores
+
+  // f(list) for every list (cell and direction class) s is entered in.
+  template <class F>
+  void lists(const Seg& s, F&& f) const {
+    const double dx = s.b[0] - s.a[0], dy = s.b[1] - s.a[1], len2 = dx * dx + dy * dy;
+    if (!(len2 > 0)) return;  // covers nothing
+    const bool sound = sound_direction(len2);
+    const int c = sound ? direction_class(dx, dy) : 0;
+    cells(s, 0, [&](std::size_t cell) {
+      for (int k = sound ? c : 0; k <= (sound ? c : kBins - 1); ++k) f(cell * kBins + static_cast<std::size_t>(k));
+    });
+  }
+  void link(std::size_t list, std::uint32_t id) {
+    std::uint32_t& head = heads_[list];
+    entries_.push_back({id, head});
+    head = static_cast<std::uint32_t>(entries_.size() - 1);
+  }
   struct Entry {
     std::uint32_t id, next;
   };
@@ -204,60 +241,113 @@ class Merge {
         reach_(1.5 * tol + 1e-12 * std::max({std::fabs(box[0]), std::fabs(box[1]), std::fabs(box[2]), std::fabs(box[3])})),
         grid_(box, 2 * reach_, segments),
         looked_(loop),
-        look_(loop, 0) {}
+        look_(loop, 0) {
+    kept_.reserve(segments);
+  }
 
-  // The strokes s leaves drawn, s itself when nothing covers it. Its segments' covers read only
-  // what strokes before it kept, so a long stroke's segments are looked at on all cores (each
-  // writes its own covers; the same result on any number of them).
-  std::vector<Stroke> stroke(Stroke&& s, const ParallelLoop& loop) {
-    const std::size_t n = segment_count(s);
-    std::vector<std::vector<std::pair<double, double>>> covers(n);
+  // Appends to `out` the strokes each of `batch` leaves drawn (a stroke itself when nothing
+  // covers it), in order; what a stroke draws is kept for the strokes after it.
+  void batch(std::span<Stroke> batch, std::vector<Stroke>& out, const ParallelLoop& loop) {
+    std::vector<std::size_t> at{0};
+    std::vector<std::array<double, 4>> boxes;
+    for (const Stroke& s : batch) at.push_back(at.back() + segment_count(s)), boxes.push_back(box_of(s));
+    // A stroke whose box meets an earlier one's within the reach is looked at again after it.
+    std::vector<char> again(batch.size(), 0);
+    for (std::size_t j = 1; j < batch.size(); ++j)
+      for (std::size_t i = 0; i < j && !again[j]; ++i) again[j] = meet(boxes[i], boxes[j], reach_);
+    const std::size_t n = at.back(), first_kept = kept_.size(), first_entry = grid_.entries();
+    std::vector<Covers> covers(n);
     auto look = [&](unsigned w, std::size_t begin, std::size_t end) {
       std::vector<std::uint32_t>& looked = looked_[w];
       if (looked.size() < kept_.size()) looked.resize(kept_.size(), 0);
-      for (std::size_t i = begin; i < end; ++i) covers[i] = covers_of(segment(s, i), looked, ++look_[w]);
-    };
-    if (n >= kParallelSegments) loop.run(n, kParallelSegments / 4, look);
-    else look(0, 0, n);
-    bool touched = false;
-    for (std::size_t i = 0; i < n && !touched; ++i) touched = !covers[i].empty();
-    std::vector<Stroke> out;
-    if (!touched) out.push_back(std::move(s));
-    else out = split(s, covers);
-    for (const Stroke& o : out)  // what is drawn is kept for the strokes after it
-      for (std::size_t i = 0; i < segment_count(o); ++i) {
-        kept_.push_back(segment(o, i));
-        grid_.add(kept_.back(), static_cast<std::uint32_t>(kept_.size() - 1));
+      std::size_t j = static_cast<std::size_t>(std::upper_bound(at.begin(), at.end(), begin) - at.begin()) - 1;
+      for (std::size_t i = begin; i < end; ++i) {
+        while (i >= at[j + 1]) ++j;
+        covers[i] = covers_of(segment(batch[j], i - at[j]), looked, ++look_[w], 0);
+        if (!again[j] && !covers[i].empty()) covers[i] = runs_of(covers[i], length(segment(batch[j], i - at[j])), tol_);
       }
-    return out;
+    };
+    if (n >= kParallelSegments) loop.run(n, 256, look);
+    else look(0, 0, n);
+    for (std::size_t j = 0; j < batch.size(); ++j) {
+      const std::span<Covers> mine(covers.data() + at[j], at[j + 1] - at[j]);
+      if (again[j] && kept_.size() > first_kept) {  // the batch's earlier strokes kept something
+        std::vector<std::uint32_t>& looked = looked_[0];
+        looked.resize(kept_.size(), 0);
+        for (std::size_t i = 0; i < mine.size(); ++i) {
+          if (whole(mine[i])) continue;
+          const Covers more = covers_of(segment(batch[j], i), looked, ++look_[0], first_entry);
+          mine[i].insert(mine[i].end(), more.begin(), more.end());
+        }
+      }
+      if (again[j])
+        for (std::size_t i = 0; i < mine.size(); ++i)
+          if (!mine[i].empty()) mine[i] = runs_of(mine[i], length(segment(batch[j], i)), tol_);
+      keep(std::move(batch[j]), mine, out, loop);
+    }
   }
   const CoincidentStats& stats() const { return st_; }
 
- private:
-  static constexpr std::size_t kParallelSegments = 2048;  // a stroke this long is looked at on all cores
+  // A batch: strokes in order up to this many segments (a longer stroke alone) and strokes;
+  // one of kParallelSegments or more is looked at on all cores.
+  static constexpr std::size_t kBatchSegments = 4096, kBatchStrokes = 64, kParallelSegments = 1024;
 
-  // The covered runs of g by the kept segments; `looked` and `stamp`: the looking worker's marks
-  // of the kept segments this look has tried.
-  std::vector<std::pair<double, double>> covers_of(const Seg& g, std::vector<std::uint32_t>& looked, std::uint32_t stamp) const {
+ private:
+  using Covers = std::vector<std::pair<double, double>>;
+
+  static bool whole(const Covers& c) { return c.size() == 1 && c[0].first == 0 && c[0].second == 1; }
+  static std::array<double, 4> box_of(const Stroke& s) {
+    std::array<double, 4> b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (const Point2& p : s.points) b = {std::min(b[0], p[0]), std::min(b[1], p[1]), std::max(b[2], p[0]), std::max(b[3], p[1])};
+    return b;
+  }
+  // Whether two boxes come within `pad` of each other (a box with NaN meets every box).
+  static bool meet(const std::array<double, 4>& a, const std::array<double, 4>& b, double pad) {
+    return !(a[2] + pad < b[0] || b[2] + pad < a[0] || a[3] + pad < b[1] || b[3] + pad < a[1]);
+  }
+
+  // s split by its segments' covered runs, appended to `out`, and what it draws kept.
+  void keep(Stroke&& s, std::span<const Covers> covers, std::vector<Stroke>& out, const ParallelLoop& loop) {
+    bool touched = false;
+    for (std::size_t i = 0; i < covers.size() && !touched; ++i) touched = !covers[i].empty();
+    const std::size_t from = out.size();
+    if (!touched) out.push_back(std::move(s));
+    else
+      for (Stroke& o : split(s, covers)) out.push_back(std::move(o));
+    const std::size_t first = kept_.size();
+    for (std::size_t k = from; k < out.size(); ++k)
+      for (std::size_t i = 0; i < segment_count(out[k]); ++i) kept_.push_back(segment(out[k], i));
+    grid_.add(kept_, first, loop);
+  }
+
+  // The covers of g (unsorted, not joined) by the kept segments of the grid's entries from
+  // `first_entry` on; `looked` and `stamp`: the looking worker's marks of the kept segments
+  // this look has tried.
+  Covers covers_of(const Seg& g, std::vector<std::uint32_t>& looked, std::uint32_t stamp, std::size_t first_entry) const {
     const std::array<double, 4> near{std::min(g.a[0], g.b[0]) - reach_, std::min(g.a[1], g.b[1]) - reach_, std::max(g.a[0], g.b[0]) + reach_,
                                      std::max(g.a[1], g.b[1]) + reach_};
-    std::vector<std::pair<double, double>> covers;
-    grid_.visit(g, reach_, [&](std::uint32_t k) {
+    Covers covers;
+    grid_.visit(g, reach_, first_entry, [&](std::uint32_t k) {
       const Seg& e = kept_[k];
       // A cover needs a point of g within the tolerance of e: their boxes meet, padded.
       if (std::max(e.a[0], e.b[0]) < near[0] || std::min(e.a[0], e.b[0]) > near[2] || std::max(e.a[1], e.b[1]) < near[1] ||
           std::min(e.a[1], e.b[1]) > near[3] || looked[k] == stamp)
-        return;
+        return false;
       looked[k] = stamp;
       auto c = covered(g.a, g.b, e, tol_);
-      if (c.second > c.first) covers.push_back(c);
+      if (!(c.second > c.first)) return false;
+      if (c.first <= 0 && c.second >= 1) {  // the whole segment: its one run, whatever else covers it
+        covers.assign(1, {0.0, 1.0});
+        return true;
+      }
+      covers.push_back(c);
+      return false;
     });
-    if (!covers.empty()) covers = runs_of(covers, length(g.a, g.b), tol_);
     return covers;
   }
 
   // The parts of s outside the covered runs, as strokes; parts shorter than the tolerance go.
-  std::vector<Stroke> split(const Stroke& s, const std::vector<std::vector<std::pair<double, double>>>& covers) {
+  std::vector<Stroke> split(const Stroke& s, std::span<const Covers> covers) {
     std::vector<Stroke> out;
     Stroke cur;
     auto flush = [&] {
@@ -321,10 +411,15 @@ CoincidentStats merge_coincident_lines(Plot& plot, double tol) {
   const ParallelLoop loop;
   Merge merge(box, segments, tol, loop);
   for (std::size_t li : order) {
+    std::vector<Stroke>& strokes = plot.layers[li].strokes;
     std::vector<Stroke> out;
-    for (Stroke& s : plot.layers[li].strokes)
-      for (Stroke& o : merge.stroke(std::move(s), loop)) out.push_back(std::move(o));
-    plot.layers[li].strokes = std::move(out);
+    for (std::size_t b = 0, e = 0; b < strokes.size(); b = e) {
+      for (std::size_t n = 0;
+           e < strokes.size() && e - b < Merge::kBatchStrokes && (e == b || n + segment_count(strokes[e]) <= Merge::kBatchSegments);)
+        n += segment_count(strokes[e++]);
+      merge.batch(std::span<Stroke>(strokes.data() + b, e - b), out, loop);
+    }
+    strokes = std::move(out);
   }
   std::vector<PlotLayer> layers;
   for (PlotLayer& l : plot.layers)

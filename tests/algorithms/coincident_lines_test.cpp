@@ -325,5 +325,56 @@ TEST(CoincidentLines, LongStrokesOnAllCoresAsTheOracle) {
   EXPECT_GT(removed, 300u);
 }
 
+// Many short strokes in a small square (the dense band of a mesh's silhouette) are looked at
+// in batches on all cores: each stroke also against what the batch's earlier strokes kept.
+// Half retrace an earlier stroke within the tolerance (reversed, with noise), some in the same
+// batch; against the oracle and against one thread.
+TEST(CoincidentLines, ShortStrokesInBatchesAsTheOracle) {
+  std::size_t removed = 0;
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const double tol = 0.01;
+    PlotLayer l;
+    std::size_t segments = 0;
+    while (segments < 3000) {
+      std::vector<Point2> walk;
+      if (!l.strokes.empty() && u(rng) > 0) {  // an earlier stroke (often a recent one) retraced
+        const std::size_t back = std::min<std::size_t>(l.strokes.size(), 1 + static_cast<std::size_t>(8 * (u(rng) + 1)));
+        const auto& from = l.strokes[l.strokes.size() - back].points;
+        walk.assign(from.rbegin(), from.rend());
+        for (Point2& q : walk) q = {q[0] + 0.4 * tol * u(rng), q[1] + 0.4 * tol * u(rng)};
+      } else {
+        walk.push_back({0.2 * u(rng), 0.2 * u(rng)});
+        double angle = M_PI * u(rng);
+        const int n = 5 + static_cast<int>(18 * (u(rng) + 1));
+        for (int i = 0; i < n; ++i) {
+          angle += 0.2 * u(rng);
+          const double step = tol * (1.5 + u(rng));
+          walk.push_back({walk.back()[0] + step * std::cos(angle), walk.back()[1] + step * std::sin(angle)});
+        }
+      }
+      segments += walk.size() - 1;
+      l.strokes.push_back(Stroke{walk, false});
+    }
+    Plot p;
+    p.layers.push_back(l);
+    Plot want = p, one = p;
+    const CoincidentStats got = merge_coincident_lines(p, tol);
+    const CoincidentStats expected = oracle_merge(want, tol);
+    expect_same(p, want, "short strokes, seed " + std::to_string(seed));
+    EXPECT_EQ(got.pieces_removed, expected.pieces_removed);
+    EXPECT_EQ(got.length_removed, expected.length_removed);
+    {
+      const ThreadLimit single(1);
+      merge_coincident_lines(one, tol);
+    }
+    expect_same(p, one, "one thread, seed " + std::to_string(seed));
+    removed += expected.pieces_removed;
+    if (HasFatalFailure()) return;
+  }
+  EXPECT_GT(removed, 300u);
+}
+
 }  // namespace
 }  // namespace hlr
