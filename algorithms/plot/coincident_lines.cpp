@@ -194,9 +194,6 @@ std::pair<double, double> covered(const Point2& p, const Point2& q, const Seg& s
   if (!(len2 > 0) || !(elen2 > 0)) return {1, 0};
   const double cross = dx * ey - dy * ex;
   if (std::fabs(cross) > kMaxSin * std::sqrt(len2 * elen2)) return {1, 0};
-  // Where the feet of pq's points fall on ab: ab's parameter u(t) is linear in t.
-  const double u0 = ((p[0] - s.a[0]) * ex + (p[1] - s.a[1]) * ey) / elen2;
-  const double u1 = ((q[0] - s.a[0]) * ex + (q[1] - s.a[1]) * ey) / elen2;
   double lo = 0, hi = 1;
   auto clamp_to = [&](double f0, double f1, double low, double high) {  // keep t with low <= f(t) <= high, f linear
     const double df = f1 - f0;
@@ -208,11 +205,16 @@ std::pair<double, double> covered(const Point2& p, const Point2& q, const Seg& s
     if (t0 > t1) std::swap(t0, t1);
     lo = std::max(lo, t0), hi = std::min(hi, t1);
   };
-  clamp_to(u0, u1, 0, 1);
-  // The signed distance of pq's points from ab's line, linear in t.
+  // The signed distance of pq's points from ab's line, linear in t. (The two conditions only
+  // narrow [lo, hi], in either order: a part too far from ab's line needs no feet.)
   const double elen = std::sqrt(elen2);
   const double d0 = ((p[0] - s.a[0]) * ey - (p[1] - s.a[1]) * ex) / elen, d1 = ((q[0] - s.a[0]) * ey - (q[1] - s.a[1]) * ex) / elen;
   clamp_to(d0, d1, -tol, tol);
+  if (lo > hi) return {1, 0};
+  // Where the feet of pq's points fall on ab: ab's parameter u(t) is linear in t.
+  const double u0 = ((p[0] - s.a[0]) * ex + (p[1] - s.a[1]) * ey) / elen2;
+  const double u1 = ((q[0] - s.a[0]) * ex + (q[1] - s.a[1]) * ey) / elen2;
+  clamp_to(u0, u1, 0, 1);
   return {lo, hi};
 }
 
