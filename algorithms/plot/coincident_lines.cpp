@@ -89,27 +89,10 @@ class KeptGrid {
     entries_.reserve(segments + segments / 2);  // mostly one entry a segment: no copies as it grows
   }
 
-  // Enters the segments kept[from...], each under its place in `kept` as id; the lists they
-  // enter are found on all cores when they are many, then linked in order.
-  void add(const std::vector<Seg>& kept, std::size_t from, const ParallelLoop& loop) {
-    const std::size_t n = kept.size() - from;
+  // Enters the segments kept[from...], each under its place in `kept` as id.
+  void add(const std::vector<Seg>& kept, std::size_t from) {
     if (kept.size() >= kNone) throw std::length_error("merge of coincident lines: too many segments");
-    std::vector<std::size_t> at(n + 1, 0), where;
-    if (n >= kParallelAdd) {
-      loop.for_each(n, 256, [&](std::size_t i) { lists(kept[from + i], [&](std::size_t) { ++at[i + 1]; }); });
-      for (std::size_t i = 0; i < n; ++i) at[i + 1] += at[i];
-      where.resize(at[n]);
-      loop.for_each(n, 256, [&](std::size_t i) {
-        std::size_t w = at[i];
-        lists(kept[from + i], [&](std::size_t l) { where[w++] = l; });
-      });
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto id = static_cast<std::uint32_t>(from + i);
-      if (n >= kParallelAdd)
-        for (std::size_t w = at[i]; w < at[i + 1]; ++w) link(where[w], id);
-      else lists(kept[from + i], [&](std::size_t l) { link(l, id); });
-    }
+    for (std::size_t i = from; i < kept.size(); ++i) lists(kept[i], [&](std::size_t l) { link(l, static_cast<std::uint32_t>(i)); });
     if (entries_.size() >= kNone) throw std::length_error("merge of coincident lines: too many segments");
   }
 
@@ -138,7 +121,6 @@ class KeptGrid {
 
  private:
   static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-  static constexpr std::size_t kParallelAdd = 1024;  // segments entered at once on all cores
 
   // f(list) for every list (cell and direction class) s is entered in.
   template <class F>
@@ -285,7 +267,7 @@ class Merge {
       if (again[j])
         for (std::size_t i = 0; i < mine.size(); ++i)
           if (!mine[i].empty()) mine[i] = runs_of(mine[i], length(segment(batch[j], i)), tol_);
-      keep(std::move(batch[j]), mine, out, loop);
+      keep(std::move(batch[j]), mine, out);
     }
   }
   const CoincidentStats& stats() const { return st_; }
@@ -309,7 +291,7 @@ class Merge {
   }
 
   // s split by its segments' covered runs, appended to `out`, and what it draws kept.
-  void keep(Stroke&& s, std::span<const Covers> covers, std::vector<Stroke>& out, const ParallelLoop& loop) {
+  void keep(Stroke&& s, std::span<const Covers> covers, std::vector<Stroke>& out) {
     bool touched = false;
     for (std::size_t i = 0; i < covers.size() && !touched; ++i) touched = !covers[i].empty();
     const std::size_t from = out.size();
@@ -319,7 +301,7 @@ class Merge {
     const std::size_t first = kept_.size();
     for (std::size_t k = from; k < out.size(); ++k)
       for (std::size_t i = 0; i < segment_count(out[k]); ++i) kept_.push_back(segment(out[k], i));
-    grid_.add(kept_, first, loop);
+    grid_.add(kept_, first);
   }
 
   // The covers of g (unsorted, not joined) by the kept segments of the grid's entries from
