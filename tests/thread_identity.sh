@@ -54,7 +54,7 @@ same "horizon.json" "$hlr" horizon --expr "sin(5*x)*cos(4*z)/3" --x -1:1:60 --z 
 truncate -s 9M "$work/large.off"
 shown="$(HLR_MALLOC=show "$hlr" info "$work/large.off" 2>&1 >/dev/null | head -1 || true)"
 case "$shown" in
-  *"glibc.malloc.hugetlb=1:glibc.malloc.top_pad=268435456:glibc.malloc.trim_threshold=4294967295"*) echo "huge pages, large job: $shown" ;;
+  *"glibc.malloc.hugetlb=1:glibc.malloc.top_pad=268435456:glibc.malloc.trim_threshold=4294967295:glibc.malloc.mmap_threshold=33554432:glibc.malloc.mmap_max=0") echo "huge pages, large job: $shown" ;;
   *) echo "huge pages: not set by the restart for a large job: '$shown'"; fail=1 ;;
 esac
 printf 'bodies:\n  - mesh: "large.off"\n' > "$work/large.yaml"
