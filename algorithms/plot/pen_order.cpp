@@ -93,6 +93,7 @@ class PointGrid {
  private:
   // Keeps `best` the k smallest strokes (each by its smallest entry), sorted.
   static void offer(std::vector<Found>& best, std::size_t k, const Found& f) {
+    if (best.size() == k && !(f < best.back())) return;  // beats nothing kept (nor its stroke's own entry)
     auto same = std::find_if(best.begin(), best.end(), [&](const Found& b) { return b.stroke == f.stroke; });
     if (same != best.end()) {
       if (!(f < *same)) return;
