@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <initializer_list>
+#include <limits>
 
 namespace hlr {
 
@@ -41,6 +42,19 @@ inline double next_up(double v) {
   return v;
 }
 inline double next_down(double v) { return -next_up(-v); }
+
+/// std::nextafter(v, ±infinity) for a float, bit for bit (0 steps to the smallest subnormal),
+/// with the bits stepped inline: the library call was a tenth of the boxes' cost.
+inline float next_float_up(float v) {
+  if (!(v < INFINITY)) return v;  // +inf, NaN
+  if (v == 0) return std::numeric_limits<float>::denorm_min();
+  std::uint32_t b;
+  std::memcpy(&b, &v, sizeof b);
+  b += v > 0 ? 1 : -1;
+  std::memcpy(&v, &b, sizeof b);
+  return v;
+}
+inline float next_float_down(float v) { return -next_float_up(-v); }
 
 /// A closed interval [lo, hi] of doubles that certainly contains an exact value.
 struct Interval {

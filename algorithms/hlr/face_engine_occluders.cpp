@@ -46,10 +46,10 @@ FrontBox front_box(const Camera& cam, const Point3* const* pts, const std::array
     if (!front[i]) continue;
     out.empty = false;
     const auto& pr = *proj[i];
-    out.box.x0 = std::min(out.box.x0, std::nextafter(static_cast<float>(pr[0]), -inf));
-    out.box.y0 = std::min(out.box.y0, std::nextafter(static_cast<float>(pr[1]), -inf));
-    out.box.x1 = std::max(out.box.x1, std::nextafter(static_cast<float>(pr[0]), inf));
-    out.box.y1 = std::max(out.box.y1, std::nextafter(static_cast<float>(pr[1]), inf));
+    out.box.x0 = std::min(out.box.x0, next_float_down(static_cast<float>(pr[0])));
+    out.box.y0 = std::min(out.box.y0, next_float_down(static_cast<float>(pr[1])));
+    out.box.x1 = std::max(out.box.x1, next_float_up(static_cast<float>(pr[0])));
+    out.box.y1 = std::max(out.box.y1, next_float_up(static_cast<float>(pr[1])));
   }
   if (out.empty) return out;
   // Every edge from a front point to one that is not: where it meets the eye plane.

@@ -9,6 +9,7 @@
 
 #include "algorithms/hlr/face_engine.hpp"
 #include "algorithms/support/parallel.hpp"
+#include "kernel/error_bounds.hpp"
 
 namespace hlr::face_route {
 
@@ -267,8 +268,8 @@ void Engine<P>::solve(Segment& s, const std::array<int, 2>& gv, Work& wk, signed
     sb = Box{static_cast<float>(std::min(pr[0][0], pr[1][0])), static_cast<float>(std::min(pr[0][1], pr[1][1])),
              static_cast<float>(std::max(pr[0][0], pr[1][0])), static_cast<float>(std::max(pr[0][1], pr[1][1])),
              std::max(pr[0][2], pr[1][2])};
-    sb.x0 = std::nextafter(sb.x0, -INFINITY), sb.y0 = std::nextafter(sb.y0, -INFINITY);
-    sb.x1 = std::nextafter(sb.x1, INFINITY), sb.y1 = std::nextafter(sb.y1, INFINITY);
+    sb.x0 = next_float_down(sb.x0), sb.y0 = next_float_down(sb.y0);
+    sb.x1 = next_float_up(sb.x1), sb.y1 = next_float_up(sb.y1);
   } else {
     if (!front[0] && !front[1]) {  // wholly behind the eye
       s.pieces = pieces_from_hidden({}, depth_of(s));

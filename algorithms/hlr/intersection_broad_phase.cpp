@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "algorithms/support/parallel_scan.hpp"
+#include "kernel/error_bounds.hpp"
 
 namespace hlr {
 namespace {
@@ -316,12 +317,11 @@ BoxPairs overlapping_box_pairs(std::span<const Box3f> boxes, const ParallelLoop&
 }
 
 bool outward_floats(const Box3& b, Box3f& out) {
-  constexpr float inf = std::numeric_limits<float>::infinity();
   for (int k = 0; k < 6; ++k) {
     if (!(std::fabs(b[k]) < 1e38)) return false;  // NaN, infinite or near the floats' end
     float f = static_cast<float>(b[k]);
-    if (k < 3 && f > b[k]) f = std::nextafter(f, -inf);
-    if (k >= 3 && f < b[k]) f = std::nextafter(f, inf);
+    if (k < 3 && f > b[k]) f = next_float_down(f);
+    if (k >= 3 && f < b[k]) f = next_float_up(f);
     out[k] = f;
   }
   return true;

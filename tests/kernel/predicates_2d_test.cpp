@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <limits>
 #include <random>
+#include <vector>
 
 #include "support/numbers.hpp"
 
@@ -77,6 +80,32 @@ TEST(Predicates2d, OutsideTheFilterRangeTheAnswerIsStillExact) {
     EXPECT_EQ(orient2d(a, b, on), 0);
     EXPECT_EQ(orient2d(b, a, left), -1);
   }
+}
+
+// The boxes' float steps are std::nextafter's, bit for bit: zeros, subnormals, the largest
+// float, infinities and random floats of every exponent.
+TEST(Predicates2d, FloatStepsAreNextafterBitForBit) {
+  const float inf = std::numeric_limits<float>::infinity(), top = std::numeric_limits<float>::max();
+  const float tiny = std::numeric_limits<float>::denorm_min(), least = std::numeric_limits<float>::min();
+  std::vector<float> v{0.0f, -0.0f, tiny, -tiny, least, -least, top, -top, inf, -inf, 1.0f, -1.0f, 2 * tiny, 0.1f};
+  std::mt19937 rng(7);
+  for (int i = 0; i < 100000; ++i) {
+    const std::uint32_t b = static_cast<std::uint32_t>(rng());
+    float f;
+    std::memcpy(&f, &b, sizeof f);
+    if (!std::isnan(f)) v.push_back(f);
+  }
+  auto bits = [](float f) {
+    std::uint32_t b;
+    std::memcpy(&b, &f, sizeof b);
+    return b;
+  };
+  for (float f : v) {
+    EXPECT_EQ(bits(next_float_up(f)), bits(std::nextafter(f, inf))) << f;
+    EXPECT_EQ(bits(next_float_down(f)), bits(std::nextafter(f, -inf))) << f;
+  }
+  EXPECT_TRUE(std::isnan(next_float_up(NAN)));
+  EXPECT_TRUE(std::isnan(next_float_down(NAN)));
 }
 
 TEST(Predicates2d, RangeEndsAndOneUlp) {
