@@ -144,7 +144,10 @@ class KeptGrid {
   template <class F>
   void cells(const Seg& s, double pad, F&& f) const {
     const Point2 &a = s.a, &b = s.b;
-    const double len = length(a, b);
+    // How many pieces: any count finds every kept segment within the pad (each piece's box
+    // is padded), so a plain square root will do where the squares do not overflow.
+    const double dx = b[0] - a[0], dy = b[1] - a[1], sq = std::sqrt(dx * dx + dy * dy);
+    const double len = std::isfinite(sq) ? sq : length(a, b);
     const std::size_t parts = len > cell_ ? static_cast<std::size_t>(std::min(std::ceil(len / cell_), 1e9)) : 1;
     for (std::size_t k = 0; k < parts; ++k) {
       const double t0 = static_cast<double>(k) / static_cast<double>(parts), t1 = static_cast<double>(k + 1) / static_cast<double>(parts);
