@@ -285,6 +285,25 @@ TEST(CoincidentLines, ParallelNeighboursOfALongLineAndAHalfTurn) {
   EXPECT_EQ(p.layers[0].strokes[3].points, l.strokes[3].points);
 }
 
+// Merges a plot of one layer on all cores: the same strokes and statistics as the oracle, and
+// the same strokes on one thread; returns the parts the oracle left out.
+std::size_t merge_as_oracle_on_any_threads(const PlotLayer& l, double tol, const std::string& what) {
+  Plot p;
+  p.layers.push_back(l);
+  Plot want = p, one = p;
+  const CoincidentStats got = merge_coincident_lines(p, tol);
+  const CoincidentStats expected = oracle_merge(want, tol);
+  expect_same(p, want, what);
+  EXPECT_EQ(got.pieces_removed, expected.pieces_removed) << what;
+  EXPECT_EQ(got.length_removed, expected.length_removed) << what;
+  {
+    const ThreadLimit single(1);
+    merge_coincident_lines(one, tol);
+  }
+  expect_same(p, one, "one thread, " + what);
+  return expected.pieces_removed;
+}
+
 // Strokes of thousands of segments (a mesh's chained paths) are looked at on all cores: a
 // random walk, the same walk retraced beside it within the tolerance (reversed, with noise)
 // and a closed one through both, against the oracle and against one thread.
@@ -305,21 +324,9 @@ TEST(CoincidentLines, LongStrokesOnAllCoresAsTheOracle) {
     for (Point2& q : beside) q = {q[0] + 0.4 * tol * u(rng), q[1] + 0.4 * tol * u(rng)};
     std::vector<Point2> loop;
     for (std::size_t i = 0; i < walk.size(); i += 2) loop.push_back({walk[i][0] + 0.2 * tol, walk[i][1] - 0.1 * tol});
-    Plot p;
     PlotLayer l;
     l.strokes = {Stroke{walk, false}, Stroke{beside, false}, Stroke{loop, true}};
-    p.layers.push_back(l);
-    Plot want = p, one = p;
-    const CoincidentStats got = merge_coincident_lines(p, tol);
-    const CoincidentStats expected = oracle_merge(want, tol);
-    expect_same(p, want, "long strokes, seed " + std::to_string(seed));
-    EXPECT_EQ(got.pieces_removed, expected.pieces_removed);
-    {
-      const ThreadLimit single(1);
-      merge_coincident_lines(one, tol);
-    }
-    expect_same(p, one, "one thread, seed " + std::to_string(seed));
-    removed += expected.pieces_removed;
+    removed += merge_as_oracle_on_any_threads(l, tol, "long strokes, seed " + std::to_string(seed));
     if (HasFatalFailure()) return;
   }
   EXPECT_GT(removed, 300u);
@@ -357,20 +364,7 @@ TEST(CoincidentLines, ShortStrokesInBatchesAsTheOracle) {
       segments += walk.size() - 1;
       l.strokes.push_back(Stroke{walk, false});
     }
-    Plot p;
-    p.layers.push_back(l);
-    Plot want = p, one = p;
-    const CoincidentStats got = merge_coincident_lines(p, tol);
-    const CoincidentStats expected = oracle_merge(want, tol);
-    expect_same(p, want, "short strokes, seed " + std::to_string(seed));
-    EXPECT_EQ(got.pieces_removed, expected.pieces_removed);
-    EXPECT_EQ(got.length_removed, expected.length_removed);
-    {
-      const ThreadLimit single(1);
-      merge_coincident_lines(one, tol);
-    }
-    expect_same(p, one, "one thread, seed " + std::to_string(seed));
-    removed += expected.pieces_removed;
+    removed += merge_as_oracle_on_any_threads(l, tol, "short strokes, seed " + std::to_string(seed));
     if (HasFatalFailure()) return;
   }
   EXPECT_GT(removed, 300u);
