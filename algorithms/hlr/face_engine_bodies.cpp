@@ -72,9 +72,10 @@ LineDrawing Engine<P>::run() {
     res.stats.setup_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     return res;
   }
-  // The drawn edges as compact records, the occluders chosen and their closed sides read off
-  // the topology, which is then freed: before the intersection lines' broad phase when the
-  // occluders do not depend on those lines (no feature-line filter), else after it.
+  // The drawn edges as compact records; then the topology keeps only each side's mate (its
+  // edges and the face normals freed), the occluders' closed sides are read off it, and it is
+  // freed: before the intersection lines' broad phase when the occluders do not depend on
+  // those lines (no feature-line filter), else after it.
   std::vector<std::vector<DrawnEdge>> drawn(bodies_.size());
   std::size_t total = 0;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
@@ -83,12 +84,15 @@ LineDrawing Engine<P>::run() {
   }
   vertex_rules();
   project_vertices();
+  if (!keep_) {  // from here only neighbour() reads the topology, and no face normal is read
+    for (BodyTopology& t : topo_) pair_sides(t, opt_.threads);
+    std::vector<FaceNormals<P>>().swap(face_normal_);
+  }
   if constexpr (kFiltered) filter_shift(), filter_doubles();         // the intersections' filters read them
   const bool early = cam_.perspective || total * 8 >= tris_.size();  // near_segments() would not apply
   auto free_topology = [&] {
     if (keep_) return;
     std::vector<BodyTopology>().swap(topo_);
-    std::vector<FaceNormals<P>>().swap(face_normal_);
   };
   if (early) select_occluders(drawn), free_topology();
   const auto ti0 = Clock::now();

@@ -77,15 +77,20 @@ bool Engine<P>::neighbour(const Tri& t, int k, int& face, int& third) const {
     for (std::size_t i = 0; i < poly.size(); ++i)
       if (vo + poly[i] == t.v[(k + 1) % 3] && vo + poly[(i + 1) % poly.size()] == t.v[k]) pos = static_cast<int>(i);
   if (pos < 0) return false;
-  const int slot = topo_[b].face_offset[t.face] + pos;
-  const int e = topo_[b].slot_edge[slot];
-  if (e < 0) return false;
-  const BodyEdge& be = topo_[b].edges[e];
-  if (be.uses.size() != 2) return false;
-  const EdgeUse& other = be.uses[0].slot == slot ? be.uses[1] : be.uses[0];
-  if (degenerate_[b][other.face]) return false;
-  face = other.face;
-  third = topo_[b].slot_third[other.slot];
+  const BodyTopology& topo = topo_[b];
+  const int slot = topo.face_offset[t.face] + pos;
+  int across = -1;    // the face across, then the third vertex of its triangle on the edge
+  if (topo.paired) {  // pair_sides: the mates in place of the edges
+    across = topo.slot_edge[slot];
+    third = topo.slot_third[slot];
+  } else if (const int e = topo.slot_edge[slot]; e >= 0 && topo.edges[e].uses.size() == 2) {
+    const BodyEdge& be = topo.edges[e];
+    const EdgeUse& other = be.uses[0].slot == slot ? be.uses[1] : be.uses[0];
+    across = other.face;
+    third = topo.slot_third[other.slot];
+  }
+  if (across < 0 || degenerate_[b][across]) return false;
+  face = across;
   return third >= 0;
 }
 

@@ -14,36 +14,51 @@
 namespace hlr {
 namespace {
 
-// 12 bytes, not 16: the entries and the radix sort's copy are the broad phase's largest arrays.
+// A box's entry in one cell. The entries and the radix sort's copy are the broad phase's
+// largest arrays: 12 bytes (not 16) for any cell id, 8 (the cell id in the high half of one
+// word) when the grid's cells are below 2^32, as for any mesh of fewer than a billion cells.
 struct __attribute__((packed)) Entry {
-  std::uint64_t cell;
-  std::uint32_t item;
+  std::uint64_t cell_;
+  std::uint32_t item_;
+  Entry() = default;
+  Entry(std::uint64_t c, std::uint32_t i) : cell_(c), item_(i) {}
+  std::uint64_t cell() const { return cell_; }
+  std::uint32_t item() const { return item_; }
 };
 static_assert(sizeof(Entry) == 12);
+struct SmallEntry {
+  std::uint64_t word;
+  SmallEntry() = default;
+  SmallEntry(std::uint64_t c, std::uint32_t i) : word(c << 32 | i) {}
+  std::uint64_t cell() const { return word >> 32; }
+  std::uint32_t item() const { return static_cast<std::uint32_t>(word); }
+};
+static_assert(sizeof(SmallEntry) == 8);
 
 // Stable LSD radix sort by cell (entries arrive in item order, so ties stay sorted by item):
 // 11-bit digits over the bits the keys use. Each pass counts digits per fixed chunk on all
 // cores, places every (digit, chunk) run after the ones before it, and scatters the chunks on
 // all cores: stable, and the same order on any number of threads.
-void radix_sort(std::vector<Entry>& v, const ParallelLoop& loop) {
+template <class E>
+void radix_sort(std::vector<E>& v, const ParallelLoop& loop) {
   const std::size_t n = v.size();
   const std::size_t chunks = std::clamp<std::size_t>(n / 65536, 1, 64), per = (n + chunks - 1) / chunks;
   std::vector<std::uint64_t> any(chunks, 0);
   loop.for_each(chunks, 1, [&](std::size_t c) {
     std::uint64_t a = 0;  // (a local: neighbouring chunks' slots share a cache line)
-    for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) a |= v[i].cell;
+    for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) a |= v[i].cell();
     any[c] = a;
   });
   std::uint64_t all = 0;
   for (std::uint64_t a : any) all |= a;
-  std::vector<Entry> tmp;
+  std::vector<E> tmp;
   reserve_touched(tmp, n, loop);
   tmp.resize(n);
   std::vector<std::array<std::size_t, 2048>> at(chunks);
   for (int shift = 0; shift < 64 && (all >> shift) != 0; shift += 11) {
     loop.for_each(chunks, 1, [&](std::size_t c) {
       at[c].fill(0);
-      for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) ++at[c][(v[i].cell >> shift) & 2047];
+      for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) ++at[c][(v[i].cell() >> shift) & 2047];
     });
     std::size_t run = 0;
     for (std::size_t d = 0; d < 2048; ++d)
@@ -53,7 +68,7 @@ void radix_sort(std::vector<Entry>& v, const ParallelLoop& loop) {
         run += k;
       }
     loop.for_each(chunks, 1, [&](std::size_t c) {
-      for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) tmp[at[c][(v[i].cell >> shift) & 2047]++] = v[i];
+      for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) tmp[at[c][(v[i].cell() >> shift) & 2047]++] = v[i];
     });
     v.swap(tmp);
   }
@@ -196,7 +211,6 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop,
     if (!(d < (1 << 20))) coarse = true;
     else g.dims[k] = static_cast<std::int64_t>(d) + 1;
   }
-  std::vector<Entry> entries;
   // A box that spans more than 64 cells (a huge triangle among small ones) stays out of the
   // cells and is tested against every box instead: a few such boxes cost a few linear passes.
   // Each box's cell count on all cores, then its entries into their place (item order).
@@ -204,49 +218,36 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop,
   // Each box's low cell: the low corner of two boxes' overlap lies in the cell of the larger
   // low keys (floor((x - lo) / cell) does not decrease with x), so no division per pair.
   std::vector<std::array<std::int32_t, 3>> low;
+  std::vector<std::size_t> at;  // where each box's entries start (a box over 64 cells has none)
+  auto span = [&](std::size_t i, std::int64_t* c0, std::int64_t* c1) {
+    for (int k = 0; k < 3; ++k) c0[k] = g.key(k, bb[i][k]), c1[k] = g.key(k, bb[i][k + 3]);
+    return (c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1);
+  };
   if (!coarse) {
     reserve_touched(low, n, loop);  // fresh pages zeroed on all cores, not by the resize alone
     low.resize(n);
-    auto span = [&](std::size_t i, std::int64_t* c0, std::int64_t* c1) {
-      for (int k = 0; k < 3; ++k) c0[k] = g.key(k, bb[i][k]), c1[k] = g.key(k, bb[i][k + 3]);
-      return (c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1);
-    };
-    // Where each box's entries start (a box over 64 cells has none); count is called once per
-    // box, so it also records the box's low cell.
-    const std::vector<std::size_t> at = parallel_offsets(n, [&](std::size_t i) -> std::size_t {
-      std::int64_t c0[3], c1[3];
-      const std::int64_t cells = span(i, c0, c1);
-      for (int k = 0; k < 3; ++k) low[i][k] = static_cast<std::int32_t>(c0[k]);  // 0 <= c0 < 2^20
-      return cells > 64 ? 0 : static_cast<std::size_t>(cells);
-    }, loop);
-    big = parallel_select(n, [&](std::size_t i) {
-      std::int64_t c0[3], c1[3];
-      return at[i + 1] == at[i] && span(i, c0, c1) > 64;
-    }, loop);
-    reserve_touched(entries, at[n], loop);
-    entries.resize(at[n]);
-    loop.for_each(n, 8192, [&](std::size_t i) {
-      if (at[i + 1] == at[i]) return;
-      std::int64_t c0[3], c1[3];
-      span(i, c0, c1);
-      std::size_t w = at[i];
-      for (std::int64_t x = c0[0]; x <= c1[0]; ++x)
-        for (std::int64_t y = c0[1]; y <= c1[1]; ++y)
-          for (std::int64_t z = c0[2]; z <= c1[2]; ++z) entries[w++] = {g.id(x, y, z), static_cast<std::uint32_t>(i)};
-    });
+    // count is called once per box, so it also records the box's low cell.
+    at = parallel_offsets(
+        n,
+        [&](std::size_t i) -> std::size_t {
+          std::int64_t c0[3], c1[3];
+          const std::int64_t cells = span(i, c0, c1);
+          for (int k = 0; k < 3; ++k) low[i][k] = static_cast<std::int32_t>(c0[k]);  // 0 <= c0 < 2^20
+          return cells > 64 ? 0 : static_cast<std::size_t>(cells);
+        },
+        loop);
+    big = parallel_select(
+        n,
+        [&](std::size_t i) {
+          std::int64_t c0[3], c1[3];
+          return at[i + 1] == at[i] && span(i, c0, c1) > 64;
+        },
+        loop);
   }
   if (coarse || big.size() * 8 > n) {  // unusable cells, or too many huge boxes: one coarse list
     coarse = true;
     big.clear();
-    entries.clear();
-    for (std::size_t i = 0; i < n; ++i) entries.push_back({0, static_cast<std::uint32_t>(i)});
   }
-  radix_sort(entries, loop);
-  std::vector<std::size_t> cell_start = parallel_select<std::size_t>(entries.size(), [&](std::size_t i) {
-    return i == 0 || entries[i].cell != entries[i - 1].cell;
-  }, loop, 1);
-  cell_start.push_back(entries.size());
-  const std::size_t ncells = cell_start.size() - 1;
   struct Found {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> kept;
     std::size_t tested = 0;
@@ -263,36 +264,68 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop,
     ++f.tested;
     if (v == PairVerdict::Keep) f.kept.push_back({std::min(ta, tc), std::max(ta, tc)});
   };
-  // A cell's boxes and low cells are read once into a local list (the items lie far apart in
-  // the arrays; reading them for every pair cost more than the tests).
-  struct Local {
-    Box box;
-    std::array<std::int32_t, 3> low;
-    std::uint32_t item;
-  };
-  auto cell_pairs = [&](std::size_t i, std::size_t j, unsigned w, std::vector<Local>& cell) {
-    cell.clear();
-    for (std::size_t a = i; a < j; ++a) {
-      const std::uint32_t t = entries[a].item;
-      cell.push_back({bb[t], coarse ? std::array<std::int32_t, 3>{} : low[t], t});
+  // The entries of every box, sorted by cell, and the pairs of each cell; E: Entry, or
+  // SmallEntry when every cell id is below 2^32.
+  auto cell_pass = [&](auto layout) {
+    using E = decltype(layout);
+    std::vector<E> entries;
+    if (coarse) {
+      entries.reserve(n);
+      for (std::size_t i = 0; i < n; ++i) entries.emplace_back(0, static_cast<std::uint32_t>(i));
+    } else {
+      reserve_touched(entries, at[n], loop);
+      entries.resize(at[n]);
+      loop.for_each(n, 8192, [&](std::size_t i) {
+        if (at[i + 1] == at[i]) return;
+        std::int64_t c0[3], c1[3];
+        span(i, c0, c1);
+        std::size_t w = at[i];
+        for (std::int64_t x = c0[0]; x <= c1[0]; ++x)
+          for (std::int64_t y = c0[1]; y <= c1[1]; ++y)
+            for (std::int64_t z = c0[2]; z <= c1[2]; ++z) entries[w++] = E(g.id(x, y, z), static_cast<std::uint32_t>(i));
+      });
+      std::vector<std::size_t>().swap(at);
     }
-    for (std::size_t a = 0; a < cell.size(); ++a)
-      for (std::size_t c = a + 1; c < cell.size(); ++c) {
-        const Box &P = cell[a].box, &Q = cell[c].box;
-        if (P[0] > Q[3] || Q[0] > P[3] || P[1] > Q[4] || Q[1] > P[4] || P[2] > Q[5] || Q[2] > P[5]) continue;
-        if (!coarse) {  // the pair only in the cell of the overlap's low corner
-          const auto &A = cell[a].low, &B = cell[c].low;
-          std::uint64_t own = g.id(std::max(A[0], B[0]), std::max(A[1], B[1]), std::max(A[2], B[2]));
-          if (own != entries[i].cell) continue;
-        }
-        take(cell[a].item, cell[c].item, w);
+    radix_sort(entries, loop);
+    std::vector<std::size_t> cell_start = parallel_select<std::size_t>(
+        entries.size(), [&](std::size_t i) { return i == 0 || entries[i].cell() != entries[i - 1].cell(); }, loop, 1);
+    cell_start.push_back(entries.size());
+    const std::size_t ncells = cell_start.size() - 1;
+    // A cell's boxes and low cells are read once into a local list (the items lie far apart in
+    // the arrays; reading them for every pair cost more than the tests).
+    struct Local {
+      Box box;
+      std::array<std::int32_t, 3> low;
+      std::uint32_t item;
+    };
+    auto cell_pairs = [&](std::size_t i, std::size_t j, unsigned w, std::vector<Local>& cell) {
+      cell.clear();
+      for (std::size_t a = i; a < j; ++a) {
+        const std::uint32_t t = entries[a].item();
+        cell.push_back({bb[t], coarse ? std::array<std::int32_t, 3>{} : low[t], t});
       }
+      const std::uint64_t here = entries[i].cell();
+      for (std::size_t a = 0; a < cell.size(); ++a)
+        for (std::size_t c = a + 1; c < cell.size(); ++c) {
+          const Box &P = cell[a].box, &Q = cell[c].box;
+          if (P[0] > Q[3] || Q[0] > P[3] || P[1] > Q[4] || Q[1] > P[4] || P[2] > Q[5] || Q[2] > P[5]) continue;
+          if (!coarse) {  // the pair only in the cell of the overlap's low corner
+            const auto &A = cell[a].low, &B = cell[c].low;
+            std::uint64_t own = g.id(std::max(A[0], B[0]), std::max(A[1], B[1]), std::max(A[2], B[2]));
+            if (own != here) continue;
+          }
+          take(cell[a].item, cell[c].item, w);
+        }
+    };
+    loop.run(ncells, 256, [&](unsigned w, std::size_t b, std::size_t e) {
+      std::vector<Local> cell;
+      for (std::size_t c = b; c < e; ++c)
+        if (cell_start[c + 1] - cell_start[c] > 1) cell_pairs(cell_start[c], cell_start[c + 1], w, cell);
+    });
   };
-  loop.run(ncells, 256, [&](unsigned w, std::size_t b, std::size_t e) {
-    std::vector<Local> cell;
-    for (std::size_t c = b; c < e; ++c)
-      if (cell_start[c + 1] - cell_start[c] > 1) cell_pairs(cell_start[c], cell_start[c + 1], w, cell);
-  });
+  if (coarse || static_cast<double>(g.dims[0]) * static_cast<double>(g.dims[1]) * static_cast<double>(g.dims[2]) < 4294967296.0)
+    cell_pass(SmallEntry{});
+  else cell_pass(Entry{});
   huge_box_pairs(bb, g, low, big, loop, [&](std::uint32_t i, std::uint32_t j, unsigned w) {
     if (overlap(i, j)) take(std::min(i, j), std::max(i, j), w);
   });

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <new>
 #include <stdexcept>
+#include <utility>
 
 #include "algorithms/support/parallel.hpp"
 #include "algorithms/support/parallel_scan.hpp"
@@ -77,6 +78,24 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
     }
   });
   return t;
+}
+
+void pair_sides(BodyTopology& t, unsigned threads) {
+  if (t.paired) return;
+  const ParallelLoop loop(threads);
+  // Each slot is one use of one edge, so every edge writes only its own slots.
+  loop.for_each(t.edges.size(), 8192, [&](std::size_t e) {
+    const EdgeUses& uses = t.edges[e].uses;
+    if (uses.size() == 2) {
+      t.slot_edge[uses[0].slot] = uses[1].face;
+      t.slot_edge[uses[1].slot] = uses[0].face;
+      std::swap(t.slot_third[uses[0].slot], t.slot_third[uses[1].slot]);
+    } else {
+      for (std::size_t k = 0; k < uses.size(); ++k) t.slot_edge[uses[k].slot] = -1;
+    }
+  });
+  RawVector<BodyEdge>().swap(t.edges);
+  t.paired = true;
 }
 
 }  // namespace hlr

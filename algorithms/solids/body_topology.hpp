@@ -73,11 +73,18 @@ struct BodyTopology {
   RawVector<BodyEdge> edges;     // sorted by (u, v)
   RawVector<int> slot_edge;      // slot -> index in edges (-1 for a repeated vertex)
   RawVector<int> slot_third;     // slot -> the third vertex of the triangle on that side (caller's)
+  bool paired = false;           // pair_sides: edges freed, slot_edge and slot_third hold the mates
 };
 
 /// Groups the edge uses of `faces` (vertex ids below `num_vertices`) by undirected edge, on
 /// `threads` cores (0: all; the same result on any number). Sides with a repeated vertex
 /// (u == v) are no edge. `slot_third` is sized and set to -1.
 BodyTopology body_topology(const std::vector<Face>& faces, std::size_t num_vertices, unsigned threads = 0);
+
+/// For a caller that from now on only asks what lies across each side: slot_edge[s] becomes
+/// the face across side s (the other use of an edge with exactly two uses, else -1) and
+/// slot_third[s] that use's slot_third (the third vertex on the other side); the edges, the
+/// largest array, are freed and `paired` is set. On `threads` cores (the same on any number).
+void pair_sides(BodyTopology& t, unsigned threads = 0);
 
 }  // namespace hlr

@@ -82,6 +82,44 @@ TEST(BroadPhase, EveryOverlappingPairOnceInDoublesAndInOutwardFloats) {
   }
 }
 
+// Tiny boxes spread over a wide scene: a grid of over 2^32 cells (at least 10^4 on each axis),
+// whose cell ids take the wide entries; each box has a twin shifted by half its size, and a
+// few chains of touching boxes cross cell borders. Every pair once, as the oracle.
+TEST(BroadPhase, AGridOfMoreThanTwoToThe32CellsFindsEveryPairOnce) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> at(-1, 1), size(1e-5, 1e-4);
+  std::vector<Box3> boxes;
+  for (int i = 0; i < 1500; ++i) {
+    Box3 b;
+    for (int k = 0; k < 3; ++k) b[k] = at(rng), b[k + 3] = b[k] + size(rng);
+    boxes.push_back(b);
+    for (int k = 0; k < 3; ++k) {
+      const double h = (b[k + 3] - b[k]) / 2;
+      b[k] += h, b[k + 3] += h;
+    }
+    boxes.push_back(b);
+  }
+  for (int c = 0; c < 20; ++c) {  // touching boxes in a row along x (shared faces meet)
+    Box3 b{at(rng), at(rng), at(rng), 0, 0, 0};
+    for (int k = 0; k < 3; ++k) b[k + 3] = b[k] + 5e-5;
+    for (int j = 0; j < 12; ++j, b[0] += 5e-5, b[3] += 5e-5) boxes.push_back(b);
+  }
+  const auto want = oracle(boxes);
+  ASSERT_GT(want.size(), 1500u);
+  for (unsigned threads : {1u, 2u}) {
+    std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+    std::mutex m;
+    BoxPairs d = overlapping_box_pairs(boxes, ParallelLoop(threads), [&](std::uint32_t a, std::uint32_t b) {
+      std::lock_guard<std::mutex> lock(m);
+      EXPECT_TRUE(seen.insert({a, b}).second) << "pair twice";
+      return PairVerdict::Keep;
+    });
+    EXPECT_EQ(seen, want);
+    const std::set<std::pair<std::uint32_t, std::uint32_t>> kept(d.kept.begin(), d.kept.end());
+    EXPECT_EQ(kept, want);
+  }
+}
+
 TEST(BroadPhase, OutwardFloatsEncloseTheDoublesAndRefuseBeyondTheirRange) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-1, 1);

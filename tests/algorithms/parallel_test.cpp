@@ -52,8 +52,12 @@ TEST(Parallel, EveryIndexOnceInOrderOfRanges) {
 // uses in slot order) and is the same on 1, 2 and 8 threads: a grid of quads and triangles
 // large enough for many chunks, with a fin (an edge in three faces), a face with a repeated
 // vertex (no edge on that side) and a lone triangle.
-TEST(Parallel, BodyTopologyEqualsTheMapOfEdgeUsesOnAnyThreadCount) {
-  using namespace hlr;
+namespace {
+
+// A grid of quads and triangles (vertex (i, j) is i * 301 + j) with a fin on the diagonal
+// (1,1)-(2,2) (an edge of three uses), a face with a repeated vertex and a lone triangle (a
+// boundary of three edges).
+std::vector<Face> fin_grid(std::size_t& nv) {
   const int n = 300;
   std::vector<Face> faces;
   auto id = [&](int i, int j) { return i * (n + 1) + j; };
@@ -63,17 +67,33 @@ TEST(Parallel, BodyTopologyEqualsTheMapOfEdgeUsesOnAnyThreadCount) {
       else faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)}), faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
     }
   const int extra = (n + 1) * (n + 1);
-  faces.push_back({id(1, 1), id(2, 2), extra});          // a fin on the diagonal (1,1)-(2,2)
-  faces.push_back({id(5, 5), id(5, 5), id(6, 6)});       // a repeated vertex
-  faces.push_back({extra + 1, extra + 2, extra + 3});    // a lone triangle
-  const std::size_t nv = extra + 4;
-  std::map<std::pair<int, int>, std::vector<std::array<int, 3>>> want;  // (u, v) -> (face, slot, forward)
+  faces.push_back({id(1, 1), id(2, 2), extra});        // the fin
+  faces.push_back({id(5, 5), id(5, 5), id(6, 6)});     // a repeated vertex
+  faces.push_back({extra + 1, extra + 2, extra + 3});  // a lone triangle
+  nv = extra + 4;
+  return faces;
+}
+
+// Every undirected edge's uses (face, slot, forward), by (u, v), from a plain loop.
+std::map<std::pair<int, int>, std::vector<std::array<int, 3>>> edge_uses_map(const std::vector<Face>& faces) {
+  std::map<std::pair<int, int>, std::vector<std::array<int, 3>>> want;
   int slot = 0;
   for (std::size_t f = 0; f < faces.size(); ++f)
     for (std::size_t k = 0; k < faces[f].size(); ++k, ++slot) {
       const int u = faces[f][k], v = faces[f][(k + 1) % faces[f].size()];
       if (u != v) want[{std::min(u, v), std::max(u, v)}].push_back({static_cast<int>(f), slot, u < v});
     }
+  return want;
+}
+
+}  // namespace
+
+TEST(Parallel, BodyTopologyEqualsTheMapOfEdgeUsesOnAnyThreadCount) {
+  using namespace hlr;
+  std::size_t nv = 0;
+  const std::vector<Face> faces = fin_grid(nv);
+  auto id = [](int i, int j) { return i * 301 + j; };
+  const auto want = edge_uses_map(faces);
   std::vector<std::vector<int>> edge_of_slot;
   for (unsigned threads : {1u, 2u, 8u}) {
     const BodyTopology t = body_topology(faces, nv, threads);
@@ -102,6 +122,43 @@ TEST(Parallel, BodyTopologyEqualsTheMapOfEdgeUsesOnAnyThreadCount) {
   }
   EXPECT_EQ(edge_of_slot[0], edge_of_slot[1]);
   EXPECT_EQ(edge_of_slot[0], edge_of_slot[2]);
+}
+
+// pair_sides against the map: a side of an edge with exactly two uses gets the other use's
+// face and third vertex; a side of a boundary edge, of the fin's three-use edge or with a
+// repeated vertex gets -1; the edges are freed. The same on any thread count.
+TEST(Parallel, PairedSidesAreTheOtherUseOfTwoUseEdgesOnAnyThreadCount) {
+  std::size_t nv = 0;
+  const std::vector<Face> faces = fin_grid(nv);
+  const auto want = edge_uses_map(faces);
+  for (unsigned threads : {1u, 2u, 8u}) {
+    BodyTopology t = body_topology(faces, nv, threads);
+    for (std::size_t s = 0; s < t.slot_third.size(); ++s) t.slot_third[s] = 7 * static_cast<int>(s) + 1;  // the caller's
+    pair_sides(t, threads);
+    ASSERT_TRUE(t.paired);
+    EXPECT_TRUE(t.edges.empty());
+    std::vector<int> face(t.slot_edge.size(), -1), third(t.slot_third.size(), -2);  // -2: not a side of an edge
+    std::size_t pairs = 0, others = 0;
+    for (const auto& [uv, uses] : want) {
+      for (std::size_t k = 0; k < uses.size(); ++k) {
+        if (uses.size() != 2) {
+          third[uses[k][1]] = -3;  // any: no mate to read
+          continue;
+        }
+        face[uses[k][1]] = uses[1 - k][0];
+        third[uses[k][1]] = 7 * uses[1 - k][1] + 1;
+      }
+      (uses.size() == 2 ? pairs : others) += 1;
+    }
+    EXPECT_GT(pairs, 100000u);
+    // The grid's rim (1,200), the fin's three edges (one of three uses), the diagonal the
+    // repeated-vertex face runs along twice (four uses), the lone triangle's three.
+    EXPECT_EQ(others, 1200u + 3u + 1u + 3u);
+    for (std::size_t s = 0; s < face.size(); ++s) {
+      ASSERT_EQ(t.slot_edge[s], face[s]) << "slot " << s << ", " << threads << " threads";
+      if (third[s] >= 0) ASSERT_EQ(t.slot_third[s], third[s]) << "slot " << s;
+    }
+  }
 }
 
 // The order-keeping scans (parallel_scan.hpp) against a plain loop: sizes around the chunk
