@@ -372,21 +372,25 @@ class Dedup {
     const std::vector<std::uint32_t> live =
         parallel_select(d_.lines.size(), [&](std::size_t k) { return !degenerate[k] && !d_.lines[k].pulled; }, loop);
     if (live.size() < 2) return;
-    // Each live piece's ends in one record, in the order of `live`: a cell's
-    // pieces are read from here (one record each) instead of from the drawing's three arrays.
+    // Each live piece's ends' roots, in the order of `live`; its ends are read from the
+    // drawing (a record of ends and roots, 40 bytes a piece, was the largest array of a
+    // large drawing's output, and its pages cost more than reading two arrays).
     struct Rec {
       std::array<double, 2> a, b;  // the piece is live[i], its segment read only for a pair the filter passes
       std::uint32_t ra, rb;        // its ends' roots
     };
-    RawVector<Rec> rec(live.size());  // (each written below, on all cores)
+    RawVector<std::array<std::uint32_t, 2>> roots(live.size());  // (each written below, on all cores)
+    auto rec = [&](std::size_t i) {
+      const Polyline2D& l = d_.lines[live[i]];
+      return Rec{d_.points[l.first], d_.points[l.first + 1], roots[i][0], roots[i][1]};
+    };
     PerWorker<std::array<double, 4>> boxes(loop, {INFINITY, INFINITY, -INFINITY, -INFINITY});
     loop.run(live.size(), 8192, [&](unsigned w, std::size_t begin, std::size_t end) {
       std::array<double, 4>& bx = boxes[w];
       for (std::size_t i = begin; i < end; ++i) {
+        roots[i] = {root_of(points_.parent, 2 * std::size_t{live[i]}), root_of(points_.parent, 2 * std::size_t{live[i]} + 1)};
         const Polyline2D& l = d_.lines[live[i]];
-        rec[i] = {d_.points[l.first], d_.points[l.first + 1], root_of(points_.parent, 2 * std::size_t{live[i]}),
-                  root_of(points_.parent, 2 * std::size_t{live[i]} + 1)};
-        for (const auto& p : {rec[i].a, rec[i].b})
+        for (const auto& p : {d_.points[l.first], d_.points[l.first + 1]})
           bx = {std::min(bx[0], p[0]), std::min(bx[1], p[1]), std::max(bx[2], p[0]), std::max(bx[3], p[1])};
       }
     });
@@ -425,13 +429,13 @@ class Dedup {
     // grouped by cell in piece order: each cell lists its pieces in the order of `live`.
     const std::vector<std::uint32_t> count = parallel_offsets<std::uint32_t>(live.size(), [&](std::size_t i) {
       std::uint32_t n = 0;
-      for_cells(rec[i], [&](std::size_t) { ++n; });
+      for_cells(rec(i), [&](std::size_t) { ++n; });
       return n;
     }, loop);
     RawVector<std::uint32_t> cell_of(count.back());
     loop.for_each(live.size(), 4096, [&](std::size_t i) {
       std::uint32_t at = count[i];
-      for_cells(rec[i], [&](std::size_t cell) { cell_of[at++] = static_cast<std::uint32_t>(cell); });
+      for_cells(rec(i), [&](std::size_t cell) { cell_of[at++] = static_cast<std::uint32_t>(cell); });
     });
     // Grouped by cell on all cores: a cell's pieces come in any order (the pairs are sorted
     // before the exact tests, so nothing depends on it).
@@ -477,7 +481,7 @@ class Dedup {
         if (start[c + 1] - start[c] < 2) continue;
         cell.clear();
         for (std::uint32_t i = start[c]; i < start[c + 1]; ++i) {
-          const Rec& r = rec[items[i]];
+          const Rec r = rec(items[i]);
           cell.push_back(near_piece(r.a, r.b, live[items[i]], r.ra, r.rb));
         }
         auto segment = [&](std::uint32_t k) { return d_.sources[d_.lines[k].first_edge].segment; };
