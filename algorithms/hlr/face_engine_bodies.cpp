@@ -83,11 +83,11 @@ LineDrawing Engine<P>::run() {
     total += drawn[b].size();
   }
   vertex_rules();
-  project_vertices();
   if (!keep_) {  // from here only neighbour() reads the topology, and no face normal is read
     for (BodyTopology& t : topo_) pair_sides(t, opt_.threads);
     std::vector<FaceNormals<P>>().swap(face_normal_);
   }
+  project_vertices();
   if constexpr (kFiltered) filter_shift(), filter_doubles();         // the intersections' filters read them
   const bool early = cam_.perspective || total * 8 >= tris_.size();  // near_segments() would not apply
   auto free_topology = [&] {
