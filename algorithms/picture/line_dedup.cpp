@@ -374,7 +374,7 @@ class Dedup {
     if (live.size() < 2) return;
     // Each live piece's ends' roots, in the order of `live`; its ends are read from the
     // drawing (a record of ends and roots, 40 bytes a piece, was the largest array of a
-    // large drawing's output, and its pages cost more than reading two arrays).
+    // large drawing's output stage).
     struct Rec {
       std::array<double, 2> a, b;  // the piece is live[i], its segment read only for a pair the filter passes
       std::uint32_t ra, rb;        // its ends' roots
