@@ -20,28 +20,35 @@ Polyhedron::Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces)
 
 Polyhedron::Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces,
                        const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop)
-    : vertices_(std::move(vertices)), faces_(std::move(faces)) {
+    : faces_(std::move(faces)) {
   // GMP compares fractions correctly only in lowest terms: a coordinate built through the API
   // as mpq_class(836, 1024) is brought to 209/256 here, once, for every route.
-  loop(vertices_.size(), [&](std::size_t i) {
-    Point3& p = vertices_[i];
+  loop(vertices.size(), [&](std::size_t i) {
+    Point3& p = vertices[i];
     if (in_lowest_terms(p[0]) && in_lowest_terms(p[1]) && in_lowest_terms(p[2])) return;
     std::array<Rational, 3> c{p.x(), p.y(), p.z()};
     for (Rational& q : c) q.canonicalize();
     p = Point3(c[0], c[1], c[2]);
   });
+  store_ = std::make_shared<const PointStore>(std::move(vertices));
   check_faces(loop);
 }
 
 Polyhedron::Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces, InLowestTerms,
                        const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop)
-    : vertices_(std::move(vertices)), faces_(std::move(faces)) {
+    : store_(std::make_shared<const PointStore>(std::move(vertices))), faces_(std::move(faces)) {
+  check_faces(loop);
+}
+
+Polyhedron::Polyhedron(PointStore vertices, std::vector<Face> faces,
+                       const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop)
+    : store_(std::make_shared<const PointStore>(std::move(vertices))), faces_(std::move(faces)) {
   check_faces(loop);
 }
 
 // Faces checked on the loop, the first bad one (in order) reported.
 void Polyhedron::check_faces(const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop) const {
-  const long nv = static_cast<long>(vertices_.size());
+  const long nv = static_cast<long>(store_->size());
   std::vector<char> bad(faces_.size(), 0);
   loop(faces_.size(), [&](std::size_t f) {
     if (faces_[f].size() < 3) bad[f] = 1;
@@ -86,9 +93,8 @@ const std::vector<int>& Polyhedron::refused_faces() const {
 
 void Polyhedron::build_mesh() const {
   mesh_ = std::make_shared<Mesh>();
-  mesh_->reserve(vertices_.size(), edges().size(), faces_.size());
-  for (const Point3& p : vertices_)
-    mesh_->add_vertex(Mesh::Point(to_double(p.x()), to_double(p.y()), to_double(p.z())));
+  mesh_->reserve(store_->size(), edges().size(), faces_.size());
+  for (const Point3& p : vertices()) mesh_->add_vertex(Mesh::Point(to_double(p.x()), to_double(p.y()), to_double(p.z())));
   // add_face only logs on failure; silence the log and record the refused faces instead.
   bool was_enabled = omerr().is_enabled();
   omerr().disable();
@@ -140,17 +146,17 @@ Plane Polyhedron::face_plane(std::size_t f) const {
   const Face& face = faces_[f];
   if (face.size() <= 8) {  // nearly every face: no allocation
     const Point3* pts[8];
-    for (std::size_t i = 0; i < face.size(); ++i) pts[i] = &vertices_[face[i]];
+    for (std::size_t i = 0; i < face.size(); ++i) pts[i] = &vertices()[face[i]];
     return primitive_plane_of_polygon(pts, face.size());
   }
   std::vector<const Point3*> pts;
-  for (int v : face) pts.push_back(&vertices_[v]);
+  for (int v : face) pts.push_back(&vertices()[v]);
   return primitive_plane_of_polygon(pts.data(), pts.size());
 }
 
 const MeshReport& Polyhedron::report() const {
   if (!report_) {
-    report_ = std::make_shared<MeshReport>(check_mesh(vertices_, faces_, planes()));
+    report_ = std::make_shared<MeshReport>(check_mesh(vertices(), faces_, planes()));
     report_->refused_faces = refused_faces();
   }
   return *report_;
@@ -159,7 +165,11 @@ const MeshReport& Polyhedron::report() const {
 Polyhedron Polyhedron::reversed() const {
   std::vector<Face> faces = faces_;
   for (auto& f : faces) std::reverse(f.begin(), f.end());
-  return Polyhedron(vertices_, std::move(faces));
+  if (store_->compact())
+    return Polyhedron(*store_, std::move(faces), [](std::size_t n, const std::function<void(std::size_t)>& body) {
+      for (std::size_t i = 0; i < n; ++i) body(i);
+    });
+  return Polyhedron(vertices(), std::move(faces));
 }
 
 Polyhedron make_box(const Point3& lo, const Point3& hi) {

@@ -14,6 +14,7 @@
 #include "kernel/face.hpp"
 #include "kernel/geometry.hpp"
 #include "kernel/mesh_checks.hpp"
+#include "kernel/point_store.hpp"
 
 namespace OpenMesh {
 template <class Traits>
@@ -55,9 +56,19 @@ class Polyhedron {
   Polyhedron(std::vector<Point3> vertices, std::vector<Face> faces, InLowestTerms,
              const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop);
 
-  const std::vector<Point3>& vertices() const { return vertices_; }
+  /// The same for vertices in a store (point_store.hpp): a compact one's exact points are made
+  /// only when vertices() is first called. The faces are checked with `loop`.
+  Polyhedron(PointStore vertices, std::vector<Face> faces, const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop);
+
+  /// The exact vertices (a compact store's made on the first call, once, safely across threads).
+  const std::vector<Point3>& vertices() const { return store_->points(); }
+  /// The vertices as stored: their bounds (approx) and a compact store's numerators are read
+  /// from here without making the exact points.
+  /// Its address stays while the polyhedron lives (copies and moves share it), so segments
+  /// borrow their ends from it.
+  const PointStore& vertex_store() const { return *store_; }
   const std::vector<Face>& faces() const { return faces_; }
-  std::size_t num_vertices() const { return vertices_.size(); }
+  std::size_t num_vertices() const { return store_->size(); }
   std::size_t num_faces() const { return faces_.size(); }
   /// Undirected edges (i < j), sorted, each once. Computed on first use (not thread-safe then).
   const std::vector<std::pair<int, int>>& edges() const;
@@ -93,7 +104,7 @@ class Polyhedron {
   void build_mesh() const;
   void check_faces(const std::function<void(std::size_t, const std::function<void(std::size_t)>&)>& loop) const;
 
-  std::vector<Point3> vertices_;
+  std::shared_ptr<const PointStore> store_;
   std::vector<Face> faces_;
   mutable std::vector<std::pair<int, int>> edges_;
   mutable bool edges_done_ = false;

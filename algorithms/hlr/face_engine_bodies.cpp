@@ -21,10 +21,9 @@ namespace {
 
 // All vertices of all bodies, for the drawing frame of the filters' projections.
 DrawingFrame frame_of(const std::vector<const Polyhedron*>& bodies) {
-  std::vector<const Point3*> pts;
-  for (const Polyhedron* p : bodies)
-    for (const Point3& v : p->vertices()) pts.push_back(&v);
-  return drawing_frame(pts.size(), [&](std::size_t i) -> const Point3& { return *pts[i]; });
+  std::vector<StorePoints> pts;
+  for (const Polyhedron* p : bodies) pts.push_back({&p->vertex_store(), nullptr});
+  return drawing_frame(pts);
 }
 
 }  // namespace
@@ -417,7 +416,7 @@ template <class P>
 int Engine<P>::volume_filter(const std::vector<int>& ids) const {
   if (ids.empty()) return 0;
   const int b = tris_[ids[0]].body;
-  const std::vector<Point3>& vs = bodies_[b]->vertices();
+  const PointStore& vs = bodies_[b]->vertex_store();
   const int vo = voff_[b];
   const ParallelLoop loop(opt_.threads);
   std::vector<std::array<double, 3>> d(vs.size());
@@ -425,7 +424,7 @@ int Engine<P>::volume_filter(const std::vector<int>& ids) const {
   loop.run(vs.size(), 16384, [&](unsigned w, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
       for (int k = 0; k < 3; ++k) {
-        const Bounds& q = vs[i].approx(k);
+        const Bounds q = vs.approx(i, k);
         const double x = q.lo > 0 ? q.lo : q.hi, a = std::fabs(x);  // the end toward 0
         d[i][k] = x;
         if (!(q.lo == 0 && q.hi == 0) && !(a >= 0x1p-250 && a <= 0x1p250)) wild[w] = 1;

@@ -113,7 +113,7 @@ Segment Engine<P>::edge_segment(int b, const DrawnEdge& e) const {
   s.v1 = e.v;
   s.face0 = e.face0;
   s.face1 = e.face1;
-  s.borrow_ends(p.vertices());
+  s.borrow_ends(p.vertex_store());
   s.self_hidden = e.self_hidden;
   return s;
 }
@@ -259,19 +259,20 @@ void Engine<P>::continue_creases(int b, std::vector<signed char>& kinds, std::ve
 template <class P>
 std::vector<int> Engine<P>::continued_edges(int b, std::vector<char>& line) const {
   const RawVector<BodyEdge>& edges = topo_[b].edges;
-  const std::vector<Point3>& pts = bodies_[b]->vertices();
+  const std::size_t nv = bodies_[b]->num_vertices();
   std::vector<int> added;
-  std::vector<int> degree(pts.size());
+  std::vector<int> degree(nv);
   for (std::size_t i = 0; i < edges.size(); ++i)
     if (line[i]) ++degree[edges[i].u], ++degree[edges[i].v];
   std::vector<int> ends;
   for (std::size_t v = 0; v < degree.size(); ++v)
     if (degree[v] == 1) ends.push_back(static_cast<int>(v));
   if (ends.empty()) return added;
+  const std::vector<Point3>& pts = bodies_[b]->vertices();
   // Each vertex's edges (compressed rows).
-  std::vector<int> first(pts.size() + 1), at(2 * edges.size());
+  std::vector<int> first(nv + 1), at(2 * edges.size());
   for (const BodyEdge& e : edges) ++first[e.u + 1], ++first[e.v + 1];
-  for (std::size_t v = 0; v < pts.size(); ++v) first[v + 1] += first[v];
+  for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
   std::vector<int> fill(first.begin(), first.end() - 1);
   for (std::size_t i = 0; i < edges.size(); ++i) at[fill[edges[i].u]++] = at[fill[edges[i].v]++] = static_cast<int>(i);
   auto other = [&](int i, int v) { return edges[i].u == v ? edges[i].v : edges[i].u; };

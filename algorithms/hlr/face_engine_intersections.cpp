@@ -57,13 +57,13 @@ void Engine<P>::find_intersections(LineDrawing& res) {
   const ParallelLoop loop(opt_.threads);
   auto box = [&](std::size_t i) {
     Box3 b{INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
-    for (int v : tris_[i].v) {
-      const Point3& q = bodies_[tris_[i].body]->vertices()[v - voff_[tris_[i].body]];
+    const PointStore& store = bodies_[tris_[i].body]->vertex_store();
+    for (int v : tris_[i].v)
       for (int k = 0; k < 3; ++k) {
-        b[k] = std::min(b[k], q.approx(k).lo);
-        b[k + 3] = std::max(b[k + 3], q.approx(k).hi);
+        const Bounds q = store.approx(static_cast<std::size_t>(v - voff_[tris_[i].body]), k);
+        b[k] = std::min(b[k], q.lo);
+        b[k + 3] = std::max(b[k + 3], q.hi);
       }
-    }
     return b;
   };
   // Each pair takes its two normals once. Big: those of the triangles off the grid (a cut's

@@ -182,9 +182,8 @@ void Engine<P>::project_vertices() {
   vfront_.assign(X_.size(), 1);
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     loop.for_each(bodies_[b]->num_vertices(), 4096, [&](std::size_t i) {
-      const Point3& q = bodies_[b]->vertices()[i];
-      vproj_[voff_[b] + i] = proj_.project(q);
-      if (cam_.perspective) vfront_[voff_[b] + i] = cam_.in_front(q) == Sign::Positive;
+      vproj_[voff_[b] + i] = proj_.project(bodies_[b]->vertex_store(), i);
+      if (cam_.perspective) vfront_[voff_[b] + i] = cam_.in_front(bodies_[b]->vertices()[i]) == Sign::Positive;
     });
 }
 
@@ -477,10 +476,11 @@ void Engine<P>::occluder_box(const Tri& t, int fs, Box& bx) const {
   const std::array<double, 3>* proj[3];
   bool front[3];
   for (int k = 0; k < 3; ++k) {
-    pts[k] = &world(t.v[k]);
     proj[k] = &vproj_[t.v[k]];
     front[k] = vfront_[t.v[k]];
   }
+  for (int k = 0; k < 3; ++k)  // the exact corners only where one is not in front (front_box)
+    pts[k] = front[0] && front[1] && front[2] ? nullptr : &world(t.v[k]);
   bx = front_box(cam_, pts, proj, front, 3).box;
   if (front[0] && front[1] && front[2])
     bx.dmin = std::min({(*proj[0])[2], (*proj[1])[2], (*proj[2])[2]});

@@ -59,18 +59,64 @@ bool direction_wide(const Camera& cam, Vec<Wide>& view) {
   return true;
 }
 
+// The lowest common denominator of a compact store's (point_store.hpp) coordinates: den / g, g
+// the greatest common divisor of den and every numerator (num / den in lowest terms has the
+// denominator den / gcd(den, num), and the least common multiple of such divisors' cofactors
+// is den over their greatest common divisor).
+std::uint64_t compact_denominator(const PointStore& store, const ParallelLoop& loop) {
+  const auto den = static_cast<std::uint64_t>(store.denominator());
+  const auto& nums = store.numerators();
+  PerWorker<std::uint64_t> part(loop, den);
+  loop.run(nums.size(), 16384, [&](unsigned w, std::size_t b, std::size_t e) {
+    std::uint64_t g = part[w];
+    for (std::size_t i = b; i < e && g > 1; ++i)
+      for (int k = 0; k < 3; ++k) g = std::gcd(g, static_cast<std::uint64_t>(nums[i][k] < 0 ? -nums[i][k] : nums[i][k]));
+    part[w] = g;
+  });
+  std::uint64_t g = den;
+  for (unsigned w = 0; w < part.size(); ++w) g = std::gcd(g, part[w]);
+  return den / g;
+}
+
 // Every vertex of every body scaled on all cores into `pts` (body after body), one coordinate at
 // a time by `scaler()`'s function (made per chunk of vertices: it may keep scratch numbers),
 // which returns false for a value that does not fit. False when one does not.
+// A compact store's (point_store.hpp) vertices scaled to the common denominator L: num / den =
+// (num / h)·(L / Lb), Lb = compact_denominator(store) and h = den / Lb (both exact divisions).
+template <class P>
+bool scale_compact(const PointStore& store, std::uint64_t L, Int128 limit, const ParallelLoop& loop, Vec<P>* out) {
+  const auto den = static_cast<std::uint64_t>(store.denominator());
+  const std::uint64_t Lb = compact_denominator(store, loop), h = den / Lb;
+  const Int128 times = static_cast<Int128>(L / Lb);
+  const auto& nums = store.numerators();
+  PerWorker<char> fits(loop, 1);
+  loop.run(nums.size(), 4096, [&](unsigned w, std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e && fits[w]; ++i)
+      for (int k = 0; k < 3; ++k) {
+        const Int128 v = static_cast<Int128>(nums[i][k] / static_cast<std::int64_t>(h)) * times;
+        if (abs128(v) >= limit) fits[w] = 0;
+        else out[i][k] = static_cast<typename P::C>(v);
+      }
+  });
+  for (unsigned w = 0; w < fits.size(); ++w)
+    if (!fits[w]) return false;
+  return true;
+}
+
 template <class P, class Scaler>
 bool scale_vertices(const std::vector<const Polyhedron*>& bodies, std::size_t total, const ParallelLoop& loop, std::vector<Vec<P>>& pts,
-                    const Scaler& scaler) {
+                    const Scaler& scaler, std::uint64_t L = 0, Int128 limit = 0) {
   constexpr std::size_t kChunk = 4096;  // vertices
   pts.clear();
   reserve_touched(pts, total, loop);
   pts.resize(total);
   std::size_t at = 0;
   for (const Polyhedron* p : bodies) {
+    if (L != 0 && p->vertex_store().compact()) {
+      if (!scale_compact<P>(p->vertex_store(), L, limit, loop, pts.data() + at)) return false;
+      at += p->num_vertices();
+      continue;
+    }
     const std::vector<Point3>& vs = p->vertices();
     std::vector<char> ok((vs.size() + kChunk - 1) / kChunk, 1);
     loop.for_each(ok.size(), 1, [&](std::size_t c) {
@@ -104,8 +150,13 @@ bool scale_fast(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
   };
   std::size_t total = 0;
   for (const Polyhedron* p : bodies) {
+    const PointStore& store = p->vertex_store();
+    total += store.size();
+    if (store.compact()) {
+      if (!combine(compact_denominator(store, loop))) return false;
+      continue;
+    }
     const std::vector<Point3>& vs = p->vertices();
-    total += vs.size();
     const std::size_t chunks = (vs.size() + kChunk - 1) / kChunk;
     std::vector<std::uint64_t> part(chunks, 1);
     std::vector<char> fits(chunks, 1);
@@ -131,7 +182,7 @@ bool scale_fast(const std::vector<const Polyhedron*>& bodies, const Camera& cam,
       return true;
     };
   };
-  if (!scale_vertices<P>(bodies, total, loop, pts, scaler)) return false;
+  if (!scale_vertices<P>(bodies, total, loop, pts, scaler, L, kLimit)) return false;
   if (cam.perspective) {
     for (int k = 0; k < 3; ++k) {
       Int128 s;

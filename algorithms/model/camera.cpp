@@ -135,44 +135,52 @@ std::array<double, 3> DrawingFrame::to_frame(const Point3& p) const {
           to_double((p.z() - centre.z()) * scale)};
 }
 
-DrawingFrame drawing_frame(std::size_t n, const std::function<const Point3&(std::size_t)>& point) {
-  DrawingFrame f;
-  if (n == 0) return f;
-  // The certified boxes' hull on all cores (minima and maxima: the same on any number).
-  struct Hull {
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, big = 0;
-  };
+namespace {
+
+// The certified boxes' hull of points (minima and maxima: the same in any order).
+struct Hull {
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, big = 0;
+  void add(int k, const Bounds& q) {
+    lo[k] = std::min(lo[k], q.lo);
+    hi[k] = std::max(hi[k], q.hi);
+    big = std::max({big, std::fabs(q.lo), std::fabs(q.hi)});
+  }
+  void join(const Hull& h) {
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], h.lo[k]), hi[k] = std::max(hi[k], h.hi[k]);
+    big = std::max(big, h.big);
+  }
+};
+
+// Calls add(hull, i) for every i < n on all cores, each worker into its own hull; then joined.
+template <class Add>
+void add_all(std::size_t n, Hull& out, const Add& add) {
   const ParallelLoop loop;
   PerWorker<Hull> part(loop);
   loop.run(n, 16384, [&](unsigned w, std::size_t b, std::size_t e) {
     Hull h = part[w];  // in registers while the range runs
-    for (std::size_t i = b; i < e; ++i) {
-      const Point3& p = point(i);
-      for (int k = 0; k < 3; ++k) {
-        h.lo[k] = std::min(h.lo[k], p.approx(k).lo);
-        h.hi[k] = std::max(h.hi[k], p.approx(k).hi);
-        h.big = std::max({h.big, std::fabs(p.approx(k).lo), std::fabs(p.approx(k).hi)});
-      }
-    }
+    for (std::size_t i = b; i < e; ++i) add(h, i);
     part[w] = h;
   });
-  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, big = 0;
-  for (unsigned w = 0; w < part.size(); ++w) {
-    const Hull& h = part[w];
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], h.lo[k]), hi[k] = std::max(hi[k], h.hi[k]);
-    big = std::max(big, h.big);
-  }
-  double ext = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-  if (std::isfinite(big) && big < 0x1p100 && ext > 0x1p-100 && ext >= big * 0x1p-30) return f;
+  for (unsigned w = 0; w < part.size(); ++w) out.join(part[w]);
+}
+
+// The frame of points whose bounds make `hull`: the identity unless doubles would lose them,
+// else from their exact bounding box (each_point(f) calls f on every exact point).
+DrawingFrame frame_of_hull(const Hull& h, const std::function<void(const std::function<void(const Point3&)>&)>& each_point) {
+  DrawingFrame f;
+  if (!(h.lo[0] <= h.hi[0])) return f;  // no points
+  double ext = std::max({h.hi[0] - h.lo[0], h.hi[1] - h.lo[1], h.hi[2] - h.lo[2]});
+  if (std::isfinite(h.big) && h.big < 0x1p100 && ext > 0x1p-100 && ext >= h.big * 0x1p-30) return f;
   // The exact bounding box.
   Rational L[3], H[3];
-  for (std::size_t i = 0; i < n; ++i) {
-    const Point3& p = point(i);
+  bool first = true;
+  each_point([&](const Point3& p) {
     for (int k = 0; k < 3; ++k) {
-      if (i == 0 || p[k] < L[k]) L[k] = p[k];
-      if (i == 0 || p[k] > H[k]) H[k] = p[k];
+      if (first || p[k] < L[k]) L[k] = p[k];
+      if (first || p[k] > H[k]) H[k] = p[k];
     }
-  }
+    first = false;
+  });
   Rational side = 0;
   for (int k = 0; k < 3; ++k) side = std::max(side, Rational(H[k] - L[k]));
   if (side == 0) return f;  // a single point: nothing to scale
@@ -180,6 +188,39 @@ DrawingFrame drawing_frame(std::size_t n, const std::function<const Point3&(std:
   f.centre = Point3((L[0] + H[0]) / 2, (L[1] + H[1]) / 2, (L[2] + H[2]) / 2);
   f.scale = 1 / side;
   return f;
+}
+
+}  // namespace
+
+DrawingFrame drawing_frame(std::size_t n, const std::function<const Point3&(std::size_t)>& point) { return drawing_frame({}, n, point); }
+
+DrawingFrame drawing_frame(const std::vector<StorePoints>& stores, std::size_t n, const std::function<const Point3&(std::size_t)>& point) {
+  Hull h;
+  auto taken = [](const StorePoints& s, std::size_t i) { return !s.marks || (i < s.marks->size() && (*s.marks)[i]); };
+  for (const StorePoints& s : stores)
+    add_all(s.store->size(), h, [&](Hull& hull, std::size_t i) {
+      if (taken(s, i))
+        for (int k = 0; k < 3; ++k) hull.add(k, s.store->approx(i, k));
+    });
+  add_all(n, h, [&](Hull& hull, std::size_t i) {
+    const Point3& p = point(i);
+    for (int k = 0; k < 3; ++k) hull.add(k, p.approx(k));
+  });
+  return frame_of_hull(h, [&](const std::function<void(const Point3&)>& f) {
+    for (const StorePoints& s : stores)
+      for (std::size_t i = 0; i < s.store->size(); ++i)
+        if (taken(s, i)) f(s.store->points()[i]);
+    for (std::size_t i = 0; i < n; ++i) f(point(i));
+  });
+}
+
+std::array<double, 3> DrawingFrame::to_frame(const PointStore& s, std::size_t i) const {
+  if (!identity) return to_frame(s.compact() ? s.point(i) : s.points()[i]);
+  auto mid = [&](int k) {
+    const Bounds b = s.approx(i, k);
+    return b.lo + (b.hi - b.lo) / 2;
+  };
+  return {mid(0), mid(1), mid(2)};
 }
 
 Projector::Projector(const Camera& c, DrawingFrame frame) : perspective_(c.perspective), frame_(std::move(frame)) {
@@ -206,6 +247,11 @@ std::array<double, 3> Projector::project(double x, double y, double z) const {
 
 std::array<double, 3> Projector::project(const Point3& p) const {
   auto q = frame_.to_frame(p);
+  return project(q[0], q[1], q[2]);
+}
+
+std::array<double, 3> Projector::project(const PointStore& s, std::size_t i) const {
+  auto q = frame_.to_frame(s, i);
   return project(q[0], q[1], q[2]);
 }
 

@@ -7,7 +7,9 @@
 #include <array>
 #include <functional>
 #include <optional>
+#include <vector>
 
+#include "kernel/point_store.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/transform.hpp"
 
@@ -46,6 +48,14 @@ struct DrawingFrame {
   Rational scale = 1;
   /// Doubles of the point in this frame (identity: the midpoint of its certified bounds).
   std::array<double, 3> to_frame(const Point3& p) const;
+  /// The same for point i of a store, from its bounds (identity: no exact point made).
+  std::array<double, 3> to_frame(const PointStore& s, std::size_t i) const;
+};
+
+/// The points of a vertex store whose mark is set (every point when `marks` is null).
+struct StorePoints {
+  const PointStore* store = nullptr;
+  const std::vector<char>* marks = nullptr;
 };
 
 /// The frame for `n` points (point(i), i < n): identity unless their doubles would lose them
@@ -53,6 +63,9 @@ struct DrawingFrame {
 /// coordinate; the screen boxes of the filters are floats); then the exact bounding box's centre and 1 / its largest side.
 /// point() is called from several threads at once.
 DrawingFrame drawing_frame(std::size_t n, const std::function<const Point3&(std::size_t)>& point);
+/// The same for points of vertex stores and `n` more points: the stores' exact points are made
+/// only when the frame is not the identity.
+DrawingFrame drawing_frame(const std::vector<StorePoints>& stores, std::size_t n = 0, const std::function<const Point3&(std::size_t)>& point = {});
 
 /// Drawing coordinates: screen x to the right, y up, and a depth that grows away from the
 /// viewer (orthographic: -P·v̂; perspective: distance along the viewing axis). Directions are
@@ -62,6 +75,8 @@ struct Projector {
   /// Screen (x, y) and depth of a point, in doubles. For perspective points at depth <= 0
   /// the screen coordinates are meaningless (the caller clips those first).
   std::array<double, 3> project(const Point3& p) const;
+  /// The same for point i of a store (its exact point not made for the identity frame).
+  std::array<double, 3> project(const PointStore& s, std::size_t i) const;
   /// The same for a point given in frame coordinates (DrawingFrame::to_frame).
   std::array<double, 3> project(double x, double y, double z) const;
   const DrawingFrame& frame() const { return frame_; }

@@ -57,6 +57,13 @@ const char* to_string(Method m) {
 }
 
 Point3 Segment::at(const Rational& t) const {
+  if (const PointStore* store = store_ends()) {  // the two points alone, not the store's every point
+    Point3 a = store->point(static_cast<std::size_t>(v0));
+    if (t == 0) return a;
+    Point3 b = store->point(static_cast<std::size_t>(v1));
+    if (t == 1) return b;
+    return a + t * (b - a);
+  }
   if (t == 0) return from();
   if (t == 1) return to();
   return from() + t * (to() - from());

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "kernel/geometry.hpp"
+#include "kernel/point_store.hpp"
 
 namespace hlr {
 
@@ -162,6 +163,7 @@ struct Segment {
   int v0 = -1, v1 = -1;          // Edge: input vertex indices, from v0 toward v1
   int face0 = -1, face1 = -1;    // Edge: its two faces; Intersection: the facets' faces
   PieceList pieces;              // in order of t, covering [0, 1]
+  /// The point at t in [0, 1] from from() to to() (a compact store makes only the two ends).
   Point3 at(const Rational& t) const;
 
   Segment() = default;
@@ -175,8 +177,8 @@ struct Segment {
   ~Segment() { release(); }
 
   /// The ends, world coordinates (set before use).
-  const Point3& from() const { return owned() ? (*own())[0] : base()[v0]; }
-  const Point3& to() const { return owned() ? (*own())[1] : base()[v1]; }
+  const Point3& from() const { return end(v0, 0); }
+  const Point3& to() const { return end(v1, 1); }
   /// Ends owned by the segment.
   void set_ends(Point3 a, Point3 b);
   /// Ends borrowed from storage that outlives the segment (a body's vertices): vertices[v0]
@@ -186,17 +188,38 @@ struct Segment {
     release();
     ends_ = reinterpret_cast<std::uintptr_t>(vertices.data());
   }
+  /// The same from a vertex store (kernel/point_store.hpp): from() and to() make a compact
+  /// store's exact points; store_ends() reads the ends' bounds without them.
+  void borrow_ends(const PointStore& vertices) {
+    release();
+    ends_ = reinterpret_cast<std::uintptr_t>(&vertices) | kStoreTag;
+  }
   /// The vertices the ends are borrowed from (from() is borrowed()[v0]), or nullptr when the
-  /// segment owns its ends.
-  const Point3* borrowed() const { return owned() ? nullptr : base(); }
+  /// segment owns its ends or borrows them from a store.
+  const Point3* borrowed() const { return (ends_ & kTags) == 0 ? base() : nullptr; }
+  /// The store the ends are borrowed from (point v0 is from()), or nullptr.
+  const PointStore* store_ends() const { return (ends_ & kTags) == kStoreTag ? store() : nullptr; }
 
  private:
-  // One word for either end store (56 bytes a segment, not 64): the borrowed vertex array, or
-  // the owned pair's address with its lowest bit set (a heap block is aligned: that bit is 0).
+  // One word for either end store (56 bytes a segment, not 64): the borrowed vertex array, the
+  // owned pair's address with its lowest bit set, or the borrowed store's with the next bit set
+  // (heap blocks and stores are aligned: those bits are 0).
+  static constexpr std::uintptr_t kOwnedTag = 1, kStoreTag = 2, kTags = 3;
   std::uintptr_t ends_ = 0;
-  bool owned() const { return (ends_ & 1) != 0; }
-  const std::array<Point3, 2>* own() const { return reinterpret_cast<const std::array<Point3, 2>*>(ends_ & ~std::uintptr_t{1}); }
+  bool owned() const { return (ends_ & kTags) == kOwnedTag; }
+  const std::array<Point3, 2>* own() const { return reinterpret_cast<const std::array<Point3, 2>*>(ends_ & ~kTags); }
   const Point3* base() const { return reinterpret_cast<const Point3*>(ends_); }
+  const PointStore* store() const { return reinterpret_cast<const PointStore*>(ends_ & ~kTags); }
+  const Point3& end(int v, int k) const {
+    switch (ends_ & kTags) {
+      case kOwnedTag:
+        return (*own())[k];
+      case kStoreTag:
+        return store()->points()[v];
+      default:
+        return base()[v];
+    }
+  }
   void release() {
     if (owned()) delete own();
     ends_ = 0;

@@ -12,6 +12,17 @@
 namespace hlr {
 namespace {
 
+// A segment's end k (0: from, 1: to) in the frame's doubles; a store's without its exact point.
+std::array<double, 3> end_in_frame(const Segment& s, int k, const DrawingFrame& frame) {
+  if (const PointStore* store = s.store_ends()) return frame.to_frame(*store, static_cast<std::size_t>(k ? s.v1 : s.v0));
+  return frame.to_frame(k ? s.to() : s.from());
+}
+
+std::array<double, 3> end_projection(const Segment& s, int k, const Projector& proj) {
+  const std::array<double, 3> q = end_in_frame(s, k, proj.frame());
+  return proj.project(q[0], q[1], q[2]);
+}
+
 // Drawing coordinates of a piece; false when nothing of it is in front of the eye. For
 // perspective, ends closer than `near` to the eye plane are pulled to it (drawing only: the
 // visibility of the piece is already decided exactly).
@@ -19,7 +30,7 @@ bool piece_line(const Segment& s, const Piece& p, const Projector& proj, bool pe
                 std::array<double, 4>& out, bool& pulled) {
   pulled = false;
   // Drawing only: the ends in doubles (in the projector's frame) and t rounded.
-  std::array<double, 3> F = proj.frame().to_frame(s.from()), T = proj.frame().to_frame(s.to()), A, B;
+  std::array<double, 3> F = end_in_frame(s, 0, proj.frame()), T = end_in_frame(s, 1, proj.frame()), A, B;
   auto at = [&](const Rational& t, std::array<double, 3>& o) {
     if (t == 0) o = F;
     else if (t == 1) o = T;
@@ -82,23 +93,26 @@ void close_gaps(const std::vector<std::size_t>& at, const std::vector<std::size_
 
 namespace {
 
-// The points the segments end at, each borrowed vertex once: per worker, the vertex arrays the
-// ends are borrowed from with a mark per vertex used, and the owned ends; then the marked
-// vertices in the order of their arrays. A vertex ends about six edges of a mesh, and reading
-// the vertices in order is a pass through memory instead of two scattered reads per segment.
-std::vector<const Point3*> segment_ends(const std::vector<Segment>& segs) {
-  struct Ends {
-    std::vector<std::pair<const Point3*, std::vector<char>>> bases;  // an array and its marks
-    std::vector<const Point3*> own;
-  };
+// The points the segments end at, each borrowed vertex once: per worker, the vertex arrays and
+// stores the ends are borrowed from with a mark per vertex used, and the owned ends; then
+// every worker's marks joined. A vertex ends about six edges of a mesh, and reading the
+// vertices in order is a pass through memory instead of two scattered reads per segment.
+struct SegmentEnds {
+  std::vector<std::pair<const void*, std::vector<char>>> bases;  // an array or a store, and its marks
+  std::vector<char> is_store;                                    // per base
+  std::vector<const Point3*> own;
+};
+
+SegmentEnds segment_ends(const std::vector<Segment>& segs) {
   const ParallelLoop loop;
-  PerWorker<Ends> part(loop);
+  PerWorker<SegmentEnds> part(loop);
   loop.run(segs.size(), 65536, [&](unsigned w, std::size_t b, std::size_t e) {
-    Ends& ends = part[w];
-    std::size_t last = 0;  // the array of the segment before (nearly always the same)
+    SegmentEnds& ends = part[w];
+    std::size_t last = 0;  // the base of the segment before (nearly always the same)
     for (std::size_t i = b; i < e; ++i) {
       const Segment& s = segs[i];
-      const Point3* base = s.borrowed();
+      const PointStore* store = s.store_ends();
+      const void* base = store ? static_cast<const void*>(store) : static_cast<const void*>(s.borrowed());
       if (!base) {
         ends.own.push_back(&s.from());
         ends.own.push_back(&s.to());
@@ -107,7 +121,10 @@ std::vector<const Point3*> segment_ends(const std::vector<Segment>& segs) {
       if (last >= ends.bases.size() || ends.bases[last].first != base) {
         last = 0;
         while (last < ends.bases.size() && ends.bases[last].first != base) ++last;
-        if (last == ends.bases.size()) ends.bases.emplace_back(base, std::vector<char>());
+        if (last == ends.bases.size()) {
+          ends.bases.emplace_back(base, std::vector<char>());
+          ends.is_store.push_back(store != nullptr);
+        }
       }
       std::vector<char>& mark = ends.bases[last].second;
       const auto top = static_cast<std::size_t>(std::max(s.v0, s.v1));
@@ -115,34 +132,44 @@ std::vector<const Point3*> segment_ends(const std::vector<Segment>& segs) {
       mark[static_cast<std::size_t>(s.v0)] = mark[static_cast<std::size_t>(s.v1)] = 1;
     }
   });
-  std::vector<std::pair<const Point3*, std::vector<char>>> bases;  // every worker's marks joined
-  std::vector<const Point3*> pts;
+  SegmentEnds all;  // every worker's marks joined
   for (unsigned w = 0; w < part.size(); ++w) {
-    pts.insert(pts.end(), part[w].own.begin(), part[w].own.end());
-    for (auto& entry : part[w].bases) {
-      const Point3* base = entry.first;
-      std::vector<char>& mark = entry.second;
-      auto it = std::find_if(bases.begin(), bases.end(), [&](const auto& x) { return x.first == base; });
-      if (it == bases.end()) {
-        bases.emplace_back(base, std::move(mark));
+    all.own.insert(all.own.end(), part[w].own.begin(), part[w].own.end());
+    for (std::size_t k = 0; k < part[w].bases.size(); ++k) {
+      const void* base = part[w].bases[k].first;
+      std::vector<char>& mark = part[w].bases[k].second;
+      auto it = std::find_if(all.bases.begin(), all.bases.end(), [&](const auto& x) { return x.first == base; });
+      if (it == all.bases.end()) {
+        all.bases.emplace_back(base, std::move(mark));
+        all.is_store.push_back(part[w].is_store[k]);
         continue;
       }
       if (it->second.size() < mark.size()) it->second.resize(mark.size(), 0);
       for (std::size_t v = 0; v < mark.size(); ++v) it->second[v] |= mark[v];
     }
   }
-  for (const auto& [base, mark] : bases)
-    for (std::size_t v = 0; v < mark.size(); ++v)
-      if (mark[v]) pts.push_back(base + v);
-  return pts;
+  return all;
 }
 
 }  // namespace
 
 Projector drawing_projector(const LineDrawing& r, const Camera& camera) {
-  // The hull of the segments' ends (drawing_frame's minima and maxima: the same in any order).
-  const std::vector<const Point3*> pts = segment_ends(r.segments);
-  return Projector(camera, drawing_frame(pts.size(), [&](std::size_t i) -> const Point3& { return *pts[i]; }));
+  // The hull of the segments' ends (drawing_frame's minima and maxima: the same in any order):
+  // the stores' marked points by their bounds, then the other ends.
+  const SegmentEnds ends = segment_ends(r.segments);
+  std::vector<StorePoints> stores;
+  std::vector<const Point3*> pts = ends.own;
+  for (std::size_t k = 0; k < ends.bases.size(); ++k) {
+    if (ends.is_store[k]) {
+      stores.push_back({static_cast<const PointStore*>(ends.bases[k].first), &ends.bases[k].second});
+      continue;
+    }
+    const auto* base = static_cast<const Point3*>(ends.bases[k].first);
+    const std::vector<char>& mark = ends.bases[k].second;
+    for (std::size_t v = 0; v < mark.size(); ++v)
+      if (mark[v]) pts.push_back(base + v);
+  }
+  return Projector(camera, drawing_frame(stores, pts.size(), [&](std::size_t i) -> const Point3& { return *pts[i]; }));
 }
 
 Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Project2DOptions& opt) {
@@ -154,7 +181,7 @@ Drawing2D project_drawing(const LineDrawing& r, const Camera& camera, const Proj
     loop.run(r.segments.size(), 8192, [&](unsigned w, std::size_t b, std::size_t e) {
       double far = most[w];
       for (std::size_t i = b; i < e; ++i)
-        for (const Point3* p : {&r.segments[i].from(), &r.segments[i].to()}) far = std::max(far, proj.project(*p)[2]);
+        for (int k = 0; k < 2; ++k) far = std::max(far, end_projection(r.segments[i], k, proj)[2]);
       most[w] = far;
     });
     double far = 0;

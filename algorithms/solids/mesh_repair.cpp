@@ -6,6 +6,7 @@
 
 #include "algorithms/solids/triangulate.hpp"
 #include "algorithms/support/parallel.hpp"
+#include "kernel/int128.hpp"
 #include "kernel/predicates.hpp"
 
 namespace hlr {
@@ -27,6 +28,17 @@ bool middle_of(const std::vector<Point3>& vs, const Face& f, int& a, int& m, int
     }
   }
   return false;
+}
+
+// Whether a triangle of a compact store has collinear (or repeated) corners: its edge vectors'
+// cross product is zero, exactly in 128-bit integers (numerators within 2^53: differences
+// within 2^54, products within 2^108).
+bool collinear_triangle(const PointStore& s, const Face& f) {
+  if (f.size() != 3) return false;
+  const auto &p = s.numerators()[f[0]], &q = s.numerators()[f[1]], &r = s.numerators()[f[2]];
+  Int128 u[3], v[3];
+  for (int k = 0; k < 3; ++k) u[k] = static_cast<Int128>(q[k]) - p[k], v[k] = static_cast<Int128>(r[k]) - p[k];
+  return u[1] * v[2] == u[2] * v[1] && u[2] * v[0] == u[0] * v[2] && u[0] * v[1] == u[1] * v[0];
 }
 
 // Whether a face of four or more vertices has a vertex off the plane of its Newell normal; sets
@@ -58,6 +70,10 @@ std::vector<Face> split_face(const std::vector<Point3>& vs, const Face& f, const
 }  // namespace
 
 std::optional<MeshRepair> split_nonplanar_faces(const Polyhedron& body) {
+  // Triangles are planar: a mesh of triangles alone is not read (a compact store's exact
+  // points are then not made).
+  const auto polygon = [](const Face& f) { return f.size() > 3; };
+  if (std::none_of(body.faces().begin(), body.faces().end(), polygon)) return std::nullopt;
   const std::vector<Point3>& vs = body.vertices();
   std::atomic<bool> any{false};
   ParallelLoop().run(body.faces().size(), 8192, [&](unsigned, std::size_t b, std::size_t e) {
@@ -98,15 +114,18 @@ std::optional<MeshRepair> split_nonplanar_faces(const Polyhedron& body) {
 }
 
 std::optional<MeshRepair> remove_zero_area_triangles(const Polyhedron& body) {
-  const std::vector<Point3>& vs = body.vertices();
-  // Most meshes have none: look on all cores first, copy the faces only to repair.
+  // Most meshes have none: look on all cores first, copy the faces only to repair. A compact
+  // store's triangles are tested in its integers (collinear is necessary for a middle vertex),
+  // its exact points made only when one is collinear.
+  const PointStore& store = body.vertex_store();
   std::atomic<bool> any{false};
   ParallelLoop().run(body.faces().size(), 8192, [&](unsigned, std::size_t b, std::size_t e) {
     int a, m, c;
     for (std::size_t f = b; f < e && !any.load(std::memory_order_relaxed); ++f)
-      if (middle_of(vs, body.faces()[f], a, m, c)) any = true;
+      if (store.compact() ? collinear_triangle(store, body.faces()[f]) : middle_of(store.points(), body.faces()[f], a, m, c)) any = true;
   });
   if (!any) return std::nullopt;
+  const std::vector<Point3>& vs = body.vertices();
   std::vector<Face> faces = body.faces();
   std::vector<int> input(faces.size());  // per face of `faces`: its input number
   for (std::size_t f = 0; f < input.size(); ++f) input[f] = static_cast<int>(f);

@@ -19,7 +19,7 @@ MeshData read_mesh_bytes(std::string_view bytes, const std::string& format, cons
   else if (format == "ply") reader = read_ply;
   else throw InputError(name, 0, "unknown mesh format '" + format + "' (expected off, obj, stl or ply)");
   MeshData m = reader(bytes, name);
-  if (m.vertices.empty()) throw InputError(name, 0, "empty mesh: no vertices");
+  if (m.num_vertices() == 0) throw InputError(name, 0, "empty mesh: no vertices");
   if (m.faces.empty()) throw InputError(name, 0, "empty mesh: no faces");
   return m;
 }
@@ -37,8 +37,9 @@ Polyhedron make_polyhedron(MeshData data, const std::string& file) {
   std::vector<int> lines = std::move(data.face_lines);
   try {
     const ParallelLoop loop;
-    return Polyhedron(std::move(data.vertices), std::move(data.faces),
-                      [&](std::size_t n, const std::function<void(std::size_t)>& body) { loop.for_each(n, 4096, body); });
+    auto on_all_cores = [&](std::size_t n, const std::function<void(std::size_t)>& body) { loop.for_each(n, 4096, body); };
+    if (data.compact.compact()) return Polyhedron(std::move(data.compact), std::move(data.faces), on_all_cores);
+    return Polyhedron(std::move(data.vertices), std::move(data.faces), on_all_cores);
   } catch (const FaceError& e) {
     int line = e.face() >= 0 && e.face() < static_cast<int>(lines.size()) ? lines[e.face()] : 0;
     throw InputError(file, line, e.what());

@@ -20,6 +20,10 @@ namespace hlr {
 /// binary files, 0) each face came from.
 struct MeshData {
   std::vector<Point3> vertices;
+  /// A large file's vertices when every coordinate is a short decimal: numerators over one
+  /// power of ten (kernel/point_store.hpp), and `vertices` empty.
+  PointStore compact;
+  std::size_t num_vertices() const { return compact.compact() ? compact.size() : vertices.size(); }
   std::vector<Face> faces;
   std::vector<int> face_lines;
   /// OBJ `vt` texture coordinates (u, v; shading data, doubles) and, per face, the index of

@@ -5,8 +5,10 @@
 // few lines) falls back to reading the whole file in order, so the result and every error
 // message are exactly the sequential reader's.
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <optional>
+#include <string_view>
 
 #include "algorithms/support/parallel.hpp"
 #include "io/readers/mesh_reader.hpp"
@@ -43,6 +45,44 @@ void read_vertex(TokenStream& ts, Point3& out) {
     ts.number_into("vertex z", z);
   });
   ts.skip_rest_of_line();
+}
+
+// A plain decimal (sign, digits, at most one point, at least one digit, 18 digits at most) as
+// its digits without the point and the count after it; false for anything else (exponents,
+// fractions, longer numbers: those vertices are read as exact rationals instead).
+bool plain_decimal(std::string_view t, std::int64_t& mantissa, int& frac) {
+  std::size_t i = 0;
+  const bool neg = !t.empty() && t[0] == '-';
+  if (!t.empty() && (t[0] == '-' || t[0] == '+')) ++i;
+  std::int64_t m = 0;
+  int digits = 0, after = -1;
+  for (; i < t.size(); ++i) {
+    const char c = t[i];
+    if (c == '.' && after < 0) {
+      after = 0;
+      continue;
+    }
+    if (c < '0' || c > '9' || ++digits > 18) return false;
+    m = m * 10 + (c - '0');
+    if (after >= 0) ++after;
+  }
+  if (digits == 0) return false;
+  mantissa = neg ? -m : m;
+  frac = after < 0 ? 0 : after;
+  return true;
+}
+
+// A vertex of plain decimals: each coordinate's digits and decimal places; false (the stream
+// then unspecified) when a coordinate is missing or not a plain decimal.
+bool read_vertex_decimals(TokenStream& ts, PointStore::Numerators& out, std::array<std::uint8_t, 3>& frac) {
+  for (int k = 0; k < 3; ++k) {
+    std::string_view t;
+    int f = 0;
+    if (!ts.next(t) || !plain_decimal(t, out[k], f)) return false;
+    frac[k] = static_cast<std::uint8_t>(f);
+  }
+  ts.skip_rest_of_line();
+  return true;
 }
 
 void read_face(TokenStream& ts, long f, long nv, Face& face, int& line) {
@@ -134,6 +174,28 @@ bool mark_records(std::string_view t, std::size_t at, int line, long nv, long nf
   return true;
 }
 
+// The vertices' digits over 10^d, d the most decimal places of any coordinate: each brought to
+// d places. False when d or a numerator passes the compact store's limit (below 2^53, point_store.hpp).
+bool compact_vertices(std::vector<PointStore::Numerators> nums, const std::vector<std::array<std::uint8_t, 3>>& frac, int d, const ParallelLoop& loop,
+                      PointStore& out) {
+  std::int64_t pow10[19] = {1};
+  for (int i = 1; i < 19; ++i) pow10[i] = pow10[i - 1] * 10;
+  if (d > 15) return false;  // 10^16 > 2^53
+  PerWorker<char> fits(loop, 1);
+  loop.run(nums.size(), 16384, [&](unsigned w, std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i)
+      for (int k = 0; k < 3; ++k) {
+        const std::int64_t f = pow10[d - frac[i][k]], a = nums[i][k] < 0 ? -nums[i][k] : nums[i][k];
+        if (a > PointStore::kLimit / f) fits[w] = 0;
+        else nums[i][k] *= f;
+      }
+  });
+  for (unsigned w = 0; w < fits.size(); ++w)
+    if (!fits[w]) return false;
+  out = PointStore(std::move(nums), pow10[d]);
+  return true;
+}
+
 constexpr long kChunk = 4096;  // lines per chunk
 constexpr long kParallelFrom = 8 * kChunk;
 
@@ -151,7 +213,17 @@ std::optional<MeshData> read_in_chunks(std::string_view bytes, const std::string
   m.face_lines.resize(static_cast<std::size_t>(h.nf));
   const std::size_t vchunks = vm.size() - 1, fchunks = fm.size() - 1;
   std::vector<char> ok(vchunks + fchunks, 1);
-  auto chunk = [&](std::size_t c) {
+  // The vertices first as plain decimals (compact_vertices): digits and decimal places.
+  std::vector<PointStore::Numerators> nums;
+  std::vector<std::array<std::uint8_t, 3>> frac;
+  std::vector<std::uint8_t> places(vchunks, 0);  // each chunk's most decimal places
+  reserve_touched(nums, static_cast<std::size_t>(h.nv), loop);
+  reserve_touched(frac, static_cast<std::size_t>(h.nv), loop);
+  nums.resize(static_cast<std::size_t>(h.nv));
+  frac.resize(static_cast<std::size_t>(h.nv));
+  bool decimals = true;
+  std::atomic<bool> plain{true};
+  auto chunk = [&](std::size_t c, bool compact) {
     const bool faces = c >= vchunks;
     const std::vector<Mark>& mk = faces ? fm : vm;
     const std::size_t k = faces ? c - vchunks : c;
@@ -160,21 +232,31 @@ std::optional<MeshData> read_in_chunks(std::string_view bytes, const std::string
     try {
       for (long i = first; i < last; ++i) {
         if (faces) read_face(ts, i, h.nv, m.faces[i], m.face_lines[i]);
-        else read_vertex(ts, m.vertices[i]);
+        else if (!compact) read_vertex(ts, m.vertices[i]);
+        else if (!plain.load(std::memory_order_relaxed) || !read_vertex_decimals(ts, nums[i], frac[i])) {
+          plain.store(false, std::memory_order_relaxed);  // the other chunks stop too
+          return void(ok[c] = 0);
+        } else places[k] = std::max({places[k], frac[i][0], frac[i][1], frac[i][2]});
       }
       ok[c] = ts.at_end();  // exactly its lines
     } catch (const std::exception&) {
       ok[c] = 0;
     }
   };
-  // The vertices' construction (three GMP numbers each, one thread) runs beside the faces'
-  // chunks, then the vertices' chunks.
+  loop.for_each(vchunks + fchunks, 1, [&](std::size_t c) { chunk(c, true); });
+  if (std::find(ok.begin() + vchunks, ok.end(), 0) != ok.end()) return std::nullopt;
+  decimals = std::find(ok.begin(), ok.begin() + vchunks, 0) == ok.begin() + vchunks;
+  if (decimals) {
+    const int d = places.empty() ? 0 : *std::max_element(places.begin(), places.end());
+    decimals = compact_vertices(std::move(nums), frac, d, loop, m.compact);
+  }
+  if (decimals) return m;
+  nums = {}, frac = {};
+  // Exact rationals: the vertices' construction (three GMP numbers each), then their chunks.
   reserve_touched(m.vertices, static_cast<std::size_t>(h.nv), loop);  // fresh pages zeroed on all cores
-  loop.for_each(1 + fchunks, 1, [&](std::size_t c) {
-    if (c == 0) m.vertices.resize(static_cast<std::size_t>(h.nv));
-    else chunk(vchunks + c - 1);
-  });
-  loop.for_each(vchunks, 1, chunk);
+  m.vertices.resize(static_cast<std::size_t>(h.nv));
+  std::fill(ok.begin(), ok.begin() + vchunks, 1);
+  loop.for_each(vchunks, 1, [&](std::size_t c) { chunk(c, false); });
   if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return std::nullopt;
   return m;
 }

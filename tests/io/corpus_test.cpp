@@ -55,7 +55,7 @@ TEST(Corpus, CountsAndVerdictsAgreeWithOpenMesh) {
       EXPECT_FALSE(OpenMesh::IO::read_mesh(om, path) && om.n_faces() > 0) << e.what();
       continue;
     }
-    const std::size_t nv = data.vertices.size(), nf = data.faces.size();
+    const std::size_t nv = data.num_vertices(), nf = data.faces.size();
     Polyhedron ours = make_polyhedron(std::move(data), path);
     Mesh om;
     // OpenMesh's OFF reader cannot read a few files (CGAL's comment header, colour values

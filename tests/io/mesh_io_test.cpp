@@ -326,6 +326,122 @@ TEST(MeshIO, LargeOffErrorsNameTheLine) {
   EXPECT_NE(e.find("big.off:" + std::to_string(bad_face.face_line[39000]) + ": vertex index 40000 is out of range"), std::string::npos) << e;
 }
 
+// A large OFF whose coordinates are all short decimals is read into a compact store
+// (kernel/point_store.hpp): every point is the exact value of its text, whatever its sign,
+// point or number of places; one coordinate that is not such a decimal (an exponent, a
+// fraction, 16 places, 19 digits, 15 places that bring the others past 2^53, a value whose
+// numerator over the file's denominator 10^7 is 2^53) reads
+// the whole file as exact rationals, with the same values; bad text keeps its message.
+namespace {
+std::string decimal_off(int n, int odd_vertex, const std::string& odd_token, std::vector<std::array<std::string, 3>>& tokens) {
+  const char* forms[] = {"1", "-0.5", "+2.25", ".5", "5.", "-0", "123.4567", "-0.0000001", "0.0", "-17"};
+  std::string t = "OFF\n" + std::to_string(n) + " " + std::to_string(n) + " 0\n";
+  tokens.clear();
+  for (int i = 0; i < n; ++i) {
+    std::array<std::string, 3> c = {std::to_string(i % 1000) + "." + std::to_string(i % 97), forms[i % 10], "-" + std::to_string(i) + ".25"};
+    if (i == odd_vertex) c[1] = odd_token;
+    tokens.push_back(c);
+    if (i % 1000 == 7) t += "# a comment line\n";
+    t += c[0] + " " + c[1] + " " + c[2] + (i % 5 == 0 ? " 255 0 0 # coloured\r\n" : "\n");
+  }
+  for (int f = 0; f < n; ++f) t += "3 " + std::to_string(f) + " " + std::to_string((f + 1) % n) + " " + std::to_string((f + 2) % n) + "\n";
+  return t;
+}
+}  // namespace
+
+TEST(MeshIO, LargeOffOfShortDecimalsReadsCompactly) {
+  const int n = 40000;
+  std::vector<std::array<std::string, 3>> tokens;
+  struct Case {
+    int vertex;
+    std::string token;
+    bool compact;
+  };
+  for (const Case& c : {Case{-1, "", true}, Case{31234, "1e-3", false}, Case{5, "3/7", false}, Case{39999, "0.1234567890123456", false},
+                        Case{17, "0.123456789012345", false}, Case{20000, "900719925.4740992", false}, Case{20001, "-900719925.4740991", true},
+                        Case{3, "1234567890123456789", false}}) {
+    SCOPED_TRACE(c.token);
+    const std::string text = decimal_off(n, c.vertex, c.token, tokens);
+    const MeshData m = read_off(text, "dec.off");
+    ASSERT_EQ(m.compact.compact(), c.compact);
+    ASSERT_EQ(m.num_vertices(), static_cast<std::size_t>(n));
+    ASSERT_EQ(m.vertices.size(), c.compact ? 0u : static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k) {
+        const Rational want = parse_rational(tokens[i][k]);
+        const Point3 p = c.compact ? m.compact.point(i) : m.vertices[i];
+        ASSERT_EQ(p[k], want) << i << " " << tokens[i][k];
+        if (c.compact) ASSERT_EQ(m.compact.approx(i, k).lo, bounds_of(want).lo) << i << " " << tokens[i][k];
+      }
+    ASSERT_EQ(m.faces[n - 1], (Face{n - 1, 0, 1}));
+    const Polyhedron p = make_polyhedron(MeshData(m), "dec.off");
+    EXPECT_EQ(p.vertex_store().compact(), c.compact);
+    EXPECT_EQ(p.num_vertices(), static_cast<std::size_t>(n));
+  }
+  const std::string bad = decimal_off(n, 30001, "0.5.5", tokens);
+  const std::string e = off_error(bad);
+  EXPECT_NE(e.find("big.off:30034: vertex y: bad number '0.5.5'"), std::string::npos) << e;  // 2 header lines, 30 comments
+}
+
+// The loader's repairs on a compact store: a large file (a terrain of non-planar quads, and a
+// box whose top has a zero-area triangle on its seam) renders exactly as the same file read as
+// exact rationals (one coordinate written as a fraction): the same repairs, segments and pieces.
+namespace {
+std::string repair_off(bool fraction) {
+  std::mt19937 rng(7);
+  const int n = 130;  // quads a side: 17,161 vertices and 16,900 quads, with the box over 32,768 records
+  std::string v, f;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const std::string z = "1.5" + std::to_string(rng() % 1000);
+      v += std::to_string(i) + ".5 " + std::to_string(j) + " " + (i == 0 && j == 0 ? (fraction ? "3/2" : "1.5") : z) + "\n";
+    }
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const int a = i * (n + 1) + j;
+      f += "4 " + std::to_string(a) + " " + std::to_string(a + n + 1) + " " + std::to_string(a + n + 2) + " " + std::to_string(a + 1) + "\n";
+    }
+  const int o = (n + 1) * (n + 1);  // the box [0, 4] x [0, 2] x [-6, -4.25], the seam's middle (2, 1, -4.25)
+  for (const char* p : {"0 0 -6", "4 0 -6", "0 2 -6", "4 2 -6", "0 0 -4.25", "4 0 -4.25", "0 2 -4.25", "4 2 -4.25", "2 1 -4.25"})
+    v += std::string(p) + "\n";
+  for (const std::vector<int>& face :
+       std::vector<std::vector<int>>{{0, 2, 3, 1}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}, {4, 5, 7}, {4, 7, 8}, {4, 8, 7, 6}}) {
+    f += std::to_string(face.size());
+    for (int k : face) f += " " + std::to_string(o + k);
+    f += "\n";
+  }
+  return "OFF\n" + std::to_string(o + 9) + " " + std::to_string(n * n + 8) + " 0\n" + v + f;
+}
+}  // namespace
+
+TEST(MeshIO, CompactVerticesTakeTheSameRepairs) {
+  const std::string compact = temp_file("terrain.off", repair_off(false)), exact = temp_file("terrain_exact.off", repair_off(true));
+  ASSERT_TRUE(read_mesh_file(compact).compact.compact());
+  ASSERT_FALSE(read_mesh_file(exact).compact.compact());
+  RenderOptions o;
+  o.view.direction = Vector3(1, parse_rational("1.3"), parse_rational("1.7"));
+  o.lines.edges = EdgeSelection::All;
+  const RenderResult a = render_files({compact}, o), b = render_files({exact}, o);
+  for (const RenderResult* r : {&a, &b}) {
+    std::string notes;
+    for (const std::string& n : r->notes) notes += n + "\n";
+    EXPECT_NE(notes.find("16887 non-planar quads split along the shorter diagonal"), std::string::npos) << notes;
+    EXPECT_NE(notes.find("has 1 zero-area triangle"), std::string::npos) << notes;
+  }
+  ASSERT_EQ(a.drawing.segments.size(), b.drawing.segments.size());
+  for (std::size_t i = 0; i < a.drawing.segments.size(); ++i) {
+    const Segment &s = a.drawing.segments[i], &t = b.drawing.segments[i];
+    ASSERT_EQ(s.v0, t.v0);
+    ASSERT_EQ(s.v1, t.v1);
+    ASSERT_EQ(s.from(), t.from());
+    ASSERT_EQ(s.pieces.size(), t.pieces.size());
+    for (std::size_t k = 0; k < s.pieces.size(); ++k) {
+      ASSERT_EQ(s.pieces[k].t1, t.pieces[k].t1);
+      ASSERT_EQ(s.pieces[k].visible, t.pieces[k].visible);
+    }
+  }
+}
+
 // Binary STL corners are welded by exact float value (a hash table without allocation per
 // vertex): the same vertices, numbered by first appearance, as a plain map of the values;
 // -0 and +0 are one point, 0.1f and the double 0.1 are not the same value.
