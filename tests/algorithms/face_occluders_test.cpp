@@ -15,6 +15,7 @@
 #include "algorithms/picture/drawing_2d.hpp"
 #include "algorithms/solids/crease_angle.hpp"
 #include "io/readers/mesh_reader.hpp"
+#include "support/compact.hpp"
 #include "support/numbers.hpp"
 #include "support/torus.hpp"
 
@@ -22,6 +23,7 @@ using namespace hlr;
 
 namespace {
 const std::string kData = HLR_DATA_DIR;
+using hlr::test::compact_copy;
 using hlr::test::Q;
 Point3 P(const char* x, const char* y, const char* z) { return Point3(Q(x), Q(y), Q(z)); }
 
@@ -546,22 +548,6 @@ TEST(FaceOccluders, VolumeSignOfFarFlatAndSmallBodiesOnTheWiderPaths) {
 // with exact points. Alone in an orthographic view its exact points are never made (the
 // memory a large mesh saves).
 namespace {
-Polyhedron compact_copy(const Polyhedron& p) {
-  std::uint64_t L = 1;
-  for (const Point3& v : p.vertices())
-    for (int k = 0; k < 3; ++k) L = std::lcm(L, mpz_get_ui(v[k].get_den_mpz_t()));
-  std::vector<PointStore::Numerators> nums;
-  for (const Point3& v : p.vertices()) {
-    PointStore::Numerators n;
-    for (int k = 0; k < 3; ++k) n[k] = static_cast<std::int64_t>(mpz_get_si(Rational(v[k] * static_cast<long>(L)).get_num_mpz_t()));
-    nums.push_back(n);
-  }
-  return Polyhedron(PointStore(std::move(nums), static_cast<std::int64_t>(L)), p.faces(),
-                    [](std::size_t n, const std::function<void(std::size_t)>& body) {
-                      for (std::size_t i = 0; i < n; ++i) body(i);
-                    });
-}
-
 void expect_same_drawing(const LineDrawing& a, const LineDrawing& b, const Camera& cam) {
   ASSERT_EQ(a.segments.size(), b.segments.size());
   for (std::size_t i = 0; i < a.segments.size(); ++i) {
@@ -582,12 +568,12 @@ TEST(FaceOccluders, CompactVerticesDrawTheSameWithoutMakingThePoints) {
   ASSERT_FALSE(exact.vertex_store().compact());
   for (const Camera& cam : {make_orthographic(Vector3(Q("1"), Q("1.3"), Q("1.7"))), make_orthographic(Vector3(0, 0, 1))})
     for (EdgeSelection e : {EdgeSelection::All, EdgeSelection::Feature}) {
-      const Polyhedron compact = compact_copy(exact);
+      const Polyhedron compact = *compact_copy(exact);
       ASSERT_TRUE(compact.vertex_store().compact());
       expect_same_drawing(run({&compact}, cam, e, "10"), run({&exact}, cam, e, "10"), cam);
       EXPECT_FALSE(compact.vertex_store().points_made());
     }
-  const Polyhedron compact = compact_copy(exact);
+  const Polyhedron compact = *compact_copy(exact);
   const Polyhedron rod = box("-0.25", "-0.25", "-2", "0.25", "0.25", "0.5");
   for (const Camera& cam : {make_orthographic(Vector3(Q("1"), Q("1.3"), Q("1.7"))), make_perspective(P("3", "2.5", "4"), P("0", "0", "0"))}) {
     expect_same_drawing(run({&compact, &rod}, cam), run({&exact, &rod}, cam), cam);

@@ -17,6 +17,7 @@
 #include "io/readers/mesh_reader.hpp"
 #include "io/readers/scene.hpp"
 #include "io/views/view_choice.hpp"
+#include "support/compact.hpp"
 #include "support/ray_oracle.hpp"
 
 using namespace hlr;
@@ -104,6 +105,25 @@ void compare_routes(const LineDrawing& a, const LineDrawing& b, Result& res, con
   }
 }
 
+// The same scene with every body whose vertices have a compact form in a compact store
+// (kernel/point_store.hpp) draws the same pieces as with exact points.
+void compare_compact(const std::vector<Polyhedron>& bodies, const Camera& cam, const LineOptions& opt, const LineDrawing& f,
+                     const std::string& what) {
+  std::vector<Polyhedron> compact;
+  for (const Polyhedron& b : bodies) compact.push_back(hlr::test::compact_copy(b).value_or(b));
+  std::vector<const Polyhedron*> ptrs;
+  for (const Polyhedron& b : compact) ptrs.push_back(&b);
+  const LineDrawing c = face_occluders(ptrs, cam, opt);
+  bool same = c.segments.size() == f.segments.size();
+  for (std::size_t i = 0; same && i < c.segments.size(); ++i) {
+    const Segment &s = c.segments[i], &t = f.segments[i];
+    same = s.v0 == t.v0 && s.v1 == t.v1 && s.body == t.body && s.pieces.size() == t.pieces.size();
+    for (std::size_t k = 0; same && k < s.pieces.size(); ++k)
+      same = s.pieces[k].t1 == t.pieces[k].t1 && s.pieces[k].visible == t.pieces[k].visible;
+  }
+  if (!same) ADD_FAILURE() << what << ": compact vertices draw differently";
+}
+
 void run_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, Result& res, const std::string& what) {
   OracleScene scene(bodies);
   const auto& ptrs = scene.ptrs;
@@ -144,6 +164,7 @@ void run_scene(const std::vector<Polyhedron>& bodies, const Camera& cam, Result&
     }
   }
   compare_routes(r, f, res, what);
+  compare_compact(bodies, cam, opt, f, what);
 }
 
 std::string describe(unsigned seed, const Camera& c) {
