@@ -118,8 +118,7 @@ void compare_compact(const std::vector<Polyhedron>& bodies, const Camera& cam, c
   for (std::size_t i = 0; same && i < c.segments.size(); ++i) {
     const Segment &s = c.segments[i], &t = f.segments[i];
     same = s.v0 == t.v0 && s.v1 == t.v1 && s.body == t.body && s.pieces.size() == t.pieces.size();
-    for (std::size_t k = 0; same && k < s.pieces.size(); ++k)
-      same = s.pieces[k].t1 == t.pieces[k].t1 && s.pieces[k].visible == t.pieces[k].visible;
+    for (std::size_t k = 0; same && k < s.pieces.size(); ++k) same = s.pieces[k].t1 == t.pieces[k].t1 && s.pieces[k].visible == t.pieces[k].visible;
   }
   if (!same) ADD_FAILURE() << what << ": compact vertices draw differently";
 }
