@@ -24,11 +24,6 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
   t.slot_third.resize(fo.back());  // fresh pages: written (and so touched) on all cores
   t.slot_edge.resize(fo.back());
   loop.for_each(t.slot_edge.size(), 1 << 16, [&](std::size_t i) { t.slot_third[i] = t.slot_edge[i] = -1; });
-  struct U {
-    std::uint64_t key;
-    int face, slot;
-    bool forward;
-  };
   constexpr std::size_t kGrain = 8192;
   // Uses per lower vertex, then each bucket's start.
   RawVector<std::uint32_t> start(nv + 1);
@@ -40,9 +35,12 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
     }
   });
   for (std::size_t i = 1; i <= nv; ++i) start[i] += start[i - 1];
-  RawVector<U> uses;
+  // A use in its lower vertex's bucket in 8 bytes: the higher vertex in the high half, then the
+  // slot and whether it runs from the lower vertex. Sorting a bucket's words sorts its uses by
+  // (higher vertex, slot): each edge's uses together, in order of slot.
+  RawVector<std::uint64_t> uses;
   uses.reserve(start[nv]);
-  touch_pages(uses.data(), start[nv] * sizeof(U), loop);  // fresh pages on all cores; each use is written below
+  touch_pages(uses.data(), start[nv] * sizeof(std::uint64_t), loop);  // fresh pages on all cores; each use is written below
   uses.resize(start[nv]);
   {
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
@@ -50,31 +48,41 @@ BodyTopology body_topology(const std::vector<Face>& faces, std::size_t nv, unsig
       for (std::size_t k = 0; k < faces[f].size(); ++k) {
         const int u = faces[f][k], v = faces[f][(k + 1) % faces[f].size()];
         if (u == v) continue;
-        const std::uint64_t key = (static_cast<std::uint64_t>(std::min(u, v)) << 32) | static_cast<std::uint32_t>(std::max(u, v));
         const std::uint32_t at = std::atomic_ref<std::uint32_t>(fill[std::min(u, v)]).fetch_add(1, std::memory_order_relaxed);
-        uses[at] = {key, static_cast<int>(f), fo[f] + static_cast<int>(k), u < v};
+        uses[at] = (static_cast<std::uint64_t>(std::max(u, v)) << 32) | (static_cast<std::uint64_t>(fo[f] + k) << 1) | (u < v ? 1u : 0u);
       }
     });
   }
-  auto less = [](const U& a, const U& c) { return a.key < c.key || (a.key == c.key && a.slot < c.slot); };
+  // Each bucket sorted, and its edges counted (runs of one higher vertex); then the edges of
+  // each lower vertex from its place, on all cores, in the order (u, v).
+  std::vector<std::uint32_t> at(nv + 1, 0);
   loop.for_each(nv, kGrain, [&](std::size_t i) {
-    if (start[i + 1] - start[i] > 1) std::sort(uses.begin() + start[i], uses.begin() + start[i + 1], less);
+    if (start[i + 1] - start[i] > 1) std::sort(uses.begin() + start[i], uses.begin() + start[i + 1]);
+    std::uint32_t n = 0;
+    for (std::uint32_t j = start[i]; j < start[i + 1]; ++j) n += j == start[i] || (uses[j] >> 32) != (uses[j - 1] >> 32);
+    at[i + 1] = n;
   });
-  // One edge per run of equal keys: the runs found in one pass, the edges built on all cores.
-  std::vector<std::uint32_t> first =  // the first use of each edge
-      parallel_select(uses.size(), [&](std::size_t i) { return i == 0 || uses[i].key != uses[i - 1].key; }, loop, 1);
-  first.push_back(static_cast<std::uint32_t>(uses.size()));
-  t.edges.resize(first.size() - 1);  // unconstructed: each edge made below, on all cores
+  for (std::size_t i = 1; i <= nv; ++i) at[i] += at[i - 1];
+  const bool triangles = std::all_of(faces.begin(), faces.end(), [](const Face& f) { return f.size() == 3; });
+  auto face_of = [&](int slot) {  // (a mesh of triangles: slot / 3)
+    return triangles ? slot / 3 : static_cast<int>(std::upper_bound(fo.begin(), fo.end(), slot) - fo.begin()) - 1;
+  };
+  t.edges.resize(at[nv]);  // unconstructed: each edge made below, on all cores
   loop.for_each(t.edges.size(), kGrain, [&](std::size_t e) { ::new (static_cast<void*>(&t.edges[e])) BodyEdge; });
-  loop.for_each(t.edges.size(), kGrain, [&](std::size_t e) {  // (may throw: every edge is constructed by now)
-    BodyEdge& edge = t.edges[e];
-    edge.u = static_cast<int>(uses[first[e]].key >> 32);
-    edge.v = static_cast<int>(uses[first[e]].key & 0xffffffffu);
-    for (std::uint32_t j = first[e]; j < first[e + 1]; ++j) {
+  loop.for_each(nv, kGrain, [&](std::size_t i) {  // (may throw: every edge is constructed by now)
+    std::uint32_t e = at[i] - 1;
+    for (std::uint32_t j = start[i]; j < start[i + 1]; ++j) {
+      if (j == start[i] || (uses[j] >> 32) != (uses[j - 1] >> 32)) {
+        ++e;
+        t.edges[e].u = static_cast<int>(i);
+        t.edges[e].v = static_cast<int>(uses[j] >> 32);
+      }
       EdgeUse use;
-      use.face = uses[j].face, use.slot = uses[j].slot, use.forward = uses[j].forward;
-      edge.uses.push_back(use);
-      t.slot_edge[uses[j].slot] = static_cast<int>(e);
+      use.slot = static_cast<int>((uses[j] & 0xffffffffu) >> 1);
+      use.forward = static_cast<unsigned>(uses[j] & 1u);
+      use.face = face_of(use.slot);
+      t.edges[e].uses.push_back(use);
+      t.slot_edge[use.slot] = static_cast<int>(e);
     }
   });
   return t;
