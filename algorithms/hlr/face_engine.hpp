@@ -61,6 +61,12 @@ struct DrawnEdge {
   bool self_hidden;
 };
 
+/// Each edge of a body's topology as a drawn line: its kind (LineKind, -1: not drawn) and
+/// whether its own faces hide it.
+struct EdgeClasses {
+  std::vector<signed char> kinds, hidden;
+};
+
 /// An intersection line: the two bodies, the two faces, the exact ends.
 using CrossLine = std::tuple<int, int, int, int, Point3, Point3>;
 
@@ -237,7 +243,7 @@ struct Prepared {
   // (a later drawing in that direction, a section's hatch pass, reads it), and the filter's
   // doubles of the multi-limb paths (Engine::filter_doubles; no direction changes them).
   std::optional<Vec<P>> facing_view;
-  std::vector<std::vector<int>> facing;
+  std::vector<std::vector<signed char>> facing;
   std::vector<std::array<double, 3>> Xd;
   long sigma = 0;
 };
@@ -301,7 +307,10 @@ class Engine {
   static void flip(Tri& t);
   // face_engine_occluders.cpp
   bool neighbour(const Tri& t, int k, int& face, int& third) const;
+  int side_third(int b, const EdgeUse& use) const;
+  int third_off_edge(int b, int face, int u, int v) const;
   void vertex_rules();
+  void give_back() const;
   void project_vertices();
   void select_occluders(const std::vector<std::vector<DrawnEdge>>& drawn);
   void build_occluders();
@@ -320,7 +329,8 @@ class Engine {
   void grid_doubles(const std::array<Int128, 3>& m, const std::array<std::int64_t, 3>& o, bool turn, double* dm, double& dc) const;
   void occluder_box(const Tri& t, int fs, Box& bx) const;
   // face_engine_edges.cpp
-  std::vector<DrawnEdge> collect_edges(int b);
+  EdgeClasses classify_edges(int b);
+  std::vector<DrawnEdge> drawn_edges(int b, const EdgeClasses& classes, bool spend_topology);
   Segment edge_segment(int b, const DrawnEdge& e) const;
   bool opposite_in_projection(int u, int v, int x, int y) const;
   LineKind feature_kind(int b, const EdgeUse& a, const EdgeUse& c) const;
@@ -382,7 +392,8 @@ class Engine {
   const LineOptions& opt_;
   const FaceRouteHooks& hooks_;
   std::shared_ptr<Prepared<P>> prep_;
-  bool keep_;  // prep_ is shared with other views: nothing of it is freed
+  bool keep_;           // prep_ is shared with other views: nothing of it is freed
+  bool large_ = false;  // a large drawing without shared work: give_back() before its stages of new arrays
   std::vector<Vec<P>>& X_;
   Vec<P> view_;  // orthographic direction, or the eye (scaled like the points)
   Rational& scale_;
@@ -394,7 +405,7 @@ class Engine {
   std::vector<bool>& solid_;
   std::vector<char> eye_on_;  // perspective: the eye lies on this solid's surface
   std::vector<int>& flipped_;
-  std::vector<std::vector<int>> facing_;
+  std::vector<std::vector<signed char>> facing_;  // per body and face: 1 facing, 0 edge-on, -1 not
   std::vector<BodyTopology>& topo_;
   std::vector<std::vector<char>>& degenerate_;
   std::vector<FaceNormals<P>>& face_normal_;

@@ -61,6 +61,10 @@ LineDrawing Engine<P>::run() {
   offsets();
   grid_view();
   fixed_width();
+  std::size_t faces = 0;
+  for (const Polyhedron* p : bodies_) faces += p->num_faces();
+  large_ = !keep_ && faces >= kLargeArrays;
+  if (!prep_->done) give_back();  // what the load left (the file's text), before the topology
   // The view-independent work once (or from a view before), then this view's facing and checks.
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     if (!prep_->done) prepare_body(static_cast<int>(b));
@@ -71,20 +75,27 @@ LineDrawing Engine<P>::run() {
     res.stats.setup_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     return res;
   }
-  // The drawn edges as compact records; then the topology keeps only each side's mate (its
-  // edges and the face normals freed), the occluders' closed sides are read off it, and it is
-  // freed: before the intersection lines' broad phase when the occluders do not depend on
-  // those lines (no feature-line filter), else after it.
+  // Every edge classified; then the topology keeps only each side's mate (the face normals
+  // freed), the drawn edges are read off its edges as compact records (a large drawing gives
+  // each run of edges back as it is read), the occluders' closed sides are read off the mates, and it is freed:
+  // before the intersection lines' broad phase when the occluders do not depend on those lines
+  // (no feature-line filter), else after it. (give_back: the peak is what is in use.)
+  std::vector<EdgeClasses> classes(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    if (!hooks_.extra_only) classes[b] = classify_edges(static_cast<int>(b));
+  vertex_rules();
+  if (!keep_) {  // from here only the drawn records and neighbour() read the topology, and no face normal is read
+    for (BodyTopology& t : topo_) pair_sides(t, opt_.threads, false);
+    std::vector<FaceNormals<P>>().swap(face_normal_);
+  }
+  give_back();
   std::vector<std::vector<DrawnEdge>> drawn(bodies_.size());
   std::size_t total = 0;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    if (!hooks_.extra_only) drawn[b] = collect_edges(static_cast<int>(b));
+    if (!hooks_.extra_only) drawn[b] = drawn_edges(static_cast<int>(b), classes[b], large_);
+    classes[b] = EdgeClasses{};
+    if (!keep_) RawVector<BodyEdge>().swap(topo_[b].edges);
     total += drawn[b].size();
-  }
-  vertex_rules();
-  if (!keep_) {  // from here only neighbour() reads the topology, and no face normal is read
-    for (BodyTopology& t : topo_) pair_sides(t, opt_.threads);
-    std::vector<FaceNormals<P>>().swap(face_normal_);
   }
   project_vertices();
   if constexpr (kFiltered) filter_shift(), filter_doubles();         // the intersections' filters read them
@@ -107,7 +118,9 @@ LineDrawing Engine<P>::run() {
   const auto ti1 = Clock::now();
   if (!early) select_occluders(drawn), free_topology();
   total += cross_.size();
+  give_back();
   build_occluders();
+  give_back();                           // the occluders' making left holes beside the arrays visibility reads
   res.stats.faces->occluders = hiding_;  // a tile's too: every hiding triangle of the scene
   std::vector<Segment> crossing = crossing_segments(res);
   for (std::size_t k = n_crossing; k < crossing.size(); ++k) {
@@ -143,7 +156,7 @@ void Engine<P>::offsets() {
   p.degenerate.assign(bodies_.size(), {});
   p.face_normal.assign(bodies_.size(), {});
   p.facing_at.assign(bodies_.size(), {});
-  p.topo.assign(bodies_.size(), {});
+  p.topo = std::vector<BodyTopology>(bodies_.size());
   p.tris.clear();
   p.first_tri.assign(bodies_.size(), 0);
   p.flipped.clear();
@@ -317,7 +330,8 @@ int Engine<P>::triangulate_body(int b) {
         if (degenerate_[b][f]) continue;
         const Face& face = faces[f];
         Tri tri{b, static_cast<int>(f), {vo + face[0], vo + face[1], vo + face[2]}, {true, true, true}};
-        for (int k = 0; k < 3; ++k) topo.slot_third[fo[f] + k] = tri.v[(k + 2) % 3];
+        if (!topo.slot_third.empty())
+          for (int k = 0; k < 3; ++k) topo.slot_third[fo[f] + k] = tri.v[(k + 2) % 3];
         tris_[w++] = tri;
       }
     });
@@ -340,7 +354,7 @@ int Engine<P>::triangulate_body(int b) {
     for (const FaceTriangle& t : face.size() == 3 ? kTriangle : ft.triangles) {
       Tri tri{b, static_cast<int>(f), {vo + face[t.v[0]], vo + face[t.v[1]], vo + face[t.v[2]]}, t.edge};
       for (int k = 0; k < 3; ++k)
-        if (t.edge[k]) topo.slot_third[fo[f] + t.v[k]] = tri.v[(k + 2) % 3];  // side k's opposite vertex
+        if (t.edge[k] && !topo.slot_third.empty()) topo.slot_third[fo[f] + t.v[k]] = tri.v[(k + 2) % 3];  // side k's opposite vertex
       tris_.push_back(tri);
     }
     if (face.size() == 3) continue;  // normal and facing above
@@ -457,7 +471,9 @@ int Engine<P>::volume_filter(const std::vector<int>& ids) const {
 // closed solid (a note when not), inside-out components and solids turned (with notes).
 template <class P>
 void Engine<P>::prepare_body(int b) {
-  topo_[b] = body_topology(bodies_[b]->faces(), bodies_[b]->num_vertices(), opt_.threads);
+  const std::vector<Face>& faces = bodies_[b]->faces();  // (triangles: no third vertex per side, side_third reads the faces)
+  const bool triangles = std::all_of(faces.begin(), faces.end(), [](const Face& f) { return f.size() == 3; });
+  topo_[b] = body_topology(faces, bodies_[b]->num_vertices(), opt_.threads, !triangles);
   const int first_tri = triangulate_body(b);
   prep_->first_tri[b] = first_tri;
   // A closed solid: every edge in exactly two faces, traversed in opposite directions.
@@ -503,7 +519,7 @@ void Engine<P>::prepare_body(int b) {
 // on a solid, the notes.
 template <class P>
 void Engine<P>::view_body(int b, LineDrawing& res) {
-  std::vector<int>& facing = facing_[b];
+  std::vector<signed char>& facing = facing_[b];
   const std::vector<int>& at = prep_->facing_at[b];
   const bool again = !cam_.perspective && prep_->facing_view == view_ && static_cast<std::size_t>(b) < prep_->facing.size();
   if (again) {
@@ -512,7 +528,7 @@ void Engine<P>::view_body(int b, LineDrawing& res) {
     facing.assign(at.size(), 0);
     ParallelLoop(opt_.threads).for_each(at.size(), 4096, [&](std::size_t f) {
       if (at[f] < 0) return;
-      facing[f] = facing_of(b, static_cast<int>(f), at);
+      facing[f] = static_cast<signed char>(facing_of(b, static_cast<int>(f), at));
     });
     if (keep_ && !cam_.perspective) {  // for the next view in this direction
       if (b == 0) prep_->facing_view = view_, prep_->facing.clear();

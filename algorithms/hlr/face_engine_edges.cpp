@@ -3,6 +3,8 @@
 // are self-hidden (both faces non-facing, the notes' Stage 1); a crease line that ends goes on
 // along its straightest continuation over half the crease angle (docs/design.md, "Crease lines");
 // normals and occluder planes in fixed widths when the coordinates allow.
+#include <numeric>
+
 #include "algorithms/hlr/face_engine.hpp"
 #include "algorithms/support/parallel.hpp"
 #include "algorithms/support/parallel_scan.hpp"
@@ -12,7 +14,7 @@ namespace hlr::face_route {
 
 // ---- drawn edges
 template <class P>
-std::vector<DrawnEdge> Engine<P>::collect_edges(int b) {
+EdgeClasses Engine<P>::classify_edges(int b) {
   const auto& facing = facing_[b];
   const RawVector<BodyEdge>& edges = topo_[b].edges;
   const bool classing = opt_.edges == EdgeSelection::Feature || opt_.classify_all;
@@ -61,7 +63,7 @@ std::vector<DrawnEdge> Engine<P>::collect_edges(int b) {
         if (silhouette) kind = LineKind::Silhouette;
       } else {
         // Open surface: a fold in the projection (both faces on one side of the edge).
-        int third_a = topo_[b].slot_third[a.slot], third_c = topo_[b].slot_third[c.slot];
+        int third_a = side_third(b, a), third_c = side_third(b, c);
         if (third_a >= 0 && third_c >= 0 && !opposite_in_projection(voff_[b] + e.u, voff_[b] + e.v, third_a, third_c))
           kind = LineKind::Silhouette;
       }
@@ -88,17 +90,44 @@ std::vector<DrawnEdge> Engine<P>::collect_edges(int b) {
     hidden[i] = self_hidden;
   });
   if (continuing) continue_creases(b, kinds, hidden, line);
-  // The drawn ones in order, on all cores.
+  return EdgeClasses{std::move(kinds), std::move(hidden)};
+}
+
+// The drawn edges of body b in order, made a million edges at a time on all cores: each run's
+// records in fresh pages touched there. With `spend_topology` (nothing reads the topology's
+// edges afterwards) each run's edges are given back as they are read (release_pages), so that
+// the records and the edges they are read from do not add up at the engine's peak (an edge
+// needs no destructor: freeing the array later reads none of it again).
+template <class P>
+std::vector<DrawnEdge> Engine<P>::drawn_edges(int b, const EdgeClasses& classes, bool spend_topology) {
+  const RawVector<BodyEdge>& edges = topo_[b].edges;
+  const std::vector<signed char>& kinds = classes.kinds;
   const ParallelLoop loop(opt_.threads);
-  const std::vector<std::uint32_t> drawn = parallel_select(edges.size(), [&](std::size_t i) { return kinds[i] >= 0; }, loop);
-  std::vector<DrawnEdge> out;
-  reserve_touched(out, drawn.size(), loop);
-  out.resize(drawn.size());
-  loop.for_each(drawn.size(), 8192, [&](std::size_t k) {
-    const std::uint32_t i = drawn[k];
-    const BodyEdge& e = edges[i];
-    out[k] = {e.u, e.v, e.uses.empty() ? -1 : e.uses[0].face, e.uses.size() > 1 ? e.uses[1].face : -1, kinds[i], hidden[i] != 0};
+  constexpr std::size_t kRun = std::size_t{1} << 20, kBlock = 8192;
+  const std::size_t n = edges.size(), n_blocks = (n + kBlock - 1) / kBlock;
+  std::vector<std::size_t> at(n_blocks + 1, 0);  // each block's first drawn record
+  loop.for_each(n_blocks, 1, [&](std::size_t c) {
+    std::size_t k = 0;
+    for (std::size_t i = c * kBlock, end = std::min(n, i + kBlock); i < end; ++i) k += kinds[i] >= 0;
+    at[c + 1] = k;
   });
+  std::partial_sum(at.begin(), at.end(), at.begin());
+  std::vector<DrawnEdge> out;
+  out.reserve(at.back());  // (address space: each run's pages are touched below)
+  for (std::size_t c0 = 0; c0 < n_blocks; c0 += kRun / kBlock) {
+    const std::size_t c1 = std::min(n_blocks, c0 + kRun / kBlock), r0 = c0 * kBlock, r1 = std::min(n, c1 * kBlock);
+    touch_pages(static_cast<void*>(out.data() + at[c0]), (at[c1] - at[c0]) * sizeof(DrawnEdge), loop);
+    out.resize(at[c1]);
+    loop.for_each(c1 - c0, 1, [&](std::size_t c) {
+      std::size_t k = at[c0 + c];
+      for (std::size_t i = (c0 + c) * kBlock, end = std::min(n, i + kBlock); i < end; ++i) {
+        if (kinds[i] < 0) continue;
+        const BodyEdge& e = edges[i];
+        out[k++] = {e.u, e.v, e.uses.empty() ? -1 : e.uses[0].face, e.uses.size() > 1 ? e.uses[1].face : -1, kinds[i], classes.hidden[i] != 0};
+      }
+    });
+    if (spend_topology) release_pages(const_cast<BodyEdge*>(edges.data() + r0), (r1 - r0) * sizeof(BodyEdge));
+  }
   return out;
 }
 

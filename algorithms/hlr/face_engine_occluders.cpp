@@ -82,16 +82,46 @@ bool Engine<P>::neighbour(const Tri& t, int k, int& face, int& third) const {
   int across = -1;    // the face across, then the third vertex of its triangle on the edge
   if (topo.paired) {  // pair_sides: the mates in place of the edges
     across = topo.slot_edge[slot];
-    third = topo.slot_third[slot];
+    if (!topo.slot_third.empty()) third = topo.slot_third[slot];
+    else if (across >= 0 && !degenerate_[b][across]) third = third_off_edge(b, across, t.v[k], t.v[(k + 1) % 3]);
   } else if (const int e = topo.slot_edge[slot]; e >= 0 && topo.edges[e].uses.size() == 2) {
     const BodyEdge& be = topo.edges[e];
     const EdgeUse& other = be.uses[0].slot == slot ? be.uses[1] : be.uses[0];
     across = other.face;
-    third = topo.slot_third[other.slot];
+    third = side_third(b, other);
   }
   if (across < 0 || degenerate_[b][across]) return false;
   face = across;
   return third >= 0;
+}
+
+// The third vertex (global id) of the triangle on the side of a use: the caller's slot_third,
+// or, for a body of triangles that keeps none, the vertex of the use's own face after the
+// side's two (-1 for a degenerate face, which has no triangle).
+template <class P>
+int Engine<P>::side_third(int b, const EdgeUse& use) const {
+  const BodyTopology& topo = topo_[b];
+  if (!topo.slot_third.empty()) return topo.slot_third[use.slot];
+  if (degenerate_[b][use.face]) return -1;
+  const Face& f = bodies_[b]->faces()[use.face];
+  return voff_[b] + f[(use.slot - topo.face_offset[use.face] + 2) % 3];
+}
+
+// The vertex of triangle face `face` of body b (a body of triangles) that is neither end of
+// the edge (u, v) (global ids); -1 if none (the face has a repeated vertex).
+template <class P>
+int Engine<P>::third_off_edge(int b, int face, int u, int v) const {
+  for (int x : bodies_[b]->faces()[face])
+    if (voff_[b] + x != u && voff_[b] + x != v) return voff_[b] + x;
+  return -1;
+}
+
+// A large drawing's stages of new arrays begin with the heap's free pages given back
+// (release_free_pages): its peak is then about what is in use, not the holes of the stages
+// before (docs/design.md, "Memory on huge pages").
+template <class P>
+void Engine<P>::give_back() const {
+  if (large_) release_free_pages();
 }
 
 // A vertex hides the sight line just behind it when every face around it faces the viewer
@@ -251,11 +281,26 @@ void Engine<P>::build_occluders() {
   filter_shift();
   const ParallelLoop loop(opt_.threads);
   std::vector<Box> boxes;
-  reserve_touched(occ_, sel_.size(), loop);  // pages touched on all cores, then built on all cores
-  reserve_touched(boxes, sel_.size(), loop);
-  occ_.resize(sel_.size());
-  boxes.resize(sel_.size());
-  loop.for_each(sel_.size(), 1024, [&](std::size_t i) { make_occluder(tris_[sel_[i]], closed_[i], occ_[i], boxes[i]); });
+  // A million occluders at a time: each run's pages touched on all cores, then built on all
+  // cores; a large drawing (large_: no shared work) gives back the triangles a run spent as it ends
+  // (sel_ is in order), so that the triangles and the occluders do not add up at their peak.
+  const std::size_t n = sel_.size();
+  constexpr std::size_t kRun = std::size_t{1} << 20;
+  occ_.reserve(n);  // (address space: each run's pages are touched below)
+  boxes.reserve(n);
+  std::size_t spent = 0;  // the triangles before this one are given back
+  for (std::size_t r0 = 0; r0 < n; r0 += kRun) {
+    const std::size_t r1 = std::min(n, r0 + kRun);
+    touch_pages(static_cast<void*>(occ_.data() + r0), (r1 - r0) * sizeof(Occ), loop);
+    touch_pages(static_cast<void*>(boxes.data() + r0), (r1 - r0) * sizeof(Box), loop);
+    occ_.resize(r1);
+    boxes.resize(r1);
+    loop.for_each(r1 - r0, 1024, [&](std::size_t i) { make_occluder(tris_[sel_[r0 + i]], closed_[r0 + i], occ_[r0 + i], boxes[r0 + i]); });
+    if (!large_) continue;
+    const auto upto = static_cast<std::size_t>(sel_[r1 - 1]) + 1;
+    release_pages(static_cast<void*>(tris_.data() + spent), (upto - spent) * sizeof(Tri));
+    spent = upto;
+  }
   std::vector<int>().swap(sel_);
   std::vector<std::uint8_t>().swap(closed_);
   if (!keep_) std::vector<Tri>().swap(tris_);  // the triangles' last use: visibility reads the occluders
@@ -284,10 +329,13 @@ void Engine<P>::build_occluders() {
     bx.dmin -= margin_;
   });
   boxes_ = std::move(boxes);
-  std::vector<ScreenRect> rects(boxes_.size());
-  loop.for_each(boxes_.size(), 8192, [&](std::size_t i) { rects[i] = {boxes_[i].x0, boxes_[i].y0, boxes_[i].x1, boxes_[i].y1}; });
   // Unbounded sides (occluders reaching the eye plane) clamp to the grid's edge cells.
-  grid_.build(rects, std::vector<char>(rects.size(), 0), 2.0, 2048, opt_.threads);
+  grid_.build(
+      boxes_.size(),
+      [&](std::size_t i) {
+        return ScreenRect{boxes_[i].x0, boxes_[i].y0, boxes_[i].x1, boxes_[i].y1};
+      },
+      2.0, 2048, opt_.threads);
 }
 
 template <class P>

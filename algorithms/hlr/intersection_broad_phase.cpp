@@ -1,5 +1,5 @@
 // Broad phase (see intersection_broad_phase.hpp): cell size twice the mean box size, dense cell
-// ids sorted by a stable radix sort; a box over too many cells (a section's cap triangle across
+// ids sorted by a stable radix sort (a large grid's a slab of x layers at a time); a box over too many cells (a section's cap triangle across
 // the mesh) against the boxes in the slab of cells it reaches on its thinnest axis; a coarse
 // single cell when such boxes are too many.
 #include "algorithms/hlr/intersection_broad_phase.hpp"
@@ -170,8 +170,8 @@ void huge_box_pairs(std::span<const Box> bb, const Cells& g, const std::vector<s
 }
 
 template <class Box>
-BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop,
-                   const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
+BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop, const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge,
+                   std::size_t slab_entries) {
   BoxPairs out;
   const std::size_t n = bb.size();
   if (n < 2) return out;
@@ -265,32 +265,11 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop,
     if (v == PairVerdict::Keep) f.kept.push_back({std::min(ta, tc), std::max(ta, tc)});
   };
   // The entries of every box, sorted by cell, and the pairs of each cell; E: Entry, or
-  // SmallEntry when every cell id is below 2^32.
+  // SmallEntry when every cell id is below 2^32. A large grid's entries are made and sorted a
+  // slab of x layers at a time (the cell ids are x-major, so the slabs' cells come in the same
+  // order as one sort's), so that the entries and the sort's copy do not hold all of them at once.
   auto cell_pass = [&](auto layout) {
     using E = decltype(layout);
-    std::vector<E> entries;
-    if (coarse) {
-      entries.reserve(n);
-      for (std::size_t i = 0; i < n; ++i) entries.emplace_back(0, static_cast<std::uint32_t>(i));
-    } else {
-      reserve_touched(entries, at[n], loop);
-      entries.resize(at[n]);
-      loop.for_each(n, 8192, [&](std::size_t i) {
-        if (at[i + 1] == at[i]) return;
-        std::int64_t c0[3], c1[3];
-        span(i, c0, c1);
-        std::size_t w = at[i];
-        for (std::int64_t x = c0[0]; x <= c1[0]; ++x)
-          for (std::int64_t y = c0[1]; y <= c1[1]; ++y)
-            for (std::int64_t z = c0[2]; z <= c1[2]; ++z) entries[w++] = E(g.id(x, y, z), static_cast<std::uint32_t>(i));
-      });
-      std::vector<std::size_t>().swap(at);
-    }
-    radix_sort(entries, loop);
-    std::vector<std::size_t> cell_start = parallel_select<std::size_t>(
-        entries.size(), [&](std::size_t i) { return i == 0 || entries[i].cell() != entries[i - 1].cell(); }, loop, 1);
-    cell_start.push_back(entries.size());
-    const std::size_t ncells = cell_start.size() - 1;
     // A cell's boxes and low cells are read once into a local list (the items lie far apart in
     // the arrays; reading them for every pair cost more than the tests).
     struct Local {
@@ -298,30 +277,79 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop,
       std::array<std::int32_t, 3> low;
       std::uint32_t item;
     };
-    auto cell_pairs = [&](std::size_t i, std::size_t j, unsigned w, std::vector<Local>& cell) {
-      cell.clear();
-      for (std::size_t a = i; a < j; ++a) {
-        const std::uint32_t t = entries[a].item();
-        cell.push_back({bb[t], coarse ? std::array<std::int32_t, 3>{} : low[t], t});
-      }
-      const std::uint64_t here = entries[i].cell();
-      for (std::size_t a = 0; a < cell.size(); ++a)
-        for (std::size_t c = a + 1; c < cell.size(); ++c) {
-          const Box &P = cell[a].box, &Q = cell[c].box;
-          if (P[0] > Q[3] || Q[0] > P[3] || P[1] > Q[4] || Q[1] > P[4] || P[2] > Q[5] || Q[2] > P[5]) continue;
-          if (!coarse) {  // the pair only in the cell of the overlap's low corner
-            const auto &A = cell[a].low, &B = cell[c].low;
-            std::uint64_t own = g.id(std::max(A[0], B[0]), std::max(A[1], B[1]), std::max(A[2], B[2]));
-            if (own != here) continue;
-          }
-          take(cell[a].item, cell[c].item, w);
+    auto pairs_of = [&](std::vector<E>& entries) {
+      radix_sort(entries, loop);
+      std::vector<std::size_t> cell_start = parallel_select<std::size_t>(
+          entries.size(), [&](std::size_t i) { return i == 0 || entries[i].cell() != entries[i - 1].cell(); }, loop, 1);
+      cell_start.push_back(entries.size());
+      const std::size_t ncells = cell_start.size() - 1;
+      auto cell_pairs = [&](std::size_t i, std::size_t j, unsigned w, std::vector<Local>& cell) {
+        cell.clear();
+        for (std::size_t a = i; a < j; ++a) {
+          const std::uint32_t t = entries[a].item();
+          cell.push_back({bb[t], coarse ? std::array<std::int32_t, 3>{} : low[t], t});
         }
+        const std::uint64_t here = entries[i].cell();
+        for (std::size_t a = 0; a < cell.size(); ++a)
+          for (std::size_t c = a + 1; c < cell.size(); ++c) {
+            const Box &P = cell[a].box, &Q = cell[c].box;
+            if (P[0] > Q[3] || Q[0] > P[3] || P[1] > Q[4] || Q[1] > P[4] || P[2] > Q[5] || Q[2] > P[5]) continue;
+            if (!coarse) {  // the pair only in the cell of the overlap's low corner
+              const auto &A = cell[a].low, &B = cell[c].low;
+              std::uint64_t own = g.id(std::max(A[0], B[0]), std::max(A[1], B[1]), std::max(A[2], B[2]));
+              if (own != here) continue;
+            }
+            take(cell[a].item, cell[c].item, w);
+          }
+      };
+      loop.run(ncells, 256, [&](unsigned w, std::size_t b, std::size_t e) {
+        std::vector<Local> cell;
+        for (std::size_t c = b; c < e; ++c)
+          if (cell_start[c + 1] - cell_start[c] > 1) cell_pairs(cell_start[c], cell_start[c + 1], w, cell);
+      });
     };
-    loop.run(ncells, 256, [&](unsigned w, std::size_t b, std::size_t e) {
-      std::vector<Local> cell;
-      for (std::size_t c = b; c < e; ++c)
-        if (cell_start[c + 1] - cell_start[c] > 1) cell_pairs(cell_start[c], cell_start[c + 1], w, cell);
-    });
+    if (coarse) {
+      std::vector<E> entries;
+      entries.reserve(n);
+      for (std::size_t i = 0; i < n; ++i) entries.emplace_back(0, static_cast<std::uint32_t>(i));
+      pairs_of(entries);
+      return;
+    }
+    const std::size_t total = at[n];
+    std::vector<std::size_t>().swap(at);
+    const auto slabs =
+        static_cast<std::int64_t>(std::min<std::size_t>(total / std::max<std::size_t>(slab_entries, 1) + 1, static_cast<std::size_t>(g.dims[0])));
+    const std::int64_t layers = (g.dims[0] + slabs - 1) / slabs;
+    for (std::int64_t x0 = 0; x0 < g.dims[0]; x0 += layers) {
+      const std::int64_t x1 = std::min(g.dims[0], x0 + layers) - 1;  // the slab's x layers: x0..x1
+      // A box's cells in the slab (none for a box over 64 cells).
+      auto slab_span = [&](std::size_t i, std::int64_t* c0, std::int64_t* c1) -> std::size_t {
+        if (low[i][0] > x1 || span(i, c0, c1) > 64) return 0;  // (low: the box's first cells)
+        c0[0] = std::max(c0[0], x0), c1[0] = std::min(c1[0], x1);
+        return c1[0] < c0[0] ? 0 : static_cast<std::size_t>((c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1));
+      };
+      std::vector<std::size_t> first = parallel_offsets(
+          n,
+          [&](std::size_t i) {
+            std::int64_t c0[3], c1[3];
+            return slab_span(i, c0, c1);
+          },
+          loop);
+      std::vector<E> entries;
+      reserve_touched(entries, first[n], loop);
+      entries.resize(first[n]);
+      loop.for_each(n, 8192, [&](std::size_t i) {
+        if (first[i + 1] == first[i]) return;
+        std::int64_t c0[3], c1[3];
+        slab_span(i, c0, c1);
+        std::size_t w = first[i];
+        for (std::int64_t x = c0[0]; x <= c1[0]; ++x)
+          for (std::int64_t y = c0[1]; y <= c1[1]; ++y)
+            for (std::int64_t z = c0[2]; z <= c1[2]; ++z) entries[w++] = E(g.id(x, y, z), static_cast<std::uint32_t>(i));
+      });
+      std::vector<std::size_t>().swap(first);
+      pairs_of(entries);
+    }
   };
   if (coarse || static_cast<double>(g.dims[0]) * static_cast<double>(g.dims[1]) * static_cast<double>(g.dims[2]) < 4294967296.0)
     cell_pass(SmallEntry{});
@@ -340,13 +368,13 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop,
 }  // namespace
 
 BoxPairs overlapping_box_pairs(std::span<const Box3> boxes, const ParallelLoop& loop,
-                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
-  return box_pairs(boxes, loop, judge);
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge, std::size_t slab_entries) {
+  return box_pairs(boxes, loop, judge, slab_entries);
 }
 
 BoxPairs overlapping_box_pairs(std::span<const Box3f> boxes, const ParallelLoop& loop,
-                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge) {
-  return box_pairs(boxes, loop, judge);
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge, std::size_t slab_entries) {
+  return box_pairs(boxes, loop, judge, slab_entries);
 }
 
 bool outward_floats(const Box3& b, Box3f& out) {

@@ -29,11 +29,16 @@ struct BoxPairs {
   std::size_t tested = 0;                                     // pairs judged Reject or Keep
 };
 
+/// The most (box, cell) entries the broad phase makes at once: a grid of more is swept a slab
+/// of x layers at a time (8 bytes an entry, as much again for its sort).
+inline constexpr std::size_t kSlabEntries = std::size_t{1} << 24;
+
 /// Every pair of overlapping boxes is passed to `judge` (from several threads at once) once.
+/// `slab_entries`: the most entries at once (the same pairs, in the same order, for any).
 BoxPairs overlapping_box_pairs(std::span<const Box3> boxes, const ParallelLoop& loop,
-                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge);
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge, std::size_t slab_entries = kSlabEntries);
 BoxPairs overlapping_box_pairs(std::span<const Box3f> boxes, const ParallelLoop& loop,
-                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge);
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge, std::size_t slab_entries = kSlabEntries);
 
 /// `b` rounded outward to floats; false when a bound lies beyond the floats' range (or is not
 /// finite), where the doubles must be used.

@@ -142,8 +142,8 @@ const Piece* whole_pieces() {
 }  // namespace
 
 const Piece* PieceList::begin() const {
-  if (whole_) return whole_pieces() + (whole_ - 1);
-  return many_ ? many_->data() : nullptr;
+  if (whole()) return whole_pieces() + flags();
+  return many() ? many()->data() : nullptr;
 }
 
 bool PieceList::operator==(const PieceList& o) const {
@@ -157,8 +157,9 @@ bool PieceList::operator==(const PieceList& o) const {
 }
 
 void PieceList::set_whole(const Piece& kind) {
-  whole_ = static_cast<std::uint8_t>(1 + flags_of(kind));  // before `kind` may go with many_
-  many_.reset();
+  const auto w = (static_cast<std::uintptr_t>(flags_of(kind)) << 1) | 1;  // before `kind` may go with the vector
+  clear();
+  word_ = w;
 }
 
 void PieceList::assign(std::vector<Piece> v) {
@@ -166,26 +167,22 @@ void PieceList::assign(std::vector<Piece> v) {
     set_whole(v[0]);
     return;
   }
-  whole_ = 0;
-  if (v.empty()) many_.reset();
-  else if (many_) *many_ = std::move(v);
-  else many_ = std::make_unique<std::vector<Piece>>(std::move(v));
+  if (v.empty()) clear();
+  else if (many()) *many() = std::move(v);
+  else word_ = reinterpret_cast<std::uintptr_t>(new std::vector<Piece>(std::move(v)));
 }
 
 std::vector<Piece>& PieceList::edit() {
-  if (whole_) {
-    many_ = std::make_unique<std::vector<Piece>>(1, whole_pieces()[whole_ - 1]);
-    whole_ = 0;
-  } else if (!many_) {
-    many_ = std::make_unique<std::vector<Piece>>();
-  }
-  return *many_;
+  if (whole()) word_ = reinterpret_cast<std::uintptr_t>(new std::vector<Piece>(1, whole_pieces()[flags()]));
+  else if (!many()) word_ = reinterpret_cast<std::uintptr_t>(new std::vector<Piece>());
+  return *many();
 }
 
 void PieceList::compact() {
-  if (!many_) return;
-  if (many_->empty()) many_.reset();
-  else if (many_->size() == 1 && (*many_)[0].t0 == 0 && (*many_)[0].t1 == 1) set_whole((*many_)[0]);
+  std::vector<Piece>* v = many();
+  if (!v) return;
+  if (v->empty()) clear();
+  else if (v->size() == 1 && (*v)[0].t0 == 0 && (*v)[0].t1 == 1) set_whole((*v)[0]);
 }
 
 std::vector<Piece> pieces_from_hidden(std::vector<std::pair<Rational, Rational>> hidden,

@@ -36,19 +36,28 @@ struct Piece {
 /// A segment's pieces in order of t: a vector's interface for reading, mutations named. Most
 /// segments of a large mesh are one piece over [0, 1] (wholly visible, or wholly hidden): such a
 /// list holds no numbers, only the piece's four flags, and reads as a shared [0, 1] piece. Any
-/// list that becomes one piece over [0, 1] is stored that way. 16 bytes.
+/// list that becomes one piece over [0, 1] is stored that way. 8 bytes: one word that is 0
+/// (empty), the flags of the one [0, 1] piece shifted left with the lowest bit set, or the
+/// address of the list's own vector (heap blocks are aligned: its lowest bit is 0).
 class PieceList {
  public:
   PieceList() = default;
   PieceList(std::vector<Piece> v) { assign(std::move(v)); }  // NOLINT: implicit, like the vector
   PieceList(std::initializer_list<Piece> l) { assign(std::vector<Piece>(l)); }
-  PieceList(const PieceList& o) : many_(o.many_ ? std::make_unique<std::vector<Piece>>(*o.many_) : nullptr), whole_(o.whole_) {}
-  PieceList(PieceList&&) noexcept = default;
+  PieceList(const PieceList& o) : word_(o.many() ? reinterpret_cast<std::uintptr_t>(new std::vector<Piece>(*o.many())) : o.word_) {}
+  PieceList(PieceList&& o) noexcept : word_(o.word_) { o.word_ = 0; }
   PieceList& operator=(const PieceList& o) {
     if (this != &o) *this = PieceList(o);
     return *this;
   }
-  PieceList& operator=(PieceList&&) noexcept = default;
+  PieceList& operator=(PieceList&& o) noexcept {
+    if (this != &o) {
+      clear();
+      word_ = o.word_;
+      o.word_ = 0;
+    }
+    return *this;
+  }
   PieceList& operator=(std::vector<Piece> v) {
     assign(std::move(v));
     return *this;
@@ -57,8 +66,9 @@ class PieceList {
     assign(std::vector<Piece>(l));
     return *this;
   }
+  ~PieceList() { delete many(); }  // reads only: a moved-from list whose pages were given back stays untouched
 
-  std::size_t size() const { return whole_ ? 1 : (many_ ? many_->size() : 0); }
+  std::size_t size() const { return whole() ? 1 : (many() ? many()->size() : 0); }
   bool empty() const { return size() == 0; }
   const Piece* begin() const;
   const Piece* end() const { return begin() + size(); }
@@ -73,13 +83,13 @@ class PieceList {
   void set_whole(const Piece& kind);
   /// One piece over [0, 1], visible or hidden (no other flag).
   void set_whole(bool visible) {
-    many_.reset();
-    whole_ = visible ? 2 : 1;
+    clear();
+    word_ = visible ? 3 : 1;
   }
   void assign(std::vector<Piece> v);
   void clear() {
-    many_.reset();
-    whole_ = 0;
+    delete many();
+    word_ = 0;
   }
   void push_back(Piece p) { edit().push_back(std::move(p)); }
   /// The pieces as a vector to change in place (a one-piece list is unpacked first); call
@@ -88,9 +98,12 @@ class PieceList {
   void compact();
 
  private:
-  std::unique_ptr<std::vector<Piece>> many_;
-  std::uint8_t whole_ = 0;  // 0: many_ (or empty); else 1 + the one [0, 1] piece's flags
+  bool whole() const { return (word_ & 1) != 0; }
+  int flags() const { return static_cast<int>(word_ >> 1); }  // of the one [0, 1] piece
+  std::vector<Piece>* many() const { return whole() ? nullptr : reinterpret_cast<std::vector<Piece>*>(word_); }
+  std::uintptr_t word_ = 0;
 };
+static_assert(sizeof(PieceList) == 8);
 
 /// What a drawn line is: a boundary edge of an open surface, a crease (dihedral angle over the
 /// threshold), a silhouette (one face toward the viewer, the other not), an intersection line
@@ -201,7 +214,7 @@ struct Segment {
   const PointStore* store_ends() const { return (ends_ & kTags) == kStoreTag ? store() : nullptr; }
 
  private:
-  // One word for either end store (56 bytes a segment, not 64): the borrowed vertex array, the
+  // One word for either end store (48 bytes a segment with the one-word piece list, not 56): the borrowed vertex array, the
   // owned pair's address with its lowest bit set, or the borrowed store's with the next bit set
   // (heap blocks and stores are aligned: those bits are 0).
   static constexpr std::uintptr_t kOwnedTag = 1, kStoreTag = 2, kTags = 3;
@@ -226,6 +239,7 @@ struct Segment {
   }
   void swap(Segment& o) noexcept;
 };
+static_assert(sizeof(Segment) == 48);
 
 /// The hidden-line methods: per-face occluders (any mesh), Roberts' algorithm on convex bodies,
 /// Roberts' algorithm through convex pieces (non-convex solids).

@@ -50,13 +50,20 @@ class Dedup {
     out.zero_length = static_cast<std::size_t>(std::count(degenerate.begin(), degenerate.end(), 1));
     UnionFind groups(nl);
     if (opt.overlaps) find_overlaps(degenerate, groups, opt.threads);
-    // Every end's point: its set's smallest end (after the overlap search, whose arrays are gone).
-    std::vector<std::uint32_t> root(ne);
-    loop.for_each(ne, 8192, [&](std::size_t e) { root[e] = root_of(points_.parent, e); });
+    // Every end's point: its set's smallest end (after the overlap search, whose arrays are
+    // gone), the forest flattened in place so that each end's parent is its root (no array
+    // beside: the stage's peak). A parent read mid-way is an ancestor still, so the walks agree.
+    std::vector<std::uint32_t>& root = points_.parent;
+    loop.for_each(ne, 8192, [&](std::size_t e) {
+      auto r = static_cast<std::uint32_t>(e);
+      for (std::uint32_t up; (up = std::atomic_ref<std::uint32_t>(root[r]).load(std::memory_order_relaxed)) != r;) r = up;
+      std::atomic_ref<std::uint32_t>(root[e]).store(r, std::memory_order_relaxed);
+    });
     // Groups of two or more pieces (few): resolved in the order of their roots (the smallest
     // piece), one at a time (they share the cache of exact points).
     std::vector<std::uint32_t> group(nl);
     loop.for_each(nl, 8192, [&](std::size_t k) { group[k] = root_of(groups.parent, k); });
+    groups = UnionFind(0);
     std::map<std::uint32_t, std::vector<std::uint32_t>> members;
     for (std::uint32_t k : parallel_select(nl, [&](std::size_t k) { return !degenerate[k] && group[k] != k; }, loop))
       members[group[k]].push_back(k);
@@ -75,11 +82,14 @@ class Dedup {
     };
     // Each piece's edges, in piece order: none (seen end-on, or in another piece's group), its
     // own, or its group's parts; their ends first as points' root ends.
-    const std::vector<std::size_t> at = parallel_offsets(nl, [&](std::size_t k) -> std::size_t {
-      if (degenerate[k] || group[k] != k) return 0;
-      const std::ptrdiff_t g = group_roots.empty() ? -1 : group_of(k);
-      return g < 0 ? 1 : group_parts[static_cast<std::size_t>(g)].size();
-    }, loop);
+    std::vector<std::size_t> at = parallel_offsets(
+        nl,
+        [&](std::size_t k) -> std::size_t {
+          if (degenerate[k] || group[k] != k) return 0;
+          const std::ptrdiff_t g = group_roots.empty() ? -1 : group_of(k);
+          return g < 0 ? 1 : group_parts[static_cast<std::size_t>(g)].size();
+        },
+        loop);
     const std::size_t n_edges = at[nl];
     if (n_edges >= (std::size_t{1} << 31)) throw std::length_error("2D stage: more than 2^31 edges");
     out.edges.resize(n_edges);
@@ -93,6 +103,10 @@ class Dedup {
       }
       for (const Part& part : group_parts[static_cast<std::size_t>(g)]) out.edges[w++] = edge(part.piece, part.p, part.q);
     });
+    // (the per-piece arrays are freed before the points are numbered: the stage's peak)
+    std::vector<std::size_t>().swap(at);
+    std::vector<std::uint32_t>().swap(group);
+    std::vector<char>().swap(degenerate);
     number_points(out, loop);
     out.exact_point_tests = point_tests_;
     out.exact_line_tests = line_tests_;
@@ -425,34 +439,21 @@ class Dedup {
       }
     };
     const std::size_t n_cells = static_cast<std::size_t>(g) * g;
-    // Each piece's cells on all cores (counted, then written at the piece's offset), then
-    // grouped by cell in piece order: each cell lists its pieces in the order of `live`.
-    const std::vector<std::uint32_t> count = parallel_offsets<std::uint32_t>(live.size(), [&](std::size_t i) {
-      std::uint32_t n = 0;
-      for_cells(rec(i), [&](std::size_t) { ++n; });
-      return n;
-    }, loop);
-    RawVector<std::uint32_t> cell_of(count.back());
-    loop.for_each(live.size(), 4096, [&](std::size_t i) {
-      std::uint32_t at = count[i];
-      for_cells(rec(i), [&](std::size_t cell) { cell_of[at++] = static_cast<std::uint32_t>(cell); });
-    });
-    // Grouped by cell on all cores: a cell's pieces come in any order (the pairs are sorted
-    // before the exact tests, so nothing depends on it).
+    // Each piece's cells counted per cell on all cores, then each piece entered in its cells
+    // (its cells worked out again: no list of them, the stage's largest array), grouped by
+    // cell: a cell's pieces come in any order (the pairs are sorted before the exact tests, so
+    // nothing depends on it).
     std::vector<std::uint32_t> start;
     RawVector<std::uint32_t> items;
     {
       std::vector<std::atomic<std::uint32_t>> n(n_cells);
-      loop.run(cell_of.size(), 1 << 16, [&](unsigned, std::size_t b, std::size_t e) {
-        for (std::size_t i = b; i < e; ++i) n[cell_of[i]].fetch_add(1, std::memory_order_relaxed);
-      });
+      loop.for_each(live.size(), 4096,
+                    [&](std::size_t i) { for_cells(rec(i), [&](std::size_t cell) { n[cell].fetch_add(1, std::memory_order_relaxed); }); });
       start = parallel_offsets<std::uint32_t>(n_cells, [&](std::size_t c) { return n[c].load(std::memory_order_relaxed); }, loop);
       loop.for_each(n_cells, 1 << 16, [&](std::size_t c) { n[c].store(start[c], std::memory_order_relaxed); });
       items.resize(start[n_cells]);
-      loop.run(live.size(), 4096, [&](unsigned, std::size_t b, std::size_t e) {
-        for (std::size_t i = b; i < e; ++i)
-          for (std::uint32_t at = count[i]; at < count[i + 1]; ++at)
-            items[n[cell_of[at]].fetch_add(1, std::memory_order_relaxed)] = static_cast<std::uint32_t>(i);
+      loop.for_each(live.size(), 4096, [&](std::size_t i) {
+        for_cells(rec(i), [&](std::size_t cell) { items[n[cell].fetch_add(1, std::memory_order_relaxed)] = static_cast<std::uint32_t>(i); });
       });
     }
     // The cell where a pair is tested: the cell of P, the start of the shorter piece's span

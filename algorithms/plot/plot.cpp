@@ -68,6 +68,10 @@ double stroke_length(const Stroke& s) {
 }
 
 Plot make_plot(const LineDrawing& lines, const Camera& camera, const PlotOptions& opt) {
+  // A large drawing's 2D stage and clean-up begin with the heap's free pages given back
+  // (release_free_pages): their arrays do not add to the holes the engine left.
+  const bool large = lines.segments.size() >= kLargeArrays;
+  if (large) release_free_pages();
   Project2DOptions po;
   po.hidden = opt.hidden;
   CleanDrawing c;
@@ -90,6 +94,7 @@ Plot make_plot(const LineDrawing& lines, const Camera& camera, const PlotOptions
       }
     }
   }
+  if (large) release_free_pages();
   return plot_from_clean(c, opt, seconds_since(t0));
 }
 

@@ -2,6 +2,7 @@
 // blocked range with the caller's grain does the chunking.
 #include "algorithms/support/parallel.hpp"
 
+#include <malloc.h>
 #include <sys/mman.h>
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
@@ -64,6 +65,12 @@ void release_pages(void* p, std::size_t bytes) {
   const auto a = reinterpret_cast<std::uintptr_t>(p);
   const std::uintptr_t lo = (a + kPage - 1) & ~(kPage - 1), hi = (a + bytes) & ~(kPage - 1);
   if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_DONTNEED);  // (a failure only keeps them)
+}
+
+void release_free_pages() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
 }
 
 struct ThreadLimit::Control {

@@ -78,6 +78,17 @@ void touch_pages(void* p, std::size_t bytes, const ParallelLoop& loop);
 /// accepts (moved-from lists, plain records), never read again but as such.
 void release_pages(void* p, std::size_t bytes);
 
+/// Gives the whole pages of the heap's free blocks back to the system (glibc's malloc_trim):
+/// before a stage of large new arrays, so that the holes earlier stages left (resident, and
+/// too small or too late for the new arrays) do not add to the peak beside them. Those pages
+/// are zeroed again when reused, so only where the peak is.
+void release_free_pages();
+/// A stage that makes arrays of at least this many records (a drawing of four million
+/// triangles or segments) gives the free pages back first; a smaller one keeps them for its
+/// next arrays (reused without the system zeroing them again: a 1M-triangle drawing is faster
+/// so, and its peak is far from any limit).
+inline constexpr std::size_t kLargeArrays = std::size_t{1} << 22;
+
 /// v.reserve(n), the new storage's pages touched on all cores (touch_pages): for large
 /// arrays that one thread then fills or constructs in order.
 template <class T>

@@ -13,6 +13,17 @@ namespace hlr {
 
 void ScreenGrid::build(const std::vector<ScreenRect>& rects, const std::vector<char>& always, double items_per_cell,
                        int max_cells, unsigned threads) {
+  build_from(
+      rects.size(), [&](std::size_t i) { return rects[i]; }, [&](std::size_t i) { return always[i] != 0; }, items_per_cell, max_cells, threads);
+}
+
+void ScreenGrid::build(std::size_t n, const std::function<ScreenRect(std::size_t)>& rect, double items_per_cell, int max_cells, unsigned threads) {
+  build_from(
+      n, rect, [](std::size_t) { return false; }, items_per_cell, max_cells, threads);
+}
+
+template <class Rect, class Always>
+void ScreenGrid::build_from(std::size_t n, const Rect& rect, const Always& always, double items_per_cell, int max_cells, unsigned threads) {
   // The grid spans the middle 98% of the boxes' finite sides: in perspective a few boxes near
   // the eye project huge and would otherwise squeeze everything else into a few cells. Boxes
   // (and queries) beyond clamp to the edge cells; clamping keeps every overlap, so the grid
@@ -21,18 +32,19 @@ void ScreenGrid::build(const std::vector<ScreenRect>& rects, const std::vector<c
   // keeps every candidate), so that a million boxes cost no four selections over millions.
   std::vector<double> xs, ys;
   std::size_t count = 0;
-  const std::size_t every = std::max<std::size_t>(1, rects.size() / 65536);
+  const std::size_t every = std::max<std::size_t>(1, n / 65536);
   always_.clear();
-  for (std::size_t i = 0; i < rects.size(); ++i) {
-    if (always[i]) {
+  for (std::size_t i = 0; i < n; ++i) {
+    if (always(i)) {
       always_.push_back(static_cast<int>(i));
       continue;
     }
     ++count;
     if (i % every) continue;
-    for (double v : {rects[i].x0, rects[i].x1})
+    const ScreenRect r = rect(i);
+    for (double v : {r.x0, r.x1})
       if (std::isfinite(v)) xs.push_back(v);
-    for (double v : {rects[i].y0, rects[i].y1})
+    for (double v : {r.y0, r.y1})
       if (std::isfinite(v)) ys.push_back(v);
   }
   auto span = [](std::vector<double>& v, double& lo, double& hi) {
@@ -55,15 +67,13 @@ void ScreenGrid::build(const std::vector<ScreenRect>& rects, const std::vector<c
   y0_ = Y0;
   cell_ = std::max({(X1 - X0) / n_, (Y1 - Y0) / n_, 1e-300});
   start_.assign(static_cast<std::size_t>(n_) * n_ + 1, 0);
-  // Each item's cell range, the cells' counts and their items, all on all cores: the items
-  // land in a cell in any order and each cell is then sorted (by index: the same grid on any
-  // number of threads).
+  // Each item's cell range (worked out again for the second pass: no array of them), the
+  // cells' counts and their items, all on all cores: the items land in a cell in any order and
+  // each cell is then sorted (by index: the same grid on any number of threads).
   const ParallelLoop loop(threads);
-  std::vector<std::array<int, 4>> ranges(rects.size());
-  loop.for_each(rects.size(), 8192, [&](std::size_t i) {
-    if (always[i]) return;
-    ranges[i] = range(rects[i]);
-    auto [cx0, cy0, cx1, cy1] = ranges[i];
+  loop.for_each(n, 8192, [&](std::size_t i) {
+    if (always(i)) return;
+    auto [cx0, cy0, cx1, cy1] = range(rect(i));
     for (int cy = cy0; cy <= cy1; ++cy)
       for (int cx = cx0; cx <= cx1; ++cx)
         std::atomic_ref<std::uint32_t>(start_[static_cast<std::size_t>(cy) * n_ + cx + 1]).fetch_add(1, std::memory_order_relaxed);
@@ -72,9 +82,9 @@ void ScreenGrid::build(const std::vector<ScreenRect>& rects, const std::vector<c
   reserve_touched(items_, start_.back(), loop);
   items_.resize(start_.back());
   std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-  loop.for_each(rects.size(), 8192, [&](std::size_t i) {
-    if (always[i]) return;
-    auto [cx0, cy0, cx1, cy1] = ranges[i];
+  loop.for_each(n, 8192, [&](std::size_t i) {
+    if (always(i)) return;
+    auto [cx0, cy0, cx1, cy1] = range(rect(i));
     for (int cy = cy0; cy <= cy1; ++cy)
       for (int cx = cx0; cx <= cx1; ++cx) {
         const std::size_t cell = static_cast<std::size_t>(cy) * n_ + cx;

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -42,6 +43,9 @@ class ScreenGrid {
   /// cores (0: all; the same grid on any number).
   void build(const std::vector<ScreenRect>& rects, const std::vector<char>& always, double items_per_cell,
              int max_cells, unsigned threads = 0);
+  /// The same over n rectangles read as rect(i) (no array of them: a large grid's caller
+  /// keeps its own boxes), none always.
+  void build(std::size_t n, const std::function<ScreenRect(std::size_t)>& rect, double items_per_cell, int max_cells, unsigned threads = 0);
 
   /// Calls f(i) for every "always" item and for every item whose cell range meets the query
   /// (items may come more than once: callers deduplicate with stamps).
@@ -59,6 +63,8 @@ class ScreenGrid {
   const std::vector<int>& always() const { return always_; }
 
  private:
+  template <class Rect, class Always>
+  void build_from(std::size_t n, const Rect& rect, const Always& always, double items_per_cell, int max_cells, unsigned threads);
   std::array<int, 4> range(const ScreenRect& r) const;
 
   double x0_ = 0, y0_ = 0, cell_ = 1;

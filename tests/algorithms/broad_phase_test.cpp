@@ -120,6 +120,38 @@ TEST(BroadPhase, AGridOfMoreThanTwoToThe32CellsFindsEveryPairOnce) {
   }
 }
 
+// A grid swept in slabs of x layers (a few entries at a time, as a 10M-triangle mesh's are
+// made a slab at a time): the same pairs, once each, as in one sweep and as the oracle, with
+// the same verdicts kept; boxes across slabs (huge ones, long ones) included.
+TEST(BroadPhase, SlabsOfTheGridFindEveryPairOnceAsOneSweep) {
+  std::mt19937_64 rng(41);
+  const std::vector<Box3> boxes = random_boxes(rng, 3000, 1.0, 8);
+  const auto want = oracle(boxes);
+  ASSERT_GT(want.size(), 3000u);
+  for (std::size_t slab : {std::size_t{1}, std::size_t{97}, std::size_t{5000}, kSlabEntries}) {
+    for (unsigned threads : {1u, 2u}) {
+      std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+      std::mutex m;
+      std::size_t judged = 0;
+      BoxPairs d = overlapping_box_pairs(
+          boxes, ParallelLoop(threads),
+          [&](std::uint32_t a, std::uint32_t b) {
+            std::lock_guard<std::mutex> lock(m);
+            EXPECT_TRUE(seen.insert({a, b}).second) << "pair twice, slabs of " << slab;
+            ++judged;
+            return (a + b) % 3 == 0 ? PairVerdict::Keep : PairVerdict::Reject;
+          },
+          slab);
+      EXPECT_EQ(seen, want) << "slabs of " << slab << " entries, " << threads << " threads";
+      EXPECT_EQ(d.tested, judged);
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> kept;
+      for (const auto& p : want)
+        if ((p.first + p.second) % 3 == 0) kept.push_back(p);
+      EXPECT_EQ(d.kept, kept);
+    }
+  }
+}
+
 TEST(BroadPhase, OutwardFloatsEncloseTheDoublesAndRefuseBeyondTheirRange) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-1, 1);

@@ -1,5 +1,7 @@
 // The parallel loop and the process-wide thread limit (algorithms/support/parallel.hpp):
 // `--threads 1` must mean one thread for every stage, sorts and readers included.
+#include "algorithms/support/parallel.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,10 +10,10 @@
 #include <mutex>
 #include <set>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include "algorithms/solids/body_topology.hpp"
-#include "algorithms/support/parallel.hpp"
 #include "algorithms/support/parallel_scan.hpp"
 #include "algorithms/support/union_find.hpp"
 
@@ -158,6 +160,43 @@ TEST(Parallel, PairedSidesAreTheOtherUseOfTwoUseEdgesOnAnyThreadCount) {
       ASSERT_EQ(t.slot_edge[s], face[s]) << "slot " << s << ", " << threads << " threads";
       if (third[s] >= 0) ASSERT_EQ(t.slot_third[s], third[s]) << "slot " << s;
     }
+  }
+}
+
+// A body of triangles keeps no third vertex per side (the engine reads its faces): without
+// `thirds` the edges, their uses (the fin's third use kept beside, read through a moved
+// topology) and the paired mates are those with them, and slot_third stays empty. Edges need
+// no destructor (an array of them whose pages were given back is freed untouched).
+TEST(Parallel, BodyTopologyWithoutThirdsPairsTheSameMates) {
+  static_assert(std::is_trivially_destructible_v<BodyEdge>);
+  std::size_t nv = 0;
+  const std::vector<Face> faces = fin_grid(nv);
+  for (unsigned threads : {1u, 2u}) {
+    BodyTopology with = body_topology(faces, nv, threads);
+    BodyTopology made = body_topology(faces, nv, threads, false);
+    BodyTopology without = std::move(made);  // the uses beside stay where the edges point
+    EXPECT_TRUE(without.slot_third.empty());
+    ASSERT_EQ(without.edges.size(), with.edges.size());
+    std::size_t beyond = 0;
+    for (std::size_t e = 0; e < with.edges.size(); ++e) {
+      const BodyEdge &a = with.edges[e], &b = without.edges[e];
+      ASSERT_EQ(a.u, b.u);
+      ASSERT_EQ(a.v, b.v);
+      ASSERT_EQ(a.uses.size(), b.uses.size());
+      for (std::size_t k = 0; k < a.uses.size(); ++k) {
+        EXPECT_EQ(a.uses[k].face, b.uses[k].face);
+        EXPECT_EQ(a.uses[k].slot, b.uses[k].slot);
+        EXPECT_EQ(a.uses[k].forward, b.uses[k].forward);
+      }
+      beyond += b.uses.size() > 2 ? b.uses.size() - 2 : 0;
+    }
+    EXPECT_EQ(beyond, without.beyond.size());
+    EXPECT_GE(beyond, 3u) << "the fin's third use and the repeated diagonal's two more";
+    EXPECT_EQ(std::vector<int>(without.slot_edge.begin(), without.slot_edge.end()), std::vector<int>(with.slot_edge.begin(), with.slot_edge.end()));
+    pair_sides(with, threads);
+    pair_sides(without, threads);
+    EXPECT_TRUE(without.slot_third.empty() && without.edges.empty() && without.beyond.empty());
+    EXPECT_EQ(std::vector<int>(without.slot_edge.begin(), without.slot_edge.end()), std::vector<int>(with.slot_edge.begin(), with.slot_edge.end()));
   }
 }
 

@@ -2,6 +2,8 @@
 // flags only. Each degenerate case of the representation by name.
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "algorithms/model/line_drawing.hpp"
 
 using namespace hlr;
@@ -109,6 +111,31 @@ TEST(PieceList, CopiesAreDeepAndMovesLeaveTheSourceUsable) {
   EXPECT_EQ(c.size(), 2u);
   a.clear();
   EXPECT_TRUE(a.empty());
+}
+
+// One word (a segment of a large drawing is 48 bytes): a moved-from list is all zero bytes, as
+// are the pages a spent array of lists was given back with (release_pages), and reads as
+// empty; move assignment frees what the target held (a sanitizer build sees every block).
+TEST(PieceList, OneWordThatIsZeroWhenMovedFrom) {
+  static_assert(sizeof(PieceList) == 8 && sizeof(Segment) == 48);
+  PieceList a{piece("0", "1/3", false), piece("1/3", "1", true)};
+  PieceList b = std::move(a);
+  unsigned char bytes[sizeof(PieceList)];
+  std::memcpy(bytes, static_cast<const void*>(&a), sizeof bytes);
+  for (unsigned char x : bytes) EXPECT_EQ(x, 0);
+  EXPECT_TRUE(a.empty());  // NOLINT: read after move
+  PieceList c;
+  c.set_whole(true);
+  c = std::move(b);  // a whole list replaced by a vector
+  EXPECT_EQ(c.size(), 2u);
+  b = PieceList{piece("0", "1/2", true), piece("1/2", "1", false)};  // NOLINT: reuse after move
+  c = std::move(b);                                                  // a vector replaced by a vector: the old one freed
+  EXPECT_TRUE(c[0].visible);
+  Piece through = piece("0", "1", false);
+  through.through = true;
+  c.set_whole(through);
+  EXPECT_EQ(c.size(), 1u);
+  EXPECT_TRUE(c[0].through && !c[0].visible);
 }
 
 TEST(PieceList, EqualityComparesNumbersAndFlags) {
