@@ -1,7 +1,7 @@
 // Broad phase (see intersection_broad_phase.hpp): cell size twice the mean box size, dense cell
-// ids sorted by a stable radix sort (a large grid's a slab of x layers at a time); a box over too many cells (a section's cap triangle across
-// the mesh) against the boxes in the slab of cells it reaches on its thinnest axis; a coarse
-// single cell when such boxes are too many.
+// ids sorted by a stable radix sort (a large grid's a slab of x layers at a time); a box over
+// too many cells (a section's cap triangle across the mesh) against the boxes in the slab of
+// cells it reaches on its thinnest axis; a coarse single cell when such boxes are too many.
 #include "algorithms/hlr/intersection_broad_phase.hpp"
 
 #include <algorithm>
@@ -340,7 +340,7 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop, const std:
       entries.resize(first[n]);
       loop.for_each(n, 8192, [&](std::size_t i) {
         if (first[i + 1] == first[i]) return;
-        std::int64_t c0[3], c1[3];
+        std::int64_t c0[3] = {}, c1[3] = {};  // (set: the box has cells in the slab)
         slab_span(i, c0, c1);
         std::size_t w = first[i];
         for (std::int64_t x = c0[0]; x <= c1[0]; ++x)
