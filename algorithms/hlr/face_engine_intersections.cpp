@@ -3,6 +3,7 @@
 // tests and a certified double filter, then the exact segment (intersection_lines.hpp).
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <optional>
 #include <tuple>
@@ -116,6 +117,9 @@ void Engine<P>::find_intersections(LineDrawing& res) {
     const Vec<P>& ny = normal_of(tc, my);
     return straddles(y, &ny, x) && may_meet(x, nx, y, ny) ? PairVerdict::Keep : PairVerdict::Reject;
   };
+  // Triangles with a vertex in common (global vertex numbers: of one body) are the judge's
+  // Skip; the broad phase passes them over, reading the vertices in place.
+  const BoxCorners corners{reinterpret_cast<const std::byte*>(tris_.data()) + offsetof(Tri, v), sizeof(Tri)};
   // The boxes in floats rounded outward (half the memory; boxes only grow, so no pair is lost),
   // in doubles when some coordinate lies beyond the floats' range.
   BoxPairs pairs;
@@ -131,14 +135,14 @@ void Engine<P>::find_intersections(LineDrawing& res) {
     bool fits = true;
     for (unsigned w = 0; w < beyond.size(); ++w) fits = fits && !beyond[w];
     if (fits) {
-      pairs = overlapping_box_pairs(bf, loop, judge);
+      pairs = overlapping_box_pairs(bf, loop, judge, kSlabEntries, corners);
       done = true;
     }
   }
   if (!done) {  // beyond the floats' range: doubles
     RawVector<Box3> bb(n);
     loop.for_each(n, 8192, [&](std::size_t i) { bb[i] = box(i); });
-    pairs = overlapping_box_pairs(bb, loop, judge);
+    pairs = overlapping_box_pairs(bb, loop, judge, kSlabEntries, corners);
   }
   res.stats.faces->intersection_pairs = pairs.tested;
   const auto& hits = pairs.kept;

@@ -171,7 +171,7 @@ void huge_box_pairs(std::span<const Box> bb, const Cells& g, const std::vector<s
 
 template <class Box>
 BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop, const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge,
-                   std::size_t slab_entries) {
+                   std::size_t slab_entries, BoxCorners corners) {
   BoxPairs out;
   const std::size_t n = bb.size();
   if (n < 2) return out;
@@ -276,7 +276,9 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop, const std:
       Box box;
       std::array<std::int32_t, 3> low;
       std::uint32_t item;
+      std::array<int, 3> corner;  // (with corners: read here once, not for every pair)
     };
+    const bool with_corners = corners.first != nullptr;
     auto pairs_of = [&](std::vector<E>& entries) {
       radix_sort(entries, loop);
       std::vector<std::size_t> cell_start = parallel_select<std::size_t>(
@@ -287,7 +289,8 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop, const std:
         cell.clear();
         for (std::size_t a = i; a < j; ++a) {
           const std::uint32_t t = entries[a].item();
-          cell.push_back({bb[t], coarse ? std::array<std::int32_t, 3>{} : low[t], t});
+          const std::array<int, 3> corner = with_corners ? corners.of(t) : std::array<int, 3>{};
+          cell.push_back({bb[t], coarse ? std::array<std::int32_t, 3>{} : low[t], t, corner});
         }
         const std::uint64_t here = entries[i].cell();
         for (std::size_t a = 0; a < cell.size(); ++a)
@@ -299,6 +302,7 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop, const std:
               std::uint64_t own = g.id(std::max(A[0], B[0]), std::max(A[1], B[1]), std::max(A[2], B[2]));
               if (own != here) continue;
             }
+            if (with_corners && BoxCorners::share(cell[a].corner, cell[c].corner)) continue;
             take(cell[a].item, cell[c].item, w);
           }
       };
@@ -355,7 +359,7 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop, const std:
     cell_pass(SmallEntry{});
   else cell_pass(Entry{});
   huge_box_pairs(bb, g, low, big, loop, [&](std::uint32_t i, std::uint32_t j, unsigned w) {
-    if (overlap(i, j)) take(std::min(i, j), std::max(i, j), w);
+    if (overlap(i, j) && !(corners.first && BoxCorners::share(corners.of(i), corners.of(j)))) take(std::min(i, j), std::max(i, j), w);
   });
   for (unsigned w = 0; w < found.size(); ++w) {
     out.kept.insert(out.kept.end(), found[w].kept.begin(), found[w].kept.end());
@@ -368,13 +372,13 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop, const std:
 }  // namespace
 
 BoxPairs overlapping_box_pairs(std::span<const Box3> boxes, const ParallelLoop& loop,
-                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge, std::size_t slab_entries) {
-  return box_pairs(boxes, loop, judge, slab_entries);
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge, std::size_t slab_entries, BoxCorners corners) {
+  return box_pairs(boxes, loop, judge, slab_entries, corners);
 }
 
 BoxPairs overlapping_box_pairs(std::span<const Box3f> boxes, const ParallelLoop& loop,
-                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge, std::size_t slab_entries) {
-  return box_pairs(boxes, loop, judge, slab_entries);
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge, std::size_t slab_entries, BoxCorners corners) {
+  return box_pairs(boxes, loop, judge, slab_entries, corners);
 }
 
 bool outward_floats(const Box3& b, Box3f& out) {

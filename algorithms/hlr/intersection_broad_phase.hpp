@@ -6,10 +6,12 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <functional>
-#include <utility>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "algorithms/support/parallel.hpp"
@@ -33,12 +35,32 @@ struct BoxPairs {
 /// of x layers at a time (8 bytes an entry, as much again for its sort).
 inline constexpr std::size_t kSlabEntries = std::size_t{1} << 24;
 
-/// Every pair of overlapping boxes is passed to `judge` (from several threads at once) once.
-/// `slab_entries`: the most entries at once (the same pairs, in the same order, for any).
+/// Three corner ids of each box (a triangle's vertices, three ints), read in place from the
+/// caller's records: box i's at first + i * stride bytes. Two boxes with a corner id in common
+/// are a Skip without the judge (a mesh's neighbours: most overlapping pairs of a fine mesh).
+struct BoxCorners {
+  const std::byte* first = nullptr;  // none: every pair goes to the judge
+  std::size_t stride = 3 * sizeof(int);
+  std::array<int, 3> of(std::uint32_t i) const {
+    std::array<int, 3> c;
+    std::memcpy(c.data(), first + i * stride, sizeof c);
+    return c;
+  }
+  static bool share(const std::array<int, 3>& a, const std::array<int, 3>& b) {
+    return a[0] == b[0] || a[0] == b[1] || a[0] == b[2] || a[1] == b[0] || a[1] == b[1] || a[1] == b[2] || a[2] == b[0] || a[2] == b[1] ||
+           a[2] == b[2];
+  }
+};
+
+/// Every pair of overlapping boxes is passed to `judge` (from several threads at once) once,
+/// but those `corners` skips. `slab_entries`: the most entries at once (the same pairs, in the
+/// same order, for any).
 BoxPairs overlapping_box_pairs(std::span<const Box3> boxes, const ParallelLoop& loop,
-                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge, std::size_t slab_entries = kSlabEntries);
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge, std::size_t slab_entries = kSlabEntries,
+                               BoxCorners corners = {});
 BoxPairs overlapping_box_pairs(std::span<const Box3f> boxes, const ParallelLoop& loop,
-                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge, std::size_t slab_entries = kSlabEntries);
+                               const std::function<PairVerdict(std::uint32_t, std::uint32_t)>& judge, std::size_t slab_entries = kSlabEntries,
+                               BoxCorners corners = {});
 
 /// `b` rounded outward to floats; false when a bound lies beyond the floats' range (or is not
 /// finite), where the doubles must be used.

@@ -8,8 +8,9 @@
 // same per segment as a sparse one. Strokes are looked at in batches on all cores: each
 // segment of a batch first against what the strokes before the batch kept (the grid does not
 // change meanwhile), then, stroke by stroke in order, against what the batch's earlier strokes
-// kept (the newest entries of the grid's lists, read only where the boxes meet): the same
-// covers as one stroke at a time, on any number of cores.
+// kept (the newest entries of the grid's lists, read only where the boxes meet; a long
+// stroke's segments on all cores): the same covers as one stroke at a time, on any number of
+// cores. What a stroke keeps has its lists found on all cores and is linked in order.
 #include "algorithms/plot/coincident_lines.hpp"
 
 #include <algorithm>
@@ -89,10 +90,30 @@ class KeptGrid {
     entries_.reserve(segments + segments / 2);  // mostly one entry a segment: no copies as it grows
   }
 
-  // Enters the segments kept[from...], each under its place in `kept` as id.
-  void add(const std::vector<Seg>& kept, std::size_t from) {
+  // Enters the segments kept[from...], each under its place in `kept` as id: many at once
+  // have their lists found on all cores, then are linked in order.
+  void add(const std::vector<Seg>& kept, std::size_t from, const ParallelLoop& loop) {
     if (kept.size() >= kNone) throw std::length_error("merge of coincident lines: too many segments");
-    for (std::size_t i = from; i < kept.size(); ++i) lists(kept[i], [&](std::size_t l) { link(l, static_cast<std::uint32_t>(i)); });
+    const std::size_t n = kept.size() - from;
+    if (n < kParallelAdd) {
+      for (std::size_t i = from; i < kept.size(); ++i) lists(kept[i], [&](std::size_t l) { link(l, static_cast<std::uint32_t>(i)); });
+    } else {
+      std::vector<std::size_t> at(n + 1, 0);
+      loop.for_each(n, 256, [&](std::size_t i) { lists(kept[from + i], [&](std::size_t) { ++at[i + 1]; }); });
+      for (std::size_t i = 0; i < n; ++i) at[i + 1] += at[i];
+      std::vector<std::size_t> found(at[n]);
+      loop.for_each(n, 256, [&](std::size_t i) {
+        std::size_t w = at[i];
+        lists(kept[from + i], [&](std::size_t l) { found[w++] = l; });
+      });
+      constexpr std::size_t kAhead = 16;  // the heads linked next fetched ahead (they lie far apart)
+      for (std::size_t k = 0; k < std::min(kAhead, found.size()); ++k) __builtin_prefetch(&heads_[found[k]], 1);
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t k = at[i]; k < at[i + 1]; ++k) {
+          if (k + kAhead < found.size()) __builtin_prefetch(&heads_[found[k + kAhead]], 1);
+          link(found[k], static_cast<std::uint32_t>(from + i));
+        }
+    }
     if (entries_.size() >= kNone) throw std::length_error("merge of coincident lines: too many segments");
   }
 
@@ -121,6 +142,7 @@ class KeptGrid {
 
  private:
   static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  static constexpr std::size_t kParallelAdd = 1024;  // segments entered at once on all cores from this many
 
   // f(list) for every list (cell and direction class) s is entered in.
   template <class F>
@@ -258,19 +280,22 @@ class Merge {
     else look(0, 0, n);
     for (std::size_t j = 0; j < batch.size(); ++j) {
       const std::span<Covers> mine(covers.data() + at[j], at[j + 1] - at[j]);
-      if (again[j] && kept_.size() > first_kept) {  // the batch's earlier strokes kept something
-        std::vector<std::uint32_t>& looked = looked_[0];
-        looked.resize(kept_.size(), 0);
-        for (std::size_t i = 0; i < mine.size(); ++i) {
-          if (whole(mine[i])) continue;
-          const Covers more = covers_of(segment(batch[j], i), looked, ++look_[0], first_entry);
-          mine[i].insert(mine[i].end(), more.begin(), more.end());
-        }
-      }
-      if (again[j])
-        for (std::size_t i = 0; i < mine.size(); ++i)
+      // Looked at again (on all cores when long): against what the batch's earlier strokes kept.
+      const bool more = again[j] && kept_.size() > first_kept;
+      auto look_again = [&](unsigned w, std::size_t begin, std::size_t end) {
+        std::vector<std::uint32_t>& looked = looked_[w];
+        if (more && looked.size() < kept_.size()) looked.resize(kept_.size(), 0);
+        for (std::size_t i = begin; i < end; ++i) {
+          if (more && !whole(mine[i])) {
+            const Covers extra = covers_of(segment(batch[j], i), looked, ++look_[w], first_entry);
+            mine[i].insert(mine[i].end(), extra.begin(), extra.end());
+          }
           if (!mine[i].empty()) mine[i] = runs_of(mine[i], length(segment(batch[j], i)), tol_);
-      keep(std::move(batch[j]), mine, out);
+        }
+      };
+      if (again[j] && mine.size() >= kParallelSegments) loop.run(mine.size(), 256, look_again);
+      else if (again[j]) look_again(0, 0, mine.size());
+      keep(std::move(batch[j]), mine, out, loop);
     }
   }
   const CoincidentStats& stats() const { return st_; }
@@ -294,7 +319,7 @@ class Merge {
   }
 
   // s split by its segments' covered runs, appended to `out`, and what it draws kept.
-  void keep(Stroke&& s, std::span<const Covers> covers, std::vector<Stroke>& out) {
+  void keep(Stroke&& s, std::span<const Covers> covers, std::vector<Stroke>& out, const ParallelLoop& loop) {
     bool touched = false;
     for (std::size_t i = 0; i < covers.size() && !touched; ++i) touched = !covers[i].empty();
     const std::size_t from = out.size();
@@ -304,7 +329,7 @@ class Merge {
     const std::size_t first = kept_.size();
     for (std::size_t k = from; k < out.size(); ++k)
       for (std::size_t i = 0; i < segment_count(out[k]); ++i) kept_.push_back(segment(out[k], i));
-    grid_.add(kept_, first);
+    grid_.add(kept_, first, loop);
   }
 
   // The covers of g (unsorted, not joined) by the kept segments of the grid's entries from

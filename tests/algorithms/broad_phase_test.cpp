@@ -2,10 +2,12 @@
 // overlapping pair once, against a quadratic oracle, in doubles and in floats rounded outward,
 // with huge boxes among the small ones (long, flat across the scene, across one axis and part of
 // another, over all of it);
+// boxes with a corner in common passed over without the judge;
 // the segment's owned and borrowed ends (algorithms/model/line_drawing.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <mutex>
 #include <random>
@@ -150,6 +152,54 @@ TEST(BroadPhase, SlabsOfTheGridFindEveryPairOnceAsOneSweep) {
       EXPECT_EQ(d.kept, kept);
     }
   }
+}
+
+// Corner ids read in place from records (three ints inside a larger struct, as a triangle's
+// vertices): a pair with an id in common never reaches the judge, every other overlapping pair
+// does, once, on the cell path, the huge boxes' path and in slabs, and is kept as judged.
+TEST(BroadPhase, BoxesWithACornerInCommonArePassedOverWithoutTheJudge) {
+  struct Record {
+    int tag;
+    std::array<int, 3> v;
+    bool flag;
+  };
+  std::mt19937_64 rng(23);
+  const std::vector<Box3> boxes = random_boxes(rng, 3000, 1.0, 8);
+  std::vector<Record> records(boxes.size());
+  for (Record& r : records) r = {7, {int(rng() % 200), int(rng() % 200), int(rng() % 200)}, true};
+  auto share = [&](std::uint32_t a, std::uint32_t b) {
+    for (int x : records[a].v)
+      for (int y : records[b].v)
+        if (x == y) return true;
+    return false;
+  };
+  std::set<std::pair<std::uint32_t, std::uint32_t>> want;
+  std::size_t shared = 0;
+  for (const auto& p : oracle(boxes)) {
+    if (share(p.first, p.second)) ++shared;
+    else want.insert(p);
+  }
+  ASSERT_GT(shared, 100u);
+  ASSERT_GT(want.size(), 3000u);
+  const BoxCorners corners{reinterpret_cast<const std::byte*>(records.data()) + offsetof(Record, v), sizeof(Record)};
+  for (std::size_t slab : {std::size_t{97}, kSlabEntries})
+    for (unsigned threads : {1u, 2u}) {
+      std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+      std::mutex m;
+      BoxPairs d = overlapping_box_pairs(
+          boxes, ParallelLoop(threads),
+          [&](std::uint32_t a, std::uint32_t b) {
+            std::lock_guard<std::mutex> lock(m);
+            EXPECT_FALSE(share(a, b)) << a << " and " << b << " share a corner";
+            EXPECT_TRUE(seen.insert({std::min(a, b), std::max(a, b)}).second) << "pair twice";
+            return PairVerdict::Keep;
+          },
+          slab, corners);
+      EXPECT_EQ(seen, want) << "slabs of " << slab << ", " << threads << " threads";
+      EXPECT_EQ(d.tested, want.size());
+      const std::set<std::pair<std::uint32_t, std::uint32_t>> kept(d.kept.begin(), d.kept.end());
+      EXPECT_EQ(kept, want);
+    }
 }
 
 TEST(BroadPhase, OutwardFloatsEncloseTheDoublesAndRefuseBeyondTheirRange) {

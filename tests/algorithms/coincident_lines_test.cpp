@@ -304,22 +304,31 @@ std::size_t merge_as_oracle_on_any_threads(const PlotLayer& l, double tol, const
   return expected.pieces_removed;
 }
 
+// A random walk of n steps of 0.5 to 2.5 tolerances, turning a little at each.
+std::vector<Point2> random_walk(std::mt19937& rng, int n, double tol) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Point2> walk{{0, 0}};
+  double angle = 0;
+  for (int i = 0; i < n; ++i) {
+    angle += 0.3 * u(rng);
+    const double step = tol * (1.5 + u(rng));
+    walk.push_back({walk.back()[0] + step * std::cos(angle), walk.back()[1] + step * std::sin(angle)});
+  }
+  return walk;
+}
+
 // Strokes of thousands of segments (a mesh's chained paths) are looked at on all cores: a
 // random walk, the same walk retraced beside it within the tolerance (reversed, with noise)
-// and a closed one through both, against the oracle and against one thread.
+// and a closed one through both, against the oracle and against one thread. And two long
+// strokes in one batch (1,500 and 2,000 segments, under its 4,096): the second retraces the
+// first, so it is looked at again against what the first kept, its segments on all cores.
 TEST(CoincidentLines, LongStrokesOnAllCoresAsTheOracle) {
-  std::size_t removed = 0;
+  std::size_t removed = 0, again = 0;
   for (unsigned seed = 1; seed <= 3; ++seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(-1, 1);
     const double tol = 0.01;
-    std::vector<Point2> walk{{0, 0}};
-    double angle = 0;
-    for (int i = 0; i < 5000; ++i) {
-      angle += 0.3 * u(rng);
-      const double step = tol * (1.5 + u(rng));
-      walk.push_back({walk.back()[0] + step * std::cos(angle), walk.back()[1] + step * std::sin(angle)});
-    }
+    const std::vector<Point2> walk = random_walk(rng, 5000, tol);
     std::vector<Point2> beside(walk.rbegin(), walk.rend());
     for (Point2& q : beside) q = {q[0] + 0.4 * tol * u(rng), q[1] + 0.4 * tol * u(rng)};
     std::vector<Point2> loop;
@@ -328,8 +337,14 @@ TEST(CoincidentLines, LongStrokesOnAllCoresAsTheOracle) {
     l.strokes = {Stroke{walk, false}, Stroke{beside, false}, Stroke{loop, true}};
     removed += merge_as_oracle_on_any_threads(l, tol, "long strokes, seed " + std::to_string(seed));
     if (HasFatalFailure()) return;
+    PlotLayer batch;
+    batch.strokes = {Stroke{std::vector<Point2>(beside.begin() + 250, beside.begin() + 1751), false},
+                     Stroke{std::vector<Point2>(walk.begin() + 3000, walk.end()), false}};
+    again += merge_as_oracle_on_any_threads(batch, tol, "a long stroke again in its batch, seed " + std::to_string(seed));
+    if (HasFatalFailure()) return;
   }
   EXPECT_GT(removed, 300u);
+  EXPECT_GT(again, 300u);
 }
 
 // Many short strokes in a small square (the dense band of a mesh's silhouette) are looked at
