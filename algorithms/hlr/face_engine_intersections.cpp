@@ -58,6 +58,17 @@ void Engine<P>::find_intersections(LineDrawing& res) {
   const ParallelLoop loop(opt_.threads);
   auto box = [&](std::size_t i) {
     Box3 b{INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    if constexpr (std::is_same_v<P, Fast> || std::is_same_v<P, Fast40>) {
+      // The engine's integer coordinates (below 2^40: exact doubles), one frame for every
+      // body: the exact boxes, without a division (the broad phase takes any one frame).
+      for (int v : tris_[i].v)
+        for (int k = 0; k < 3; ++k) {
+          const double x = P::cdbl(pt(v)[k]);
+          b[k] = std::min(b[k], x);
+          b[k + 3] = std::max(b[k + 3], x);
+        }
+      return b;
+    }
     const PointStore& store = bodies_[tris_[i].body]->vertex_store();
     for (int v : tris_[i].v)
       for (int k = 0; k < 3; ++k) {
