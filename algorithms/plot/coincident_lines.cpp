@@ -23,6 +23,7 @@
 #include <utility>
 
 #include "algorithms/support/parallel.hpp"
+#include "algorithms/support/uninitialised.hpp"
 
 namespace hlr {
 namespace {
@@ -78,7 +79,8 @@ bool sound_direction(double len2) { return len2 >= 1e-200 && len2 <= 1e200; }
 // reach.
 class KeptGrid {
  public:
-  KeptGrid(const std::array<double, 4>& box, double min_cell, std::size_t segments) : x0_(box[0]), y0_(box[1]) {
+  // (Its arrays' pages are touched on all cores here, not one at a time as the merge fills them.)
+  KeptGrid(const std::array<double, 4>& box, double min_cell, std::size_t segments, const ParallelLoop& loop) : x0_(box[0]), y0_(box[1]) {
     const double w = box[2] - box[0], h = box[3] - box[1], n = static_cast<double>(segments + 1);
     cell_ = std::max({min_cell, std::sqrt(w * h / n), std::max(w, h) / n});
     for (;;) {
@@ -86,8 +88,9 @@ class KeptGrid {
       if (nx_ * ny_ * kBins <= 2 * segments + (1u << 20) || !(cell_ < INFINITY)) break;
       cell_ *= 1.25;
     }
-    heads_.assign(nx_ * ny_ * kBins, kNone);
-    entries_.reserve(segments + segments / 2);  // mostly one entry a segment: no copies as it grows
+    heads_.resize(nx_ * ny_ * kBins);
+    loop.for_each(heads_.size(), 1 << 16, [&](std::size_t i) { heads_[i] = kNone; });
+    reserve_touched(entries_, segments + segments / 2, loop);  // mostly one entry a segment: no copies as it grows
   }
 
   // Enters the segments kept[from...], each under its place in `kept` as id: many at once
@@ -189,7 +192,7 @@ class KeptGrid {
 
   double x0_, y0_, cell_ = 1;
   std::size_t nx_ = 1, ny_ = 1;
-  std::vector<std::uint32_t> heads_;  // per cell and class: its last entry
+  RawVector<std::uint32_t> heads_;  // per cell and class: its last entry
   std::vector<Entry> entries_;
 };
 
@@ -248,10 +251,10 @@ class Merge {
   Merge(const std::array<double, 4>& box, std::size_t segments, double tol, const ParallelLoop& loop)
       : tol_(tol),
         reach_(1.5 * tol + 1e-12 * std::max({std::fabs(box[0]), std::fabs(box[1]), std::fabs(box[2]), std::fabs(box[3])})),
-        grid_(box, 2 * reach_, segments),
+        grid_(box, 2 * reach_, segments, loop),
         looked_(loop),
         look_(loop, 0) {
-    kept_.reserve(segments);
+    reserve_touched(kept_, segments, loop);
   }
 
   // Appends to `out` the strokes each of `batch` leaves drawn (a stroke itself when nothing
@@ -363,8 +366,11 @@ class Merge {
     std::vector<Stroke> out;
     Stroke cur;
     auto flush = [&] {
+      // The sum only grows, so once it reaches the tolerance the part stays, its length unused.
+      // (A part's points are all finite or its first is not: point(0) of a segment with an end
+      // that is not finite is NaN, which no point equals, so it starts a part of its own.)
       double len = 0;
-      for (std::size_t i = 1; i < cur.points.size(); ++i) len += length(cur.points[i - 1], cur.points[i]);
+      for (std::size_t i = 1; i < cur.points.size() && !(len >= tol_); ++i) len += length(cur.points[i - 1], cur.points[i]);
       if (cur.points.size() >= 2 && len >= tol_) out.push_back(std::move(cur));
       else if (cur.points.size() >= 2) ++st_.pieces_removed, st_.length_removed += len;
       cur = Stroke{};
@@ -372,7 +378,7 @@ class Merge {
     for (std::size_t i = 0; i < covers.size(); ++i) {
       const Seg g = segment(s, i);
       const Point2 &p = g.a, &q = g.b;
-      const double len = length(p, q);
+      const double len = covers[i].empty() ? 0 : length(p, q);  // (only the runs left out use it)
       auto point = [&](double t) { return Point2{p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])}; };
       auto keep_part = [&](double t0, double t1) {
         if (cur.points.empty() || cur.points.back() != point(t0)) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <execution>
 #include <map>
 #include <mutex>
@@ -21,14 +22,22 @@ using namespace hlr;
 
 namespace {
 
+// The threads that ran a loop's work. The first index waits (up to a second) for a second
+// thread to join in, so that a busy machine, whose other threads start late, gives the same
+// count as a quiet one.
 std::size_t threads_used(unsigned loop_threads) {
   std::mutex m;
   std::set<std::thread::id> ids;
-  ParallelLoop(loop_threads).for_each(20000, 16, [&](std::size_t) {
-    volatile double x = 0;
-    for (int k = 0; k < 2000; ++k) x = x + k;  // enough work for the workers to join in
+  auto count = [&] {
     std::lock_guard<std::mutex> g(m);
-    ids.insert(std::this_thread::get_id());
+    return ids.size();
+  };
+  ParallelLoop(loop_threads).for_each(20000, 16, [&](std::size_t i) {
+    {
+      std::lock_guard<std::mutex> g(m);
+      ids.insert(std::this_thread::get_id());
+    }
+    for (int wait = 0; i == 0 && wait < 1000 && count() < 2; ++wait) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   });
   return ids.size();
 }
