@@ -48,7 +48,9 @@ TEST(Parallel, ThreadLimitHoldsEveryLoop) {
     EXPECT_EQ(threads_used(0), 1u);  // a loop asking for all cores
     EXPECT_EQ(threads_used(8), 1u);
   }
-  if (std::thread::hardware_concurrency() >= 2) EXPECT_GE(threads_used(0), 2u) << "without the limit, more cores work";
+  if (std::thread::hardware_concurrency() >= 2) {
+    EXPECT_GE(threads_used(0), 2u) << "without the limit, more cores work";
+  }
 }
 
 TEST(Parallel, EveryIndexOnceInOrderOfRanges) {
@@ -167,7 +169,9 @@ TEST(Parallel, PairedSidesAreTheOtherUseOfTwoUseEdgesOnAnyThreadCount) {
     EXPECT_EQ(others, 1200u + 3u + 1u + 3u);
     for (std::size_t s = 0; s < face.size(); ++s) {
       ASSERT_EQ(t.slot_edge[s], face[s]) << "slot " << s << ", " << threads << " threads";
-      if (third[s] >= 0) ASSERT_EQ(t.slot_third[s], third[s]) << "slot " << s;
+      if (third[s] >= 0) {
+        ASSERT_EQ(t.slot_third[s], third[s]) << "slot " << s;
+      }
     }
   }
 }
