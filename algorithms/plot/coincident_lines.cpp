@@ -23,6 +23,7 @@
 #include <utility>
 
 #include "algorithms/support/parallel.hpp"
+#include "algorithms/support/parallel_scan.hpp"
 #include "algorithms/support/uninitialised.hpp"
 
 namespace hlr {
@@ -101,9 +102,14 @@ class KeptGrid {
     if (n < kParallelAdd) {
       for (std::size_t i = from; i < kept.size(); ++i) lists(kept[i], [&](std::size_t l) { link(l, static_cast<std::uint32_t>(i)); });
     } else {
-      std::vector<std::size_t> at(n + 1, 0);
-      loop.for_each(n, 256, [&](std::size_t i) { lists(kept[from + i], [&](std::size_t) { ++at[i + 1]; }); });
-      for (std::size_t i = 0; i < n; ++i) at[i + 1] += at[i];
+      const std::vector<std::size_t> at = parallel_offsets(
+          n,
+          [&](std::size_t i) {
+            std::size_t c = 0;
+            lists(kept[from + i], [&](std::size_t) { ++c; });
+            return c;
+          },
+          loop);
       std::vector<std::size_t> found(at[n]);
       loop.for_each(n, 256, [&](std::size_t i) {
         std::size_t w = at[i];
