@@ -369,6 +369,53 @@ class Dedup {
     return true;
   }
 
+  // A piece of a cell in cell_pairs' sweep: its line's distance from the cell's centre, and
+  // how far from that another piece's line can lie when the two pass maybe_overlap with this
+  // one as the shorter piece B.
+  struct LineKey {
+    double at, reach;
+    std::uint32_t i;  // in the cell
+  };
+
+  // Calls visit(i, j), i < j, for every pair of the cell's pieces that can pass maybe_overlap
+  // (and some more): all pairs of a small cell; else, with the pieces sorted by their lines'
+  // distances from the cell's centre o, each piece with those within its reach when it is B.
+  // None that passes is left out: maybe_overlap finds B's ends within m = 8 delta of A's line
+  // (computed; within 9 delta exactly), so the lines' angle has sin <= 2 m / |B|, and their
+  // distances from o differ by at most m + pi m |o - B.a| / |B| (the lines undirected, the
+  // angle at most pi / 2). The reach, 12 delta + 46 delta D / |B| with D the largest
+  // coordinate difference between o and B's ends (within sqrt 2 of the distance), is above it.
+  // A B of at most 4 delta (both pieces short: maybe_overlap passes them all) reaches all.
+  template <class Visit>
+  void cell_pairs(const std::vector<Near>& cell, const std::array<double, 2>& o, std::vector<LineKey>& keys, Visit&& visit) const {
+    const std::size_t k = cell.size();
+    if (blind_ || k < 8) {
+      for (std::size_t i = 0; i < k; ++i)
+        for (std::size_t j = i + 1; j < k; ++j) visit(i, j);
+      return;
+    }
+    keys.clear();
+    for (std::size_t i = 0; i < k; ++i) {
+      const Near& p = cell[i];
+      const double at = std::fabs(p.nx * (o[1] - p.a[1]) - p.ny * (o[0] - p.a[0]));
+      const double d = std::max({std::fabs(o[0] - p.a[0]), std::fabs(o[1] - p.a[1]), std::fabs(o[0] - p.b[0]), std::fabs(o[1] - p.b[1])});
+      double reach = p.len > 4 * delta_ ? 12 * delta_ + 46 * delta_ * (d / p.len) : INFINITY;
+      if (!(reach >= 0) || !std::isfinite(at)) reach = INFINITY;  // (NaN from an overflow: every piece)
+      keys.push_back({std::isfinite(at) ? at : 0.0, reach, static_cast<std::uint32_t>(i)});
+    }
+    std::sort(keys.begin(), keys.end(), [](const LineKey& x, const LineKey& y) { return x.at < y.at; });
+    // Each pair from the sweep of its B: maybe_overlap's second piece, unless the first is shorter.
+    auto is_b = [&](std::uint32_t x, std::uint32_t y) { return x < y ? cell[x].len < cell[y].len : cell[x].len <= cell[y].len; };
+    for (std::size_t a = 0; a < k; ++a) {
+      const LineKey& s = keys[a];
+      auto take = [&](const LineKey& t) {
+        if (is_b(s.i, t.i)) visit(std::min(s.i, t.i), std::max(s.i, t.i));
+      };
+      for (std::size_t b = a + 1; b < k && keys[b].at - s.at <= s.reach; ++b) take(keys[b]);
+      for (std::size_t b = a; b-- > 0 && s.at - keys[b].at <= s.reach;) take(keys[b]);
+    }
+  }
+
   bool exact_overlap(std::uint32_t a, std::uint32_t b) {
     ++line_tests_;
     const Exact2 &p0 = exact(2 * a), &p1 = exact(2 * a + 1), &q0 = exact(2 * b), &q1 = exact(2 * b + 1);
@@ -415,7 +462,8 @@ class Dedup {
     }
     const double pad = 16 * delta_;
     x0 -= pad, y0 -= pad, x1 += pad, y1 += pad;
-    const int g = blind_ ? 1 : std::clamp(static_cast<int>(std::sqrt(static_cast<double>(live.size()))), 1, 2048);
+    // (cells of about 16 pieces: a cell's pairs come from a sweep, not all k^2 / 2 of them)
+    const int g = blind_ ? 1 : std::clamp(static_cast<int>(std::sqrt(static_cast<double>(live.size())) / 4), 1, 2048);
     const double cw = (x1 - x0) / g, ch = (y1 - y0) / g;
     auto cell = [g](double c) { return c >= 1 ? static_cast<int>(std::min(c, static_cast<double>(g - 1))) : 0; };  // (NaN: 0)
     auto cx = [&](double x) { return g == 1 ? 0 : cell((x - x0) / cw); };
@@ -478,6 +526,7 @@ class Dedup {
     PerWorker<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(loop);
     loop.run(n_cells, 256, [&](unsigned worker, std::size_t begin, std::size_t end) {
       std::vector<Near> cell;
+      std::vector<LineKey> keys;
       for (std::size_t c = begin; c < end; ++c) {
         if (start[c + 1] - start[c] < 2) continue;
         cell.clear();
@@ -486,13 +535,13 @@ class Dedup {
           cell.push_back(near_piece(r.a, r.b, live[items[i]], r.ra, r.rb));
         }
         auto segment = [&](std::uint32_t k) { return d_.sources[d_.lines[k].first_edge].segment; };
-        for (std::size_t i = 0; i < cell.size(); ++i)
-          for (std::size_t j = i + 1; j < cell.size(); ++j) {
-            const Near &A = cell[i], &B = cell[j];
-            if (A.piece == B.piece || !maybe_overlap(A, B) || segment(A.piece) == segment(B.piece)) continue;
-            if (meet_cell(A, B) != c) continue;  // the pair's own cell tests it (not every cell the two share)
-            found[worker].emplace_back(std::min(A.piece, B.piece), std::max(A.piece, B.piece));
-          }
+        const std::array<double, 2> centre = {x0 + (static_cast<double>(c % g) + 0.5) * cw, y0 + (static_cast<double>(c / g) + 0.5) * ch};
+        cell_pairs(cell, centre, keys, [&](std::size_t i, std::size_t j) {
+          const Near &A = cell[i], &B = cell[j];
+          if (A.piece == B.piece || !maybe_overlap(A, B) || segment(A.piece) == segment(B.piece)) return;
+          if (meet_cell(A, B) != c) return;  // the pair's own cell tests it (not every cell the two share)
+          found[worker].emplace_back(std::min(A.piece, B.piece), std::max(A.piece, B.piece));
+        });
       }
     });
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
