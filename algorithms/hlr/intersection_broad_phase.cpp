@@ -35,45 +35,6 @@ struct SmallEntry {
 };
 static_assert(sizeof(SmallEntry) == 8);
 
-// Stable LSD radix sort by cell (entries arrive in item order, so ties stay sorted by item):
-// 11-bit digits over the bits the keys use. Each pass counts digits per fixed chunk on all
-// cores, places every (digit, chunk) run after the ones before it, and scatters the chunks on
-// all cores: stable, and the same order on any number of threads.
-template <class E>
-void radix_sort(std::vector<E>& v, const ParallelLoop& loop) {
-  const std::size_t n = v.size();
-  const std::size_t chunks = std::clamp<std::size_t>(n / 65536, 1, 64), per = (n + chunks - 1) / chunks;
-  std::vector<std::uint64_t> any(chunks, 0);
-  loop.for_each(chunks, 1, [&](std::size_t c) {
-    std::uint64_t a = 0;  // (a local: neighbouring chunks' slots share a cache line)
-    for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) a |= v[i].cell();
-    any[c] = a;
-  });
-  std::uint64_t all = 0;
-  for (std::uint64_t a : any) all |= a;
-  std::vector<E> tmp;
-  reserve_touched(tmp, n, loop);
-  tmp.resize(n);
-  std::vector<std::array<std::size_t, 2048>> at(chunks);
-  for (int shift = 0; shift < 64 && (all >> shift) != 0; shift += 11) {
-    loop.for_each(chunks, 1, [&](std::size_t c) {
-      at[c].fill(0);
-      for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) ++at[c][(v[i].cell() >> shift) & 2047];
-    });
-    std::size_t run = 0;
-    for (std::size_t d = 0; d < 2048; ++d)
-      for (std::size_t c = 0; c < chunks; ++c) {
-        const std::size_t k = at[c][d];
-        at[c][d] = run;
-        run += k;
-      }
-    loop.for_each(chunks, 1, [&](std::size_t c) {
-      for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) tmp[at[c][(v[i].cell() >> shift) & 2047]++] = v[i];
-    });
-    v.swap(tmp);
-  }
-}
-
 struct Cells {
   double lo[3], cell;
   std::int64_t dims[3];
@@ -280,7 +241,8 @@ BoxPairs box_pairs(std::span<const Box> bb, const ParallelLoop& loop, const std:
     };
     const bool with_corners = corners.first != nullptr;
     auto pairs_of = [&](std::vector<E>& entries) {
-      radix_sort(entries, loop);
+      radix_sort(
+          entries, [](const E& e) { return e.cell(); }, loop);  // stable: a cell's boxes in item order
       std::vector<std::size_t> cell_start = parallel_select<std::size_t>(
           entries.size(), [&](std::size_t i) { return i == 0 || entries[i].cell() != entries[i - 1].cell(); }, loop, 1);
       cell_start.push_back(entries.size());

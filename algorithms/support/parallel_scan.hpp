@@ -1,10 +1,11 @@
 // Order-keeping scans on all cores (the parallel loop of parallel.hpp): which indices pass a
-// test, and where each index's output starts when each writes a known count. Both count per
-// fixed chunk, add the chunks' counts in order, then write each chunk after the ones before
-// it, so the result does not depend on the thread count.
+// test, where each index's output starts when each writes a known count, and a stable sort by
+// integer keys. Each counts per fixed chunk, adds the chunks' counts in order, then writes each
+// chunk after the ones before it, so the result does not depend on the thread count.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -64,6 +65,46 @@ std::vector<T> parallel_offsets(std::size_t n, const Count& count, const Paralle
     }
   });
   return out;
+}
+
+/// Sorts v by key(e) (an unsigned integer of up to 64 bits), stable: a least significant digit
+/// radix sort, 11-bit digits over the bits the keys use. Each pass counts digits per fixed
+/// chunk on all cores, places every (digit, chunk) run after the ones before it, and scatters
+/// the chunks on all cores: the same order on any number of threads.
+template <class E, class Key>
+void radix_sort(std::vector<E>& v, const Key& key, const ParallelLoop& loop) {
+  const std::size_t n = v.size();
+  const std::size_t chunks = std::clamp<std::size_t>(n / 65536, 1, 64), per = (n + chunks - 1) / chunks;
+  std::vector<std::uint64_t> any(chunks, 0);
+  loop.for_each(chunks, 1, [&](std::size_t c) {
+    std::uint64_t a = 0;  // (a local: neighbouring chunks' slots share a cache line)
+    for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) a |= static_cast<std::uint64_t>(key(v[i]));
+    any[c] = a;
+  });
+  std::uint64_t all = 0;
+  for (std::uint64_t a : any) all |= a;
+  std::vector<E> tmp;
+  reserve_touched(tmp, n, loop);
+  tmp.resize(n);
+  std::vector<std::array<std::size_t, 2048>> at(chunks);
+  for (int shift = 0; shift < 64 && (all >> shift) != 0; shift += 11) {
+    auto digit = [&](const E& e) { return (static_cast<std::uint64_t>(key(e)) >> shift) & 2047; };
+    loop.for_each(chunks, 1, [&](std::size_t c) {
+      at[c].fill(0);
+      for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) ++at[c][digit(v[i])];
+    });
+    std::size_t run = 0;
+    for (std::size_t d = 0; d < 2048; ++d)
+      for (std::size_t c = 0; c < chunks; ++c) {
+        const std::size_t k = at[c][d];
+        at[c][d] = run;
+        run += k;
+      }
+    loop.for_each(chunks, 1, [&](std::size_t c) {
+      for (std::size_t i = c * per, e = std::min(n, i + per); i < e; ++i) tmp[at[c][digit(v[i])]++] = v[i];
+    });
+    v.swap(tmp);
+  }
 }
 
 }  // namespace hlr

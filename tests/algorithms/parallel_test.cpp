@@ -233,9 +233,12 @@ TEST(ParallelScan, SelectAndOffsetsMatchAPlainLoopOnAnyThreadCount) {
   }
   // Nothing kept, everything kept.
   const ParallelLoop loop(2);
-  EXPECT_TRUE(parallel_select(100000, [](std::size_t) { return false; }, loop).empty());
-  EXPECT_EQ(parallel_select(100000, [](std::size_t) { return true; }, loop).size(), 100000u);
-  EXPECT_EQ(parallel_offsets(100000, [](std::size_t) -> std::size_t { return 3; }, loop).back(), 300000u);
+  auto none = [](std::size_t) { return false; };
+  auto every = [](std::size_t) { return true; };
+  auto three = [](std::size_t) -> std::size_t { return 3; };
+  EXPECT_TRUE(parallel_select(100000, none, loop).empty());
+  EXPECT_EQ(parallel_select(100000, every, loop).size(), 100000u);
+  EXPECT_EQ(parallel_offsets(100000, three, loop).back(), 300000u);
 }
 
 // Unions made by many threads at once give the sets, and the roots (each set's smallest
@@ -245,10 +248,13 @@ TEST(ConcurrentUnionFind, SameSetsAndRootsAsTheSequentialOneOnAnyThreadCount) {
   const std::size_t n = 50000;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   std::uint64_t x = 88172645463325252ull;
-  auto next = [&] { x ^= x << 13, x ^= x >> 7, x ^= x << 17; return static_cast<std::uint32_t>(x % 40000); };  // random pairs below 40000
+  auto next = [&] {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+    return static_cast<std::uint32_t>(x % 40000);
+  };  // random pairs below 40000
   for (int i = 0; i < 30000; ++i) pairs.emplace_back(next(), next());
   for (std::uint32_t i = 40000; i + 1 < 45000; ++i) pairs.emplace_back(i + 1, i);  // a chain, linked from its far end
-  for (std::uint32_t i = 45001; i < 46000; ++i) pairs.emplace_back(i, 45999);       // a star around its largest index
+  for (std::uint32_t i = 45001; i < 46000; ++i) pairs.emplace_back(i, 45999);      // a star around its largest index
   UnionFind want(n);
   for (auto [a, b] : pairs) want.unite(a, b);
   for (unsigned t : {1u, 2u, 8u}) {
@@ -262,4 +268,28 @@ TEST(ConcurrentUnionFind, SameSetsAndRootsAsTheSequentialOneOnAnyThreadCount) {
   }
   EXPECT_EQ(want.find(44999), 40000u);
   EXPECT_EQ(want.find(45001), 45001u);
+}
+
+// The radix sort is stable and sorts by the whole key: keys of few bits (many ties, one pass),
+// of all 64 bits, and of none (all zero), against std::stable_sort, on 1, 2 and 8 threads.
+TEST(ParallelScan, RadixSortIsAStableSortByKeyOnAnyThreadCount) {
+  auto key = [](const std::pair<std::uint64_t, std::uint32_t>& e) { return e.first; };
+  for (std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{65535}, std::size_t{300001}}) {
+    for (int bits : {0, 5, 64}) {
+      std::vector<std::pair<std::uint64_t, std::uint32_t>> v(n);  // (key, position)
+      std::uint64_t x = 88172645463325252ull;
+      for (std::size_t i = 0; i < n; ++i) {
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+        v[i] = {bits == 64 ? x : bits == 0 ? 0 : x >> (64 - bits), static_cast<std::uint32_t>(i)};
+      }
+      auto want = v;
+      std::stable_sort(want.begin(), want.end(), [&](const auto& a, const auto& b) { return key(a) < key(b); });
+      for (unsigned t : {1u, 2u, 8u}) {
+        auto got = v;
+        const ParallelLoop loop(t);
+        radix_sort(got, key, loop);
+        EXPECT_EQ(got, want) << "n " << n << ", bits " << bits << ", threads " << t;
+      }
+    }
+  }
 }
