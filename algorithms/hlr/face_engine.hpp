@@ -393,7 +393,7 @@ class Engine {
   const FaceRouteHooks& hooks_;
   std::shared_ptr<Prepared<P>> prep_;
   bool keep_;           // prep_ is shared with other views: nothing of it is freed
-  bool large_ = false;  // a large drawing without shared work: give_back() before its stages of new arrays
+  bool large_ = false;  // a large drawing without shared work: give_back() before visibility
   std::vector<Vec<P>>& X_;
   Vec<P> view_;  // orthographic direction, or the eye (scaled like the points)
   Rational& scale_;

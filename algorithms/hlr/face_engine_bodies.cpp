@@ -64,7 +64,6 @@ LineDrawing Engine<P>::run() {
   std::size_t faces = 0;
   for (const Polyhedron* p : bodies_) faces += p->num_faces();
   large_ = !keep_ && faces >= kLargeArrays;
-  if (!prep_->done) give_back();  // what the load left (the file's text), before the topology
   // The view-independent work once (or from a view before), then this view's facing and checks.
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     if (!prep_->done) prepare_body(static_cast<int>(b));
@@ -79,7 +78,9 @@ LineDrawing Engine<P>::run() {
   // freed), the drawn edges are read off its edges as compact records (a large drawing gives
   // each run of edges back as it is read), the occluders' closed sides are read off the mates, and it is freed:
   // before the intersection lines' broad phase when the occluders do not depend on those lines
-  // (no feature-line filter), else after it. (give_back: the peak is what is in use.)
+  // (no feature-line filter), else after it. (give_back before visibility: the peak is what
+  // is in use. Before the topology, the drawn edges and the occluders the peak was the same
+  // without it, and the pages given back cost their zeroing again.)
   std::vector<EdgeClasses> classes(bodies_.size());
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     if (!hooks_.extra_only) classes[b] = classify_edges(static_cast<int>(b));
@@ -88,7 +89,6 @@ LineDrawing Engine<P>::run() {
     for (BodyTopology& t : topo_) pair_sides(t, opt_.threads, false);
     std::vector<FaceNormals<P>>().swap(face_normal_);
   }
-  give_back();
   std::vector<std::vector<DrawnEdge>> drawn(bodies_.size());
   std::size_t total = 0;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
@@ -118,7 +118,6 @@ LineDrawing Engine<P>::run() {
   const auto ti1 = Clock::now();
   if (!early) select_occluders(drawn), free_topology();
   total += cross_.size();
-  give_back();
   build_occluders();
   give_back();                           // the occluders' making left holes beside the arrays visibility reads
   res.stats.faces->occluders = hiding_;  // a tile's too: every hiding triangle of the scene
