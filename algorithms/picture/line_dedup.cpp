@@ -405,23 +405,23 @@ class Dedup {
   // distances from o differ by at most m + pi m |o - B.a| / |B| (the lines undirected, the
   // angle at most pi / 2). The reach, 12 delta + 46 delta D / |B| with D the largest
   // coordinate difference between o and B's ends (within sqrt 2 of the distance), is above it.
-  // A B of at most 4 delta (both pieces short: maybe_overlap passes them all) reaches all.
+  // A B of at most 4 delta (both pieces short: maybe_overlap passes them all) reaches all. A
+  // length or distance that is not finite (an overflow) makes the cell's pairs all pairs.
   template <class Visit>
   void cell_pairs(const std::vector<Near>& cell, const std::array<double, 2>& o, std::vector<LineKey>& keys, Visit&& visit) const {
     const std::size_t k = cell.size();
-    if (blind_ || k < 8) {
+    auto all_pairs = [&] {
       for (std::size_t i = 0; i < k; ++i)
         for (std::size_t j = i + 1; j < k; ++j) visit(i, j);
-      return;
-    }
+    };
+    if (blind_ || k < 8) return all_pairs();
     keys.clear();
     for (std::size_t i = 0; i < k; ++i) {
       const Near& p = cell[i];
       const double at = std::fabs(p.nx * (o[1] - p.a[1]) - p.ny * (o[0] - p.a[0]));
       const double d = std::max({std::fabs(o[0] - p.a[0]), std::fabs(o[1] - p.a[1]), std::fabs(o[0] - p.b[0]), std::fabs(o[1] - p.b[1])});
-      double reach = p.len > 4 * delta_ ? 12 * delta_ + 46 * delta_ * (d / p.len) : INFINITY;
-      if (!(reach >= 0) || !std::isfinite(at)) reach = INFINITY;  // (NaN from an overflow: every piece)
-      keys.push_back({std::isfinite(at) ? at : 0.0, reach, static_cast<std::uint32_t>(i)});
+      if (!std::isfinite(at) || !std::isfinite(d) || !std::isfinite(p.len)) return all_pairs();
+      keys.push_back({at, p.len > 4 * delta_ ? 12 * delta_ + 46 * delta_ * (d / p.len) : INFINITY, static_cast<std::uint32_t>(i)});
     }
     std::sort(keys.begin(), keys.end(), [](const LineKey& x, const LineKey& y) { return x.at < y.at; });
     // Each pair from the sweep of its B: maybe_overlap's second piece, unless the first is shorter.
