@@ -25,6 +25,7 @@
 #include "algorithms/model/camera.hpp"
 #include "algorithms/solids/body_topology.hpp"
 #include "algorithms/solids/crease_angle.hpp"
+#include "algorithms/support/parallel.hpp"
 #include "algorithms/support/screen_grid.hpp"
 #include "kernel/exact_int.hpp"
 #include "kernel/polyhedron.hpp"
@@ -353,9 +354,13 @@ class Engine {
   std::optional<std::pair<Point3, Point3>> segment(const Tri& x, const Tri& y) const;
   const Point3& world(int g) const;
   // face_engine_visibility.cpp
+  void leave_out_backs(const std::vector<std::vector<DrawnEdge>>& drawn, LineDrawing& res, const ParallelLoop& loop);
   std::vector<PieceList> visibility(const std::vector<std::vector<DrawnEdge>>& drawn, std::vector<Segment>& crossing,
                                     LineDrawing& res);
-  /// The segments of the drawn edges and the crossing lines, with their pieces (drawn is freed).
+  /// Whether drawn edge e of body b is left out (backs_left_: hidden by its own faces).
+  bool left_out(std::size_t b, const DrawnEdge& e) const { return e.self_hidden && b < backs_left_.size() && backs_left_[b]; }
+  /// The segments of the drawn edges (but those left out) and the crossing lines, with their
+  /// pieces (drawn is freed).
   void make_segments(std::vector<std::vector<DrawnEdge>>& drawn, std::vector<PieceList> pieces, std::vector<Segment>& crossing, std::size_t total,
                      LineDrawing& res) const;
   void release_arrays();
@@ -391,6 +396,8 @@ class Engine {
   const Camera& cam_;
   const LineOptions& opt_;
   const FaceRouteHooks& hooks_;
+  std::vector<char> backs_left_;      // per body: its edges hidden by its own faces are left out (hooks_.back_edges off)
+  std::size_t backs_left_count_ = 0;  // how many edges that leaves out
   std::shared_ptr<Prepared<P>> prep_;
   bool keep_;           // prep_ is shared with other views: nothing of it is freed
   bool large_ = false;  // a large drawing without shared work: give_back() before visibility

@@ -4,11 +4,14 @@
 // cores (parallel.hpp); each writes only its own pieces, so the result does not depend on the
 // thread count.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 
 #include "algorithms/hlr/face_engine.hpp"
 #include "algorithms/support/parallel.hpp"
+#include "algorithms/support/parallel_scan.hpp"
 #include "kernel/error_bounds.hpp"
 
 namespace hlr::face_route {
@@ -96,6 +99,40 @@ bool Engine<P>::end_on_hides(const Occ& o, int on_side) const {
   return true;
 }
 
+// Without hidden lines (hooks_.back_edges off), in an orthographic view, a body that hides
+// leaves out the edges its own faces hide (each would be one hidden piece), their ends marked
+// for the drawing's frame. (In perspective such an edge may reach behind the eye, and clipping
+// there moves its ends: it is kept.)
+template <class P>
+void Engine<P>::leave_out_backs(const std::vector<std::vector<DrawnEdge>>& drawn, LineDrawing& res, const ParallelLoop& loop) {
+  backs_left_.assign(drawn.size(), 0);
+  backs_left_count_ = 0;
+  if (hooks_.back_edges || cam_.perspective) return;
+  for (std::size_t b = 0; b < drawn.size(); ++b) {
+    const bool hides = b >= hooks_.see_through.size() || !hooks_.see_through[b];
+    if (!hides || drawn[b].empty()) continue;
+    backs_left_[b] = 1;
+    FrameEnds ends;
+    ends.store = edge_segment(static_cast<int>(b), drawn[b][0]).store_ends();
+    if (!ends.store) throw std::logic_error("face route: a body's edges do not end in its vertex store");
+    ends.marks.assign(ends.store->size(), 0);
+    std::atomic<std::size_t> left{0};
+    loop.run(drawn[b].size(), 8192, [&](unsigned, std::size_t lo, std::size_t hi) {
+      std::size_t n = 0;
+      for (std::size_t i = lo; i < hi; ++i) {
+        const DrawnEdge& e = drawn[b][i];
+        if (!left_out(b, e)) continue;
+        ++n;
+        std::atomic_ref<char>(ends.marks[static_cast<std::size_t>(e.u)]).store(1, std::memory_order_relaxed);
+        std::atomic_ref<char>(ends.marks[static_cast<std::size_t>(e.v)]).store(1, std::memory_order_relaxed);
+      }
+      left.fetch_add(n, std::memory_order_relaxed);
+    });
+    backs_left_count_ += left.load();
+    res.frame_ends.push_back(std::move(ends));
+  }
+}
+
 // The pieces of every segment: the drawn edges in order of body (each made as a segment only
 // while it is solved), then the intersection lines.
 template <class P>
@@ -110,6 +147,7 @@ std::vector<PieceList> Engine<P>::visibility(const std::vector<std::vector<Drawn
   const std::size_t edges = first.back(), n = edges + crossing.size();
   filter_doubles();
   ParallelLoop loop(opt_.threads);
+  leave_out_backs(drawn, res, loop);
   std::vector<PieceList> out(n);
   std::vector<Work> work(loop.workers());
   std::vector<char> ready(work.size(), 0);
@@ -121,6 +159,7 @@ std::vector<PieceList> Engine<P>::visibility(const std::vector<std::vector<Drawn
       if (i < edges) {
         while (i >= first[b + 1]) ++b;
         const DrawnEdge& e = drawn[b][i - first[b]];
+        if (left_out(b, e)) continue;
         Segment s = edge_segment(static_cast<int>(b), e);
         solve_into(s, {voff_[b] + e.u, voff_[b] + e.v}, wk, out[i]);
       } else {
@@ -147,31 +186,47 @@ template <class P>
 void Engine<P>::make_segments(std::vector<std::vector<DrawnEdge>>& drawn, std::vector<PieceList> pieces, std::vector<Segment>& crossing,
                               std::size_t total, LineDrawing& res) const {
   const ParallelLoop loop(opt_.threads);
-  res.segments.reserve(total);
-  constexpr std::size_t kRun = std::size_t{1} << 20;
-  std::size_t at = 0;
+  res.segments.reserve(total - backs_left_count_);
+  constexpr std::size_t kRun = std::size_t{1} << 20, kBlock = 4096;
+  std::size_t at = 0, put = 0;  // the first edge of the body, its first segment
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const std::size_t n = drawn[b].size();
+    const bool some_left = b < backs_left_.size() && backs_left_[b];
     for (std::size_t r0 = 0; r0 < n; r0 += kRun) {
-      const std::size_t r1 = std::min(n, r0 + kRun);
-      touch_pages(static_cast<void*>(res.segments.data() + at + r0), (r1 - r0) * sizeof(Segment), loop);
-      res.segments.resize(at + r1);
-      loop.for_each(r1 - r0, 4096, [&](std::size_t i) {
-        const std::size_t k = r0 + i;
-        Segment& s = res.segments[at + k];
-        s = edge_segment(static_cast<int>(b), drawn[b][k]);
-        s.pieces = std::move(pieces[at + k]);
+      const std::size_t r1 = std::min(n, r0 + kRun), blocks = (r1 - r0 + kBlock - 1) / kBlock;
+      // Where each block's segments go: after the segments of the blocks before it.
+      const std::vector<std::size_t> to = parallel_offsets(
+          blocks,
+          [&](std::size_t k) {
+            const std::size_t e0 = r0 + k * kBlock, e1 = std::min(r1, e0 + kBlock);
+            if (!some_left) return e1 - e0;
+            std::size_t c = 0;
+            for (std::size_t e = e0; e < e1; ++e) c += !left_out(b, drawn[b][e]);
+            return c;
+          },
+          loop);
+      touch_pages(static_cast<void*>(res.segments.data() + put), to[blocks] * sizeof(Segment), loop);
+      res.segments.resize(put + to[blocks]);
+      loop.for_each(blocks, 1, [&](std::size_t k) {
+        std::size_t w = put + to[k];
+        for (std::size_t e = r0 + k * kBlock, e1 = std::min(r1, e + kBlock); e < e1; ++e) {
+          if (left_out(b, drawn[b][e])) continue;
+          Segment& s = res.segments[w++];
+          s = edge_segment(static_cast<int>(b), drawn[b][e]);
+          s.pieces = std::move(pieces[at + e]);
+        }
       });
       release_pages(static_cast<void*>(drawn[b].data() + r0), (r1 - r0) * sizeof(DrawnEdge));
       release_pages(static_cast<void*>(pieces.data() + at + r0), (r1 - r0) * sizeof(PieceList));
+      put += to[blocks];
     }
     at += n;
     std::vector<DrawnEdge>().swap(drawn[b]);
   }
-  res.segments.resize(total);
+  res.segments.resize(put + crossing.size());
   for (Segment& s : crossing) {
-    s.pieces = std::move(pieces[at]);
-    res.segments[at++] = std::move(s);
+    s.pieces = std::move(pieces[at++]);
+    res.segments[put++] = std::move(s);
   }
 }
 

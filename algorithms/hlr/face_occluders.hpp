@@ -92,6 +92,11 @@ struct FaceRouteHooks {
   bool extra_only = false;
   /// The view-independent work shared with other views of the same bodies (null: none).
   std::shared_ptr<FaceRouteShare> share;
+  /// The edges that their own faces hide wholly (between two back faces of a body that hides),
+  /// each a segment with one hidden piece. Off (a drawing without hidden lines): in an
+  /// orthographic view they are left out, their ends kept in LineDrawing::frame_ends, and the
+  /// statistics count them as before; no other segment changes.
+  bool back_edges = true;
 };
 
 /// Runs the per-face hidden-line computation. Bodies may be closed solids (closed, manifold,

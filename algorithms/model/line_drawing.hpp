@@ -273,6 +273,13 @@ struct BodyNote {
   std::string text;
 };
 
+/// Vertices of a store that count for a drawing's frame without ending any of its segments
+/// (LineDrawing::frame_ends).
+struct FrameEnds {
+  const PointStore* store = nullptr;
+  std::vector<char> marks;  // per vertex of the store: 1 when it counts
+};
+
 struct LineDrawing {
   /// Per body and face: 1 facing, 0 edge-on, -1 non-facing (facing.hpp).
   std::vector<std::vector<signed char>> facing;
@@ -280,6 +287,10 @@ struct LineDrawing {
   /// meets a non-facing face of it before a facing one (empty: not known).
   std::vector<char> back_faces_unseen;
   std::vector<Segment> segments;
+  /// The ends of the segments a route left out as wholly hidden (FaceRouteHooks::back_edges
+  /// off): the drawing's frame (drawing_projector) counts them, so that the drawing's doubles
+  /// are those of the drawing with them.
+  std::vector<FrameEnds> frame_ends;
   DrawingStats stats;
   std::vector<BodyNote> notes;
 };

@@ -151,12 +151,29 @@ SegmentEnds segment_ends(const std::vector<Segment>& segs) {
   return all;
 }
 
+// The same with the ends of the segments the route left out (LineDrawing::frame_ends).
+SegmentEnds segment_ends(const LineDrawing& r) {
+  SegmentEnds all = segment_ends(r.segments);
+  for (const FrameEnds& f : r.frame_ends) {
+    const void* base = f.store;
+    auto it = std::find_if(all.bases.begin(), all.bases.end(), [&](const auto& x) { return x.first == base; });
+    if (it == all.bases.end()) {
+      all.bases.emplace_back(base, f.marks);
+      all.is_store.push_back(1);
+      continue;
+    }
+    if (it->second.size() < f.marks.size()) it->second.resize(f.marks.size(), 0);
+    for (std::size_t v = 0; v < f.marks.size(); ++v) it->second[v] |= f.marks[v];
+  }
+  return all;
+}
+
 }  // namespace
 
 Projector drawing_projector(const LineDrawing& r, const Camera& camera) {
   // The hull of the segments' ends (drawing_frame's minima and maxima: the same in any order):
   // the stores' marked points by their bounds, then the other ends.
-  const SegmentEnds ends = segment_ends(r.segments);
+  const SegmentEnds ends = segment_ends(r);
   std::vector<StorePoints> stores;
   std::vector<const Point3*> pts = ends.own;
   for (std::size_t k = 0; k < ends.bases.size(); ++k) {

@@ -432,7 +432,8 @@ CoincidentStats merge_coincident_lines(Plot& plot, double tol) {
       for (const Point2& p : s.points) box = {std::min(box[0], p[0]), std::min(box[1], p[1]), std::max(box[2], p[0]), std::max(box[3], p[1])};
     }
   if (!(box[0] <= box[2] && box[1] <= box[3])) box = {0, 0, 0, 0};
-  if (segments >= kLargeArrays) release_free_pages();  // the 2D stage's holes: its grid and kept segments go beside
+  // (The clean-up's freed pages are not given back first: the grid and the kept segments reuse
+  // them without their zeroing again; docs/design.md, "memory".)
   const ParallelLoop loop;
   Merge merge(box, segments, tol, loop);
   for (std::size_t li : order) {

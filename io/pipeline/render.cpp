@@ -539,6 +539,11 @@ RenderResult render(std::vector<Scene> scenes, const RenderOptions& o) {
     if (!hooks.share && !r.camera.perspective) r.section_share = hooks.share = std::make_shared<FaceRouteShare>();
   }
   for (const SceneBody* b : r.bodies) hooks.surfaces.push_back(b->surfaces.empty() ? nullptr : &b->surfaces);
+  // Back edges are left out only where nothing after the route reads them: no glass shows
+  // them, and no clipping moves their ends (the drawing's frame counts them as they are).
+  const std::vector<char> glass = see_through_bodies(r);
+  hooks.back_edges = o.back_edges || (o.through_lines && std::find(glass.begin(), glass.end(), 1) != glass.end()) || r.camera.perspective || o.clip ||
+                     o.view_depth || o.tile || o.segments_only || r.pyramid;
   std::optional<TileCut> cut;
   if (o.tile) {
     cut.emplace(polys, r.camera, *o.tile, o.lines.threads);

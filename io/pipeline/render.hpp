@@ -115,6 +115,11 @@ struct RenderOptions {
   /// Lines behind transparent bodies (a material with transparency > 0) as their own class,
   /// seen through (see_through_lines.hpp; the per-face route). Off: they are hidden lines.
   bool through_lines = true;
+  /// The edges a body's own faces hide wholly (its back), each a segment with one hidden piece:
+  /// the JSON and hidden lines show them. Off (a drawing without hidden lines): the per-face
+  /// route leaves them out of an orthographic view that nothing clips, which changes no drawn
+  /// line and no number of the drawing's frame.
+  bool back_edges = true;
   /// Only the part of the drawing in tile `index` (0-based) of a `count`-tile split of the
   /// picture (picture_tiles.hpp): segments outside it are not solved, every piece is
   /// cut to the tile. The per-face route's line drawings only.

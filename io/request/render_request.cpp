@@ -175,6 +175,7 @@ RenderedViews render_request(std::vector<Scene> scenes, const RenderRequest& r, 
     options.surface_corners = format == "json";  // hatching lifts what it needs itself
     options.surface_faces = format == "json" || r.hatch;
     options.surface_groups = !r.hatch;  // a hatched drawing has no fills
+    options.back_edges = format == "json" || r.hidden != "none";
     options.tile = extras.tile;
     options.polylines = extras.polylines;
     options.segments_only = extras.segments_only;

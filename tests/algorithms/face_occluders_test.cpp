@@ -580,3 +580,81 @@ TEST(FaceOccluders, CompactVerticesDrawTheSameWithoutMakingThePoints) {
     expect_same_drawing(run({&compact}, cam, EdgeSelection::All), run({&exact}, cam, EdgeSelection::All), cam);
   }
 }
+
+// A drawing without hidden lines leaves out the edges a body's own faces hide wholly
+// (FaceRouteHooks::back_edges off): every other segment the same, in order, with the same
+// pieces; the same statistics; the same frame and so the same 2D drawing of what is seen, far
+// from the origin (where the frame is not the identity and the back's vertices reach beyond
+// the ends the front keeps) too. A see-through body keeps its back edges, and a perspective
+// view keeps every one (clipping at the eye moves their ends).
+namespace {
+bool wholly_hidden_back(const Segment& s) {
+  return s.kind == Segment::Kind::Edge && s.self_hidden && s.pieces.size() == 1 && !s.pieces.front().visible;
+}
+
+LineDrawing run_hooks(const std::vector<const Polyhedron*>& bodies, const Camera& c, const FaceRouteHooks& hooks) {
+  LineOptions o;
+  o.edges = EdgeSelection::All;
+  return face_occluders(bodies, c, o, hooks);
+}
+}  // namespace
+
+TEST(FaceOccluders, BackEdgesLeftOutChangeNoDrawnLineNorTheFrame) {
+  const Polyhedron sphere = load_mesh(kData + "/sphere2000.off");
+  const Rational far = Rational(mpz_class(1) << 120);
+  std::vector<Point3> moved;
+  for (const Point3& v : sphere.vertices()) moved.push_back(Point3(v.x() + far, v.y() - far, v.z() * 3 + far));
+  const Polyhedron far_sphere(moved, sphere.faces());
+  const Polyhedron rod = box("-0.25", "-0.25", "-2", "0.25", "0.25", "0.5");
+  struct Case {
+    std::vector<const Polyhedron*> bodies;
+    Camera cam;
+    std::vector<char> see_through;
+    bool identity;
+  };
+  const std::vector<Case> cases = {
+      {{&sphere, &rod}, make_orthographic(Vector3(Q("1"), Q("1.3"), Q("1.7"))), {}, true},
+      {{&sphere}, make_orthographic(Vector3(0, 0, 1)), {}, true},
+      {{&far_sphere}, make_orthographic(Vector3(Q("1"), Q("-1.3"), Q("0.2"))), {}, false},
+      {{&sphere, &rod}, make_orthographic(Vector3(Q("1"), Q("1.3"), Q("1.7"))), {0, 1}, true},  // the rod of glass
+      {{&sphere, &rod}, make_perspective(P("3", "2.5", "4"), P("0", "0", "0")), {}, true},
+  };
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const Case& c = cases[k];
+    FaceRouteHooks all, front;
+    all.see_through = front.see_through = c.see_through;
+    front.back_edges = false;
+    const LineDrawing a = run_hooks(c.bodies, c.cam, all), f = run_hooks(c.bodies, c.cam, front);
+    std::size_t left = 0, j = 0;
+    for (const Segment& s : a.segments) {
+      const bool glass = s.body >= 0 && static_cast<std::size_t>(s.body) < c.see_through.size() && c.see_through[s.body];
+      if (!c.cam.perspective && !glass && wholly_hidden_back(s)) {
+        ++left;
+        continue;
+      }
+      ASSERT_LT(j, f.segments.size()) << k;
+      const Segment& t = f.segments[j++];
+      ASSERT_EQ(s.kind, t.kind) << k;
+      ASSERT_EQ(s.line, t.line) << k;
+      ASSERT_EQ(s.body, t.body) << k;
+      ASSERT_EQ(s.v0, t.v0) << k;
+      ASSERT_EQ(s.v1, t.v1) << k;
+      ASSERT_EQ(pieces(s), pieces(t)) << k << " segment " << j;
+    }
+    EXPECT_EQ(j, f.segments.size()) << k;
+    EXPECT_EQ(left > 0, !c.cam.perspective) << k;  // (every view has a body that hides)
+    EXPECT_EQ(a.stats.edges, f.stats.edges) << k;
+    EXPECT_EQ(a.stats.self_hidden, f.stats.self_hidden) << k;
+    EXPECT_EQ(a.stats.pairs_tested, f.stats.pairs_tested) << k;
+    const DrawingFrame fa = drawing_projector(a, c.cam).frame(), ff = drawing_projector(f, c.cam).frame();
+    EXPECT_EQ(fa.identity, c.identity) << k;
+    EXPECT_EQ(ff.identity, fa.identity) << k;
+    EXPECT_EQ(ff.centre, fa.centre) << k;
+    EXPECT_EQ(ff.scale, fa.scale) << k;
+    Project2DOptions seen;
+    seen.hidden = false;
+    const Drawing2D da = project_drawing(a, c.cam, seen), df = project_drawing(f, c.cam, seen);
+    EXPECT_EQ(da.points, df.points) << k;
+    EXPECT_EQ(da.lines.size(), df.lines.size()) << k;
+  }
+}
