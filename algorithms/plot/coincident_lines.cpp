@@ -433,7 +433,7 @@ CoincidentStats merge_coincident_lines(Plot& plot, double tol) {
     }
   if (!(box[0] <= box[2] && box[1] <= box[3])) box = {0, 0, 0, 0};
   // (The clean-up's freed pages are not given back first: the grid and the kept segments reuse
-  // them without their zeroing again; docs/design.md, "memory".)
+  // them without their zeroing again; docs/design.md, "Memory on huge pages".)
   const ParallelLoop loop;
   Merge merge(box, segments, tol, loop);
   for (std::size_t li : order) {
